@@ -1,0 +1,56 @@
+// `mocap`: the batch command line over mocap::core. Each command lives in its own file; this
+// file only dispatches and maps errors to exit codes (1 bad input, 2 bad usage).
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/error.h"
+
+#include <functional>
+#include <iostream>
+#include <map>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: mocap <command> [arguments]\n"
+    "commands:\n"
+    "  info FILE [--json]   markers, frames, rate, units, analog channels, valid fraction and every gap\n"
+    "  convert IN OUT       convert between .c3d .trc (read/write) and .csv .bvh (write)\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  using namespace mocap::cli;
+  const std::map<std::string, std::function<int(const std::vector<std::string>&)>> commands = {
+      {"info", runInfo},
+      {"convert", runConvert},
+  };
+  const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
+  const std::string command = argc > 1 ? argv[1] : "";
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::cout << kUsage;
+    return kExitOk;
+  }
+  const auto it = commands.find(command);
+  if (it == commands.end()) {
+    std::cerr << "mocap: " << (command.empty() ? "no command given" : "unknown command '" + command + "'") << '\n'
+              << kUsage;
+    return kExitBadUsage;
+  }
+  try {
+    return it->second(args);
+  } catch (const UsageError& e) {
+    std::cerr << "mocap " << command << ": " << e.what() << '\n' << kUsage;
+    return kExitBadUsage;
+  } catch (const mocap::InvalidArgument& e) {
+    std::cerr << e.what() << '\n';
+    return kExitBadUsage;
+  } catch (const mocap::Error& e) {
+    std::cerr << e.what() << '\n';
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "mocap " << command << ": " << e.what() << '\n';
+    return kExitBadInput;
+  }
+}

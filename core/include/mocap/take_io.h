@@ -1,0 +1,33 @@
+#pragma once
+
+#include "mocap/take.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mocap {
+
+/// File formats the studio reads or writes, chosen by extension.
+enum class TakeFormat
+{
+  C3d,  ///< read and write
+  Trc,  ///< read and write
+  Csv,  ///< write only
+  Bvh,  ///< write only
+};
+
+/// The format named by `path`'s extension (case-insensitive). Throws InvalidArgument for an
+/// unknown extension, listing the known ones.
+[[nodiscard]] TakeFormat formatFromPath(const std::filesystem::path& path);
+[[nodiscard]] std::string_view formatName(TakeFormat format);
+
+/// Reads a take in the format its extension names; tolerated file quirks go to `warnings`.
+/// Throws IoError, FormatError, or InvalidArgument for a format that cannot be read.
+[[nodiscard]] Take readTake(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+
+/// Writes `take` atomically in the format its extension names.
+void writeTake(const Take& take, const std::filesystem::path& path);
+
+} // namespace mocap

@@ -1,0 +1,93 @@
+#include "mocap/file_io.h"
+
+#include "mocap/error.h"
+#include "mocap/text.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <random>
+#include <system_error>
+
+namespace mocap {
+
+namespace {
+std::string describeErrno()
+{
+  return std::strerror(errno);
+}
+
+struct FileCloser
+{
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+} // namespace
+
+std::string readFileBytes(const std::filesystem::path& path)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw IoError(path.string() + ": is a directory");
+  FilePtr file(std::fopen(path.c_str(), "rb"));
+  if (!file)
+    throw IoError(path.string() + ": cannot open (" + describeErrno() + ")");
+  std::string bytes;
+  if (std::fseek(file.get(), 0, SEEK_END) == 0) {
+    const long size = std::ftell(file.get());
+    if (size > 0)
+      bytes.resize(static_cast<std::size_t>(size));
+    std::rewind(file.get());
+  }
+  std::size_t got = bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), file.get());
+  bytes.resize(got);
+  // Pipes and files that grow while read: take the rest too.
+  char chunk[65536];
+  while (true) {
+    const std::size_t n = std::fread(chunk, 1, sizeof chunk, file.get());
+    if (n == 0)
+      break;
+    bytes.append(chunk, n);
+  }
+  if (std::ferror(file.get()))
+    throw IoError(path.string() + ": read failed (" + describeErrno() + ")");
+  return bytes;
+}
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes)
+{
+  const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
+  std::random_device random;
+  const std::filesystem::path temporary =
+      directory / ("." + path.filename().string() + ".tmp" + std::to_string(random()));
+  {
+    FilePtr file(std::fopen(temporary.c_str(), "wb"));
+    if (!file)
+      throw IoError(path.string() + ": cannot create (" + describeErrno() + ")");
+    const bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
+    const bool flushed = std::fflush(file.get()) == 0;
+    if (!written || !flushed) {
+      const std::string reason = describeErrno();
+      file.reset();
+      std::filesystem::remove(temporary);
+      throw IoError(path.string() + ": write failed (" + reason + ")");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    std::filesystem::remove(temporary);
+    throw IoError(path.string() + ": cannot replace (" + ec.message() + ")");
+  }
+}
+
+std::string lowerExtension(const std::filesystem::path& path)
+{
+  std::string ext = path.extension().string();
+  if (!ext.empty() && ext.front() == '.')
+    ext.erase(0, 1);
+  return toLower(ext);
+}
+
+} // namespace mocap

@@ -1,0 +1,178 @@
+#include "mocap/take.h"
+
+#include "mocap/error.h"
+
+#include <cmath>
+#include <unordered_set>
+
+namespace mocap {
+
+Eigen::VectorXd AnalogData::physical(Eigen::Index c) const
+{
+  if (c < 0 || c >= channelCount())
+    throw InvalidArgument("analog channel " + std::to_string(c) + " out of range");
+  const AnalogChannel& channel = channels[static_cast<std::size_t>(c)];
+  return ((stored.col(c).array() - channel.offset) * (channel.scale * generalScale)).matrix();
+}
+
+std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels)
+{
+  std::vector<std::string> warnings;
+  std::unordered_set<std::string> seen;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    std::string& label = labels[i];
+    if (label.empty()) {
+      label = "M" + std::to_string(i + 1);
+      warnings.push_back("marker " + std::to_string(i + 1) + " has no label; named " + label);
+    }
+    if (seen.insert(label).second)
+      continue;
+    std::string candidate;
+    for (int suffix = 2;; ++suffix) {
+      candidate = label + "_" + std::to_string(suffix);
+      if (seen.count(candidate) == 0)
+        break;
+    }
+    warnings.push_back("duplicate marker label '" + label + "' renamed to '" + candidate + "'");
+    label = candidate;
+    seen.insert(label);
+  }
+  return warnings;
+}
+
+Take::Take(std::vector<std::string> labels, Eigen::Index frameCount, double frameRate)
+    : m_labels(std::move(labels)), m_frameCount(frameCount)
+{
+  if (frameCount < 0)
+    throw InvalidArgument("negative frame count");
+  setFrameRate(frameRate);
+  makeLabelsUnique(m_labels);
+  const Eigen::Index markers = markerCount();
+  m_positions = Eigen::VectorXd::Zero(markers * frameCount * 3);
+  m_valid = SampleMask::Constant(frameCount, markers, false);
+  m_residuals = Eigen::ArrayXXd::Constant(frameCount, markers, -1.0);
+  m_cameraMasks = SampleBytes::Zero(frameCount, markers);
+  m_states = SampleBytes::Zero(frameCount, markers);
+}
+
+const std::string& Take::label(Eigen::Index marker) const
+{
+  checkIndex(0, marker);
+  return m_labels[static_cast<std::size_t>(marker)];
+}
+
+void Take::setLabel(Eigen::Index marker, std::string label)
+{
+  checkIndex(0, marker);
+  if (label.empty())
+    throw InvalidArgument("a marker label cannot be empty");
+  const auto existing = markerIndex(label);
+  if (existing && *existing != marker)
+    throw InvalidArgument("marker label '" + label + "' is already used");
+  m_labels[static_cast<std::size_t>(marker)] = std::move(label);
+}
+
+std::optional<Eigen::Index> Take::markerIndex(std::string_view label) const
+{
+  for (std::size_t i = 0; i < m_labels.size(); ++i)
+    if (m_labels[i] == label)
+      return static_cast<Eigen::Index>(i);
+  return std::nullopt;
+}
+
+void Take::setFrameRate(double rate)
+{
+  if (!std::isfinite(rate) || rate <= 0.0)
+    throw InvalidArgument("frame rate must be a positive number, got " + std::to_string(rate));
+  m_frameRate = rate;
+}
+
+void Take::convertUnits(LengthUnit unit)
+{
+  const double factor = millimetresPer(m_units) / millimetresPer(unit);
+  m_units = unit;
+  if (factor == 1.0)
+    return;
+  m_positions *= factor;
+  m_residuals = (m_residuals >= 0.0).select(m_residuals * factor, m_residuals);
+}
+
+TrajectoryMap Take::trajectory(Eigen::Index marker)
+{
+  checkIndex(0, marker);
+  return TrajectoryMap(m_positions.data() + marker * m_frameCount * 3, m_frameCount, 3);
+}
+
+ConstTrajectoryMap Take::trajectory(Eigen::Index marker) const
+{
+  checkIndex(0, marker);
+  return ConstTrajectoryMap(m_positions.data() + marker * m_frameCount * 3, m_frameCount, 3);
+}
+
+Eigen::Vector3d Take::position(Eigen::Index frame, Eigen::Index marker) const
+{
+  checkIndex(frame, marker);
+  const double* block = m_positions.data() + marker * m_frameCount * 3;
+  return {block[frame], block[frame + m_frameCount], block[frame + 2 * m_frameCount]};
+}
+
+void Take::setPosition(Eigen::Index frame, Eigen::Index marker, const Eigen::Vector3d& xyz)
+{
+  checkIndex(frame, marker);
+  double* block = m_positions.data() + marker * m_frameCount * 3;
+  block[frame] = xyz.x();
+  block[frame + m_frameCount] = xyz.y();
+  block[frame + 2 * m_frameCount] = xyz.z();
+}
+
+SampleState Take::state(Eigen::Index frame, Eigen::Index marker) const
+{
+  checkIndex(frame, marker);
+  return static_cast<SampleState>(m_states(frame, marker));
+}
+
+void Take::setState(Eigen::Index frame, Eigen::Index marker, SampleState state)
+{
+  checkIndex(frame, marker);
+  m_states(frame, marker) = static_cast<std::uint8_t>(state);
+}
+
+Eigen::Index Take::addMarker(std::string label)
+{
+  std::vector<std::string> labels = m_labels;
+  labels.push_back(std::move(label));
+  makeLabelsUnique(labels);
+  m_labels = std::move(labels);
+  const Eigen::Index markers = markerCount();
+  const Eigen::Index oldSize = m_positions.size();
+  m_positions.conservativeResize(oldSize + m_frameCount * 3);
+  m_positions.tail(m_frameCount * 3).setZero();
+  m_valid.conservativeResize(m_frameCount, markers);
+  m_valid.col(markers - 1).setConstant(false);
+  m_residuals.conservativeResize(m_frameCount, markers);
+  m_residuals.col(markers - 1).setConstant(-1.0);
+  m_cameraMasks.conservativeResize(m_frameCount, markers);
+  m_cameraMasks.col(markers - 1).setZero();
+  m_states.conservativeResize(m_frameCount, markers);
+  m_states.col(markers - 1).setZero();
+  return markers - 1;
+}
+
+double Take::validFraction() const
+{
+  if (m_valid.size() == 0)
+    return 0.0;
+  return static_cast<double>(m_valid.count()) / static_cast<double>(m_valid.size());
+}
+
+void Take::checkIndex(Eigen::Index frame, Eigen::Index marker) const
+{
+  if (marker < 0 || marker >= markerCount())
+    throw InvalidArgument("marker index " + std::to_string(marker) + " out of range (take has " +
+                          std::to_string(markerCount()) + " markers)");
+  if (frame < 0 || (frame >= m_frameCount && !(frame == 0 && m_frameCount == 0)))
+    throw InvalidArgument("frame index " + std::to_string(frame) + " out of range (take has " +
+                          std::to_string(m_frameCount) + " frames)");
+}
+
+} // namespace mocap

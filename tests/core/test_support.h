@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace mocap::test {
+
+/// Path of a file under tests/data.
+[[nodiscard]] std::filesystem::path dataFile(const std::string& relative);
+
+/// The bundled sample take (resources/sample/Facial-Sing.c3d).
+[[nodiscard]] std::filesystem::path sampleTake();
+
+/// A fresh, empty folder for one test, removed when the object goes away.
+class TempDir
+{
+public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  [[nodiscard]] const std::filesystem::path& path() const { return m_path; }
+  [[nodiscard]] std::filesystem::path file(const std::string& name) const { return m_path / name; }
+
+private:
+  std::filesystem::path m_path;
+};
+
+} // namespace mocap::test
