@@ -20,6 +20,7 @@ void appendNumber(std::string& out, double value)
   out.append(buffer, static_cast<std::size_t>(result.ptr - buffer));
 }
 
+// Three space-separated numbers. O(1).
 void appendVector(std::string& out, const Eigen::Vector3d& v)
 {
   for (Eigen::Index i = 0; i < 3; ++i) {
@@ -49,6 +50,7 @@ std::vector<std::string> jointNames(const std::vector<std::string>& labels)
   return names;
 }
 
+// A sample BVH can carry: valid and finite. O(1).
 bool usable(const Take& take, Eigen::Index frame, Eigen::Index marker)
 {
   return take.isValid(frame, marker) && take.position(frame, marker).allFinite();

@@ -415,7 +415,9 @@ private:
 
   Take makeTake(const DataLayout& layout)
   {
-    Take take(pointLabels(layout.pointCount), static_cast<Eigen::Index>(layout.frameCount), layout.frameRate);
+    // decodeFrames() writes every sample of every marker.
+    Take take(pointLabels(layout.pointCount), static_cast<Eigen::Index>(layout.frameCount), layout.frameRate,
+              Take::Uninitialized{});
     take.setFirstFrame(layout.firstFrame);
     const auto unitText = m_tree.string("POINT", "UNITS");
     const auto unit = unitText ? parseLengthUnit(*unitText) : std::nullopt;
@@ -480,42 +482,43 @@ private:
   }
 
   /// One pass over the data section. `decode` turns one stored value into a double.
+  /// Frames go in chunks that fit the L2 cache: within a chunk each marker's samples are read
+  /// with the frame stride and written to its contiguous columns, so both sides stream.
   template <typename Decode>
   void decodeFrames(const DataLayout& layout, Take& take, Decode decode)
   {
+    constexpr std::size_t kChunkFrames = 1024;
     const std::size_t frames = layout.frameCount;
     const std::size_t bpv = layout.bytesPerValue();
     const std::size_t frameBytes = layout.frameBytes();
     const double coordinateScale = layout.isFloat ? 1.0 : layout.scale;
-    const auto F = static_cast<Eigen::Index>(frames);
+    const double residualScale = layout.scale;
     double* positions = take.positionData();
     bool* valid = take.valid().data();
     double* residuals = take.residuals().data();
     std::uint8_t* cameras = take.cameraMasks().data();
-    for (std::size_t m = 0; m < layout.pointCount; ++m) {
-      const auto M = static_cast<Eigen::Index>(m);
-      double* x = positions + M * F * 3;
-      double* y = x + F;
-      double* z = y + F;
-      const std::size_t sampleBase = m * frames;
-      const unsigned char* p = m_data + layout.offset + m * 4 * bpv;
-      for (std::size_t f = 0; f < frames; ++f, p += frameBytes) {
-        const double word = decode(p + 3 * bpv);
-        const double xv = decode(p) * coordinateScale;
-        const double yv = decode(p + bpv) * coordinateScale;
-        const double zv = decode(p + 2 * bpv) * coordinateScale;
-        const bool ok = word >= 0.0 && std::isfinite(xv) && std::isfinite(yv) && std::isfinite(zv);
-        x[f] = xv;
-        y[f] = yv;
-        z[f] = zv;
-        valid[sampleBase + f] = ok;
-        if (ok) {
-          const auto bits = static_cast<std::uint32_t>(std::min(word, 65535.0));
-          residuals[sampleBase + f] = static_cast<double>(bits & 0xFFu) * layout.scale;
+    const unsigned char* data = m_data + layout.offset;
+    for (std::size_t first = 0; first < frames; first += kChunkFrames) {
+      const std::size_t last = std::min(frames, first + kChunkFrames);
+      for (std::size_t m = 0; m < layout.pointCount; ++m) {
+        double* x = positions + m * frames * 3;
+        double* y = x + frames;
+        double* z = y + frames;
+        const std::size_t sampleBase = m * frames;
+        const unsigned char* p = data + first * frameBytes + m * 4 * bpv;
+        for (std::size_t f = first; f < last; ++f, p += frameBytes) {
+          const double word = decode(p + 3 * bpv);
+          const double xv = decode(p) * coordinateScale;
+          const double yv = decode(p + bpv) * coordinateScale;
+          const double zv = decode(p + 2 * bpv) * coordinateScale;
+          const bool ok = word >= 0.0 && std::isfinite(xv + yv + zv);
+          x[f] = xv;
+          y[f] = yv;
+          z[f] = zv;
+          valid[sampleBase + f] = ok;
+          const auto bits = ok ? static_cast<std::uint32_t>(std::min(word, 65535.0)) : 0u;
+          residuals[sampleBase + f] = ok ? static_cast<double>(bits & 0xFFu) * residualScale : -1.0;
           cameras[sampleBase + f] = static_cast<std::uint8_t>((bits >> 8) & 0x7Fu);
-        } else {
-          residuals[sampleBase + f] = -1.0;
-          cameras[sampleBase + f] = 0;
         }
       }
     }
@@ -611,8 +614,8 @@ Take parseC3d(const unsigned char* data, std::size_t size, const std::string& so
 
 Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings)
 {
-  const std::string bytes = readFileBytes(path);
-  return parseC3d(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), path.string(), warnings);
+  const MappedFile file(path);
+  return parseC3d(file.data(), file.size(), path.string(), warnings);
 }
 
 } // namespace mocap

@@ -10,6 +10,11 @@
 #include <random>
 #include <system_error>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace mocap {
 
 namespace {
@@ -53,6 +58,33 @@ std::string readFileBytes(const std::filesystem::path& path)
   if (std::ferror(file.get()))
     throw IoError(path.string() + ": read failed (" + describeErrno() + ")");
   return bytes;
+}
+
+MappedFile::MappedFile(const std::filesystem::path& path)
+{
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  struct stat info {};
+  if (fd >= 0 && ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
+    void* mapped = ::mmap(nullptr, static_cast<std::size_t>(info.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+    if (mapped != MAP_FAILED) {
+      m_data = static_cast<const unsigned char*>(mapped);
+      m_size = static_cast<std::size_t>(info.st_size);
+      m_mapped = true;
+      ::close(fd);
+      return;
+    }
+  }
+  if (fd >= 0)
+    ::close(fd);
+  m_fallback = readFileBytes(path);  // empty files, pipes, or mmap refused: read (and report errors)
+  m_data = reinterpret_cast<const unsigned char*>(m_fallback.data());
+  m_size = m_fallback.size();
+}
+
+MappedFile::~MappedFile()
+{
+  if (m_mapped)
+    ::munmap(const_cast<unsigned char*>(m_data), m_size);
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes)

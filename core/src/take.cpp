@@ -2,6 +2,7 @@
 
 #include "mocap/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_set>
 
@@ -41,18 +42,28 @@ std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels)
 }
 
 Take::Take(std::vector<std::string> labels, Eigen::Index frameCount, double frameRate)
+    : Take(std::move(labels), frameCount, frameRate, Uninitialized{})
+{
+  std::fill_n(m_positions.data(), m_positions.size(), 0.0);
+  std::fill_n(m_valid.data(), m_valid.size(), false);
+  std::fill_n(m_residuals.data(), m_residuals.size(), -1.0);
+  std::fill_n(m_cameraMasks.data(), m_cameraMasks.size(), std::uint8_t{0});
+}
+
+Take::Take(std::vector<std::string> labels, Eigen::Index frameCount, double frameRate, Uninitialized)
     : m_labels(std::move(labels)), m_frameCount(frameCount)
 {
   if (frameCount < 0)
     throw InvalidArgument("negative frame count");
   setFrameRate(frameRate);
   makeLabelsUnique(m_labels);
-  const Eigen::Index markers = markerCount();
-  m_positions = Eigen::VectorXd::Zero(markers * frameCount * 3);
-  m_valid = SampleMask::Constant(frameCount, markers, false);
-  m_residuals = Eigen::ArrayXXd::Constant(frameCount, markers, -1.0);
-  m_cameraMasks = SampleBytes::Zero(frameCount, markers);
-  m_states = SampleBytes::Zero(frameCount, markers);
+  const auto samples = static_cast<std::size_t>(markerCount() * frameCount);
+  m_positions = SampleBuffer<double>(samples * 3);
+  m_valid = SampleBuffer<bool>(samples);
+  m_residuals = SampleBuffer<double>(samples);
+  m_cameraMasks = SampleBuffer<std::uint8_t>(samples);
+  m_states = SampleBuffer<std::uint8_t>(samples);
+  std::fill_n(m_states.data(), samples, std::uint8_t{0});
 }
 
 const std::string& Take::label(Eigen::Index marker) const
@@ -93,8 +104,9 @@ void Take::convertUnits(LengthUnit unit)
   m_units = unit;
   if (factor == 1.0)
     return;
-  m_positions *= factor;
-  m_residuals = (m_residuals >= 0.0).select(m_residuals * factor, m_residuals);
+  Eigen::Map<Eigen::VectorXd>(m_positions.data(), static_cast<Eigen::Index>(m_positions.size())) *= factor;
+  auto r = residuals();
+  r = (r >= 0.0).select(r * factor, r);
 }
 
 TrajectoryMap Take::trajectory(Eigen::Index marker)
@@ -128,13 +140,13 @@ void Take::setPosition(Eigen::Index frame, Eigen::Index marker, const Eigen::Vec
 SampleState Take::state(Eigen::Index frame, Eigen::Index marker) const
 {
   checkIndex(frame, marker);
-  return static_cast<SampleState>(m_states(frame, marker));
+  return static_cast<SampleState>(m_states.data()[marker * m_frameCount + frame]);
 }
 
 void Take::setState(Eigen::Index frame, Eigen::Index marker, SampleState state)
 {
   checkIndex(frame, marker);
-  m_states(frame, marker) = static_cast<std::uint8_t>(state);
+  m_states.data()[marker * m_frameCount + frame] = static_cast<std::uint8_t>(state);
 }
 
 Eigen::Index Take::addMarker(std::string label)
@@ -143,26 +155,26 @@ Eigen::Index Take::addMarker(std::string label)
   labels.push_back(std::move(label));
   makeLabelsUnique(labels);
   m_labels = std::move(labels);
-  const Eigen::Index markers = markerCount();
-  const Eigen::Index oldSize = m_positions.size();
-  m_positions.conservativeResize(oldSize + m_frameCount * 3);
-  m_positions.tail(m_frameCount * 3).setZero();
-  m_valid.conservativeResize(m_frameCount, markers);
-  m_valid.col(markers - 1).setConstant(false);
-  m_residuals.conservativeResize(m_frameCount, markers);
-  m_residuals.col(markers - 1).setConstant(-1.0);
-  m_cameraMasks.conservativeResize(m_frameCount, markers);
-  m_cameraMasks.col(markers - 1).setZero();
-  m_states.conservativeResize(m_frameCount, markers);
-  m_states.col(markers - 1).setZero();
-  return markers - 1;
+  // Column-major per-marker storage: a new marker is a new block at the end of each buffer.
+  const auto frames = static_cast<std::size_t>(m_frameCount);
+  auto appendBlock = [](auto& buffer, std::size_t count, auto value) {
+    const std::size_t old = buffer.size();
+    buffer.resize(old + count);
+    std::fill_n(buffer.data() + old, count, value);
+  };
+  appendBlock(m_positions, frames * 3, 0.0);
+  appendBlock(m_valid, frames, false);
+  appendBlock(m_residuals, frames, -1.0);
+  appendBlock(m_cameraMasks, frames, std::uint8_t{0});
+  appendBlock(m_states, frames, std::uint8_t{0});
+  return markerCount() - 1;
 }
 
 double Take::validFraction() const
 {
   if (m_valid.size() == 0)
     return 0.0;
-  return static_cast<double>(m_valid.count()) / static_cast<double>(m_valid.size());
+  return static_cast<double>(valid().count()) / static_cast<double>(m_valid.size());
 }
 
 void Take::checkIndex(Eigen::Index frame, Eigen::Index marker) const

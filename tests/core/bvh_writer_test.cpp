@@ -36,6 +36,7 @@ struct ParsedBvh
   std::vector<std::vector<double>> motion;
 };
 
+// O(text size).
 ParsedBvh parseBvh(const std::string& text)
 {
   ParsedBvh bvh;
@@ -90,6 +91,7 @@ ParsedBvh parseBvh(const std::string& text)
   return bvh;
 }
 
+// Rz·Rx·Ry built independently of the code under test. O(1).
 Eigen::Matrix3d rotationZxy(double zDegrees, double xDegrees, double yDegrees)
 {
   const double k = kPi / 180.0;
@@ -99,6 +101,7 @@ Eigen::Matrix3d rotationZxy(double zDegrees, double xDegrees, double yDegrees)
       .toRotationMatrix();
 }
 
+// Six frames of three markers, one of them labelled like the root; Chin misses frame 0. O(1).
 mocap::Take movingTake()
 {
   mocap::Take take({"Nose Tip", "Chin", "Head"}, 6, 100.0);

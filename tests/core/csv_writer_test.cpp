@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 
 using mocap::test::TempDir;
 
-mocap::Take sampleTake()
+// Three frames of three awkwardly named markers with two gaps. O(1).
+mocap::Take csvTake()
 {
   mocap::Take take({"A", "B,1", "say \"hi\""}, 3, 100.0);
   take.setFirstFrame(10);
@@ -38,7 +39,7 @@ mocap::Take sampleTake()
 
 TEST(CsvWriter, HeaderQuotesLabelsPerRfc4180)
 {
-  const std::string text = mocap::formatCsv(sampleTake());
+  const std::string text = mocap::formatCsv(csvTake());
   const std::string header = text.substr(0, text.find('\n'));
   EXPECT_EQ(header, "Frame,Time,A:X,A:Y,A:Z,\"B,1:X\",\"B,1:Y\",\"B,1:Z\","
                     "\"say \"\"hi\"\":X\",\"say \"\"hi\"\":Y\",\"say \"\"hi\"\":Z\"");
@@ -46,7 +47,7 @@ TEST(CsvWriter, HeaderQuotesLabelsPerRfc4180)
 
 TEST(CsvWriter, RowsHaveFrameTimeAndEmptyCellsForGaps)
 {
-  const std::string text = mocap::formatCsv(sampleTake());
+  const std::string text = mocap::formatCsv(csvTake());
   const std::vector<std::string_view> lines = mocap::split(text, '\n');
   ASSERT_EQ(lines.size(), 5U);  // header, 3 rows, empty after the final line break
   EXPECT_EQ(lines[1], "10,0,0,0,-1.25,0,0.5,-1.25,0,1,-1.25");
@@ -81,7 +82,7 @@ TEST(CsvWriter, NumbersReadBackExactly)
 TEST(CsvWriter, WritesFileAndRejectsOverflowingFrameNumbers)
 {
   const TempDir dir;
-  mocap::Take take = sampleTake();
+  mocap::Take take = csvTake();
   const fs::path file = dir.path() / "take.csv";
   mocap::writeCsv(take, file);
   EXPECT_EQ(mocap::readFileBytes(file), mocap::formatCsv(take));

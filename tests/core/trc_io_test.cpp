@@ -18,6 +18,7 @@ namespace fs = std::filesystem;
 
 using mocap::test::TempDir;
 
+// Whether any warning holds `needle`. O(total warning length).
 bool contains(const std::vector<std::string>& warnings, const std::string& needle)
 {
   for (const std::string& warning : warnings)
@@ -26,7 +27,7 @@ bool contains(const std::vector<std::string>& warnings, const std::string& needl
   return false;
 }
 
-// Parses and reports how: "ok", "format" (FormatError) or the surprise.
+// Parses and reports how: "ok", "format" (FormatError) or the surprise. O(text size).
 std::string parseOutcome(const std::string& text)
 {
   try {
@@ -40,6 +41,7 @@ std::string parseOutcome(const std::string& text)
   }
 }
 
+// Four frames of three markers (labels with a space and a colon), one gap. O(1).
 mocap::Take smallTake()
 {
   mocap::Take take({"Nose Tip", "L:Cheek", "Chin"}, 4, 120.0);

@@ -2,6 +2,7 @@
 
 #include "mocap/c3d_parameters.h"
 #include "mocap/length_unit.h"
+#include "mocap/sample_buffer.h"
 
 #include <Eigen/Core>
 
@@ -30,6 +31,13 @@ using SampleBytes = Eigen::Array<std::uint8_t, Eigen::Dynamic, Eigen::Dynamic>;
 /// One marker's trajectory, #frames × 3 (x, y, z columns), viewing the take's storage.
 using TrajectoryMap = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3>>;
 using ConstTrajectoryMap = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3>>;
+/// Views of a take's per-sample arrays (#frames × #markers).
+using SampleMaskMap = Eigen::Map<SampleMask>;
+using ConstSampleMaskMap = Eigen::Map<const SampleMask>;
+using ResidualMap = Eigen::Map<Eigen::ArrayXXd>;
+using ConstResidualMap = Eigen::Map<const Eigen::ArrayXXd>;
+using SampleBytesMap = Eigen::Map<SampleBytes>;
+using ConstSampleBytesMap = Eigen::Map<const SampleBytes>;
 
 /// One analog channel's identity and the conversion from stored to physical values:
 /// physical = (stored − offset) · scale · generalScale (C3D ANALOG:SCALE, OFFSET, GEN_SCALE).
@@ -82,6 +90,13 @@ public:
   /// A take with the given labels (made unique), every sample invalid at the origin.
   Take(std::vector<std::string> labels, Eigen::Index frameCount, double frameRate);
 
+  /// Tag for readers that overwrite every sample: skips clearing positions, validity,
+  /// residuals and camera masks (states start Original), which saves a pass over the take.
+  struct Uninitialized
+  {
+  };
+  Take(std::vector<std::string> labels, Eigen::Index frameCount, double frameRate, Uninitialized);
+
   [[nodiscard]] Eigen::Index frameCount() const { return m_frameCount; }
   [[nodiscard]] Eigen::Index markerCount() const { return static_cast<Eigen::Index>(m_labels.size()); }
   [[nodiscard]] bool empty() const { return m_frameCount == 0 || m_labels.empty(); }
@@ -115,18 +130,18 @@ public:
   [[nodiscard]] double* positionData() { return m_positions.data(); }
   [[nodiscard]] const double* positionData() const { return m_positions.data(); }
 
-  [[nodiscard]] SampleMask& valid() { return m_valid; }
-  [[nodiscard]] const SampleMask& valid() const { return m_valid; }
-  [[nodiscard]] bool isValid(Eigen::Index frame, Eigen::Index marker) const { return m_valid(frame, marker); }
+  [[nodiscard]] SampleMaskMap valid() { return {m_valid.data(), m_frameCount, markerCount()}; }
+  [[nodiscard]] ConstSampleMaskMap valid() const { return {m_valid.data(), m_frameCount, markerCount()}; }
+  [[nodiscard]] bool isValid(Eigen::Index frame, Eigen::Index marker) const { return valid()(frame, marker); }
   /// Residual of each sample in the take's units (0 for a filled or perfect sample; −1 when invalid).
-  [[nodiscard]] Eigen::ArrayXXd& residuals() { return m_residuals; }
-  [[nodiscard]] const Eigen::ArrayXXd& residuals() const { return m_residuals; }
+  [[nodiscard]] ResidualMap residuals() { return {m_residuals.data(), m_frameCount, markerCount()}; }
+  [[nodiscard]] ConstResidualMap residuals() const { return {m_residuals.data(), m_frameCount, markerCount()}; }
   /// C3D camera contribution bits (high byte of the residual word), 0 when unknown.
-  [[nodiscard]] SampleBytes& cameraMasks() { return m_cameraMasks; }
-  [[nodiscard]] const SampleBytes& cameraMasks() const { return m_cameraMasks; }
+  [[nodiscard]] SampleBytesMap cameraMasks() { return {m_cameraMasks.data(), m_frameCount, markerCount()}; }
+  [[nodiscard]] ConstSampleBytesMap cameraMasks() const { return {m_cameraMasks.data(), m_frameCount, markerCount()}; }
   [[nodiscard]] SampleState state(Eigen::Index frame, Eigen::Index marker) const;
   void setState(Eigen::Index frame, Eigen::Index marker, SampleState state);
-  [[nodiscard]] const SampleBytes& states() const { return m_states; }
+  [[nodiscard]] ConstSampleBytesMap states() const { return {m_states.data(), m_frameCount, markerCount()}; }
 
   /// Appends a marker (label made unique) with every sample invalid; returns its index.
   Eigen::Index addMarker(std::string label);
@@ -149,11 +164,12 @@ private:
   double m_frameRate = 100.0;
   std::int64_t m_firstFrame = 1;
   LengthUnit m_units = LengthUnit::Millimetre;
-  Eigen::VectorXd m_positions;  // #markers blocks of #frames × 3, column-major
-  SampleMask m_valid;
-  Eigen::ArrayXXd m_residuals;
-  SampleBytes m_cameraMasks;
-  SampleBytes m_states;
+  // Per-sample storage; see SampleBuffer for why it is not Eigen's own.
+  SampleBuffer<double> m_positions;  // #markers blocks of #frames × 3, column-major
+  SampleBuffer<bool> m_valid;        // the rest: #frames × #markers, column-major
+  SampleBuffer<double> m_residuals;
+  SampleBuffer<std::uint8_t> m_cameraMasks;
+  SampleBuffer<std::uint8_t> m_states;
   AnalogData m_analog;
   std::vector<Event> m_events;
   C3dParameterTree m_parameters;
