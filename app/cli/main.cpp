@@ -15,7 +15,8 @@ constexpr const char* kUsage =
     "usage: mocap <command> [arguments]\n"
     "commands:\n"
     "  info FILE [--json]   markers, frames, rate, units, analog channels, valid fraction and every gap\n"
-    "  convert IN OUT       convert between .c3d .trc (read/write) and .csv .bvh (write)\n";
+    "  convert IN OUT [--units mm|cm|m]\n"
+    "                       convert between .c3d .trc (read/write) and .csv .bvh (write)\n";
 
 } // namespace
 

@@ -113,6 +113,19 @@ TEST(Cli, ConvertWritesEveryFormatAndTrcReadsBack)
   EXPECT_EQ(readFileBytes(dir.file("take.csv")).rfind("Frame,Time,root-1:X,root-1:Y,root-1:Z,", 0), 0u);
 }
 
+TEST(Cli, ConvertRescalesUnitsOnRequest)
+{
+  test::TempDir dir;
+  const CommandResult run =
+      runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("metres.c3d")) + " --units m", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const CommandResult info = runMocap("info " + q(dir.file("metres.c3d")) + " --json", dir);
+  EXPECT_NE(info.out.find("\"units\": \"m\""), std::string::npos) << info.out.substr(0, 400);
+  EXPECT_EQ(runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("x.c3d")) + " --units furlong", dir).exitCode, 2);
+  EXPECT_EQ(runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("x.c3d")) + " --units", dir).exitCode, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
+}
+
 TEST(Cli, FailedConvertLeavesNoOutputFile)
 {
   test::TempDir dir;
