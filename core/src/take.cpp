@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace mocap {
@@ -20,6 +21,8 @@ std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels)
 {
   std::vector<std::string> warnings;
   std::unordered_set<std::string> seen;
+  // Next suffix to try per label, so a label repeated n times costs O(n), not O(n²).
+  std::unordered_map<std::string, int> nextSuffix;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     std::string& label = labels[i];
     if (label.empty()) {
@@ -28,12 +31,14 @@ std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels)
     }
     if (seen.insert(label).second)
       continue;
+    int& suffix = nextSuffix.try_emplace(label, 2).first->second;
     std::string candidate;
-    for (int suffix = 2;; ++suffix) {
+    for (;; ++suffix) {
       candidate = label + "_" + std::to_string(suffix);
       if (seen.count(candidate) == 0)
         break;
     }
+    ++suffix;
     warnings.push_back("duplicate marker label '" + label + "' renamed to '" + candidate + "'");
     label = candidate;
     seen.insert(label);

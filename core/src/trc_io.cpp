@@ -10,8 +10,6 @@
 #include <limits>
 #include <optional>
 #include <system_error>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace mocap {
 
@@ -164,37 +162,6 @@ std::string excerpt(std::string_view text)
   return text.size() <= kMax ? std::string(text) : std::string(text.substr(0, kMax)) + "...";
 }
 
-// Same renaming as makeLabelsUnique, which probes "_2", "_3"... afresh for every copy and so is
-// quadratic in the copies of one label; a hostile file can repeat a label thousands of times.
-// Remembering the next suffix to try per label gives identical names. O(#labels) expected.
-std::vector<std::string> uniqueLabels(std::vector<std::string>& labels)
-{
-  std::vector<std::string> warnings;
-  std::unordered_set<std::string> seen;
-  std::unordered_map<std::string, int> nextSuffix;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    std::string& label = labels[i];
-    if (label.empty()) {
-      label = "M" + std::to_string(i + 1);
-      warnings.push_back("marker " + std::to_string(i + 1) + " has no label; named " + label);
-    }
-    if (seen.insert(label).second)
-      continue;
-    int& suffix = nextSuffix.try_emplace(label, 2).first->second;
-    std::string candidate;
-    for (;; ++suffix) {
-      candidate = label + "_" + std::to_string(suffix);
-      if (seen.count(candidate) == 0)
-        break;
-    }
-    ++suffix;
-    warnings.push_back("duplicate marker label '" + label + "' renamed to '" + candidate + "'");
-    label = candidate;
-    seen.insert(label);
-  }
-  return warnings;
-}
-
 class TrcParser
 {
 public:
@@ -248,7 +215,7 @@ public:
       warn("NumFrames is " + std::to_string(*m_numFrames) + " but the file has " + std::to_string(rows) +
            " data rows; read " + std::to_string(rows) + " frames");
 
-    for (std::string& warning : uniqueLabels(labels))
+    for (std::string& warning : makeLabelsUnique(labels))
       warn(std::move(warning));
     Take take(std::move(labels), static_cast<Eigen::Index>(rows), m_rate);
     take.setUnits(m_units);

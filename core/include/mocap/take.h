@@ -176,7 +176,7 @@ private:
 };
 
 /// Makes `labels` unique: an empty label becomes "M<index+1>", a repeated one gets "_2", "_3"...
-/// Returns one warning per label it changed.
+/// Returns one warning per label it changed. O(#labels) expected.
 std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels);
 
 } // namespace mocap
