@@ -1,6 +1,7 @@
 #include "mocap/bvh_writer.h"
 
 #include "mocap/error.h"
+#include "mocap/number_text.h"
 #include "mocap/file_io.h"
 
 #include <charconv>
@@ -12,13 +13,6 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
-// Shortest text that reads back to the same double. O(1).
-void appendNumber(std::string& out, double value)
-{
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, static_cast<std::size_t>(result.ptr - buffer));
-}
 
 // Three space-separated numbers. O(1).
 void appendVector(std::string& out, const Eigen::Vector3d& v)

@@ -1,8 +1,8 @@
 #include "mocap/json_writer.h"
 
 #include "mocap/error.h"
+#include "mocap/number_text.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -129,9 +129,7 @@ JsonWriter& JsonWriter::value(double number)
   if (!std::isfinite(number))
     return null();
   beforeValue();
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, number);
-  m_out.append(buffer, result.ptr);
+  appendNumber(m_out, number);
   return *this;
 }
 

@@ -1,6 +1,8 @@
 #include "mocap/trc_io.h"
 
 #include "mocap/error.h"
+#include "mocap/number_text.h"
+#include "mocap/sample_rows.h"
 #include "mocap/file_io.h"
 #include "mocap/text.h"
 
@@ -423,13 +425,6 @@ private:
   bool m_warnedFrameNumbers = false;
 };
 
-// Shortest text that reads back to the same double. O(1).
-void appendNumber(std::string& out, double value)
-{
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, static_cast<std::size_t>(result.ptr - buffer));
-}
 
 // Tabs and line breaks would split the cell; blanks around it would be trimmed on reading. O(n).
 std::string cellText(std::string_view text)
@@ -457,12 +452,7 @@ std::string formatTrc(const Take& take, std::string_view fileName)
 {
   const Eigen::Index frames = take.frameCount();
   const Eigen::Index markers = take.markerCount();
-  if (take.firstFrame() > std::numeric_limits<std::int64_t>::max() - frames)
-    throw InvalidArgument("first frame " + std::to_string(take.firstFrame()) +
-                          " overflows the frame numbers");
-
   std::string out;
-  out.reserve(static_cast<std::size_t>(256 + 16 * markers + frames * (24 + 30 * markers)));
   out += "PathFileType\t4\t(X/Y/Z)\t";
   out += cellText(fileName);
   out += "\nDataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\t"
@@ -486,23 +476,7 @@ std::string formatTrc(const Take& take, std::string_view fileName)
   }
   out += "\n\n";
 
-  for (Eigen::Index f = 0; f < frames; ++f) {
-    out += std::to_string(take.firstFrame() + f);
-    out += '\t';
-    appendNumber(out, take.timeOf(f));
-    for (Eigen::Index m = 0; m < markers; ++m) {
-      const Eigen::Vector3d p = take.position(f, m);
-      if (!take.isValid(f, m) || !p.allFinite()) {
-        out += "\t\t\t";
-        continue;
-      }
-      for (Eigen::Index axis = 0; axis < 3; ++axis) {
-        out += '\t';
-        appendNumber(out, p[axis]);
-      }
-    }
-    out += '\n';
-  }
+  appendSampleRows(out, take, '\t');
   return out;
 }
 
