@@ -1,0 +1,73 @@
+#include "mocap/sample_patch.h"
+
+#include "mocap/error.h"
+
+#include <algorithm>
+
+namespace mocap {
+
+namespace {
+void checkPatch(const Take& take, const SamplePatch& patch)
+{
+  const auto n = static_cast<Eigen::Index>(patch.frames.size());
+  if (patch.positions.rows() != n || patch.valid.size() != n || patch.residuals.size() != n ||
+      static_cast<Eigen::Index>(patch.states.size()) != n)
+    throw InvalidArgument("sample patch arrays disagree in size");
+  if (patch.marker < 0 || patch.marker >= take.markerCount())
+    throw InvalidArgument("sample patch marker " + std::to_string(patch.marker) + " out of range");
+  for (std::size_t i = 0; i < patch.frames.size(); ++i) {
+    const Eigen::Index f = patch.frames[i];
+    if (f < 0 || f >= take.frameCount() || (i > 0 && f <= patch.frames[i - 1]))
+      throw InvalidArgument("sample patch frames must be ascending indices inside the take");
+  }
+}
+} // namespace
+
+SamplePatch makePatch(Eigen::Index marker, std::vector<Eigen::Index> frames,
+                      Eigen::Matrix<double, Eigen::Dynamic, 3> positions, SampleState state)
+{
+  const auto n = static_cast<Eigen::Index>(frames.size());
+  if (positions.rows() != n)
+    throw InvalidArgument("a patch needs one position per frame");
+  SamplePatch patch;
+  patch.marker = marker;
+  patch.frames = std::move(frames);
+  patch.positions = std::move(positions);
+  patch.valid = Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(n, true);
+  patch.residuals = Eigen::ArrayXd::Zero(n);
+  patch.states.assign(static_cast<std::size_t>(n), state);
+  return patch;
+}
+
+SamplePatch swapSamples(Take& take, SamplePatch patch)
+{
+  checkPatch(take, patch);
+  auto trajectory = take.trajectory(patch.marker);
+  auto valid = take.valid();
+  auto residuals = take.residuals();
+  for (std::size_t i = 0; i < patch.frames.size(); ++i) {
+    const Eigen::Index f = patch.frames[i];
+    const auto row = static_cast<Eigen::Index>(i);
+    const Eigen::RowVector3d old = trajectory.row(f);
+    trajectory.row(f) = patch.positions.row(row);
+    patch.positions.row(row) = old;
+    std::swap(valid(f, patch.marker), patch.valid(row));
+    std::swap(residuals(f, patch.marker), patch.residuals(row));
+    const SampleState oldState = take.state(f, patch.marker);
+    take.setState(f, patch.marker, patch.states[i]);
+    patch.states[i] = oldState;
+  }
+  return patch;
+}
+
+std::vector<SamplePatch> applyPatches(Take& take, std::vector<SamplePatch> patches)
+{
+  std::vector<SamplePatch> undo;
+  undo.reserve(patches.size());
+  for (auto& patch : patches)
+    undo.push_back(swapSamples(take, std::move(patch)));
+  std::reverse(undo.begin(), undo.end());
+  return undo;
+}
+
+} // namespace mocap

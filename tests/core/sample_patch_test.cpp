@@ -1,0 +1,62 @@
+#include "test_support.h"
+
+#include "mocap/c3d_reader.h"
+#include "mocap/error.h"
+#include "mocap/sample_patch.h"
+
+#include <gtest/gtest.h>
+
+namespace mocap {
+namespace {
+
+TEST(SamplePatch, SwapThenSwapBackRestoresTheTakeBitForBit)
+{
+  Take take = readC3d(test::sampleTake());
+  const Take original = take;
+  const auto marker = *take.markerIndex("section3-1");
+  std::vector<Eigen::Index> frames;
+  for (Eigen::Index f = 880; f < 925; ++f)
+    frames.push_back(f);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> positions(45, 3);
+  positions.setConstant(1.5);
+  SamplePatch undo = swapSamples(take, makePatch(marker, frames, positions, SampleState::Filled));
+  EXPECT_TRUE(take.valid().col(marker).segment(880, 45).all());
+  EXPECT_EQ(take.state(900, marker), SampleState::Filled);
+  EXPECT_EQ(take.position(900, marker), Eigen::Vector3d::Constant(1.5));
+  const SamplePatch redo = swapSamples(take, std::move(undo));
+  EXPECT_TRUE((take.valid() == original.valid()).all());
+  EXPECT_TRUE((take.residuals() == original.residuals()).all());
+  EXPECT_TRUE((take.states() == original.states()).all());
+  for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+    ASSERT_EQ(take.position(f, marker), original.position(f, marker));
+  EXPECT_EQ(redo.positions(20, 0), 1.5);
+}
+
+TEST(SamplePatch, ApplyPatchesReturnsUndoInReverseOrder)
+{
+  Take take({"a", "b"}, 4, 100.0);
+  std::vector<SamplePatch> patches;
+  patches.push_back(makePatch(0, {1}, Eigen::RowVector3d(1, 1, 1), SampleState::Edited));
+  patches.push_back(makePatch(0, {1}, Eigen::RowVector3d(2, 2, 2), SampleState::Smoothed));
+  auto undo = applyPatches(take, std::move(patches));
+  EXPECT_EQ(take.position(1, 0), Eigen::Vector3d(2, 2, 2));
+  applyPatches(take, std::move(undo));
+  EXPECT_FALSE(take.isValid(1, 0));
+  EXPECT_EQ(take.position(1, 0), Eigen::Vector3d::Zero());
+  EXPECT_EQ(take.state(1, 0), SampleState::Original);
+}
+
+TEST(SamplePatch, MisfitPatchesAreRejectedWithoutChanges)
+{
+  Take take({"a"}, 4, 100.0);
+  EXPECT_THROW(swapSamples(take, makePatch(1, {0}, Eigen::RowVector3d(1, 1, 1), SampleState::Edited)), InvalidArgument);
+  EXPECT_THROW(swapSamples(take, makePatch(0, {4}, Eigen::RowVector3d(1, 1, 1), SampleState::Edited)), InvalidArgument);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> two(2, 3);
+  two.setOnes();
+  EXPECT_THROW(swapSamples(take, makePatch(0, {2, 1}, two, SampleState::Edited)), InvalidArgument);
+  EXPECT_THROW((void)makePatch(0, {1}, two, SampleState::Edited), InvalidArgument);
+  EXPECT_FALSE(take.valid().any());
+}
+
+} // namespace
+} // namespace mocap
