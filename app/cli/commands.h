@@ -12,4 +12,19 @@ int runInfo(const std::vector<std::string>& args);
 /// optionally rescaling positions to other units.
 int runConvert(const std::vector<std::string>& args);
 
+/// `mocap clean IN -o OUT ...`: stabilise, spikes, fill, smooth; see issue 3 for the flags.
+int runClean(const std::vector<std::string>& args);
+
+/// `mocap eval-fill TAKE ...`: gap-filling methods against hidden truth (Gløersen & Federolf protocol).
+int runEvalFill(const std::vector<std::string>& args);
+
+/// `mocap eval-spikes TAKE ...`: recall and false alarms of the spike detectors.
+int runEvalSpikes(const std::vector<std::string>& args);
+
+/// `mocap eval-smooth TAKE ...`: smoothing methods against clean data with added noise.
+int runEvalSmooth(const std::vector<std::string>& args);
+
+/// `mocap smooth-table TAKE ...`: the paper's Table 1 (smoothness per B-spline order).
+int runSmoothTable(const std::vector<std::string>& args);
+
 } // namespace mocap::cli
