@@ -2,13 +2,32 @@
 
 #include "cli_error.h"
 
+#include "mocap/number_text.h"
+
+#include <cmath>
+
 namespace mocap::cli {
+
+namespace {
+std::string formatNumber(double value)
+{
+  std::string text;
+  appendNumber(text, value);
+  return text;
+}
+} // namespace
 
 Arguments::Arguments(const std::vector<std::string>& args, const std::set<std::string>& knownFlags,
                      const std::set<std::string>& knownOptions)
 {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
+    if (arg.size() == 2 && arg[0] == '-' && knownOptions.count(arg) != 0) {
+      if (i + 1 >= args.size())
+        throw UsageError("option " + arg + " needs a value");
+      m_values[arg] = args[++i];
+      continue;
+    }
     if (arg.size() <= 2 || arg.compare(0, 2, "--") != 0) {
       m_positionals.push_back(arg);
       continue;
@@ -36,6 +55,61 @@ std::optional<std::string> Arguments::value(const std::string& option) const
   if (it == m_values.end())
     return std::nullopt;
   return it->second;
+}
+
+std::optional<double> Arguments::number(const std::string& option, double min, double max) const
+{
+  const auto text = value(option);
+  if (!text)
+    return std::nullopt;
+  std::size_t used = 0;
+  double parsed = 0.0;
+  try {
+    parsed = std::stod(*text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text->size() || !std::isfinite(parsed))
+    throw UsageError(option + " needs a number, not '" + *text + "'");
+  if (parsed < min || parsed > max)
+    throw UsageError(option + " must be between " + formatNumber(min) + " and " + formatNumber(max) + ", not " + *text);
+  return parsed;
+}
+
+std::optional<long long> Arguments::integer(const std::string& option, long long min, long long max) const
+{
+  const auto text = value(option);
+  if (!text)
+    return std::nullopt;
+  std::size_t used = 0;
+  long long parsed = 0;
+  try {
+    parsed = std::stoll(*text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text->size())
+    throw UsageError(option + " needs a whole number, not '" + *text + "'");
+  if (parsed < min || parsed > max)
+    throw UsageError(option + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", not " +
+                     *text);
+  return parsed;
+}
+
+std::vector<std::string> splitList(const std::string& text, const std::string& option)
+{
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string field = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (field.empty())
+      throw UsageError(option + " has an empty entry in '" + text + "'");
+    fields.push_back(field);
+    if (comma == std::string::npos)
+      return fields;
+    start = comma + 1;
+  }
 }
 
 void Arguments::expectPositionals(std::size_t count, const std::string& what) const

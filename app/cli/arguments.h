@@ -9,7 +9,7 @@
 namespace mocap::cli {
 
 /// One command's arguments split into positionals, `--flag` switches and `--option VALUE`
-/// (or `--option=VALUE`) pairs. Unknown flags, a missing value and a wrong number of
+/// (or `--option=VALUE`) pairs; a known option may also be a short `-o VALUE`. Unknown flags, a missing value and a wrong number of
 /// positionals raise UsageError.
 class Arguments
 {
@@ -19,6 +19,10 @@ public:
 
   [[nodiscard]] bool has(const std::string& flag) const { return m_flags.count(flag) != 0; }
   [[nodiscard]] std::optional<std::string> value(const std::string& option) const;
+  /// The option's value as a number in [min, max]; UsageError when it is not one.
+  [[nodiscard]] std::optional<double> number(const std::string& option, double min, double max) const;
+  /// The option's value as an integer in [min, max]; UsageError when it is not one.
+  [[nodiscard]] std::optional<long long> integer(const std::string& option, long long min, long long max) const;
   [[nodiscard]] const std::vector<std::string>& positionals() const { return m_positionals; }
   /// Throws UsageError unless there are exactly `count` positionals, naming them in `what`.
   void expectPositionals(std::size_t count, const std::string& what) const;
@@ -28,5 +32,8 @@ private:
   std::set<std::string> m_flags;
   std::map<std::string, std::string> m_values;
 };
+
+/// Splits "a,b,c" into its fields; UsageError when a field is empty.
+[[nodiscard]] std::vector<std::string> splitList(const std::string& text, const std::string& option);
 
 } // namespace mocap::cli
