@@ -1,0 +1,79 @@
+// mocap-studio: the desktop editor. Parses the command line and wires the main window; all
+// views, models and commands live in mocap::widgets.
+#include "main_window.h"
+
+#include "document/take_document.h"
+#include "views/marker_view_3d.h"
+#include "views/vtk_viewport.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <iostream>
+
+namespace {
+
+/// Renders the window at 1280×800 once the view has painted, writes `path` and quits.
+void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
+{
+  window.resize(1280, 800);
+  QTimer::singleShot(500, &window, [&window, path] {
+    const QImage image = window.grab().toImage();
+    if (image.isNull() || !image.save(path)) {
+      std::cerr << "mocap-studio: cannot write screenshot " << path.toStdString() << '\n';
+      QApplication::exit(1);
+      return;
+    }
+    QApplication::exit(0);
+  });
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  QSurfaceFormat::setDefaultFormat(mocap::ui::VtkViewport::defaultFormat());  // before QApplication
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName(QStringLiteral("MocapStudio"));
+  QApplication::setApplicationName(QStringLiteral("Mocap Studio"));
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(QStringLiteral("Mocap Studio: clean and use facial motion capture."));
+  parser.addHelpOption();
+  parser.addPositionalArgument(QStringLiteral("file"), QStringLiteral("A take to open (.c3d, .trc)."));
+  const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                      QStringLiteral("Render the window at 1280x800 to OUT.png and exit."),
+                                      QStringLiteral("OUT.png"));
+  const QCommandLineOption frame(QStringLiteral("frame"), QStringLiteral("Show frame N (file numbering)."),
+                                 QStringLiteral("N"));
+  const QCommandLineOption select(QStringLiteral("select"), QStringLiteral("Select markers LABEL,..."),
+                                  QStringLiteral("LABELS"));
+  parser.addOptions({screenshot, frame, select});
+  parser.process(app);
+
+  mocap::studio::MainWindow window;
+  if (!parser.positionalArguments().isEmpty()) {
+    const QString error = window.openFile(parser.positionalArguments().front(), parser.isSet(screenshot));
+    if (!error.isEmpty() && parser.isSet(screenshot)) {
+      std::cerr << error.toStdString() << '\n';
+      return 1;
+    }
+  }
+  if (parser.isSet(select))
+    window.selectLabels(parser.value(select).split(QLatin1Char(','), Qt::SkipEmptyParts));
+  if (parser.isSet(frame)) {
+    bool ok = false;
+    const qlonglong number = parser.value(frame).toLongLong(&ok);
+    if (!ok) {
+      std::cerr << "mocap-studio: --frame needs a frame number\n";
+      return 2;
+    }
+    window.document().setCurrentFrame(static_cast<Eigen::Index>(number - window.document().take().firstFrame()));
+  }
+  if (parser.isSet(screenshot))
+    scheduleScreenshot(window, parser.value(screenshot));
+  window.show();
+  return QApplication::exec();
+}

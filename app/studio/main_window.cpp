@@ -1,0 +1,351 @@
+#include "main_window.h"
+
+#include "document/take_document.h"
+#include "models/marker_table_model.h"
+#include "views/curve_view.h"
+#include "views/marker_view_3d.h"
+#include "views/timeline_widget.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QSortFilterProxyModel>
+#include <QStatusBar>
+#include <QTableView>
+#include <QToolBar>
+#include <QUndoStack>
+
+namespace mocap::studio {
+
+namespace {
+constexpr int kMaxRecent = 8;
+const char* const kOpenFilter = QT_TRANSLATE_NOOP("MainWindow", "Motion capture (*.c3d *.trc);;All files (*)");
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui::TakeDocument(this))
+{
+  setAcceptDrops(true);
+  m_view3d = new ui::MarkerView3d(*m_document, this);
+  setCentralWidget(m_view3d);
+  m_timeline = new ui::TimelineWidget(*m_document, this);
+  auto* timelineBar = new QToolBar(tr("Timeline"), this);
+  timelineBar->setObjectName(QStringLiteral("timelineBar"));
+  timelineBar->addWidget(m_timeline);
+  timelineBar->setMovable(false);
+  addToolBar(Qt::BottomToolBarArea, timelineBar);
+  createDocks();
+  createActions();
+  m_status = new QLabel(this);
+  statusBar()->addPermanentWidget(m_status);
+
+  connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(m_document, &ui::TakeDocument::filePathChanged, this, &MainWindow::updateTitle);
+  connect(m_document, &ui::TakeDocument::selectionChanged, this, &MainWindow::syncTableSelection);
+  connect(m_document, &ui::TakeDocument::currentFrameChanged, this, [this](Eigen::Index frame) {
+    const Take& take = m_document->take();
+    m_status->setText(tr("Frame %1 of %2 — %3 markers selected")
+                          .arg(static_cast<qlonglong>(take.firstFrame() + frame))
+                          .arg(static_cast<qlonglong>(take.frameCount()))
+                          .arg(m_document->selection().size()));
+  });
+  readSettings();
+  updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createDocks()
+{
+  m_tableModel = new ui::MarkerTableModel(*m_document, this);
+  m_proxy = new QSortFilterProxyModel(this);
+  m_proxy->setSourceModel(m_tableModel);
+  m_proxy->setSortRole(Qt::UserRole);
+  m_table = new QTableView(this);
+  m_table->setModel(m_proxy);
+  m_table->setSortingEnabled(true);
+  m_table->sortByColumn(-1, Qt::AscendingOrder);  // file order until the user sorts
+  m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+  m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  m_table->verticalHeader()->hide();
+  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_table->horizontalHeader()->setStretchLastSection(true);
+  connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+    if (m_syncingSelection)
+      return;
+    std::vector<Eigen::Index> markers;
+    for (const QModelIndex& row : m_table->selectionModel()->selectedRows())
+      markers.push_back(m_proxy->mapToSource(row).row());
+    m_document->setSelection(std::move(markers));
+  });
+  auto* tableDock = new QDockWidget(tr("Markers"), this);
+  tableDock->setObjectName(QStringLiteral("markersDock"));
+  tableDock->setWidget(m_table);
+  addDockWidget(Qt::LeftDockWidgetArea, tableDock);
+
+  m_curves = new ui::CurveView(*m_document, this);
+  auto* curveDock = new QDockWidget(tr("Curves"), this);
+  curveDock->setObjectName(QStringLiteral("curvesDock"));
+  curveDock->setWidget(m_curves);
+  addDockWidget(Qt::BottomDockWidgetArea, curveDock);
+}
+
+void MainWindow::createActions()
+{
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
+  m_recentMenu = file->addMenu(tr("Open &Recent"));
+  file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+  file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+  file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcut(QKeySequence::Redo);
+  edit->addAction(undo);
+  edit->addAction(redo);
+
+  m_viewMenu = menuBar()->addMenu(tr("&View"));
+  m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);
+  auto* upGroup = new QActionGroup(this);
+  QAction* yUp = m_viewMenu->addAction(tr("Y Axis Up"));
+  QAction* zUp = m_viewMenu->addAction(tr("Z Axis Up"));
+  for (QAction* a : {yUp, zUp}) {
+    a->setCheckable(true);
+    upGroup->addAction(a);
+  }
+  zUp->setChecked(true);
+  connect(yUp, &QAction::triggered, this, [this] { m_view3d->setUpAxis(1); });
+  connect(zUp, &QAction::triggered, this, [this] { m_view3d->setUpAxis(2); });
+  QAction* trails = m_viewMenu->addAction(tr("&Trails"));
+  trails->setCheckable(true);
+  trails->setChecked(true);
+  connect(trails, &QAction::toggled, this, [this](bool on) { m_view3d->setTrailFrames(on ? 50 : 0); });
+
+  // Transport keys work wherever the focus is (window shortcuts).
+  auto addShortcut = [this](const QKeySequence& keys, auto slot) {
+    auto* action = new QAction(this);
+    action->setShortcut(keys);
+    action->setShortcutContext(Qt::WindowShortcut);
+    connect(action, &QAction::triggered, this, slot);
+    addAction(action);
+  };
+  addShortcut(QKeySequence(Qt::Key_Space), [this] { m_timeline->togglePlaying(); });
+  addShortcut(QKeySequence(Qt::Key_Right), [this] { m_timeline->step(1); });
+  addShortcut(QKeySequence(Qt::Key_Left), [this] { m_timeline->step(-1); });
+  addShortcut(QKeySequence(Qt::SHIFT | Qt::Key_Right), [this] { m_timeline->step(10); });
+  addShortcut(QKeySequence(Qt::SHIFT | Qt::Key_Left), [this] { m_timeline->step(-10); });
+  addShortcut(QKeySequence(Qt::Key_Home), [this] { m_document->setCurrentFrame(0); });
+  addShortcut(QKeySequence(Qt::Key_End), [this] { m_document->setCurrentFrame(m_document->take().frameCount() - 1); });
+  addShortcut(QKeySequence(Qt::Key_PageDown), [this] { m_timeline->jumpToGap(1); });
+  addShortcut(QKeySequence(Qt::Key_PageUp), [this] { m_timeline->jumpToGap(-1); });
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&About Mocap Studio"), this, [this] {
+    QMessageBox::about(this, tr("About Mocap Studio"),
+                       tr("<b>Mocap Studio</b><p>Cleaning and using facial optical motion capture.</p>"
+                          "<p>Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next "
+                          "gap, Ctrl+R reset camera.</p>"));
+  });
+  updateRecentMenu();
+}
+
+QString MainWindow::openFile(const QString& path, bool quiet)
+{
+  const QString error = m_document->open(path);
+  if (!error.isEmpty()) {
+    if (!quiet)
+      QMessageBox::critical(this, tr("Cannot open file"), error);
+    return error;
+  }
+  m_confirmedOverwrite = false;
+  addRecent(path);
+  QSettings().setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
+  if (!m_document->loadWarnings().empty())
+    statusBar()->showMessage(tr("%n warning(s) while reading; the first: %1", nullptr,
+                                static_cast<int>(m_document->loadWarnings().size()))
+                                 .arg(QString::fromStdString(m_document->loadWarnings().front())),
+                             10000);
+  return {};
+}
+
+void MainWindow::openDialog()
+{
+  if (!confirmDiscard())
+    return;
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open take"), QSettings().value("lastFolder").toString(),
+                                                    tr(kOpenFilter));
+  if (!path.isEmpty())
+    openFile(path);
+}
+
+bool MainWindow::save()
+{
+  const QString path = m_document->filePath();
+  if (path.isEmpty())
+    return saveAs();
+  if (!m_confirmedOverwrite) {
+    const auto answer = QMessageBox::question(
+        this, tr("Overwrite the original?"),
+        tr("Save over %1? The original capture is replaced by the edited take.").arg(QFileInfo(path).fileName()),
+        QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer != QMessageBox::Save)
+      return false;
+    m_confirmedOverwrite = true;
+  }
+  const QString error = m_document->save(path);
+  if (!error.isEmpty())
+    QMessageBox::critical(this, tr("Cannot save"), error);
+  return error.isEmpty();
+}
+
+bool MainWindow::saveAs()
+{
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save take as"), m_document->filePath(),
+                                                    tr("C3D (*.c3d);;TRC (*.trc)"));
+  if (path.isEmpty())
+    return false;
+  const QString error = m_document->save(path);
+  if (!error.isEmpty()) {
+    QMessageBox::critical(this, tr("Cannot save"), error);
+    return false;
+  }
+  m_confirmedOverwrite = true;  // the user chose this file
+  addRecent(path);
+  return true;
+}
+
+void MainWindow::exportDialog()
+{
+  const QString path = QFileDialog::getSaveFileName(this, tr("Export"), QFileInfo(m_document->filePath()).absolutePath(),
+                                                    tr("C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)"));
+  if (path.isEmpty())
+    return;
+  const QString error = m_document->save(path, false);
+  if (!error.isEmpty())
+    QMessageBox::critical(this, tr("Cannot export"), error);
+  else
+    statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+}
+
+bool MainWindow::confirmDiscard()
+{
+  if (!m_document->isModified())
+    return true;
+  const auto answer = QMessageBox::warning(this, tr("Unsaved edits"), tr("The take has unsaved edits. Save them?"),
+                                           QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (answer == QMessageBox::Save)
+    return save();
+  return answer == QMessageBox::Discard;
+}
+
+void MainWindow::updateTitle()
+{
+  const QString name =
+      m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
+  setWindowTitle(tr("%1[*] — Mocap Studio").arg(name));
+  setWindowModified(m_document->isModified());
+}
+
+void MainWindow::addRecent(const QString& path)
+{
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  m_recent.removeAll(absolute);
+  m_recent.prepend(absolute);
+  while (m_recent.size() > kMaxRecent)
+    m_recent.removeLast();
+  QSettings().setValue(QStringLiteral("recentFiles"), m_recent);
+  updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu()
+{
+  m_recentMenu->clear();
+  for (const QString& path : m_recent)
+    m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
+      if (confirmDiscard())
+        openFile(path);
+    })->setToolTip(path);
+  m_recentMenu->setEnabled(!m_recent.isEmpty());
+}
+
+int MainWindow::selectLabels(const QStringList& labels)
+{
+  std::vector<Eigen::Index> markers;
+  for (const QString& label : labels)
+    if (const auto index = m_document->take().markerIndex(label.toStdString()))
+      markers.push_back(*index);
+  const int found = static_cast<int>(markers.size());
+  m_document->setSelection(std::move(markers));
+  return found;
+}
+
+void MainWindow::syncTableSelection()
+{
+  m_syncingSelection = true;
+  QItemSelection selection;
+  for (Eigen::Index m : m_document->selection()) {
+    const QModelIndex source = m_tableModel->index(static_cast<int>(m), 0);
+    const QModelIndex row = m_proxy->mapFromSource(source);
+    selection.select(row, row.siblingAtColumn(ui::MarkerTableModel::ColumnCount - 1));
+  }
+  m_table->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+  if (!m_document->selection().empty())
+    m_table->scrollTo(m_proxy->mapFromSource(m_tableModel->index(static_cast<int>(m_document->selection().front()), 0)));
+  m_syncingSelection = false;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+  if (!confirmDiscard()) {
+    event->ignore();
+    return;
+  }
+  writeSettings();
+  event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+  if (event->mimeData()->hasUrls())
+    event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+  const auto urls = event->mimeData()->urls();
+  if (!urls.isEmpty() && urls.front().isLocalFile() && confirmDiscard())
+    openFile(urls.front().toLocalFile());
+}
+
+void MainWindow::readSettings()
+{
+  QSettings settings;
+  m_recent = settings.value(QStringLiteral("recentFiles")).toStringList();
+  restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
+  restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+  updateRecentMenu();
+}
+
+void MainWindow::writeSettings() const
+{
+  QSettings settings;
+  settings.setValue(QStringLiteral("geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("windowState"), saveState());
+}
+
+} // namespace mocap::studio

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <QMainWindow>
+#include <QStringList>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QSortFilterProxyModel;
+class QTableView;
+
+namespace mocap::ui {
+class CurveView;
+class MarkerTableModel;
+class MarkerView3d;
+class TakeDocument;
+class TimelineWidget;
+} // namespace mocap::ui
+
+namespace mocap::studio {
+
+/// The studio's main window: wires the document to the 3D view (centre), the marker table and
+/// curves (docks) and the timeline, plus menus, shortcuts, recent files and remembered layout.
+/// It only wires; every view, model and command lives in mocap::widgets.
+class MainWindow final : public QMainWindow
+{
+  Q_OBJECT
+
+public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  /// Opens `path`; on failure shows the error (unless `quiet`) and keeps the open take.
+  /// Returns the error message, empty on success.
+  QString openFile(const QString& path, bool quiet = false);
+  [[nodiscard]] ui::TakeDocument& document() { return *m_document; }
+  [[nodiscard]] ui::MarkerView3d* markerView() const { return m_view3d; }
+  [[nodiscard]] QTableView* markerTable() const { return m_table; }
+  [[nodiscard]] ui::CurveView* curveView() const { return m_curves; }
+  [[nodiscard]] ui::TimelineWidget* timeline() const { return m_timeline; }
+  /// Selects markers by label; unknown labels are ignored. Returns how many were found.
+  int selectLabels(const QStringList& labels);
+
+protected:
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+private:
+  void createActions();
+  void createDocks();
+  void openDialog();
+  bool save();
+  bool saveAs();
+  void exportDialog();
+  bool confirmDiscard();
+  void updateTitle();
+  void updateRecentMenu();
+  void addRecent(const QString& path);
+  void syncTableSelection();
+  void readSettings();
+  void writeSettings() const;
+
+  ui::TakeDocument* m_document = nullptr;
+  ui::MarkerView3d* m_view3d = nullptr;
+  ui::CurveView* m_curves = nullptr;
+  ui::TimelineWidget* m_timeline = nullptr;
+  ui::MarkerTableModel* m_tableModel = nullptr;
+  QSortFilterProxyModel* m_proxy = nullptr;
+  QTableView* m_table = nullptr;
+  QMenu* m_recentMenu = nullptr;
+  QMenu* m_viewMenu = nullptr;
+  QLabel* m_status = nullptr;
+  QStringList m_recent;
+  bool m_syncingSelection = false;
+  bool m_confirmedOverwrite = false;
+};
+
+} // namespace mocap::studio

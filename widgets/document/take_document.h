@@ -1,0 +1,68 @@
+#pragma once
+
+#include "mocap/sample_patch.h"
+#include "mocap/take.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <vector>
+
+namespace mocap::ui {
+
+/// The open take and everything the views share about it: file path, undo stack, current
+/// frame and marker selection. Only commands change the take's samples; they call
+/// applyPatches() here, which emits samplesChanged so every view redraws from the document.
+class TakeDocument final : public QObject
+{
+  Q_OBJECT
+
+public:
+  explicit TakeDocument(QObject* parent = nullptr);
+
+  [[nodiscard]] const Take& take() const { return m_take; }
+  [[nodiscard]] const QString& filePath() const { return m_filePath; }
+  [[nodiscard]] bool hasTake() const { return !m_take.empty(); }
+  [[nodiscard]] QUndoStack* undoStack() { return &m_undoStack; }
+  [[nodiscard]] bool isModified() const { return !m_undoStack.isClean(); }
+  /// Warnings from the last successful open (tolerated file quirks).
+  [[nodiscard]] const std::vector<std::string>& loadWarnings() const { return m_loadWarnings; }
+
+  /// Reads `path` into a fresh take and replaces the current one only when the read succeeds.
+  /// Returns an empty string on success, else the error message (the open take is untouched).
+  QString open(const QString& path);
+  /// Writes the take atomically (format by extension). Returns an empty string or the error.
+  /// `markClean` makes the written file the document's file (Save / Save As, not Export).
+  QString save(const QString& path, bool markClean = true);
+  /// Replaces the take (e.g. a new take built in code); clears the undo history.
+  void setTake(Take take, const QString& path = {});
+
+  [[nodiscard]] Eigen::Index currentFrame() const { return m_currentFrame; }
+  void setCurrentFrame(Eigen::Index frame);
+  [[nodiscard]] const std::vector<Eigen::Index>& selection() const { return m_selection; }
+  void setSelection(std::vector<Eigen::Index> markers);
+
+  /// Puts `patches` into the take and returns the undo patches (for commands only).
+  std::vector<SamplePatch> applyPatches(std::vector<SamplePatch> patches);
+
+signals:
+  /// A different take was loaded (or the take was replaced): views rebuild everything.
+  void takeReset();
+  /// Samples of these markers changed (an edit, its undo or redo).
+  void samplesChanged(const std::vector<Eigen::Index>& markers);
+  void currentFrameChanged(Eigen::Index frame);
+  void selectionChanged();
+  void modifiedChanged(bool modified);
+  void filePathChanged(const QString& path);
+
+private:
+  Take m_take;
+  QString m_filePath;
+  QUndoStack m_undoStack;
+  Eigen::Index m_currentFrame = 0;
+  std::vector<Eigen::Index> m_selection;
+  std::vector<std::string> m_loadWarnings;
+};
+
+} // namespace mocap::ui

@@ -1,0 +1,102 @@
+#include "models/marker_table_model.h"
+
+#include "document/take_document.h"
+
+#include "mocap/gaps.h"
+
+namespace mocap::ui {
+
+MarkerTableModel::MarkerTableModel(TakeDocument& document, QObject* parent)
+    : QAbstractTableModel(parent), m_document(document)
+{
+  connect(&document, &TakeDocument::takeReset, this, &MarkerTableModel::rebuild);
+  connect(&document, &TakeDocument::samplesChanged, this, &MarkerTableModel::refresh);
+  rebuild();
+}
+
+int MarkerTableModel::rowCount(const QModelIndex& parent) const
+{
+  return parent.isValid() ? 0 : static_cast<int>(m_stats.size());
+}
+
+int MarkerTableModel::columnCount(const QModelIndex& parent) const
+{
+  return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
+{
+  if (!index.isValid() || index.row() >= rowCount())
+    return {};
+  const auto marker = static_cast<Eigen::Index>(index.row());
+  const MarkerStats& stats = m_stats[static_cast<std::size_t>(index.row())];
+  if (role == Qt::DisplayRole) {
+    switch (index.column()) {
+    case LabelColumn: return QString::fromStdString(m_document.take().label(marker));
+    case ValidColumn: return QString::number(stats.validPercent, 'f', 1);
+    case GapsColumn: return stats.gaps;
+    case LongestGapColumn: return static_cast<qlonglong>(stats.longestGap);
+    default: return {};
+    }
+  }
+  if (role == Qt::UserRole) {  // raw values for sorting
+    switch (index.column()) {
+    case LabelColumn: return QString::fromStdString(m_document.take().label(marker));
+    case ValidColumn: return stats.validPercent;
+    case GapsColumn: return stats.gaps;
+    case LongestGapColumn: return static_cast<qlonglong>(stats.longestGap);
+    default: return {};
+    }
+  }
+  if (role == Qt::TextAlignmentRole && index.column() != LabelColumn)
+    return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+  return {};
+}
+
+QVariant MarkerTableModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+  if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+    return QAbstractTableModel::headerData(section, orientation, role);
+  switch (section) {
+  case LabelColumn: return tr("Marker");
+  case ValidColumn: return tr("Valid %");
+  case GapsColumn: return tr("Gaps");
+  case LongestGapColumn: return tr("Longest gap");
+  default: return {};
+  }
+}
+
+MarkerTableModel::MarkerStats MarkerTableModel::statsOf(Eigen::Index marker) const
+{
+  const Take& take = m_document.take();
+  MarkerStats stats;
+  const auto valid = take.valid().col(marker);
+  stats.validPercent = take.frameCount() ? 100.0 * static_cast<double>(valid.count()) / static_cast<double>(take.frameCount()) : 0.0;
+  for (const Gap& gap : findGaps(valid, marker)) {
+    ++stats.gaps;
+    stats.longestGap = std::max(stats.longestGap, gap.length);
+  }
+  return stats;
+}
+
+void MarkerTableModel::rebuild()
+{
+  beginResetModel();
+  m_stats.clear();
+  for (Eigen::Index m = 0; m < m_document.take().markerCount(); ++m)
+    m_stats.push_back(statsOf(m));
+  endResetModel();
+}
+
+void MarkerTableModel::refresh(const std::vector<Eigen::Index>& markers)
+{
+  for (Eigen::Index m : markers) {
+    if (m < 0 || m >= static_cast<Eigen::Index>(m_stats.size()))
+      continue;
+    m_stats[static_cast<std::size_t>(m)] = statsOf(m);
+    const int row = static_cast<int>(m);
+    emit dataChanged(index(row, ValidColumn), index(row, LongestGapColumn));
+  }
+}
+
+} // namespace mocap::ui

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <QAbstractTableModel>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace mocap::ui {
+
+class TakeDocument;
+
+/// One row per marker: label, % valid, gap count, longest gap. Sort through a
+/// QSortFilterProxyModel (Qt::UserRole gives the raw number of each cell). Statistics are
+/// recomputed only for the markers a change touches.
+class MarkerTableModel final : public QAbstractTableModel
+{
+  Q_OBJECT
+
+public:
+  enum Column
+  {
+    LabelColumn,
+    ValidColumn,
+    GapsColumn,
+    LongestGapColumn,
+    ColumnCount
+  };
+
+  explicit MarkerTableModel(TakeDocument& document, QObject* parent = nullptr);
+
+  [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
+  [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
+  [[nodiscard]] QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+  [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+private:
+  struct MarkerStats
+  {
+    double validPercent = 0.0;
+    int gaps = 0;
+    Eigen::Index longestGap = 0;
+  };
+  void rebuild();
+  void refresh(const std::vector<Eigen::Index>& markers);
+  [[nodiscard]] MarkerStats statsOf(Eigen::Index marker) const;
+
+  TakeDocument& m_document;
+  std::vector<MarkerStats> m_stats;
+};
+
+} // namespace mocap::ui

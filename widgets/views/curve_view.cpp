@@ -1,0 +1,211 @@
+#include "views/curve_view.h"
+
+#include "document/take_document.h"
+#include "views/sample_colors.h"
+
+#include "mocap/gaps.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mocap::ui {
+
+namespace {
+constexpr double kLeftMargin = 56.0;
+constexpr double kRightMargin = 8.0;
+constexpr double kStripGap = 6.0;
+const char* const kAxisNames[3] = {"X", "Y", "Z"};
+} // namespace
+
+CurveView::CurveView(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
+{
+  setFocusPolicy(Qt::StrongFocus);
+  setMinimumHeight(150);
+  setAutoFillBackground(false);
+  connect(&document, &TakeDocument::takeReset, this, &CurveView::showAll);
+  connect(&document, &TakeDocument::samplesChanged, this, qOverload<>(&CurveView::update));
+  connect(&document, &TakeDocument::selectionChanged, this, qOverload<>(&CurveView::update));
+  connect(&document, &TakeDocument::currentFrameChanged, this, qOverload<>(&CurveView::update));
+  showAll();
+}
+
+void CurveView::showAll()
+{
+  m_first = 0.0;
+  m_last = std::max<double>(static_cast<double>(m_document.take().frameCount()) - 1.0, 1.0);
+  update();
+}
+
+void CurveView::setVisibleRange(double first, double last)
+{
+  const double frames = std::max<double>(static_cast<double>(m_document.take().frameCount()) - 1.0, 1.0);
+  const double span = std::clamp(last - first, 10.0, std::max(frames, 10.0));
+  first = std::clamp(first, 0.0, std::max(frames - span, 0.0));
+  m_first = first;
+  m_last = first + span;
+  update();
+}
+
+QRectF CurveView::plotArea() const
+{
+  return QRectF(kLeftMargin, 4.0, std::max(width() - kLeftMargin - kRightMargin, 10.0), std::max(height() - 20.0, 10.0));
+}
+
+double CurveView::xOf(double frame) const
+{
+  const QRectF area = plotArea();
+  return area.left() + (frame - m_first) / (m_last - m_first) * area.width();
+}
+
+double CurveView::frameAt(double x) const
+{
+  const QRectF area = plotArea();
+  return m_first + (x - area.left()) / area.width() * (m_last - m_first);
+}
+
+void CurveView::paintEvent(QPaintEvent*)
+{
+  QPainter painter(this);
+  painter.fillRect(rect(), QColor(30, 32, 36));
+  const Take& take = m_document.take();
+  const QRectF area = plotArea();
+  if (take.empty() || m_document.selection().empty()) {
+    painter.setPen(QColor(160, 160, 160));
+    painter.drawText(rect(), Qt::AlignCenter, tr("Select a marker to see its curves"));
+    return;
+  }
+  const double stripHeight = (area.height() - 2 * kStripGap) / 3.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const QRectF strip(area.left(), area.top() + axis * (stripHeight + kStripGap), area.width(), stripHeight);
+    paintStrip(painter, strip, axis);
+  }
+  // Current frame and the frame axis.
+  painter.setPen(QPen(QColor(255, 255, 255, 160), 1.0));
+  const double x = xOf(static_cast<double>(m_document.currentFrame()));
+  painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
+  painter.setPen(QColor(170, 170, 170));
+  const auto firstLabel = static_cast<qlonglong>(take.firstFrame() + static_cast<std::int64_t>(std::lround(m_first)));
+  const auto lastLabel = static_cast<qlonglong>(take.firstFrame() + static_cast<std::int64_t>(std::lround(m_last)));
+  painter.drawText(QRectF(area.left(), area.bottom() + 2, 100, 14), Qt::AlignLeft, QString::number(firstLabel));
+  painter.drawText(QRectF(area.right() - 100, area.bottom() + 2, 100, 14), Qt::AlignRight, QString::number(lastLabel));
+}
+
+void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) const
+{
+  const Take& take = m_document.take();
+  const auto& selection = m_document.selection();
+  const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(m_first)));
+  const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(m_last)));
+  painter.fillRect(strip, QColor(38, 41, 46));
+
+  // Shade the gaps of the first selected marker.
+  for (const Gap& gap : findGaps(take.valid().col(selection.front()), selection.front())) {
+    const double x0 = std::max(xOf(static_cast<double>(gap.firstFrame) - 0.5), strip.left());
+    const double x1 = std::min(xOf(static_cast<double>(gap.firstFrame + gap.length) - 0.5), strip.right());
+    if (x1 > x0)
+      painter.fillRect(QRectF(x0, strip.top(), x1 - x0, strip.height()), QColor(150, 50, 50, 90));
+  }
+
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (Eigen::Index m : selection) {
+    const auto values = take.trajectory(m).col(axis);
+    for (Eigen::Index f = first; f <= last; ++f)
+      if (take.isValid(f, m)) {
+        lo = std::min(lo, values(f));
+        hi = std::max(hi, values(f));
+      }
+  }
+  painter.setPen(QColor(150, 150, 150));
+  painter.drawText(QRectF(0, strip.top(), kLeftMargin - 6, 14), Qt::AlignRight, kAxisNames[axis]);
+  if (!std::isfinite(lo))
+    return;
+  if (hi - lo < 1e-9) {
+    lo -= 0.5;
+    hi += 0.5;
+  }
+  painter.drawText(QRectF(0, strip.top() + 14, kLeftMargin - 6, 14), Qt::AlignRight, QString::number(hi, 'f', 1));
+  painter.drawText(QRectF(0, strip.bottom() - 14, kLeftMargin - 6, 14), Qt::AlignRight, QString::number(lo, 'f', 1));
+  auto yOf = [&](double v) { return strip.bottom() - (v - lo) / (hi - lo) * strip.height(); };
+
+  painter.setRenderHint(QPainter::Antialiasing, false);
+  const double framesPerPixel = (m_last - m_first) / strip.width();
+  for (Eigen::Index m : selection) {
+    const auto values = take.trajectory(m).col(axis);
+    if (framesPerPixel > 1.0) {
+      // Min-max envelope per pixel column, coloured by the column's "most edited" state.
+      const int columns = static_cast<int>(strip.width());
+      for (int c = 0; c < columns; ++c) {
+        const auto f0 = std::max(first, static_cast<Eigen::Index>(std::floor(frameAt(strip.left() + c))));
+        const auto f1 = std::min(last, static_cast<Eigen::Index>(std::floor(frameAt(strip.left() + c + 1))));
+        double cmin = std::numeric_limits<double>::infinity(), cmax = -cmin;
+        std::uint8_t state = 0;
+        for (Eigen::Index f = f0; f <= f1; ++f)
+          if (take.isValid(f, m)) {
+            cmin = std::min(cmin, values(f));
+            cmax = std::max(cmax, values(f));
+            state = std::max(state, take.states()(f, m));
+          }
+        if (!std::isfinite(cmin))
+          continue;
+        painter.setPen(stateColor(static_cast<SampleState>(state)));
+        const double x = strip.left() + c + 0.5;
+        painter.drawLine(QPointF(x, yOf(cmin)), QPointF(x, yOf(cmax) - 0.5));
+      }
+    } else {
+      painter.setRenderHint(QPainter::Antialiasing, true);
+      for (Eigen::Index f = std::max<Eigen::Index>(first, 1); f <= last; ++f) {
+        if (!take.isValid(f, m) || !take.isValid(f - 1, m))
+          continue;
+        painter.setPen(QPen(stateColor(take.state(f, m)), 1.5));
+        painter.drawLine(QPointF(xOf(static_cast<double>(f - 1)), yOf(values(f - 1))),
+                         QPointF(xOf(static_cast<double>(f)), yOf(values(f))));
+      }
+      painter.setRenderHint(QPainter::Antialiasing, false);
+    }
+  }
+}
+
+void CurveView::mousePressEvent(QMouseEvent* event)
+{
+  if (event->button() == Qt::LeftButton) {
+    m_document.setCurrentFrame(static_cast<Eigen::Index>(std::lround(frameAt(event->position().x()))));
+  } else {
+    m_panStart = event->position();
+    m_panFirst = m_first;
+  }
+}
+
+void CurveView::mouseMoveEvent(QMouseEvent* event)
+{
+  if (event->buttons() & Qt::LeftButton) {
+    m_document.setCurrentFrame(static_cast<Eigen::Index>(std::lround(frameAt(event->position().x()))));
+  } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+    const double span = m_last - m_first;
+    const double shift = (event->position().x() - m_panStart.x()) / plotArea().width() * span;
+    setVisibleRange(m_panFirst - shift, m_panFirst - shift + span);
+  }
+}
+
+void CurveView::wheelEvent(QWheelEvent* event)
+{
+  const double anchor = frameAt(event->position().x());
+  const double factor = std::pow(0.85, event->angleDelta().y() / 120.0);
+  setVisibleRange(anchor - (anchor - m_first) * factor, anchor + (m_last - anchor) * factor);
+  event->accept();
+}
+
+void CurveView::keyPressEvent(QKeyEvent* event)
+{
+  if (event->key() == Qt::Key_Home && event->modifiers() & Qt::ControlModifier)
+    showAll();
+  else
+    QWidget::keyPressEvent(event);
+}
+
+} // namespace mocap::ui

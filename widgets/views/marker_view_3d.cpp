@@ -1,0 +1,347 @@
+#include "views/marker_view_3d.h"
+
+#include "document/take_document.h"
+#include "views/sample_colors.h"
+#include "views/vtk_viewport.h"
+
+#include <QLabel>
+#include <QStackedLayout>
+
+#include <vtkActor.h>
+#include <vtkAxesActor.h>
+#include <vtkBillboardTextActor3D.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGlyph3DMapper.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mocap::ui {
+
+namespace {
+
+bool isSelected(const std::vector<Eigen::Index>& selection, Eigen::Index marker)
+{
+  return std::binary_search(selection.begin(), selection.end(), marker);
+}
+
+/// Mean and spread of all valid samples, for camera placement and marker size.
+struct Extent
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
+  double diagonal = 1.0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hi = Eigen::Vector3d::Zero();
+};
+
+Extent extentOf(const Take& take, Eigen::Index frame)
+{
+  Extent extent;
+  Eigen::Index count = 0;
+  extent.lo.setConstant(std::numeric_limits<double>::infinity());
+  extent.hi.setConstant(-std::numeric_limits<double>::infinity());
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    // Prefer the given frame; fall back to the marker's first valid sample.
+    Eigen::Index f = frame;
+    if (!take.isValid(f, m)) {
+      const auto column = take.valid().col(m);
+      f = -1;
+      for (Eigen::Index i = 0; i < take.frameCount(); ++i)
+        if (column(i)) {
+          f = i;
+          break;
+        }
+      if (f < 0)
+        continue;
+    }
+    const Eigen::Vector3d p = take.position(f, m);
+    extent.centre += p;
+    second += p * p.transpose();
+    extent.lo = extent.lo.cwiseMin(p);
+    extent.hi = extent.hi.cwiseMax(p);
+    ++count;
+  }
+  if (count == 0)
+    return Extent{};
+  extent.centre /= static_cast<double>(count);
+  extent.covariance = second / static_cast<double>(count) - extent.centre * extent.centre.transpose();
+  extent.diagonal = std::max((extent.hi - extent.lo).norm(), 1e-6);
+  return extent;
+}
+
+} // namespace
+
+MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
+    : QWidget(parent), m_document(document)
+{
+  m_stack = new QStackedLayout(this);
+  m_viewport = new VtkViewport(this);
+  m_failure = new QLabel(this);
+  m_failure->setAlignment(Qt::AlignCenter);
+  m_failure->setWordWrap(true);
+  m_stack->addWidget(m_viewport);
+  m_stack->addWidget(m_failure);
+  connect(m_viewport, &VtkViewport::failed, this, [this](const QString& reason) {
+    m_failure->setText(reason);
+    m_stack->setCurrentWidget(m_failure);
+  });
+  connect(m_viewport, &VtkViewport::clicked, this, &MarkerView3d::onClicked);
+
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(12);
+  sphere->SetRadius(1.0);
+  m_colors->SetNumberOfComponents(3);
+  m_colors->SetName("colors");
+  m_markers->SetPoints(m_points);
+  m_markers->GetPointData()->SetScalars(m_colors);
+  m_mapper->SetInputData(m_markers);
+  m_mapper->SetSourceConnection(sphere->GetOutputPort());
+  m_mapper->SetScalarModeToUsePointData();
+  m_mapper->ScalingOn();
+  m_mapper->SetScaleModeToNoDataScaling();  // every sphere the same size: ScaleFactor
+  m_actor->SetMapper(m_mapper);
+  m_actor->GetProperty()->SetSpecular(0.3);
+  m_viewport->renderer()->AddActor(m_actor);
+
+  vtkNew<vtkPolyDataMapper> trailMapper;
+  trailMapper->SetInputData(m_trails);
+  m_trailActor->SetMapper(trailMapper);
+  m_trailActor->GetProperty()->SetColor(selectionColor().redF(), selectionColor().greenF(), selectionColor().blueF());
+  m_trailActor->GetProperty()->SetOpacity(0.7);
+  m_trailActor->GetProperty()->SetLineWidth(2.0f);
+  m_viewport->renderer()->AddActor(m_trailActor);
+
+  // A small corner renderer shows the lab axes with the main camera's orientation.
+  m_axesRenderer->SetViewport(0.0, 0.0, 0.16, 0.2);
+  m_axesRenderer->InteractiveOff();
+  m_axesRenderer->SetLayer(1);
+  m_axesRenderer->AddActor(m_axes);
+  m_viewport->renderWindow()->SetNumberOfLayers(2);
+  m_viewport->renderWindow()->AddRenderer(m_axesRenderer);
+  connect(m_viewport, &VtkViewport::aboutToRender, this, [this] {
+    vtkCamera* main = m_viewport->renderer()->GetActiveCamera();
+    vtkCamera* corner = m_axesRenderer->GetActiveCamera();
+    double direction[3];
+    main->GetDirectionOfProjection(direction);
+    corner->SetFocalPoint(0, 0, 0);
+    corner->SetPosition(-direction[0] * 5.0, -direction[1] * 5.0, -direction[2] * 5.0);
+    corner->SetViewUp(main->GetViewUp());
+    m_axesRenderer->ResetCameraClippingRange();
+  });
+
+  connect(&document, &TakeDocument::takeReset, this, &MarkerView3d::rebuildScene);
+  connect(&document, &TakeDocument::currentFrameChanged, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::samplesChanged, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
+  rebuildScene();
+}
+
+MarkerView3d::~MarkerView3d() = default;
+
+double MarkerView3d::takeSize() const
+{
+  return extentOf(m_document.take(), m_document.currentFrame()).diagonal;
+}
+
+void MarkerView3d::setTrailFrames(int frames)
+{
+  m_trailFrames = std::max(frames, 0);
+  updateFrame();
+}
+
+void MarkerView3d::setMarkerScale(double fraction)
+{
+  m_markerScale = std::clamp(fraction, 1e-4, 0.2);
+  rebuildScene();
+}
+
+void MarkerView3d::setUpAxis(int axis)
+{
+  m_upAxis = axis == 1 ? 1 : 2;
+  resetCamera();
+}
+
+void MarkerView3d::resetCamera()
+{
+  const Take& take = m_document.take();
+  if (take.empty())
+    return;
+  const Extent extent = extentOf(take, m_document.currentFrame());
+  // A face is flattest along its normal: look along the axis of least spread, from the side
+  // the markers protrude to (the nose sticks out more than the cheeks recede).
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(extent.covariance);
+  Eigen::Vector3d normal = solver.eigenvectors().col(0);
+  double front = 0.0, back = 0.0;
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    if (!take.isValid(m_document.currentFrame(), m))
+      continue;
+    const double d = normal.dot(take.position(m_document.currentFrame(), m) - extent.centre);
+    front = std::max(front, d);
+    back = std::max(back, -d);
+  }
+  if (back > front)
+    normal = -normal;
+  Eigen::Vector3d up = Eigen::Vector3d::Unit(m_upAxis);
+  if (std::abs(up.dot(normal)) > 0.95)
+    up = Eigen::Vector3d::Unit(m_upAxis == 2 ? 1 : 2);
+  vtkCamera* camera = m_viewport->renderer()->GetActiveCamera();
+  const Eigen::Vector3d eye = extent.centre + normal * 2.5 * extent.diagonal;
+  camera->SetFocalPoint(extent.centre.data());
+  camera->SetPosition(eye.data());
+  camera->SetViewUp(up.data());
+  camera->OrthogonalizeViewUp();
+  m_viewport->renderer()->ResetCamera();
+  camera->Zoom(1.4);  // ResetCamera leaves room for a bounding sphere; a face is flatter than that
+  m_viewport->renderer()->ResetCameraClippingRange();
+  m_viewport->requestRender();
+}
+
+void MarkerView3d::rebuildScene()
+{
+  // The glyph is a unit sphere; the factor makes it the marker radius.
+  m_mapper->SetScaleFactor(m_markerScale * takeSize());
+  updateFrame();
+  resetCamera();
+}
+
+void MarkerView3d::updateFrame()
+{
+  const Take& take = m_document.take();
+  const Eigen::Index frame = m_document.currentFrame();
+  const auto& selection = m_document.selection();
+  m_points->Reset();
+  m_colors->Reset();
+  m_drawnMarkers.clear();
+  if (frame < take.frameCount()) {
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+      if (!take.isValid(frame, m))
+        continue;
+      const Eigen::Vector3d p = take.position(frame, m);
+      m_points->InsertNextPoint(p.data());
+      const QColor color = isSelected(selection, m) ? selectionColor() : stateColor(take.state(frame, m));
+      const unsigned char rgb[3] = {static_cast<unsigned char>(color.red()), static_cast<unsigned char>(color.green()),
+                                    static_cast<unsigned char>(color.blue())};
+      m_colors->InsertNextTypedTuple(rgb);
+      m_drawnMarkers.push_back(m);
+    }
+  }
+  m_points->Modified();
+  m_colors->Modified();
+  m_markers->Modified();
+  updateTrails();
+  updateLabels();
+  m_viewport->requestRender();
+}
+
+void MarkerView3d::updateTrails()
+{
+  const Take& take = m_document.take();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  const Eigen::Index frame = m_document.currentFrame();
+  if (m_trailFrames > 0 && frame < take.frameCount()) {
+    for (Eigen::Index m : m_document.selection()) {
+      const Eigen::Index first = std::max<Eigen::Index>(0, frame - m_trailFrames);
+      const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, frame + m_trailFrames);
+      std::vector<vtkIdType> run;
+      auto flush = [&] {
+        if (run.size() > 1)
+          lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
+        run.clear();
+      };
+      for (Eigen::Index f = first; f <= last; ++f) {
+        if (!take.isValid(f, m)) {
+          flush();  // a gap breaks the trail
+          continue;
+        }
+        run.push_back(points->InsertNextPoint(take.position(f, m).data()));
+      }
+      flush();
+    }
+  }
+  m_trails->SetPoints(points);
+  m_trails->SetLines(lines);
+  m_trails->Modified();
+}
+
+void MarkerView3d::updateLabels()
+{
+  vtkRenderer* renderer = m_viewport->renderer();
+  for (auto& label : m_labels)
+    renderer->RemoveActor(label);
+  m_labels.clear();
+  const Take& take = m_document.take();
+  const Eigen::Index frame = m_document.currentFrame();
+  const double offset = 2.5 * m_markerScale * takeSize();
+  for (Eigen::Index m : m_document.selection()) {
+    if (frame >= take.frameCount() || !take.isValid(frame, m))
+      continue;
+    auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
+    label->SetInput(take.label(m).c_str());
+    const Eigen::Vector3d p = take.position(frame, m);
+    label->SetPosition(p.x(), p.y(), p.z() + (m_upAxis == 2 ? offset : 0.0));
+    label->GetTextProperty()->SetFontSize(14);
+    label->GetTextProperty()->SetColor(1.0, 1.0, 0.8);
+    label->GetTextProperty()->SetBold(true);
+    label->GetTextProperty()->SetShadow(true);
+    renderer->AddActor(label);
+    m_labels.push_back(label);
+  }
+}
+
+Eigen::Index MarkerView3d::markerAt(QPoint position, int radius) const
+{
+  vtkRenderer* renderer = m_viewport->renderer();
+  const double ratio = m_viewport->devicePixelRatioF();
+  const double x = position.x() * ratio;
+  const double y = (m_viewport->height() - position.y()) * ratio;  // VTK display y grows upwards
+  Eigen::Index best = -1;
+  double bestDistance = radius * ratio;
+  for (vtkIdType id = 0; id < m_points->GetNumberOfPoints(); ++id) {
+    double world[4] = {0, 0, 0, 1};
+    m_points->GetPoint(id, world);
+    renderer->SetWorldPoint(world);
+    renderer->WorldToDisplay();
+    double display[3];
+    renderer->GetDisplayPoint(display);
+    const double distance = std::hypot(display[0] - x, display[1] - y);
+    if (distance <= bestDistance) {
+      bestDistance = distance;
+      best = m_drawnMarkers[static_cast<std::size_t>(id)];
+    }
+  }
+  return best;
+}
+
+void MarkerView3d::onClicked(QPoint position, Qt::KeyboardModifiers modifiers)
+{
+  const Eigen::Index marker = markerAt(position);
+  const bool extend = modifiers & (Qt::ControlModifier | Qt::ShiftModifier);
+  std::vector<Eigen::Index> selection = extend ? m_document.selection() : std::vector<Eigen::Index>{};
+  if (marker >= 0) {
+    const auto it = std::find(selection.begin(), selection.end(), marker);
+    if (extend && it != selection.end())
+      selection.erase(it);
+    else
+      selection.push_back(marker);
+  }
+  m_document.setSelection(std::move(selection));
+}
+
+} // namespace mocap::ui

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <QWidget>
+
+#include <Eigen/Core>
+
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include <vector>
+
+class QLabel;
+class QStackedLayout;
+class vtkActor;
+class vtkAxesActor;
+class vtkBillboardTextActor3D;
+class vtkGlyph3DMapper;
+class vtkPoints;
+class vtkPolyData;
+class vtkRenderer;
+class vtkUnsignedCharArray;
+
+namespace mocap::ui {
+
+class TakeDocument;
+class VtkViewport;
+
+/// The 3D viewport: the current frame's markers as spheres coloured by sample state
+/// (original, filled, smoothed, edited; selected markers highlighted and labelled), trails of
+/// the selected markers over ±trailFrames frames, and an axes marker in the corner.
+/// Missing samples are not drawn. Click picks the nearest marker (Ctrl/Shift adds to the
+/// selection); the camera faces the take's markers from the side they protrude to.
+class MarkerView3d final : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit MarkerView3d(TakeDocument& document, QWidget* parent = nullptr);
+  ~MarkerView3d() override;
+
+  [[nodiscard]] VtkViewport* viewport() const { return m_viewport; }
+  /// Frames drawn before and after the current one for each selected marker (0 = no trails).
+  void setTrailFrames(int frames);
+  [[nodiscard]] int trailFrames() const { return m_trailFrames; }
+  /// Sphere radius as a fraction of the take's size.
+  void setMarkerScale(double fraction);
+  /// Which lab axis points up on screen: 1 = Y, 2 = Z.
+  void setUpAxis(int axis);
+  [[nodiscard]] int upAxis() const { return m_upAxis; }
+  void resetCamera();
+  /// The marker drawn nearest to `position` (widget coordinates), within `radius` pixels.
+  [[nodiscard]] Eigen::Index markerAt(QPoint position, int radius = 12) const;
+
+private:
+  void rebuildScene();
+  void updateFrame();
+  void updateTrails();
+  void updateLabels();
+  void onClicked(QPoint position, Qt::KeyboardModifiers modifiers);
+  [[nodiscard]] double takeSize() const;
+
+  TakeDocument& m_document;
+  QStackedLayout* m_stack = nullptr;
+  VtkViewport* m_viewport = nullptr;
+  QLabel* m_failure = nullptr;
+  vtkNew<vtkPoints> m_points;
+  vtkNew<vtkUnsignedCharArray> m_colors;
+  vtkNew<vtkPolyData> m_markers;
+  vtkNew<vtkGlyph3DMapper> m_mapper;
+  vtkNew<vtkActor> m_actor;
+  vtkNew<vtkPolyData> m_trails;
+  vtkNew<vtkActor> m_trailActor;
+  vtkNew<vtkRenderer> m_axesRenderer;
+  vtkNew<vtkAxesActor> m_axes;
+  std::vector<vtkSmartPointer<vtkBillboardTextActor3D>> m_labels;
+  std::vector<Eigen::Index> m_drawnMarkers;  // point id -> marker
+  int m_trailFrames = 50;
+  double m_markerScale = 0.012;
+  int m_upAxis = 2;
+};
+
+} // namespace mocap::ui

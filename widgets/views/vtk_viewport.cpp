@@ -1,0 +1,279 @@
+#include "views/vtk_viewport.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLState.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+
+namespace mocap::ui {
+
+namespace {
+constexpr int kClickSlop = 4;  // pixels a press may move and still count as a click
+} // namespace
+
+QSurfaceFormat VtkViewport::defaultFormat()
+{
+  QSurfaceFormat format;
+  format.setRenderableType(QSurfaceFormat::OpenGL);
+  format.setVersion(3, 2);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  format.setSwapBehavior(QSurfaceFormat::DoubleBuffer);
+  format.setRedBufferSize(8);
+  format.setGreenBufferSize(8);
+  format.setBlueBufferSize(8);
+  format.setAlphaBufferSize(8);
+  format.setDepthBufferSize(24);
+  format.setStencilBufferSize(0);
+  format.setSamples(0);
+  return format;
+}
+
+VtkViewport::VtkViewport(QWidget* parent) : QOpenGLWidget(parent)
+{
+  setFocusPolicy(Qt::StrongFocus);
+  setMouseTracking(false);
+  m_window->AddRenderer(m_renderer);
+  m_window->SetReadyForRendering(false);  // until initializeGL gives VTK a context
+  for (unsigned long id : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
+                           vtkCommand::WindowFrameEvent})
+    m_observers.push_back(m_window->AddObserver(id, this, &VtkViewport::onWindowEvent));
+  m_renderer->SetBackground(0.12, 0.13, 0.15);
+  m_renderer->SetBackground2(0.26, 0.28, 0.32);
+  m_renderer->GradientBackgroundOn();
+}
+
+VtkViewport::~VtkViewport()
+{
+  if (m_usable) {
+    makeCurrent();  // VTK releases its GL resources in our context
+    m_window->Finalize();
+    doneCurrent();
+  }
+  for (unsigned long id : m_observers)
+    m_window->RemoveObserver(id);
+  m_window->SetReadyForRendering(false);
+}
+
+vtkRenderer* VtkViewport::renderer() const
+{
+  return m_renderer.GetPointer();
+}
+
+vtkGenericOpenGLRenderWindow* VtkViewport::renderWindow() const
+{
+  return m_window.GetPointer();
+}
+
+void VtkViewport::requestRender()
+{
+  m_renderPending = true;
+  update();
+}
+
+void VtkViewport::resetCamera()
+{
+  m_renderer->ResetCamera();
+  requestRender();
+}
+
+void VtkViewport::fail(const QString& reason)
+{
+  m_usable = false;
+  m_failure = reason;
+  m_window->SetReadyForRendering(false);
+  emit failed(reason);
+}
+
+bool VtkViewport::contextIsCurrent() const
+{
+  const QOpenGLContext* current = QOpenGLContext::currentContext();
+  return current && current == context();
+}
+
+void VtkViewport::onWindowEvent(vtkObject*, unsigned long eventId, void* callData)
+{
+  switch (eventId) {
+  case vtkCommand::WindowMakeCurrentEvent:
+    // Only when not current already: makeCurrent() rebinds Qt's framebuffer, which breaks VTK
+    // while it is creating its own framebuffers (a blank or garbage view).
+    if (!contextIsCurrent())
+      makeCurrent();
+    break;
+  case vtkCommand::WindowIsCurrentEvent:
+    *static_cast<bool*>(callData) = contextIsCurrent();
+    break;
+  case vtkCommand::WindowFrameEvent:
+    if (!m_inPaint)
+      update();  // VTK rendered outside paintGL (e.g. a direct Render() call): show it
+    break;
+  default: break;
+  }
+}
+
+void VtkViewport::initializeGL()
+{
+  QOpenGLContext* ctx = context();
+  if (!ctx || !ctx->isValid()) {
+    fail(tr("No OpenGL context is available, so the 3D view cannot be shown."));
+    return;
+  }
+  const QSurfaceFormat format = ctx->format();
+  if (format.majorVersion() * 10 + format.minorVersion() < 32) {
+    fail(tr("The 3D view needs OpenGL 3.2; this display offers %1.%2.")
+             .arg(format.majorVersion())
+             .arg(format.minorVersion()));
+    return;
+  }
+  m_window->SetForceMaximumHardwareLineWidth(1);
+  m_window->SetReadyForRendering(true);
+  m_window->SetOwnContext(0);
+  m_window->OpenGLInitContext();
+  m_usable = true;
+  m_renderPending = true;
+}
+
+void VtkViewport::resizeGL(int width, int height)
+{
+  const double ratio = devicePixelRatioF();
+  m_window->SetSize(static_cast<int>(std::lround(width * ratio)), static_cast<int>(std::lround(height * ratio)));
+  m_renderPending = true;
+}
+
+void VtkViewport::paintGL()
+{
+  QOpenGLExtraFunctions* gl = context() ? context()->extraFunctions() : nullptr;
+  if (!m_usable || !gl) {
+    if (gl) {
+      gl->glClearColor(0.12f, 0.13f, 0.15f, 1.0f);
+      gl->glClear(GL_COLOR_BUFFER_BIT);
+    }
+    return;
+  }
+  if (m_renderPending) {
+    m_inPaint = true;
+    emit aboutToRender();
+    m_window->Render();
+    m_inPaint = false;
+    m_renderPending = false;
+  }
+  makeCurrent();  // rendering may have switched contexts (e.g. progress updates elsewhere)
+  blitToWidget();
+}
+
+void VtkViewport::blitToWidget()
+{
+  QOpenGLExtraFunctions* gl = context()->extraFunctions();
+  gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+  const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
+  gl->glDrawBuffers(1, &drawBuffer);
+  const bool scissor = gl->glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
+  if (scissor) {
+    m_window->GetState()->vtkglDisable(GL_SCISSOR_TEST);
+    gl->glDisable(GL_SCISSOR_TEST);  // scissoring would clip the blit
+  }
+  int* source = m_window->GetRenderFramebuffer()->GetLastSize();
+  const double ratio = devicePixelRatioF();
+  const int width = static_cast<int>(std::lround(this->width() * ratio));
+  const int height = static_cast<int>(std::lround(this->height() * ratio));
+  m_window->BlitDisplayFramebuffer(0, 0, 0, source[0], source[1], 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                                   GL_LINEAR);
+  // Opaque alpha, or Mesa composes the view with whatever is behind the window.
+  gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  gl->glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  gl->glClear(GL_COLOR_BUFFER_BIT);
+  gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  if (scissor) {
+    m_window->GetState()->vtkglEnable(GL_SCISSOR_TEST);
+    gl->glEnable(GL_SCISSOR_TEST);
+  }
+}
+
+void VtkViewport::mousePressEvent(QMouseEvent* event)
+{
+  m_pressPosition = m_lastPosition = event->position().toPoint();
+  m_dragged = false;
+  event->accept();
+}
+
+void VtkViewport::mouseMoveEvent(QMouseEvent* event)
+{
+  const QPoint position = event->position().toPoint();
+  if ((position - m_pressPosition).manhattanLength() > kClickSlop)
+    m_dragged = true;
+  const QPoint delta = position - m_lastPosition;
+  m_lastPosition = position;
+  if (!m_dragged || event->buttons() == Qt::NoButton)
+    return;
+  vtkCamera* camera = m_renderer->GetActiveCamera();
+  const bool pan = (event->buttons() & Qt::MiddleButton) ||
+                   ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier));
+  if (pan) {
+    // Move focal point and position together by the drag, scaled to the view's height.
+    double focal[3], eye[3], up[3];
+    camera->GetFocalPoint(focal);
+    camera->GetPosition(eye);
+    camera->GetViewUp(up);
+    const double distance = camera->GetDistance();
+    const double scale = 2.0 * distance * std::tan(camera->GetViewAngle() * M_PI / 360.0) / std::max(height(), 1);
+    double forward[3] = {focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2]};
+    double right[3] = {forward[1] * up[2] - forward[2] * up[1], forward[2] * up[0] - forward[0] * up[2],
+                       forward[0] * up[1] - forward[1] * up[0]};
+    const double rightLength = std::sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
+    for (double& r : right)
+      r /= rightLength > 0.0 ? rightLength : 1.0;
+    for (int i = 0; i < 3; ++i) {
+      const double shift = (-delta.x() * right[i] + delta.y() * up[i]) * scale;
+      focal[i] += shift;
+      eye[i] += shift;
+    }
+    camera->SetFocalPoint(focal);
+    camera->SetPosition(eye);
+  } else if (event->buttons() & Qt::LeftButton) {
+    camera->Azimuth(-0.4 * delta.x());
+    camera->Elevation(0.4 * delta.y());
+    camera->OrthogonalizeViewUp();
+  } else if (event->buttons() & Qt::RightButton) {
+    camera->Dolly(std::pow(1.01, -delta.y()));
+  }
+  m_renderer->ResetCameraClippingRange();
+  requestRender();
+}
+
+void VtkViewport::mouseReleaseEvent(QMouseEvent* event)
+{
+  if (!m_dragged && event->button() == Qt::LeftButton)
+    emit clicked(event->position().toPoint(), event->modifiers());
+  m_dragged = false;
+}
+
+void VtkViewport::wheelEvent(QWheelEvent* event)
+{
+  const double steps = event->angleDelta().y() / 120.0;
+  m_renderer->GetActiveCamera()->Dolly(std::pow(1.1, steps));
+  m_renderer->ResetCameraClippingRange();
+  requestRender();
+  event->accept();
+}
+
+void VtkViewport::keyPressEvent(QKeyEvent* event)
+{
+  if (event->key() == Qt::Key_R && event->modifiers() == Qt::NoModifier) {
+    resetCamera();
+    return;
+  }
+  QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace mocap::ui

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QString>
+
+#include <vtkNew.h>
+
+#include <vector>
+
+class vtkGenericOpenGLRenderWindow;
+class vtkObject;
+class vtkRenderer;
+
+namespace mocap::ui {
+
+/// A Qt 6 QOpenGLWidget hosting a VTK render window, in the way VTK's own (Qt 5-only)
+/// QVTKOpenGLNativeWidget works: VTK renders into its own framebuffers inside the widget's
+/// context, and paintGL() blits the result into the widget's framebuffer.
+///
+/// The camera is driven directly: left-drag orbits, middle- or shift-drag pans, the wheel
+/// zooms, R resets. A click that does not drag emits clicked() for picking.
+/// When no usable OpenGL context can be had, usable() is false and failed() says why; the
+/// widget then paints nothing and never calls into VTK rendering.
+class VtkViewport : public QOpenGLWidget
+{
+  Q_OBJECT
+
+public:
+  explicit VtkViewport(QWidget* parent = nullptr);
+  ~VtkViewport() override;
+
+  /// The surface format VTK needs (OpenGL 3.2 core, RGBA8, 24-bit depth); set it as the
+  /// application default before the QApplication is created.
+  [[nodiscard]] static QSurfaceFormat defaultFormat();
+
+  [[nodiscard]] vtkRenderer* renderer() const;
+  [[nodiscard]] vtkGenericOpenGLRenderWindow* renderWindow() const;
+  [[nodiscard]] bool usable() const { return m_usable; }
+  [[nodiscard]] const QString& failureReason() const { return m_failure; }
+
+  /// Asks for a VTK render at the next paint.
+  void requestRender();
+  /// Fits the camera to the visible props.
+  void resetCamera();
+
+signals:
+  /// A press-release without dragging, in widget (logical) coordinates.
+  void clicked(QPoint position, Qt::KeyboardModifiers modifiers);
+  /// No usable OpenGL context: the reason, for a message in place of the view.
+  void failed(const QString& reason);
+  /// Emitted just before VTK renders, so owners can update props lazily.
+  void aboutToRender();
+
+protected:
+  void initializeGL() override;
+  void resizeGL(int width, int height) override;
+  void paintGL() override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
+
+private:
+  void onWindowEvent(vtkObject* caller, unsigned long eventId, void* callData);
+  [[nodiscard]] bool contextIsCurrent() const;
+  void fail(const QString& reason);
+  void blitToWidget();
+
+  vtkNew<vtkGenericOpenGLRenderWindow> m_window;
+  vtkNew<vtkRenderer> m_renderer;
+  std::vector<unsigned long> m_observers;
+  bool m_usable = false;
+  bool m_renderPending = true;
+  bool m_inPaint = false;
+  QString m_failure;
+  QPoint m_pressPosition;
+  QPoint m_lastPosition;
+  bool m_dragged = false;
+};
+
+} // namespace mocap::ui
