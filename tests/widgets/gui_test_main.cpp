@@ -1,0 +1,18 @@
+// GoogleTest main for GUI tests: one QApplication with the surface format VTK needs.
+// Run under Xvfb (scripts/test.sh does): an offscreen platform gives QOpenGLWidget no context.
+#include "views/vtk_viewport.h"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+
+#include <gtest/gtest.h>
+
+int main(int argc, char** argv)
+{
+  QSurfaceFormat::setDefaultFormat(mocap::ui::VtkViewport::defaultFormat());
+  QApplication::setOrganizationName(QStringLiteral("MocapStudioTests"));
+  QApplication::setApplicationName(QStringLiteral("Mocap Studio GUI tests"));
+  QApplication app(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

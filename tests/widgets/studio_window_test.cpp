@@ -1,0 +1,195 @@
+// The studio end to end under Xvfb: open, select, edit with undo/redo, save, render, errors.
+#include "../core/test_support.h"
+
+#include "commands/apply_patches_command.h"
+#include "document/take_document.h"
+#include "main_window.h"
+#include "views/marker_view_3d.h"
+#include "views/vtk_viewport.h"
+
+#include "mocap/c3d_reader.h"
+#include "mocap/file_io.h"
+#include "mocap/gaps.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QItemSelectionModel>
+#include <QSettings>
+#include <QTableView>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mocap {
+namespace {
+
+using studio::MainWindow;
+using ui::TakeDocument;
+
+class StudioWindow : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    QSettings().clear();  // no remembered layout or recent files from other runs
+    window = std::make_unique<MainWindow>();
+    window->resize(1280, 800);
+    window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+  }
+
+  /// Linear interpolation across every interior gap of `marker`, as one undoable command.
+  std::vector<SamplePatch> linearFill(Eigen::Index marker) const
+  {
+    const Take& take = window->document().take();
+    std::vector<SamplePatch> patches;
+    for (const Gap& gap : findGaps(take.valid().col(marker), marker)) {
+      if (gap.atEdge)
+        continue;
+      const Eigen::Vector3d a = take.position(gap.firstFrame - 1, marker);
+      const Eigen::Vector3d b = take.position(gap.firstFrame + gap.length, marker);
+      std::vector<Eigen::Index> frames;
+      Eigen::Matrix<double, Eigen::Dynamic, 3> positions(gap.length, 3);
+      for (Eigen::Index i = 0; i < gap.length; ++i) {
+        frames.push_back(gap.firstFrame + i);
+        const double t = static_cast<double>(i + 1) / static_cast<double>(gap.length + 1);
+        positions.row(i) = ((1.0 - t) * a + t * b).transpose();
+      }
+      patches.push_back(makePatch(marker, std::move(frames), std::move(positions), SampleState::Filled));
+    }
+    return patches;
+  }
+
+  std::unique_ptr<MainWindow> window;
+};
+
+TEST_F(StudioWindow, OpensTheSampleIntoTheTable)
+{
+  EXPECT_EQ(window->markerTable()->model()->rowCount(), 38);
+  EXPECT_EQ(window->document().take().frameCount(), 3000);
+  EXPECT_FALSE(window->isWindowModified());
+}
+
+TEST_F(StudioWindow, TableSelectionReachesTheDocumentAndBack)
+{
+  QTableView* table = window->markerTable();
+  const QModelIndex row = table->model()->index(10, 0);  // section3-1 in file order
+  table->selectionModel()->select(row, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+  ASSERT_EQ(window->document().selection().size(), 1u);
+  EXPECT_EQ(window->document().take().label(window->document().selection().front()), "section3-1");
+  window->selectLabels({QStringLiteral("root-2"), QStringLiteral("section14-2")});
+  const auto selected = table->selectionModel()->selectedRows();
+  ASSERT_EQ(selected.size(), 2);
+  EXPECT_EQ(selected[0].data().toString() + "," + selected[1].data().toString(), "root-2,section14-2");
+}
+
+TEST_F(StudioWindow, FillChangesOnlyTheGapAndUndoRestoresBitForBit)
+{
+  TakeDocument& doc = window->document();
+  const Take before = doc.take();
+  const Eigen::Index marker = *before.markerIndex("section4-2");
+  doc.undoStack()->push(new ui::ApplyPatchesCommand(doc, linearFill(marker), QStringLiteral("Fill gaps")));
+  EXPECT_TRUE(window->isWindowModified());
+  const Take& after = doc.take();
+  for (Eigen::Index m = 0; m < before.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < before.frameCount(); ++f) {
+      const bool wasGap = m == marker && !before.isValid(f, m) && f > 0 && f < before.frameCount() - 1;
+      if (wasGap) {
+        ASSERT_TRUE(after.isValid(f, m)) << f;
+        ASSERT_EQ(after.state(f, m), SampleState::Filled);
+      } else {
+        ASSERT_EQ(after.isValid(f, m), before.isValid(f, m)) << m << " " << f;
+        if (before.isValid(f, m)) {
+          ASSERT_EQ(after.position(f, m), before.position(f, m));
+        }
+      }
+    }
+  doc.undoStack()->undo();
+  EXPECT_TRUE((doc.take().valid() == before.valid()).all());
+  EXPECT_TRUE((doc.take().residuals() == before.residuals()).all());
+  EXPECT_TRUE((doc.take().states() == before.states()).all());
+  for (Eigen::Index f = 0; f < before.frameCount(); ++f)
+    ASSERT_EQ(doc.take().position(f, marker), before.position(f, marker));
+  EXPECT_FALSE(window->isWindowModified());
+  doc.undoStack()->redo();
+  EXPECT_TRUE(doc.take().valid().col(marker).segment(1105, 60).all());
+}
+
+TEST_F(StudioWindow, SaveAndReopenKeepTheEdit)
+{
+  TakeDocument& doc = window->document();
+  const Eigen::Index marker = *doc.take().markerIndex("section3-1");
+  doc.undoStack()->push(new ui::ApplyPatchesCommand(doc, linearFill(marker), QStringLiteral("Fill gaps")));
+  test::TempDir dir;
+  const QString path = QString::fromStdString(dir.file("edited.c3d").string());
+  ASSERT_EQ(doc.save(path), QString());
+  EXPECT_FALSE(window->isWindowModified());
+  const Take saved = doc.take();
+  ASSERT_EQ(window->openFile(path, true), QString());
+  EXPECT_TRUE((doc.take().valid() == saved.valid()).all());
+  // C3D stores floats: the filled doubles come back to float precision.
+  EXPECT_LT((doc.take().position(900, marker) - saved.position(900, marker)).norm(), 1e-4);
+  EXPECT_EQ(doc.take().state(900, marker), SampleState::Original) << "states are not stored in C3D";
+}
+
+TEST_F(StudioWindow, CorruptFileShowsAnErrorAndKeepsTheOpenTake)
+{
+  const QString error =
+      window->openFile(QString::fromStdString(test::dataFile("c3d/sample18/bad_parameter_section.c3d").string()), true);
+  EXPECT_TRUE(error.contains(QStringLiteral("parameter section corrupt"))) << error.toStdString();
+  EXPECT_EQ(window->document().take().frameCount(), 3000);
+  EXPECT_EQ(window->document().take().label(0), "root-1");
+}
+
+/// Mean absolute difference per channel, 0–255.
+double meanDifference(const QImage& a, const QImage& b)
+{
+  const QImage x = a.convertToFormat(QImage::Format_RGB888), y = b.convertToFormat(QImage::Format_RGB888);
+  if (x.size() != y.size())
+    return 255.0;
+  double sum = 0.0;
+  for (int row = 0; row < x.height(); ++row) {
+    const uchar* p = x.constScanLine(row);
+    const uchar* q = y.constScanLine(row);
+    for (int i = 0; i < x.width() * 3; ++i)
+      sum += std::abs(int(p[i]) - int(q[i]));
+  }
+  return sum / (x.width() * x.height() * 3.0);
+}
+
+TEST_F(StudioWindow, ViewportRendersTheMarkersLikeTheBaseline)
+{
+  ui::VtkViewport* viewport = window->markerView()->viewport();
+  ASSERT_TRUE(viewport->usable()) << viewport->failureReason().toStdString();
+  window->selectLabels({QStringLiteral("section5-1")});
+  window->document().setCurrentFrame(999);
+  viewport->setFixedSize(480, 360);
+  window->markerView()->resetCamera();
+  QTest::qWait(200);
+  const QImage image = viewport->grabFramebuffer();
+  ASSERT_FALSE(image.isNull());
+  // Not blank: the spheres make the image vary well beyond the gradient background.
+  double mean = 0.0, meanSquare = 0.0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const double v = qGray(image.pixel(x, y));
+      mean += v;
+      meanSquare += v * v;
+    }
+  const double n = image.width() * image.height();
+  const double variance = meanSquare / n - (mean / n) * (mean / n);
+  EXPECT_GT(variance, 150.0);
+  const QString baseline = QStringLiteral(MOCAP_BASELINE_DIR "/MarkerView3d.png");
+  const QString actual = QStringLiteral(MOCAP_BUILD_DIR "/MarkerView3d.actual.png");
+  image.save(actual);
+  const QImage expected(baseline);
+  ASSERT_FALSE(expected.isNull()) << "missing baseline; the rendered image is at " << actual.toStdString();
+  EXPECT_LT(meanDifference(image, expected), 3.0) << "see " << actual.toStdString();
+}
+
+} // namespace
+} // namespace mocap
