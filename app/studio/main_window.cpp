@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "views/curve_view.h"
@@ -118,6 +119,14 @@ void MainWindow::createActions()
   redo->setShortcut(QKeySequence::Redo);
   edit->addAction(undo);
   edit->addAction(redo);
+  edit->addSeparator();
+  QAction* deleteRange = edit->addAction(tr("&Delete Range"), QKeySequence::Delete, this, &MainWindow::deleteRange);
+  deleteRange->setToolTip(tr("Make the selected frame range of the selected markers a gap (Shift-drag on the curves)"));
+  edit->addAction(tr("&Rename Marker…"), QKeySequence(Qt::Key_F2), this, [this] {
+    const QModelIndex current = m_table->currentIndex();
+    if (current.isValid())
+      m_table->edit(current.siblingAtColumn(ui::MarkerTableModel::LabelColumn));
+  });
 
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);
@@ -162,6 +171,27 @@ void MainWindow::createActions()
                           "gap, Ctrl+R reset camera.</p>"));
   });
   updateRecentMenu();
+}
+
+void MainWindow::deleteRange()
+{
+  if (!m_document->hasRange() || m_document->selection().empty()) {
+    statusBar()->showMessage(tr("Select markers and Shift-drag a frame range on the curves first"), 5000);
+    return;
+  }
+  std::vector<SamplePatch> patches;
+  for (Eigen::Index m : m_document->selection()) {
+    SamplePatch patch = deleteSamples(m_document->take(), m, m_document->rangeFirst(), m_document->rangeLast());
+    if (!patch.empty())
+      patches.push_back(std::move(patch));
+  }
+  if (patches.empty())
+    return;
+  const Take& take = m_document->take();
+  m_document->undoStack()->push(new ui::ApplyPatchesCommand(
+      *m_document, std::move(patches),
+      tr("Delete frames %1–%2").arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeFirst()))
+          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast()))));
 }
 
 QString MainWindow::openFile(const QString& path, bool quiet)

@@ -53,6 +53,7 @@ private:
   bool save();
   bool saveAs();
   void exportDialog();
+  void deleteRange();
   bool confirmDiscard();
   void updateTitle();
   void updateRecentMenu();

@@ -39,6 +39,29 @@ SamplePatch makePatch(Eigen::Index marker, std::vector<Eigen::Index> frames,
   return patch;
 }
 
+SamplePatch deleteSamples(const Take& take, Eigen::Index marker, Eigen::Index first, Eigen::Index last)
+{
+  if (marker < 0 || marker >= take.markerCount())
+    throw InvalidArgument("marker " + std::to_string(marker) + " out of range");
+  if (first < 0 || last >= take.frameCount() || first > last)
+    throw InvalidArgument("frame range " + std::to_string(first) + "-" + std::to_string(last) + " is not inside the take");
+  std::vector<Eigen::Index> frames;
+  for (Eigen::Index f = first; f <= last; ++f)
+    if (take.isValid(f, marker))
+      frames.push_back(f);
+  const auto n = static_cast<Eigen::Index>(frames.size());
+  SamplePatch patch;
+  patch.marker = marker;
+  patch.positions.resize(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i)
+    patch.positions.row(i) = take.position(frames[static_cast<std::size_t>(i)], marker).transpose();
+  patch.frames = std::move(frames);
+  patch.valid = Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(n, false);
+  patch.residuals = Eigen::ArrayXd::Constant(n, -1.0);
+  patch.states.assign(static_cast<std::size_t>(n), SampleState::Edited);
+  return patch;
+}
+
 SamplePatch swapSamples(Take& take, SamplePatch patch)
 {
   checkPatch(take, patch);

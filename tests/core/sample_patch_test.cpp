@@ -46,6 +46,24 @@ TEST(SamplePatch, ApplyPatchesReturnsUndoInReverseOrder)
   EXPECT_EQ(take.state(1, 0), SampleState::Original);
 }
 
+TEST(SamplePatch, DeleteSamplesMakesAGapAndUndoBringsItBack)
+{
+  Take take = readC3d(test::sampleTake());
+  const Take original = take;
+  const auto marker = *take.markerIndex("section3-1");
+  SamplePatch patch = deleteSamples(take, marker, 880, 925);
+  EXPECT_EQ(patch.size(), 46u - 33u) << "frames 887-919 were already a gap";
+  SamplePatch undo = swapSamples(take, std::move(patch));
+  EXPECT_FALSE(take.valid().col(marker).segment(880, 46).any());
+  EXPECT_EQ(take.residuals()(880, marker), -1.0);
+  EXPECT_EQ(take.state(880, marker), SampleState::Edited);
+  swapSamples(take, std::move(undo));
+  EXPECT_TRUE((take.valid() == original.valid()).all());
+  EXPECT_TRUE((take.residuals() == original.residuals()).all());
+  EXPECT_THROW((void)deleteSamples(take, marker, 10, 5), InvalidArgument);
+  EXPECT_THROW((void)deleteSamples(take, marker, 0, 3000), InvalidArgument);
+}
+
 TEST(SamplePatch, MisfitPatchesAreRejectedWithoutChanges)
 {
   Take take({"a"}, 4, 100.0);

@@ -39,6 +39,8 @@ protected:
     window->resize(1280, 800);
     window->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+    window->activateWindow();  // shortcuts need the active window (Xvfb has no window manager)
+    ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
     ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
   }
 
@@ -143,6 +145,34 @@ TEST_F(StudioWindow, CorruptFileShowsAnErrorAndKeepsTheOpenTake)
   EXPECT_TRUE(error.contains(QStringLiteral("parameter section corrupt"))) << error.toStdString();
   EXPECT_EQ(window->document().take().frameCount(), 3000);
   EXPECT_EQ(window->document().take().label(0), "root-1");
+}
+
+TEST_F(StudioWindow, RenamingInTheTableIsUndoable)
+{
+  QAbstractItemModel* model = window->markerTable()->model();
+  const QModelIndex cell = model->index(0, 0);
+  EXPECT_FALSE(model->setData(cell, QStringLiteral("root-2"))) << "duplicate labels are refused";
+  ASSERT_TRUE(model->setData(cell, QStringLiteral("head front")));
+  EXPECT_EQ(window->document().take().label(0), "head front");
+  EXPECT_EQ(model->data(cell).toString(), QStringLiteral("head front"));
+  window->document().undoStack()->undo();
+  EXPECT_EQ(window->document().take().label(0), "root-1");
+}
+
+TEST_F(StudioWindow, DeleteRangeMakesAGapForTheSelectedMarkers)
+{
+  TakeDocument& doc = window->document();
+  window->selectLabels({QStringLiteral("root-1"), QStringLiteral("root-3")});
+  doc.setRange(100, 149);
+  QTest::keyClick(window.get(), Qt::Key_Delete);
+  for (const char* label : {"root-1", "root-3"}) {
+    const Eigen::Index m = *doc.take().markerIndex(label);
+    EXPECT_FALSE(doc.take().valid().col(m).segment(100, 50).any()) << label;
+    EXPECT_TRUE(doc.take().isValid(99, m) && doc.take().isValid(150, m)) << label;
+  }
+  EXPECT_TRUE(doc.take().valid().col(1).all()) << "root-2 was not selected";
+  doc.undoStack()->undo();
+  EXPECT_TRUE(doc.take().valid().col(0).all());
 }
 
 /// Mean absolute difference per channel, 0–255.

@@ -49,6 +49,8 @@ void TakeDocument::setTake(Take take, const QString& path)
   m_undoStack.clear();
   m_currentFrame = 0;
   m_selection.clear();
+  m_rangeFirst = 0;
+  m_rangeLast = -1;
   emit takeReset();
   emit filePathChanged(m_filePath);
   emit currentFrameChanged(m_currentFrame);
@@ -87,6 +89,34 @@ std::vector<SamplePatch> TakeDocument::applyPatches(std::vector<SamplePatch> pat
   std::vector<SamplePatch> undo = mocap::applyPatches(m_take, std::move(patches));
   emit samplesChanged(markers);
   return undo;
+}
+
+} // namespace mocap::ui
+
+namespace mocap::ui {
+
+std::string TakeDocument::renameMarker(Eigen::Index marker, std::string label)
+{
+  std::string old = m_take.label(marker);
+  m_take.setLabel(marker, std::move(label));
+  emit markerRenamed(marker);
+  return old;
+}
+
+void TakeDocument::setRange(Eigen::Index first, Eigen::Index last)
+{
+  if (first > last) {
+    first = 0;
+    last = -1;
+  } else {
+    first = std::max<Eigen::Index>(first, 0);
+    last = std::min<Eigen::Index>(last, m_take.frameCount() - 1);
+  }
+  if (first == m_rangeFirst && last == m_rangeLast)
+    return;
+  m_rangeFirst = first;
+  m_rangeLast = last;
+  emit rangeChanged();
 }
 
 } // namespace mocap::ui

@@ -45,6 +45,16 @@ public:
 
   /// Puts `patches` into the take and returns the undo patches (for commands only).
   std::vector<SamplePatch> applyPatches(std::vector<SamplePatch> patches);
+  /// Renames a marker and returns the old label (for commands only). Throws
+  /// InvalidArgument for an empty or duplicate label.
+  std::string renameMarker(Eigen::Index marker, std::string label);
+
+  /// The frame range selected on the curves, [first, last]; empty when first > last.
+  [[nodiscard]] Eigen::Index rangeFirst() const { return m_rangeFirst; }
+  [[nodiscard]] Eigen::Index rangeLast() const { return m_rangeLast; }
+  [[nodiscard]] bool hasRange() const { return m_rangeFirst <= m_rangeLast; }
+  void setRange(Eigen::Index first, Eigen::Index last);
+  void clearRange() { setRange(0, -1); }
 
 signals:
   /// A different take was loaded (or the take was replaced): views rebuild everything.
@@ -55,6 +65,8 @@ signals:
   void selectionChanged();
   void modifiedChanged(bool modified);
   void filePathChanged(const QString& path);
+  void markerRenamed(Eigen::Index marker);
+  void rangeChanged();
 
 private:
   Take m_take;
@@ -63,6 +75,8 @@ private:
   Eigen::Index m_currentFrame = 0;
   std::vector<Eigen::Index> m_selection;
   std::vector<std::string> m_loadWarnings;
+  Eigen::Index m_rangeFirst = 0;
+  Eigen::Index m_rangeLast = -1;
 };
 
 } // namespace mocap::ui

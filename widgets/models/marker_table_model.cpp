@@ -1,6 +1,9 @@
 #include "models/marker_table_model.h"
 
+#include "commands/rename_marker_command.h"
 #include "document/take_document.h"
+
+#include <QUndoStack>
 
 #include "mocap/gaps.h"
 
@@ -11,6 +14,10 @@ MarkerTableModel::MarkerTableModel(TakeDocument& document, QObject* parent)
 {
   connect(&document, &TakeDocument::takeReset, this, &MarkerTableModel::rebuild);
   connect(&document, &TakeDocument::samplesChanged, this, &MarkerTableModel::refresh);
+  connect(&document, &TakeDocument::markerRenamed, this, [this](Eigen::Index marker) {
+    const QModelIndex cell = index(static_cast<int>(marker), LabelColumn);
+    emit dataChanged(cell, cell);
+  });
   rebuild();
 }
 
@@ -30,7 +37,7 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
     return {};
   const auto marker = static_cast<Eigen::Index>(index.row());
   const MarkerStats& stats = m_stats[static_cast<std::size_t>(index.row())];
-  if (role == Qt::DisplayRole) {
+  if (role == Qt::DisplayRole || (role == Qt::EditRole && index.column() == LabelColumn)) {
     switch (index.column()) {
     case LabelColumn: return QString::fromStdString(m_document.take().label(marker));
     case ValidColumn: return QString::number(stats.validPercent, 'f', 1);
@@ -64,6 +71,27 @@ QVariant MarkerTableModel::headerData(int section, Qt::Orientation orientation, 
   case LongestGapColumn: return tr("Longest gap");
   default: return {};
   }
+}
+
+Qt::ItemFlags MarkerTableModel::flags(const QModelIndex& index) const
+{
+  Qt::ItemFlags f = QAbstractTableModel::flags(index);
+  if (index.column() == LabelColumn)
+    f |= Qt::ItemIsEditable;
+  return f;
+}
+
+bool MarkerTableModel::setData(const QModelIndex& index, const QVariant& value, int role)
+{
+  if (role != Qt::EditRole || index.column() != LabelColumn || !index.isValid())
+    return false;
+  const std::string label = value.toString().trimmed().toStdString();
+  const auto marker = static_cast<Eigen::Index>(index.row());
+  const Take& take = m_document.take();
+  if (label.empty() || label == take.label(marker) || take.markerIndex(label))
+    return false;
+  m_document.undoStack()->push(new RenameMarkerCommand(m_document, marker, label));
+  return true;
 }
 
 MarkerTableModel::MarkerStats MarkerTableModel::statsOf(Eigen::Index marker) const

@@ -33,6 +33,10 @@ public:
   [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
   [[nodiscard]] QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
   [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+  [[nodiscard]] Qt::ItemFlags flags(const QModelIndex& index) const override;
+  /// Editing a label pushes a RenameMarkerCommand (the model never changes the take itself);
+  /// an empty or duplicate label is refused.
+  bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
 private:
   struct MarkerStats

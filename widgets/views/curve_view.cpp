@@ -32,6 +32,7 @@ CurveView::CurveView(TakeDocument& document, QWidget* parent) : QWidget(parent),
   connect(&document, &TakeDocument::samplesChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::selectionChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::currentFrameChanged, this, qOverload<>(&CurveView::update));
+  connect(&document, &TakeDocument::rangeChanged, this, qOverload<>(&CurveView::update));
   showAll();
 }
 
@@ -84,6 +85,12 @@ void CurveView::paintEvent(QPaintEvent*)
   for (int axis = 0; axis < 3; ++axis) {
     const QRectF strip(area.left(), area.top() + axis * (stripHeight + kStripGap), area.width(), stripHeight);
     paintStrip(painter, strip, axis);
+  }
+  if (m_document.hasRange()) {
+    const double x0 = std::max(xOf(static_cast<double>(m_document.rangeFirst()) - 0.5), area.left());
+    const double x1 = std::min(xOf(static_cast<double>(m_document.rangeLast()) + 0.5), area.right());
+    if (x1 > x0)
+      painter.fillRect(QRectF(x0, area.top(), x1 - x0, area.height()), QColor(90, 150, 255, 60));
   }
   // Current frame and the frame axis.
   painter.setPen(QPen(QColor(255, 255, 255, 160), 1.0));
@@ -173,8 +180,14 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
 
 void CurveView::mousePressEvent(QMouseEvent* event)
 {
-  if (event->button() == Qt::LeftButton) {
-    m_document.setCurrentFrame(static_cast<Eigen::Index>(std::lround(frameAt(event->position().x()))));
+  const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(event->position().x())));
+  if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
+    m_rangeAnchor = frame;
+    m_document.setRange(frame, frame);
+  } else if (event->button() == Qt::LeftButton) {
+    m_rangeAnchor = -1;
+    m_document.clearRange();
+    m_document.setCurrentFrame(frame);
   } else {
     m_panStart = event->position();
     m_panFirst = m_first;
@@ -183,13 +196,21 @@ void CurveView::mousePressEvent(QMouseEvent* event)
 
 void CurveView::mouseMoveEvent(QMouseEvent* event)
 {
-  if (event->buttons() & Qt::LeftButton) {
-    m_document.setCurrentFrame(static_cast<Eigen::Index>(std::lround(frameAt(event->position().x()))));
+  const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(event->position().x())));
+  if ((event->buttons() & Qt::LeftButton) && m_rangeAnchor >= 0) {
+    m_document.setRange(std::min(m_rangeAnchor, frame), std::max(m_rangeAnchor, frame));
+  } else if (event->buttons() & Qt::LeftButton) {
+    m_document.setCurrentFrame(frame);
   } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
     const double span = m_last - m_first;
     const double shift = (event->position().x() - m_panStart.x()) / plotArea().width() * span;
     setVisibleRange(m_panFirst - shift, m_panFirst - shift + span);
   }
+}
+
+void CurveView::mouseReleaseEvent(QMouseEvent*)
+{
+  m_rangeAnchor = -1;
 }
 
 void CurveView::wheelEvent(QWheelEvent* event)

@@ -10,8 +10,8 @@ class TakeDocument;
 
 /// x, y and z against frame for the selected markers, one strip per axis: samples coloured by
 /// state, gaps of the first selected marker shaded, the current frame marked. Click sets the
-/// current frame; the wheel zooms around the cursor; right- or middle-drag pans; Home shows
-/// everything. Each pixel column draws the min-max of its frames, so 20 000 frames cost the
+/// current frame; Shift-drag selects a frame range (for range edits); the wheel zooms around
+/// the cursor; right- or middle-drag pans; Ctrl+Home shows everything. Each pixel column draws the min-max of its frames, so 20 000 frames cost the
 /// same as the widget's width.
 class CurveView final : public QWidget
 {
@@ -30,6 +30,7 @@ protected:
   void paintEvent(QPaintEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
 
@@ -44,6 +45,7 @@ private:
   double m_first = 0.0;
   double m_last = 1.0;
   QPointF m_panStart;
+  Eigen::Index m_rangeAnchor = -1;
   double m_panFirst = 0.0;
 };
 

@@ -149,6 +149,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   connect(&document, &TakeDocument::currentFrameChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::samplesChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
   rebuildScene();
 }
 

@@ -28,6 +28,11 @@ struct SamplePatch
 [[nodiscard]] SamplePatch makePatch(Eigen::Index marker, std::vector<Eigen::Index> frames,
                                     Eigen::Matrix<double, Eigen::Dynamic, 3> positions, SampleState state);
 
+/// A patch that makes frames [first, last] of `marker` a gap (invalid, residual −1, state
+/// Edited), keeping their positions. Frames already invalid are left out. Throws
+/// InvalidArgument for a marker or range outside the take. O(last − first).
+[[nodiscard]] SamplePatch deleteSamples(const Take& take, Eigen::Index marker, Eigen::Index first, Eigen::Index last);
+
 /// Puts `patch` into `take` and returns the samples it replaced, so applying the returned patch
 /// undoes the edit bit for bit. Throws InvalidArgument (and changes nothing) when the patch does
 /// not fit the take. O(patch size).
