@@ -9,7 +9,11 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
+#include <QElapsedTimer>
 #include <QTimer>
+
+#include <algorithm>
+#include <vector>
 
 #include <iostream>
 
@@ -28,6 +32,44 @@ void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
     }
     QApplication::exit(0);
   });
+}
+
+/// Steps through every frame with the selection's trails drawn, painting synchronously, and
+/// prints frame-time statistics as JSON (the playback budget at 100 Hz is 10 ms).
+int profilePlayback(mocap::studio::MainWindow& window)
+{
+  window.resize(1280, 800);
+  window.show();
+  QApplication::processEvents();
+  auto& document = window.document();
+  const Eigen::Index frames = document.take().frameCount();
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(frames));
+  QElapsedTimer total;
+  total.start();
+  for (Eigen::Index f = 0; f < frames; ++f) {
+    QElapsedTimer clock;
+    clock.start();
+    document.setCurrentFrame(f);
+    window.repaint();  // synchronous paint of every view, the 3D render included
+    QApplication::processEvents();
+    times.push_back(static_cast<double>(clock.nsecsElapsed()) * 1e-6);
+  }
+  const double seconds = static_cast<double>(total.nsecsElapsed()) * 1e-9;
+  std::vector<double> sorted = times;
+  std::sort(sorted.begin(), sorted.end());
+  auto percentile = [&](double p) {
+    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(p * static_cast<double>(sorted.size() - 1))];
+  };
+  double mean = 0.0;
+  for (double t : times)
+    mean += t;
+  mean /= std::max<double>(static_cast<double>(times.size()), 1.0);
+  std::cout << "{\"frames\": " << frames << ", \"seconds\": " << seconds << ", \"mean_ms\": " << mean
+            << ", \"median_ms\": " << percentile(0.5) << ", \"p95_ms\": " << percentile(0.95)
+            << ", \"max_ms\": " << (sorted.empty() ? 0.0 : sorted.back())
+            << ", \"take_rate_hz\": " << document.take().frameRate() << "}\n";
+  return 0;
 }
 
 } // namespace
@@ -50,7 +92,9 @@ int main(int argc, char** argv)
                                  QStringLiteral("N"));
   const QCommandLineOption select(QStringLiteral("select"), QStringLiteral("Select markers LABEL,..."),
                                   QStringLiteral("LABELS"));
-  parser.addOptions({screenshot, frame, select});
+  const QCommandLineOption profile(QStringLiteral("profile"),
+                                   QStringLiteral("Step through every frame, print frame times as JSON, exit."));
+  parser.addOptions({screenshot, frame, select, profile});
   parser.process(app);
 
   mocap::studio::MainWindow window;
@@ -72,6 +116,8 @@ int main(int argc, char** argv)
     }
     window.document().setCurrentFrame(static_cast<Eigen::Index>(number - window.document().take().firstFrame()));
   }
+  if (parser.isSet(profile))
+    return profilePlayback(window);
   if (parser.isSet(screenshot))
     scheduleScreenshot(window, parser.value(screenshot));
   window.show();

@@ -215,8 +215,9 @@ void MarkerView3d::resetCamera()
 
 void MarkerView3d::rebuildScene()
 {
+  m_takeSize = takeSize();
   // The glyph is a unit sphere; the factor makes it the marker radius.
-  m_mapper->SetScaleFactor(m_markerScale * takeSize());
+  m_mapper->SetScaleFactor(m_markerScale * m_takeSize);
   updateFrame();
   resetCamera();
 }
@@ -284,25 +285,42 @@ void MarkerView3d::updateTrails()
 void MarkerView3d::updateLabels()
 {
   vtkRenderer* renderer = m_viewport->renderer();
-  for (auto& label : m_labels)
-    renderer->RemoveActor(label);
-  m_labels.clear();
   const Take& take = m_document.take();
+  const auto& selection = m_document.selection();
+  // Text actors are rebuilt only when the selection (or a label) changes: rasterising text
+  // every frame would dominate playback.
+  bool rebuild = selection.size() != m_labels.size();
+  for (std::size_t i = 0; !rebuild && i < selection.size(); ++i)
+    rebuild = m_labelMarkers[i] != selection[i] || m_labelTexts[i] != take.label(selection[i]);
+  if (rebuild) {
+    for (auto& label : m_labels)
+      renderer->RemoveActor(label);
+    m_labels.clear();
+    m_labelMarkers = selection;
+    m_labelTexts.clear();
+    for (Eigen::Index m : selection) {
+      auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
+      label->SetInput(take.label(m).c_str());
+      label->GetTextProperty()->SetFontSize(14);
+      label->GetTextProperty()->SetColor(1.0, 1.0, 0.8);
+      label->GetTextProperty()->SetBold(true);
+      label->GetTextProperty()->SetShadow(true);
+      renderer->AddActor(label);
+      m_labels.push_back(label);
+      m_labelTexts.push_back(take.label(m));
+    }
+  }
   const Eigen::Index frame = m_document.currentFrame();
-  const double offset = 2.5 * m_markerScale * takeSize();
-  for (Eigen::Index m : m_document.selection()) {
-    if (frame >= take.frameCount() || !take.isValid(frame, m))
+  const double offset = 2.5 * m_markerScale * m_takeSize;
+  for (std::size_t i = 0; i < m_labels.size(); ++i) {
+    const Eigen::Index m = m_labelMarkers[i];
+    const bool visible = frame < take.frameCount() && take.isValid(frame, m);
+    m_labels[i]->SetVisibility(visible);
+    if (!visible)
       continue;
-    auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
-    label->SetInput(take.label(m).c_str());
     const Eigen::Vector3d p = take.position(frame, m);
-    label->SetPosition(p.x(), p.y(), p.z() + (m_upAxis == 2 ? offset : 0.0));
-    label->GetTextProperty()->SetFontSize(14);
-    label->GetTextProperty()->SetColor(1.0, 1.0, 0.8);
-    label->GetTextProperty()->SetBold(true);
-    label->GetTextProperty()->SetShadow(true);
-    renderer->AddActor(label);
-    m_labels.push_back(label);
+    const Eigen::Vector3d lifted = p + offset * Eigen::Vector3d::Unit(m_upAxis);
+    m_labels[i]->SetPosition(lifted.x(), lifted.y(), lifted.z());
   }
 }
 

@@ -7,6 +7,7 @@
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
+#include <string>
 #include <vector>
 
 class QLabel;
@@ -72,7 +73,10 @@ private:
   vtkNew<vtkActor> m_trailActor;
   vtkNew<vtkRenderer> m_axesRenderer;
   vtkNew<vtkAxesActor> m_axes;
-  std::vector<vtkSmartPointer<vtkBillboardTextActor3D>> m_labels;
+  std::vector<vtkSmartPointer<vtkBillboardTextActor3D>> m_labels;  // one per selected marker
+  std::vector<Eigen::Index> m_labelMarkers;
+  std::vector<std::string> m_labelTexts;
+  double m_takeSize = 1.0;  // diagonal of the take's markers, fixed per take
   std::vector<Eigen::Index> m_drawnMarkers;  // point id -> marker
   int m_trailFrames = 50;
   double m_markerScale = 0.012;
