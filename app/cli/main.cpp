@@ -16,7 +16,9 @@ constexpr const char* kUsage =
     "commands:\n"
     "  info FILE [--json]   markers, frames, rate, units, analog channels, valid fraction and every gap\n"
     "  convert IN OUT [--units mm|cm|m]\n"
-    "                       convert between .c3d .trc (read/write) and .csv .bvh (write)\n";
+    "                       convert between .c3d .trc (read/write) and .csv .bvh (write)\n"
+    "  eval-spikes TAKE [--count N] [--amplitude MM] [--seed S] [--json]\n"
+    "                       inject spikes, report recall and false alarms per detector\n";
 
 } // namespace
 
@@ -26,6 +28,7 @@ int main(int argc, char** argv)
   const std::map<std::string, std::function<int(const std::vector<std::string>&)>> commands = {
       {"info", runInfo},
       {"convert", runConvert},
+      {"eval-spikes", runEvalSpikes},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";

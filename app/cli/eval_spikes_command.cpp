@@ -1,0 +1,99 @@
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/json_writer.h"
+#include "mocap/spike_evaluation.h"
+#include "mocap/take_io.h"
+
+#include <cstdio>
+#include <iostream>
+#include <limits>
+
+namespace mocap::cli {
+
+namespace {
+
+void writeJson(const std::string& file, const SpikeEvaluationOptions& options,
+               const std::vector<SpikeEvaluation>& results)
+{
+  JsonWriter json;
+  json.beginObject();
+  json.key("take").value(file);
+  json.key("amplitude").value(options.amplitude);
+  json.key("count").value(options.count);
+  json.key("seed").value(static_cast<std::int64_t>(options.seed));
+  json.key("methods").beginArray();
+  for (const SpikeEvaluation& result : results) {
+    json.beginObject();
+    json.key("method").value(result.method);
+    json.key("recall").value(result.recall);
+    json.key("false_alarm_rate").value(result.falseAlarmRate);
+    json.key("injected").value(static_cast<std::int64_t>(result.injected));
+    json.key("detected").value(static_cast<std::int64_t>(result.detected));
+    json.key("false_alarms").value(static_cast<std::int64_t>(result.falseAlarms));
+    json.key("restored_rmse").value(result.restoredRmse);
+    json.key("clean_samples").value(static_cast<std::int64_t>(result.cleanSamples));
+    json.key("flagged_before").value(static_cast<std::int64_t>(result.flaggedBefore));
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  std::cout << json.str() << '\n';
+}
+
+void writeText(const std::string& file, const SpikeEvaluationOptions& options,
+               const std::vector<SpikeEvaluation>& results)
+{
+  std::cout << file << ": " << options.count << " spikes of " << options.amplitude << " mm, seed "
+            << options.seed;
+  if (!results.empty() && results.front().spikes < options.count)
+    std::cout << " (room for " << results.front().spikes << ")";
+  std::cout << '\n';
+  char line[200];
+  std::snprintf(line, sizeof line, "%-8s %9s %9s %8s %9s %11s %12s %11s %12s\n", "method", "injected",
+                "detected", "recall", "false", "false rate", "restored mm", "clean", "flagged before");
+  std::cout << line;
+  for (const SpikeEvaluation& result : results) {
+    std::snprintf(line, sizeof line, "%-8s %9lld %9lld %7.2f%% %9lld %10.3f%% %12.3f %11lld %12lld\n",
+                  result.method.c_str(), static_cast<long long>(result.injected),
+                  static_cast<long long>(result.detected), 100.0 * result.recall,
+                  static_cast<long long>(result.falseAlarms), 100.0 * result.falseAlarmRate,
+                  result.restoredRmse, static_cast<long long>(result.cleanSamples),
+                  static_cast<long long>(result.flaggedBefore));
+    std::cout << line;
+  }
+}
+
+} // namespace
+
+int runEvalSpikes(const std::vector<std::string>& args)
+{
+  const Arguments arguments(args, {"--json"},
+                            {"--count", "--amplitude", "--seed", "--factor", "--threshold"});
+  arguments.expectPositionals(1, "one TAKE");
+  const std::string& file = arguments.positionals()[0];
+  SpikeEvaluationOptions options;
+  if (const auto count = arguments.integer("--count", 1, 1000000))
+    options.count = static_cast<int>(*count);
+  if (const auto amplitude = arguments.number("--amplitude", 1e-6, 1e6))
+    options.amplitude = *amplitude;
+  if (const auto seed = arguments.integer("--seed", 0, std::numeric_limits<long long>::max()))
+    options.seed = static_cast<std::uint64_t>(*seed);
+  if (const auto factor = arguments.number("--factor", 1e-6, 1e6))
+    options.detector.factor = *factor;
+  if (const auto threshold = arguments.number("--threshold", 1e-6, 1e6))
+    options.detector.threshold = *threshold;
+  std::vector<std::string> warnings;
+  const Take take = readTake(file, &warnings);
+  for (const auto& w : warnings)
+    std::cerr << file << ": warning: " << w << '\n';
+  const std::vector<SpikeEvaluation> results = evaluateSpikes(take, options);
+  if (arguments.has("--json"))
+    writeJson(file, options, results);
+  else
+    writeText(file, options, results);
+  return kExitOk;
+}
+
+} // namespace mocap::cli

@@ -1,0 +1,433 @@
+#include "mocap/spike_detection.h"
+
+#include "mocap/c3d_reader.h"
+#include "mocap/error.h"
+#include "mocap/sample_patch.h"
+#include "mocap/spike_evaluation.h"
+#include "mocap/trc_io.h"
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace mocap {
+namespace {
+
+using Frames = std::vector<Eigen::Index>;
+using Xyz = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+
+SpikeOptions paper(double factor = 1.5)
+{
+  SpikeOptions options;
+  options.method = SpikeMethod::Paper;
+  options.factor = factor;
+  return options;
+}
+
+SpikeOptions robust()
+{
+  return {};
+}
+
+ValidMask allValid(Eigen::Index frames)
+{
+  return ValidMask::Constant(frames, true);
+}
+
+// A marker moving at 1 unit per frame along x.
+Xyz straightLine(Eigen::Index frames)
+{
+  Xyz xyz = Xyz::Zero(frames, 3);
+  for (Eigen::Index f = 0; f < frames; ++f)
+    xyz(f, 0) = static_cast<double>(f);
+  return xyz;
+}
+
+// Fast motion at 60 Hz: a 1.5 Hz, 30 mm swing (up to 4.7 mm per frame, faster than any marker of
+// the real 60 Hz takes) plus a slower drift.
+Xyz fastMotion(Eigen::Index frames)
+{
+  Xyz xyz(frames, 3);
+  const double pi = 3.14159265358979323846;
+  for (Eigen::Index f = 0; f < frames; ++f) {
+    const double t = static_cast<double>(f) / 60.0;
+    xyz.row(f) << 30.0 * std::sin(2.0 * pi * 1.5 * t), 10.0 * std::cos(2.0 * pi * 0.7 * t), 5.0 * t;
+  }
+  return xyz;
+}
+
+const Take& noseTake()
+{
+  static const Take take = readTrc(test::dataFile("trc/NoseMoCap.trc"));
+  return take;
+}
+
+Frames framesOf(const std::vector<SpikeFlag>& flags, Eigen::Index marker)
+{
+  Frames frames;
+  for (const SpikeFlag& flag : flags)
+    if (flag.marker == marker)
+      frames.push_back(flag.frame);
+  return frames;
+}
+
+TEST(SpikeDetection, MethodNamesRoundTrip)
+{
+  EXPECT_EQ(parseSpikeMethod("paper"), SpikeMethod::Paper);
+  EXPECT_EQ(parseSpikeMethod("robust"), SpikeMethod::Robust);
+  EXPECT_FALSE(parseSpikeMethod("Robust"));
+  EXPECT_FALSE(parseSpikeMethod(""));
+  EXPECT_EQ(spikeMethodName(SpikeMethod::Paper), "paper");
+  EXPECT_EQ(spikeMethodName(SpikeMethod::Robust), "robust");
+}
+
+TEST(SpikeDetection, PaperFlagsExactlyTheBadPointOfEq9)
+{
+  // P_0..P_6 step 1 along x; P_3 is lifted 4 in y. Segments: 1, 1, √17, √17, 1, 1, so
+  // eq 8: k = (4 + 2√17) / 6 = 2.0409 and 1.5k = 3.0614. Only P_3 has both segments (√17 = 4.123)
+  // above it; P_2 and P_4 have one long and one short segment.
+  Xyz xyz = straightLine(7);
+  xyz(3, 1) = 4.0;
+  EXPECT_EQ(detectSpikes(xyz, allValid(7), paper()), Frames{3});
+  // factor 2.1: 2.1k = 4.286 > √17, nothing is bad any more.
+  EXPECT_TRUE(detectSpikes(xyz, allValid(7), paper(2.1)).empty());
+  // A lower factor lets short segments count: 0.4k = 0.816 < 1, so every interior point is bad.
+  EXPECT_EQ(detectSpikes(xyz, allValid(7), paper(0.4)), (Frames{1, 2, 3, 4, 5}));
+}
+
+TEST(SpikeDetection, PaperComputesKPerRun)
+{
+  // Run 0..5 moves 1 per frame with P_2 lifted 3 in y; run 7..12 moves 10 per frame. Sharing k
+  // would make 1.5k ≈ 7 and hide the first spike. Per run: segments 1, √10, √10, 1, 1 give
+  // k = (3 + 2√10) / 5 = 1.865, 1.5k = 2.80 < √10 = 3.16, so P_2 is bad; the fast run is even.
+  Xyz xyz = Xyz::Zero(13, 3);
+  for (Eigen::Index f = 0; f < 6; ++f)
+    xyz(f, 0) = static_cast<double>(f);
+  xyz(2, 1) = 3.0;
+  for (Eigen::Index f = 7; f < 13; ++f)
+    xyz(f, 0) = 100.0 + 10.0 * static_cast<double>(f);
+  ValidMask valid = allValid(13);
+  valid(6) = false;
+  xyz(6, 0) = std::numeric_limits<double>::quiet_NaN();  // an invalid sample is never read
+  EXPECT_EQ(detectSpikes(xyz, valid, paper()), Frames{2});
+  EXPECT_EQ(detectSpikes(xyz, valid, robust()), Frames{2});
+}
+
+TEST(SpikeDetection, NeverFlagsAcrossAGap)
+{
+  // The marker comes back 50 mm away after a gap: each run is smooth on its own.
+  for (const SpikeOptions& options : {paper(), robust()}) {
+    Xyz xyz = fastMotion(200);
+    ValidMask valid = allValid(200);
+    valid.segment(100, 10) = false;
+    xyz.bottomRows(90).col(2).array() += 50.0;
+    xyz.middleRows(100, 10).setConstant(1e9);
+    const Frames flags = detectSpikes(xyz, valid, options);
+    if (options.method == SpikeMethod::Robust) {
+      EXPECT_TRUE(flags.empty());
+    }
+    for (Eigen::Index f : flags) {
+      EXPECT_TRUE(valid(f));
+      EXPECT_TRUE(f < 98 || f > 111) << f;
+    }
+  }
+}
+
+TEST(SpikeDetection, ShortAndStillRunsAreNotJudged)
+{
+  Xyz xyz = straightLine(15);
+  ValidMask valid = allValid(15);
+  valid(2) = false;
+  valid(7) = false;
+  xyz(1, 1) = 5.0;   // run 0..1: too short for either method
+  xyz(5, 1) = 5.0;   // run 3..6: too short for Robust; in 4 samples eq 9 can never flag one spike
+                     // (segments 1, s, s: 1.5k = 0.5 + s > s)
+  xyz(10, 1) = 5.0;  // run 8..14: segments 1, 1, s, s, 1, 1 with s = √26 = 5.10: 1.5k = 3.05
+  EXPECT_EQ(detectSpikes(xyz, valid, paper()), Frames{10});
+  EXPECT_EQ(detectSpikes(xyz, valid, robust()), Frames{10});
+  // A marker that never moves: k = 0, nothing stands out.
+  EXPECT_TRUE(detectSpikes(Xyz::Ones(20, 3), allValid(20), paper()).empty());
+  EXPECT_TRUE(detectSpikes(Xyz::Ones(20, 3), allValid(20), robust()).empty());
+}
+
+TEST(SpikeDetection, RobustLeavesSmoothMotionAloneAndFindsSpikesInIt)
+{
+  Xyz xyz = fastMotion(300);
+  EXPECT_TRUE(detectSpikes(xyz, allValid(300), robust()).empty());
+  EXPECT_TRUE(detectSpikes(straightLine(50), allValid(50), robust()).empty());
+  // 5 mm spikes, at 60, 120 and 0 where the marker moves fastest (4.7 mm per frame): single,
+  // double, triple, and at both run ends.
+  const Eigen::RowVector3d offset(0.0, 3.0, 4.0);
+  xyz.row(0) += offset;
+  xyz.row(60) += offset;
+  xyz.middleRows(120, 2).rowwise() += offset;
+  xyz.middleRows(195, 3).rowwise() += offset;
+  xyz.row(299) += offset;
+  EXPECT_EQ(detectSpikes(xyz, allValid(300), robust()), (Frames{0, 60, 120, 121, 195, 196, 197, 299}));
+}
+
+TEST(SpikeDetection, RobustCatchesWhatEq9Misses)
+{
+  const Take& take = noseTake();
+  const Eigen::Index marker = *take.markerIndex("NoseHead");
+  Xyz xyz = take.trajectory(marker);
+  ValidMask valid = take.valid().col(marker);
+  ASSERT_TRUE(detectSpikes(xyz, valid, robust()).empty());
+  // A 2-sample spike (the segment between its samples is short) and a spike on the last sample
+  // before a gap (eq 9 needs a segment on both sides).
+  const Eigen::RowVector3d offset(3.0, 0.0, -4.0);
+  xyz.middleRows(300, 2).rowwise() += offset;
+  valid.segment(601, 10) = false;
+  xyz.row(600) += offset;
+  EXPECT_EQ(detectSpikes(xyz, valid, robust()), (Frames{300, 301, 600}));
+  const Frames paperAfter = detectSpikes(xyz, valid, paper());
+  for (Eigen::Index f : {300, 301, 600})
+    EXPECT_EQ(std::count(paperAfter.begin(), paperAfter.end(), f), 0) << f;
+}
+
+TEST(SpikeDetection, RunsAreJudgedAloneInATakeWithGaps)
+{
+  // Flags on a whole trajectory are exactly the flags of each valid run cut out on its own.
+  const Take take = readC3d(test::sampleTake());
+  for (const SpikeOptions& options : {paper(), robust()}) {
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+      const auto valid = take.valid().col(m);
+      Frames perRun;
+      for (Eigen::Index f = 0; f < take.frameCount();) {
+        if (!valid(f)) {
+          ++f;
+          continue;
+        }
+        Eigen::Index end = f;
+        while (end < take.frameCount() && valid(end))
+          ++end;
+        for (Eigen::Index g :
+             detectSpikes(take.trajectory(m).middleRows(f, end - f), allValid(end - f), options))
+          perRun.push_back(f + g);
+        f = end;
+      }
+      ASSERT_EQ(detectSpikes(take.trajectory(m), valid, options), perRun) << take.label(m);
+    }
+  }
+}
+
+TEST(SpikeDetection, InjectedSpikeInCleanRealDataIsFoundAndRestored)
+{
+  const Take& clean = noseTake();
+  ASSERT_EQ(clean.markerCount(), 41);
+  ASSERT_EQ(clean.frameCount(), 962);
+  const std::vector<SpikeFlag> before = detectSpikes(clean, robust());
+  // Well under 0.1 % of this clean take is flagged.
+  EXPECT_LT(static_cast<double>(before.size()), 0.001 * static_cast<double>(clean.valid().count()));
+  const Eigen::Index marker = *clean.markerIndex("Mouth_Lend");
+  ASSERT_TRUE(framesOf(before, marker).empty());
+  for (const Eigen::Index frame : {Eigen::Index{0}, Eigen::Index{480}, Eigen::Index{961}}) {
+    Take take = clean;
+    take.setPosition(frame, marker, clean.position(frame, marker) + Eigen::Vector3d(0.0, -5.0, 0.0));
+    const std::vector<SpikeFlag> flags = detectSpikes(take, robust());
+    EXPECT_EQ(framesOf(flags, marker), Frames{frame});
+    const std::vector<SamplePatch> patches = replaceSpikes(take, {{marker, frame}});
+    ASSERT_EQ(patches.size(), 1u);
+    applyPatches(take, patches);
+    // Restored within the take's own noise and motion per frame (tenths of a millimetre).
+    EXPECT_LT((take.position(frame, marker) - clean.position(frame, marker)).norm(), 0.3) << frame;
+  }
+}
+
+TEST(SpikeDetection, FlagsAreTheSameInAnyUnit)
+{
+  Take metres = noseTake();
+  const Eigen::Index marker = *metres.markerIndex("Chin_L1");
+  metres.setPosition(500, marker, metres.position(500, marker) + Eigen::Vector3d(4.0, 3.0, 0.0));
+  const std::vector<SpikeFlag> millimetreFlags = detectSpikes(metres, robust());
+  EXPECT_EQ(framesOf(millimetreFlags, marker), Frames{500});
+  EXPECT_GT(millimetreFlags.size(), 1u);  // a few fast samples of other markers too: they must match
+  metres.convertUnits(LengthUnit::Metre);
+  const std::vector<SpikeFlag> metreFlags = detectSpikes(metres, robust());
+  EXPECT_EQ(metreFlags, millimetreFlags);
+}
+
+TEST(SpikeDetection, ReplacementIsEq10AndLinearAcrossBlocks)
+{
+  // Marker a: P_f = (f², f, 0), valid except frame 9 (a gap), frames 12..13 a run of their own.
+  Take take({"a", "b"}, 14, 100.0);
+  for (Eigen::Index f = 0; f < 14; ++f) {
+    const auto t = static_cast<double>(f);
+    take.setPosition(f, 0, {t * t, t, 0.0});
+    take.valid()(f, 0) = f != 9 && f != 11;
+    take.residuals()(f, 0) = take.valid()(f, 0) ? 0.5 : -1.0;
+  }
+  const auto row = [](double t) { return Eigen::RowVector3d(t * t, t, 0.0); };
+  const std::vector<SpikeFlag> flags = {{0, 3}, {0, 5}, {0, 6}, {0, 12}, {0, 13}, {0, 3}, {0, 9}, {1, 4}};
+  const std::vector<SamplePatch> patches = replaceSpikes(take, flags);
+  // Marker b is never valid and frame 9 of a is in a gap: those flags are ignored. Run 12..13 is
+  // all flagged: nothing to rebuild it from, so it is left alone.
+  ASSERT_EQ(patches.size(), 1u);
+  const SamplePatch& patch = patches[0];
+  EXPECT_EQ(patch.marker, 0);
+  ASSERT_EQ(patch.frames, (Frames{3, 5, 6}));
+  // Eq 10: the mid-value of the neighbours 2 and 4.
+  EXPECT_EQ(patch.positions.row(0), 0.5 * (row(2.0) + row(4.0)));
+  // Block 5..6: on the straight line from 4 to 7.
+  EXPECT_LT((patch.positions.row(1) - (2.0 * row(4.0) + row(7.0)) / 3.0).norm(), 1e-12);
+  EXPECT_LT((patch.positions.row(2) - (row(4.0) + 2.0 * row(7.0)) / 3.0).norm(), 1e-12);
+  for (SampleState state : patch.states)
+    EXPECT_EQ(state, SampleState::Edited);
+  EXPECT_TRUE(patch.valid.all());
+  EXPECT_TRUE((patch.residuals == 0.0).all());
+}
+
+TEST(SpikeDetection, ReplacementExtrapolatesAtRunEnds)
+{
+  // A straight line, so the least-squares line through the nearest unflagged samples is exact.
+  Take take({"a"}, 12, 100.0);
+  for (Eigen::Index f = 0; f < 12; ++f) {
+    const auto t = static_cast<double>(f);
+    take.setPosition(f, 0, {2.0 * t, 1.0, -t});
+    take.valid()(f, 0) = f != 8;
+  }
+  const Take truth = take;
+  take.setPosition(0, 0, {9.0, 9.0, 9.0});  // first sample of the take
+  take.setPosition(3, 0, {9.0, 9.0, 9.0});
+  for (Eigen::Index f = 5; f < 8; ++f)  // a block of 3 ending at the gap at 8
+    take.setPosition(f, 0, {-9.0, 9.0, 9.0});
+  const std::vector<SamplePatch> patches = replaceSpikes(take, {{0, 0}, {0, 3}, {0, 5}, {0, 6}, {0, 7}});
+  ASSERT_EQ(patches.size(), 1u);
+  ASSERT_EQ(patches[0].frames, (Frames{0, 3, 5, 6, 7}));
+  for (std::size_t i = 0; i < patches[0].frames.size(); ++i) {
+    const Eigen::Index f = patches[0].frames[i];
+    EXPECT_LT((patches[0].positions.row(static_cast<Eigen::Index>(i)) - truth.trajectory(0).row(f)).norm(),
+              1e-12)
+        << f;
+  }
+  // With one unflagged neighbour only, the block takes its position.
+  Take pair({"a"}, 3, 100.0);
+  pair.valid().col(0).setConstant(true);
+  pair.setPosition(0, 0, {1.0, 2.0, 3.0});
+  const auto single = replaceSpikes(pair, {{0, 1}, {0, 2}});
+  ASSERT_EQ(single.size(), 1u);
+  EXPECT_EQ(single[0].positions.row(1), Eigen::RowVector3d(1.0, 2.0, 3.0));
+}
+
+TEST(SpikeDetection, ReplacingChangesOnlyTheFlaggedSamples)
+{
+  Take take = readC3d(test::sampleTake());
+  const Take original = take;
+  const std::vector<SpikeFlag> flags = detectSpikes(take, robust());
+  ASSERT_FALSE(flags.empty());  // this take has real glitches
+  for (const SpikeFlag& flag : flags)
+    ASSERT_TRUE(take.isValid(flag.frame, flag.marker));
+  applyPatches(take, replaceSpikes(take, flags));
+  SampleMask flagged = SampleMask::Constant(take.frameCount(), take.markerCount(), false);
+  for (const SpikeFlag& flag : flags)
+    flagged(flag.frame, flag.marker) = true;
+  EXPECT_TRUE((take.valid() == original.valid()).all());
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+      if (flagged(f, m)) {
+        ASSERT_EQ(take.state(f, m), SampleState::Edited);
+        ASSERT_EQ(take.residuals()(f, m), 0.0);
+        continue;
+      }
+      ASSERT_EQ(take.state(f, m), original.state(f, m));
+      ASSERT_EQ(take.residuals()(f, m), original.residuals()(f, m));
+      ASSERT_EQ(take.position(f, m), original.position(f, m)) << m << " " << f;
+    }
+}
+
+TEST(SpikeDetection, BadInput)
+{
+  // Empty takes and never-valid markers: no flags, no patches.
+  EXPECT_TRUE(detectSpikes(Take(), robust()).empty());
+  EXPECT_TRUE(replaceSpikes(Take(), {}).empty());
+  const Take invalid({"a", "b"}, 50, 100.0);
+  EXPECT_TRUE(detectSpikes(invalid, robust()).empty());
+  EXPECT_TRUE(detectSpikes(invalid, paper()).empty());
+  EXPECT_TRUE(detectSpikes(Xyz(0, 3), ValidMask(0), robust()).empty());
+  // NaN in a valid sample.
+  Take nan({"a", "b"}, 20, 100.0);
+  nan.valid().setConstant(true);
+  nan.setPosition(7, 1, {0.0, std::numeric_limits<double>::quiet_NaN(), 0.0});
+  for (const SpikeOptions& options : {paper(), robust()}) {
+    try {
+      (void)detectSpikes(nan, options);
+      ADD_FAILURE() << "no exception";
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("marker b"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("frame 7"), std::string::npos) << e.what();
+    }
+  }
+  nan.valid()(7, 1) = false;  // invalid samples may hold anything
+  EXPECT_NO_THROW((void)detectSpikes(nan, robust()));
+  // Options out of range.
+  const Xyz xyz = straightLine(10);
+  for (double factor :
+       {-1.5, 0.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    EXPECT_THROW((void)detectSpikes(xyz, allValid(10), paper(factor)), InvalidArgument) << factor;
+  SpikeOptions options = robust();
+  options.threshold = -6.0;
+  EXPECT_THROW((void)detectSpikes(xyz, allValid(10), options), InvalidArgument);
+  options.threshold = 6.0;
+  options.noiseFloor = -0.1;
+  EXPECT_THROW((void)detectSpikes(xyz, allValid(10), options), InvalidArgument);
+  EXPECT_THROW((void)detectSpikes(noseTake(), paper(-1.0)), InvalidArgument);
+  EXPECT_THROW(checkSpikeOptions(paper(-1.0)), InvalidArgument);
+  // Sizes that disagree, flags outside the take.
+  EXPECT_THROW((void)detectSpikes(xyz, allValid(9), robust()), InvalidArgument);
+  EXPECT_THROW((void)replaceSpikes(invalid, {{2, 0}}), InvalidArgument);
+  EXPECT_THROW((void)replaceSpikes(invalid, {{0, 50}}), InvalidArgument);
+  EXPECT_THROW((void)replaceSpikes(invalid, {{0, -1}}), InvalidArgument);
+}
+
+TEST(SpikeEvaluation, RobustMeetsTheTargetOnCleanRealData)
+{
+  // The target at 5 mm: recall >= 99 % with at most 1 % false alarms.
+  const std::vector<SpikeEvaluation> results = evaluateSpikes(noseTake(), {});
+  ASSERT_EQ(results.size(), 2u);
+  const SpikeEvaluation& paperResult = results[0];
+  const SpikeEvaluation& robustResult = results[1];
+  EXPECT_EQ(paperResult.method, "paper");
+  EXPECT_EQ(robustResult.method, "robust");
+  EXPECT_GE(robustResult.injected, 200 + 200 / 3);  // a third of the spikes are 2-3 samples long
+  EXPECT_EQ(robustResult.injected, paperResult.injected);
+  EXPECT_GE(robustResult.recall, 0.99);
+  EXPECT_LE(robustResult.falseAlarmRate, 0.01);
+  EXPECT_LT(robustResult.restoredRmse, 0.5);
+  // Eq 9 misses blocks and run ends: it cannot reach the target.
+  EXPECT_LT(paperResult.recall, 0.6);
+  EXPECT_EQ(robustResult.recall,
+            static_cast<double>(robustResult.detected) / static_cast<double>(robustResult.injected));
+}
+
+TEST(SpikeEvaluation, IsReproducibleAndChecksItsOptions)
+{
+  SpikeEvaluationOptions options;
+  options.count = 30;
+  options.seed = 7;
+  const auto first = evaluateSpikes(noseTake(), options);
+  const auto second = evaluateSpikes(noseTake(), options);
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    EXPECT_EQ(first[i].injected, second[i].injected);
+    EXPECT_EQ(first[i].detected, second[i].detected);
+    EXPECT_EQ(first[i].falseAlarms, second[i].falseAlarms);
+  }
+  options.count = 0;
+  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  options.count = 10;
+  options.amplitude = -5.0;
+  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  options.amplitude = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  options.amplitude = 5.0;
+  options.detector.factor = -1.0;
+  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateSpikes(Take({"a"}, 10, 100.0), {}), InvalidArgument);
+  EXPECT_THROW((void)evaluateSpikes(Take(), {}), InvalidArgument);
+}
+
+} // namespace
+} // namespace mocap
