@@ -3,6 +3,8 @@
 #include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
+#include "panels/cleaning_panel.h"
+#include "panels/spike_step.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
 #include "views/timeline_widget.h"
@@ -99,6 +101,13 @@ void MainWindow::createDocks()
   curveDock->setObjectName(QStringLiteral("curvesDock"));
   curveDock->setWidget(m_curves);
   addDockWidget(Qt::BottomDockWidgetArea, curveDock);
+
+  m_cleaning = new ui::CleaningPanel(*m_document, this);
+  m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
+  auto* cleaningDock = new QDockWidget(tr("Cleaning"), this);
+  cleaningDock->setObjectName(QStringLiteral("cleaningDock"));
+  cleaningDock->setWidget(m_cleaning);
+  addDockWidget(Qt::RightDockWidgetArea, cleaningDock);
 }
 
 void MainWindow::createActions()

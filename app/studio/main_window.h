@@ -10,6 +10,7 @@ class QSortFilterProxyModel;
 class QTableView;
 
 namespace mocap::ui {
+class CleaningPanel;
 class CurveView;
 class MarkerTableModel;
 class MarkerView3d;
@@ -38,6 +39,7 @@ public:
   [[nodiscard]] QTableView* markerTable() const { return m_table; }
   [[nodiscard]] ui::CurveView* curveView() const { return m_curves; }
   [[nodiscard]] ui::TimelineWidget* timeline() const { return m_timeline; }
+  [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
 
@@ -66,6 +68,7 @@ private:
   ui::MarkerView3d* m_view3d = nullptr;
   ui::CurveView* m_curves = nullptr;
   ui::TimelineWidget* m_timeline = nullptr;
+  ui::CleaningPanel* m_cleaning = nullptr;
   ui::MarkerTableModel* m_tableModel = nullptr;
   QSortFilterProxyModel* m_proxy = nullptr;
   QTableView* m_table = nullptr;

@@ -4,6 +4,7 @@
 #include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "panels/cleaning_panel.h"
 #include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
 
@@ -173,6 +174,30 @@ TEST_F(StudioWindow, DeleteRangeMakesAGapForTheSelectedMarkers)
   EXPECT_TRUE(doc.take().valid().col(1).all()) << "root-2 was not selected";
   doc.undoStack()->undo();
   EXPECT_TRUE(doc.take().valid().col(0).all());
+}
+
+TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
+{
+  TakeDocument& doc = window->document();
+  // Put a 6 mm spike into a clean stretch, as the file's own (undoable) edit.
+  const Eigen::Index marker = *doc.take().markerIndex("section8-1");
+  const Eigen::Vector3d truth = doc.take().position(1500, marker);
+  doc.undoStack()->push(new ui::ApplyPatchesCommand(
+      doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleState::Edited)},
+      QStringLiteral("spike")));
+  const Take before = doc.take();
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  panel->waitForPreview();
+  const auto& flags = doc.flags();
+  EXPECT_NE(std::find(flags.begin(), flags.end(), std::make_pair(marker, Eigen::Index{1500})), flags.end());
+  EXPECT_FALSE(doc.preview().empty());
+  EXPECT_EQ(doc.take().position(1500, marker), before.position(1500, marker)) << "a preview never touches the take";
+  EXPECT_GT(panel->apply(), 0);
+  EXPECT_LT((doc.take().position(1500, marker) - truth).norm(), 1.0) << "the spike is replaced by its neighbours";
+  EXPECT_EQ(doc.take().state(1500, marker), SampleState::Edited);
+  EXPECT_TRUE(doc.preview().empty());
+  doc.undoStack()->undo();
+  EXPECT_EQ(doc.take().position(1500, marker), before.position(1500, marker));
 }
 
 /// Mean absolute difference per channel, 0–255.

@@ -51,6 +51,8 @@ void TakeDocument::setTake(Take take, const QString& path)
   m_selection.clear();
   m_rangeFirst = 0;
   m_rangeLast = -1;
+  m_preview.clear();
+  m_flags.clear();
   emit takeReset();
   emit filePathChanged(m_filePath);
   emit currentFrameChanged(m_currentFrame);
@@ -117,6 +119,26 @@ void TakeDocument::setRange(Eigen::Index first, Eigen::Index last)
   m_rangeFirst = first;
   m_rangeLast = last;
   emit rangeChanged();
+}
+
+} // namespace mocap::ui
+
+namespace mocap::ui {
+
+void TakeDocument::setPreview(std::vector<SamplePatch> patches)
+{
+  if (patches.empty() && m_preview.empty())
+    return;
+  m_preview = std::move(patches);
+  emit previewChanged();
+}
+
+void TakeDocument::setFlags(std::vector<std::pair<Eigen::Index, Eigen::Index>> flags)
+{
+  if (flags.empty() && m_flags.empty())
+    return;
+  m_flags = std::move(flags);
+  emit flagsChanged();
 }
 
 } // namespace mocap::ui

@@ -7,6 +7,7 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <utility>
 #include <vector>
 
 namespace mocap::ui {
@@ -49,6 +50,14 @@ public:
   /// InvalidArgument for an empty or duplicate label.
   std::string renameMarker(Eigen::Index marker, std::string label);
 
+  /// Patches a cleaning panel proposes, drawn over the take but not in it (live preview).
+  [[nodiscard]] const std::vector<SamplePatch>& preview() const { return m_preview; }
+  void setPreview(std::vector<SamplePatch> patches);
+  void clearPreview() { setPreview({}); }
+  /// Samples to point out for review (e.g. detected spikes): (marker, frame) pairs.
+  [[nodiscard]] const std::vector<std::pair<Eigen::Index, Eigen::Index>>& flags() const { return m_flags; }
+  void setFlags(std::vector<std::pair<Eigen::Index, Eigen::Index>> flags);
+
   /// The frame range selected on the curves, [first, last]; empty when first > last.
   [[nodiscard]] Eigen::Index rangeFirst() const { return m_rangeFirst; }
   [[nodiscard]] Eigen::Index rangeLast() const { return m_rangeLast; }
@@ -67,6 +76,8 @@ signals:
   void filePathChanged(const QString& path);
   void markerRenamed(Eigen::Index marker);
   void rangeChanged();
+  void previewChanged();
+  void flagsChanged();
 
 private:
   Take m_take;
@@ -75,6 +86,8 @@ private:
   Eigen::Index m_currentFrame = 0;
   std::vector<Eigen::Index> m_selection;
   std::vector<std::string> m_loadWarnings;
+  std::vector<SamplePatch> m_preview;
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> m_flags;
   Eigen::Index m_rangeFirst = 0;
   Eigen::Index m_rangeLast = -1;
 };

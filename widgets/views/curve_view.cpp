@@ -4,6 +4,7 @@
 #include "views/sample_colors.h"
 
 #include "mocap/gaps.h"
+#include "mocap/sample_patch.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -33,6 +34,8 @@ CurveView::CurveView(TakeDocument& document, QWidget* parent) : QWidget(parent),
   connect(&document, &TakeDocument::selectionChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::currentFrameChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::rangeChanged, this, qOverload<>(&CurveView::update));
+  connect(&document, &TakeDocument::previewChanged, this, qOverload<>(&CurveView::update));
+  connect(&document, &TakeDocument::flagsChanged, this, qOverload<>(&CurveView::update));
   showAll();
 }
 
@@ -176,6 +179,40 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
       painter.setRenderHint(QPainter::Antialiasing, false);
     }
   }
+  paintOverlay(painter, strip, axis, lo, hi);
+}
+
+void CurveView::paintOverlay(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const
+{
+  const auto& selection = m_document.selection();
+  auto yOf = [&](double v) { return strip.bottom() - (v - lo) / (hi - lo) * strip.height(); };
+  auto selected = [&](Eigen::Index m) { return std::binary_search(selection.begin(), selection.end(), m); };
+  painter.save();
+  painter.setClipRect(strip);
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  // The preview: what Apply would write, as bright dots over the take's curve.
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(QColor(255, 255, 255, 200));
+  for (const SamplePatch& patch : m_document.preview()) {
+    if (!selected(patch.marker))
+      continue;
+    for (std::size_t i = 0; i < patch.frames.size(); ++i) {
+      const auto f = static_cast<double>(patch.frames[i]);
+      if (f < m_first || f > m_last || !patch.valid(static_cast<Eigen::Index>(i)))
+        continue;
+      painter.drawEllipse(QPointF(xOf(f), yOf(patch.positions(static_cast<Eigen::Index>(i), axis))), 1.6, 1.6);
+    }
+  }
+  // Flags for review: red rings on the flagged samples.
+  painter.setBrush(Qt::NoBrush);
+  painter.setPen(QPen(QColor(255, 70, 70), 1.5));
+  const Take& take = m_document.take();
+  for (const auto& [marker, frame] : m_document.flags()) {
+    if (!selected(marker) || static_cast<double>(frame) < m_first || static_cast<double>(frame) > m_last)
+      continue;
+    painter.drawEllipse(QPointF(xOf(static_cast<double>(frame)), yOf(take.trajectory(marker)(frame, axis))), 4.0, 4.0);
+  }
+  painter.restore();
 }
 
 void CurveView::mousePressEvent(QMouseEvent* event)

@@ -40,6 +40,7 @@ private:
   [[nodiscard]] QRectF plotArea() const;
   void showAll();
   void paintStrip(class QPainter& painter, const QRectF& strip, int axis) const;
+  void paintOverlay(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const;
 
   TakeDocument& m_document;
   double m_first = 0.0;

@@ -1,0 +1,206 @@
+#include "panels/cleaning_panel.h"
+
+#include "commands/apply_patches_command.h"
+#include "document/take_document.h"
+
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTimer>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+
+namespace mocap::ui {
+
+CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
+{
+  auto* layout = new QVBoxLayout(this);
+  m_tabs = new QTabWidget(this);
+  layout->addWidget(m_tabs, 1);
+  m_live = new QCheckBox(tr("Live preview"), this);
+  m_live->setChecked(true);
+  m_selectedOnly = new QCheckBox(tr("Selected markers only"), this);
+  layout->addWidget(m_live);
+  layout->addWidget(m_selectedOnly);
+  m_progress = new QProgressBar(this);
+  m_progress->setRange(0, 0);  // busy indicator: core steps report no partial progress
+  m_progress->setVisible(false);
+  layout->addWidget(m_progress);
+  m_status = new QLabel(this);
+  m_status->setWordWrap(true);
+  layout->addWidget(m_status);
+  auto* buttons = new QHBoxLayout;
+  m_cancel = new QPushButton(tr("Cancel"), this);
+  m_cancel->setEnabled(false);
+  m_apply = new QPushButton(tr("Apply"), this);
+  m_apply->setDefault(true);
+  buttons->addStretch();
+  buttons->addWidget(m_cancel);
+  buttons->addWidget(m_apply);
+  layout->addLayout(buttons);
+
+  m_debounce = new QTimer(this);
+  m_debounce->setSingleShot(true);
+  m_debounce->setInterval(200);
+  connect(m_debounce, &QTimer::timeout, this, &CleaningPanel::start);
+  connect(&m_watcher, &QFutureWatcher<StepResult>::finished, this, &CleaningPanel::onFinished);
+  connect(m_apply, &QPushButton::clicked, this, [this] { apply(); });
+  connect(m_cancel, &QPushButton::clicked, this, &CleaningPanel::cancel);
+  connect(m_live, &QCheckBox::toggled, this, [this](bool on) {
+    if (on)
+      schedule();
+    else
+      m_document.clearPreview();
+  });
+  connect(m_selectedOnly, &QCheckBox::toggled, this, &CleaningPanel::schedule);
+  connect(m_tabs, &QTabWidget::currentChanged, this, &CleaningPanel::schedule);
+  connect(&document, &TakeDocument::takeReset, this, &CleaningPanel::schedule);
+  connect(&document, &TakeDocument::samplesChanged, this, &CleaningPanel::schedule);
+  connect(&document, &TakeDocument::selectionChanged, this, [this] {
+    if (m_selectedOnly->isChecked())
+      schedule();
+  });
+}
+
+CleaningPanel::~CleaningPanel()
+{
+  m_watcher.waitForFinished();  // the job holds its own take copy; just let it end
+}
+
+void CleaningPanel::addStep(CleaningStep* step)
+{
+  m_tabs->addTab(step, step->title());
+  connect(step, &CleaningStep::changed, this, &CleaningPanel::schedule);
+}
+
+CleaningStep* CleaningPanel::currentStep() const
+{
+  return qobject_cast<CleaningStep*>(m_tabs->currentWidget());
+}
+
+bool CleaningPanel::busy() const
+{
+  return m_watcher.isRunning();
+}
+
+void CleaningPanel::schedule()
+{
+  ++m_generation;  // whatever is running or shown is stale now
+  if (m_live->isChecked() && isVisible())
+    m_debounce->start();
+}
+
+void CleaningPanel::refresh()
+{
+  ++m_generation;
+  start();
+}
+
+void CleaningPanel::start()
+{
+  CleaningStep* step = currentStep();
+  if (!step || !m_document.hasTake())
+    return;
+  if (m_watcher.isRunning()) {
+    m_debounce->start();  // one job at a time; try again when this one ends
+    return;
+  }
+  m_runningGeneration = m_generation;
+  m_progress->setVisible(true);
+  m_cancel->setEnabled(true);
+  m_status->setText(tr("Computing…"));
+  m_watcher.setFuture(QtConcurrent::run([job = step->job(), take = m_document.take()] {
+    try {
+      return job(take);
+    } catch (const std::exception& e) {  // nothing may throw across the event loop
+      StepResult failed;
+      failed.summary = QString::fromStdString(e.what());
+      return failed;
+    }
+  }));
+}
+
+void CleaningPanel::onFinished()
+{
+  m_progress->setVisible(false);
+  m_cancel->setEnabled(false);
+  if (m_runningGeneration != m_generation) {  // superseded or cancelled
+    if (m_live->isChecked())
+      m_debounce->start();
+    return;
+  }
+  m_result = m_watcher.result();
+  m_result.patches = onlySelected(std::move(m_result.patches));
+  m_resultGeneration = m_runningGeneration;
+  int samples = 0;
+  for (const SamplePatch& p : m_result.patches)
+    samples += static_cast<int>(p.size());
+  m_status->setText(tr("%1 — %n sample(s) would change", nullptr, samples).arg(m_result.summary));
+  if (CleaningStep* step = currentStep())
+    step->showResult(m_result);
+  m_document.setFlags(m_result.flags);
+  m_document.setPreview(m_result.patches);
+}
+
+void CleaningPanel::cancel()
+{
+  ++m_generation;
+  m_debounce->stop();
+  m_status->setText(tr("Cancelled"));
+}
+
+void CleaningPanel::waitForPreview()
+{
+  m_debounce->stop();
+  if (!m_watcher.isRunning() && m_resultGeneration != m_generation)
+    start();
+  while (m_watcher.isRunning() || m_resultGeneration != m_generation) {
+    m_watcher.waitForFinished();
+    QCoreApplication::processEvents();
+    if (!m_watcher.isRunning() && m_resultGeneration != m_generation)
+      start();
+  }
+}
+
+std::vector<SamplePatch> CleaningPanel::onlySelected(std::vector<SamplePatch> patches) const
+{
+  if (!m_selectedOnly->isChecked())
+    return patches;
+  const auto& selection = m_document.selection();
+  patches.erase(std::remove_if(patches.begin(), patches.end(),
+                               [&](const SamplePatch& p) {
+                                 return !std::binary_search(selection.begin(), selection.end(), p.marker);
+                               }),
+                patches.end());
+  return patches;
+}
+
+int CleaningPanel::apply()
+{
+  CleaningStep* step = currentStep();
+  if (!step || !m_document.hasTake())
+    return 0;
+  if (m_resultGeneration != m_generation)
+    waitForPreview();
+  std::vector<SamplePatch> patches = onlySelected(step->patchesToApply(m_document.take(), m_result));
+  int samples = 0;
+  for (const SamplePatch& p : patches)
+    samples += static_cast<int>(p.size());
+  m_document.clearPreview();
+  m_document.setFlags({});
+  if (samples == 0) {
+    m_status->setText(tr("Nothing to apply"));
+    return 0;
+  }
+  m_document.undoStack()->push(new ApplyPatchesCommand(m_document, std::move(patches), step->title()));
+  return samples;
+}
+
+} // namespace mocap::ui

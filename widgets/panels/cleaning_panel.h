@@ -1,0 +1,69 @@
+#pragma once
+
+#include "panels/cleaning_step.h"
+
+#include <QFutureWatcher>
+#include <QWidget>
+
+#include <vector>
+
+class QCheckBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTabWidget;
+class QTimer;
+
+namespace mocap::ui {
+
+class TakeDocument;
+
+/// The cleaning dock: one tab per step (bad points, gaps, smoothing). Changing a parameter
+/// recomputes the step on a worker thread, on a copy of the take, and shows the result as a
+/// preview over the views without touching the take; Apply pushes it as one undoable command.
+/// A newer request supersedes a running one (its result is dropped), and Cancel drops it too.
+class CleaningPanel final : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit CleaningPanel(TakeDocument& document, QWidget* parent = nullptr);
+  ~CleaningPanel() override;
+
+  void addStep(CleaningStep* step);
+  [[nodiscard]] CleaningStep* currentStep() const;
+  /// Recomputes the preview of the current step now.
+  void refresh();
+  /// Pushes the current step's result (computing it first when the preview is stale).
+  /// Returns the number of patched samples.
+  int apply();
+  /// True while a computation runs.
+  [[nodiscard]] bool busy() const;
+  /// Blocks until the running computation (if any) has delivered its preview. For tests.
+  void waitForPreview();
+  [[nodiscard]] const StepResult& lastResult() const { return m_result; }
+
+private:
+  void schedule();
+  void start();
+  void onFinished();
+  void cancel();
+  [[nodiscard]] std::vector<SamplePatch> onlySelected(std::vector<SamplePatch> patches) const;
+
+  TakeDocument& m_document;
+  QTabWidget* m_tabs = nullptr;
+  QCheckBox* m_live = nullptr;
+  QCheckBox* m_selectedOnly = nullptr;
+  QPushButton* m_apply = nullptr;
+  QPushButton* m_cancel = nullptr;
+  QProgressBar* m_progress = nullptr;
+  QLabel* m_status = nullptr;
+  QTimer* m_debounce = nullptr;
+  QFutureWatcher<StepResult> m_watcher;
+  StepResult m_result;
+  unsigned m_generation = 0;       // bumped by every request and by edits of the take
+  unsigned m_runningGeneration = 0;
+  unsigned m_resultGeneration = ~0u;
+};
+
+} // namespace mocap::ui

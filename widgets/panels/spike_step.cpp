@@ -1,0 +1,110 @@
+#include "panels/spike_step.h"
+
+#include "document/take_document.h"
+
+#include "mocap/spike_detection.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QListWidget>
+
+namespace mocap::ui {
+
+namespace {
+constexpr int kMarkerRole = Qt::UserRole;
+constexpr int kFrameRole = Qt::UserRole + 1;
+} // namespace
+
+SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(parent), m_document(document)
+{
+  auto* form = new QFormLayout(this);
+  m_method = new QComboBox(this);
+  m_method->addItem(tr("Robust (local fit + MAD)"), static_cast<int>(SpikeMethod::Robust));
+  m_method->addItem(tr("Paper (eqs 8–10)"), static_cast<int>(SpikeMethod::Paper));
+  form->addRow(tr("Method"), m_method);
+  m_factor = new QDoubleSpinBox(this);
+  m_factor->setRange(1.0, 10.0);
+  m_factor->setSingleStep(0.1);
+  m_factor->setValue(SpikeOptions{}.factor);
+  m_factor->setToolTip(tr("Paper: a sample is bad when both adjacent steps exceed this multiple of the mean step"));
+  form->addRow(tr("Factor"), m_factor);
+  m_threshold = new QDoubleSpinBox(this);
+  m_threshold->setRange(2.0, 30.0);
+  m_threshold->setSingleStep(0.5);
+  m_threshold->setValue(SpikeOptions{}.threshold);
+  m_threshold->setToolTip(tr("Robust: flag samples this many robust standard deviations off the local fit"));
+  form->addRow(tr("Threshold"), m_threshold);
+  m_flags = new QListWidget(this);
+  m_flags->setToolTip(tr("Click to go to a flag; uncheck to keep that sample"));
+  form->addRow(m_flags);
+  auto updateEnabled = [this] {
+    const bool paper = m_method->currentData().toInt() == static_cast<int>(SpikeMethod::Paper);
+    m_factor->setEnabled(paper);
+    m_threshold->setEnabled(!paper);
+  };
+  updateEnabled();
+  connect(m_method, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, updateEnabled] {
+    updateEnabled();
+    emit changed();
+  });
+  connect(m_factor, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_threshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_flags, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* item) {
+    if (!item)
+      return;
+    m_document.setSelection({item->data(kMarkerRole).value<qlonglong>()});
+    m_document.setCurrentFrame(item->data(kFrameRole).value<qlonglong>());
+  });
+}
+
+QString SpikeStep::title() const
+{
+  return tr("Bad points");
+}
+
+StepJob SpikeStep::job() const
+{
+  SpikeOptions options;
+  options.method = static_cast<SpikeMethod>(m_method->currentData().toInt());
+  options.factor = m_factor->value();
+  options.threshold = m_threshold->value();
+  return [options](const Take& take) {
+    StepResult result;
+    const std::vector<SpikeFlag> flags = detectSpikes(take, options);
+    for (const SpikeFlag& flag : flags)
+      result.flags.emplace_back(flag.marker, flag.frame);
+    result.patches = replaceSpikes(take, flags);
+    result.summary = QCoreApplication::translate("SpikeStep", "%n bad point(s) found", nullptr, static_cast<int>(flags.size()));
+    return result;
+  };
+}
+
+void SpikeStep::showResult(const StepResult& result)
+{
+  m_flags->clear();
+  const Take& take = m_document.take();
+  for (const auto& [marker, frame] : result.flags) {
+    auto* item = new QListWidgetItem(tr("%1 at frame %2").arg(QString::fromStdString(take.label(marker)))
+                                         .arg(static_cast<qlonglong>(take.firstFrame() + frame)),
+                                     m_flags);
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(Qt::Checked);
+    item->setData(kMarkerRole, static_cast<qlonglong>(marker));
+    item->setData(kFrameRole, static_cast<qlonglong>(frame));
+  }
+}
+
+std::vector<SamplePatch> SpikeStep::patchesToApply(const Take& take, const StepResult&) const
+{
+  std::vector<SpikeFlag> accepted;
+  for (int i = 0; i < m_flags->count(); ++i) {
+    const QListWidgetItem* item = m_flags->item(i);
+    if (item->checkState() == Qt::Checked)
+      accepted.push_back({item->data(kMarkerRole).value<qlonglong>(), item->data(kFrameRole).value<qlonglong>()});
+  }
+  return replaceSpikes(take, accepted);
+}
+
+} // namespace mocap::ui

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "panels/cleaning_step.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QListWidget;
+
+namespace mocap::ui {
+
+class TakeDocument;
+
+/// Bad-point detection (mocap::detectSpikes) and replacement: method, factor (paper) or
+/// threshold (robust), and the list of flags to step through; unchecking a flag keeps that
+/// sample as it is when applying.
+class SpikeStep final : public CleaningStep
+{
+  Q_OBJECT
+
+public:
+  explicit SpikeStep(TakeDocument& document, QWidget* parent = nullptr);
+
+  [[nodiscard]] QString title() const override;
+  [[nodiscard]] StepJob job() const override;
+  [[nodiscard]] std::vector<SamplePatch> patchesToApply(const Take& take, const StepResult& result) const override;
+  void showResult(const StepResult& result) override;
+
+private:
+  TakeDocument& m_document;
+  QComboBox* m_method = nullptr;
+  QDoubleSpinBox* m_factor = nullptr;
+  QDoubleSpinBox* m_threshold = nullptr;
+  QListWidget* m_flags = nullptr;
+};
+
+} // namespace mocap::ui
