@@ -23,7 +23,7 @@ namespace {
 void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
 {
   window.resize(1280, 800);
-  QTimer::singleShot(500, &window, [&window, path] {
+  QTimer::singleShot(1500, &window, [&window, path] {
     const QImage image = window.grab().toImage();
     if (image.isNull() || !image.save(path)) {
       std::cerr << "mocap-studio: cannot write screenshot " << path.toStdString() << '\n';

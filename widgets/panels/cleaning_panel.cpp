@@ -97,6 +97,13 @@ void CleaningPanel::schedule()
     m_debounce->start();
 }
 
+void CleaningPanel::showEvent(QShowEvent* event)
+{
+  QWidget::showEvent(event);
+  if (m_resultGeneration != m_generation)
+    schedule();  // requests made while hidden were deferred
+}
+
 void CleaningPanel::refresh()
 {
   ++m_generation;

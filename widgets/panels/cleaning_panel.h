@@ -43,6 +43,9 @@ public:
   void waitForPreview();
   [[nodiscard]] const StepResult& lastResult() const { return m_result; }
 
+protected:
+  void showEvent(QShowEvent* event) override;
+
 private:
   void schedule();
   void start();
