@@ -18,7 +18,11 @@ constexpr const char* kUsage =
     "  convert IN OUT [--units mm|cm|m]\n"
     "                       convert between .c3d .trc (read/write) and .csv .bvh (write)\n"
     "  eval-spikes TAKE [--count N] [--amplitude MM] [--seed S] [--json]\n"
-    "                       inject spikes, report recall and false alarms per detector\n";
+    "                       inject spikes, report recall and false alarms per detector\n"
+    "  eval-smooth TAKE [--noise MM] [--seed S] [--json]\n"
+    "                       add noise, report position and acceleration RMSE per smoother\n"
+    "  smooth-table TAKE [--markers A,B,...] [--json]\n"
+    "                       the paper's Table 1: smoothness per B-spline order\n";
 
 } // namespace
 
@@ -29,6 +33,8 @@ int main(int argc, char** argv)
       {"info", runInfo},
       {"convert", runConvert},
       {"eval-spikes", runEvalSpikes},
+      {"eval-smooth", runEvalSmooth},
+      {"smooth-table", runSmoothTable},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";

@@ -9,10 +9,12 @@
 
 int main(int argc, char** argv)
 {
+  ::testing::InitGoogleTest(&argc, argv);
+  if (::testing::GTEST_FLAG(list_tests))
+    return RUN_ALL_TESTS();  // listing (ctest discovery) needs no display
   QSurfaceFormat::setDefaultFormat(mocap::ui::VtkViewport::defaultFormat());
   QApplication::setOrganizationName(QStringLiteral("MocapStudioTests"));
   QApplication::setApplicationName(QStringLiteral("Mocap Studio GUI tests"));
   QApplication app(argc, argv);
-  ::testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -1,0 +1,171 @@
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/bvh_writer.h"
+#include "mocap/clean_pipeline.h"
+#include "mocap/file_io.h"
+#include "mocap/json_writer.h"
+#include "mocap/take_io.h"
+
+#include <iostream>
+
+namespace mocap::cli {
+
+namespace {
+
+std::optional<SpikeOptions> spikeOptions(const Arguments& arguments)
+{
+  SpikeOptions options;
+  if (const auto name = arguments.value("--spikes")) {
+    if (*name == "off")
+      return std::nullopt;
+    const auto method = parseSpikeMethod(*name);
+    if (!method)
+      throw UsageError("--spikes must be paper, robust or off, not '" + *name + "'");
+    options.method = *method;
+  }
+  if (const auto factor = arguments.number("--spike-factor", 1e-6, 1e6))
+    options.factor = *factor;
+  if (const auto threshold = arguments.number("--spike-threshold", 1e-6, 1e6))
+    options.threshold = *threshold;
+  return options;
+}
+
+std::optional<FillOptions> fillOptions(const Arguments& arguments)
+{
+  FillOptions options;
+  if (const auto name = arguments.value("--fill")) {
+    if (*name == "off")
+      return std::nullopt;
+    const auto method = parseFillMethod(*name);
+    if (!method)
+      throw UsageError("--fill: unknown method '" + *name + "'");
+    options.method = *method;
+  }
+  if (const auto maxGap = arguments.integer("--max-gap", 1, 1LL << 40))
+    options.maxGap = static_cast<Eigen::Index>(*maxGap);
+  if (const auto neighbours = arguments.integer("--neighbours", 1, 1000))
+    options.neighbours = static_cast<int>(*neighbours);
+  return options;
+}
+
+std::optional<SmoothOptions> smoothOptions(const Arguments& arguments)
+{
+  SmoothOptions options;
+  if (const auto name = arguments.value("--smooth")) {
+    if (*name == "off")
+      return std::nullopt;
+    const auto method = parseSmoothMethod(*name);
+    if (!method)
+      throw UsageError("--smooth must be bspline, butterworth, gcvspl, savgol or off, not '" + *name + "'");
+    options.method = *method;
+  }
+  if (const auto order = arguments.integer("--order", 2, 7))
+    options.degree = static_cast<int>(*order);
+  if (const auto spacing = arguments.number("--knot-spacing", 1.0, 1e6))
+    options.knotSpacing = *spacing;
+  if (const auto cutoff = arguments.number("--cutoff", 1e-6, 1e6))
+    options.cutoffHz = *cutoff;
+  return options;
+}
+
+std::string reportJson(const std::string& input, const std::string& output, const Take& take,
+                       const CleanOptions& options, const CleanReport& report)
+{
+  JsonWriter json;
+  json.beginObject();
+  json.key("input").value(input);
+  json.key("output").value(output);
+  json.key("stabilize").beginObject();
+  json.key("markers").beginArray();
+  for (Eigen::Index m : report.stabilizeMarkers)
+    json.value(take.label(m));
+  json.endArray();
+  json.key("unknown_head_poses").value(static_cast<std::int64_t>(report.unknownHeadPoses));
+  json.key("kept_stabilized").value(options.keepStabilized);
+  json.endObject();
+  json.key("spikes").beginObject();
+  json.key("method").value(options.spikes ? spikeMethodName(options.spikes->method) : "off");
+  json.key("count").value(static_cast<std::int64_t>(report.spikes.size()));
+  json.key("flagged").beginArray();
+  for (const SpikeFlag& flag : report.spikes)
+    json.beginObject()
+        .key("marker")
+        .value(take.label(flag.marker))
+        .key("frame")
+        .value(take.firstFrame() + flag.frame)
+        .endObject();
+  json.endArray();
+  json.endObject();
+  json.key("fill").beginObject();
+  json.key("method").value(options.fill ? fillMethodName(options.fill->method) : "off");
+  std::int64_t filledGaps = 0;
+  for (const GapFillReport& gap : report.gaps)
+    filledGaps += gap.filled ? 1 : 0;
+  json.key("filled_gaps").value(filledGaps);
+  json.key("unfilled_gaps").value(static_cast<std::int64_t>(report.gaps.size()) - filledGaps);
+  json.key("filled_samples").value(static_cast<std::int64_t>(report.filledSamples));
+  json.key("gaps").beginArray();
+  for (const GapFillReport& gap : report.gaps) {
+    json.beginObject();
+    json.key("marker").value(take.label(gap.gap.marker));
+    json.key("first_frame").value(take.firstFrame() + gap.gap.firstFrame);
+    json.key("length").value(static_cast<std::int64_t>(gap.gap.length));
+    json.key("filled").value(gap.filled);
+    json.key("method").value(gap.method);
+    if (!gap.filled)
+      json.key("reason").value(gap.reason);
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  json.key("smooth").beginObject();
+  json.key("method").value(options.smooth ? smoothMethodName(options.smooth->method) : "off");
+  json.key("smoothed_samples").value(static_cast<std::int64_t>(report.smoothedSamples));
+  json.endObject();
+  json.key("valid_fraction").value(take.validFraction());
+  json.endObject();
+  return json.str() + "\n";
+}
+
+} // namespace
+
+int runClean(const std::vector<std::string>& args)
+{
+  const Arguments arguments(args, {"--keep-stabilized"},
+                            {"-o", "--output", "--spikes", "--spike-factor", "--spike-threshold", "--fill", "--max-gap",
+                             "--neighbours", "--smooth", "--order", "--knot-spacing", "--cutoff", "--stabilize",
+                             "--report"});
+  arguments.expectPositionals(1, "one input file (and -o OUT)");
+  const std::string input = arguments.positionals()[0];
+  const auto output = arguments.value("-o") ? arguments.value("-o") : arguments.value("--output");
+  if (!output)
+    throw UsageError("missing -o OUT");
+  (void)formatFromPath(*output);
+  CleanOptions options;
+  options.spikes = spikeOptions(arguments);
+  options.fill = fillOptions(arguments);
+  options.smooth = smoothOptions(arguments);
+  if (const auto labels = arguments.value("--stabilize"))
+    options.stabilizeLabels = splitList(*labels, "--stabilize");
+  options.keepStabilized = arguments.has("--keep-stabilized");
+
+  std::vector<std::string> warnings;
+  Take take = readTake(input, &warnings);
+  for (const auto& w : warnings)
+    std::cerr << input << ": warning: " << w << '\n';
+  const CleanReport report = cleanTake(take, options);
+  if (formatFromPath(*output) == TakeFormat::Bvh && report.headMotion && !options.keepStabilized) {
+    // BVH carries the head motion in its root joint; the markers go in head space.
+    removeHeadMotion(take, *report.headMotion);
+    writeBvh(take, *output, BvhOptions{report.headMotion->poses});
+  } else {
+    writeTake(take, *output);
+  }
+  if (const auto reportFile = arguments.value("--report"))
+    writeFileAtomically(*reportFile, reportJson(input, *output, take, options, report));
+  return kExitOk;
+}
+
+} // namespace mocap::cli

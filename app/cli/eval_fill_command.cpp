@@ -1,0 +1,185 @@
+// `mocap eval-fill TAKE`: every gap-filling method against hidden truth, Gløersen & Federolf's
+// protocol (core/include/mocap/fill_evaluation.h), as a text table or JSON.
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/fill_evaluation.h"
+#include "mocap/head_stabilization.h"
+#include "mocap/json_writer.h"
+#include "mocap/take_io.h"
+#include "mocap/text.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <limits>
+
+namespace mocap::cli {
+
+namespace {
+
+std::uint64_t parseUnsigned(const std::string& option, const std::string& text, std::uint64_t max)
+{
+  const std::string_view trimmed = trim(text);
+  const bool digits = !trimmed.empty() && trimmed.find_first_not_of("0123456789") == std::string_view::npos;
+  errno = 0;
+  char* end = nullptr;
+  const std::string copy(trimmed);
+  const unsigned long long value = digits ? std::strtoull(copy.c_str(), &end, 10) : 0;
+  if (!digits || errno == ERANGE || value > max)
+    throw UsageError(option + " expects a whole number from 0 to " + std::to_string(max) + ", got '" + text +
+                     "'");
+  return value;
+}
+
+std::vector<Eigen::Index> parseLengths(const std::string& text)
+{
+  std::vector<Eigen::Index> lengths;
+  for (const std::string_view field : split(text, ',')) {
+    const auto value = parseUnsigned("--lengths", std::string(field), 1000000);
+    if (value == 0)
+      throw UsageError("--lengths: a gap is at least one frame long");
+    lengths.push_back(static_cast<Eigen::Index>(value));
+  }
+  return lengths;
+}
+
+std::vector<FillMethod> parseMethods(const std::string& text)
+{
+  std::vector<FillMethod> methods;
+  for (const std::string_view field : split(text, ',')) {
+    const auto method = parseFillMethod(trim(field));
+    if (!method) {
+      std::string known;
+      for (const FillMethod m : allFillMethods())
+        known += (known.empty() ? "" : ", ") + std::string(fillMethodName(m));
+      throw UsageError("--methods: unknown method '" + std::string(field) + "' (known: " + known + ")");
+    }
+    methods.push_back(*method);
+  }
+  return methods;
+}
+
+std::vector<Eigen::Index> parseMarkers(const Take& take, const std::string& text)
+{
+  std::vector<Eigen::Index> markers;
+  for (const std::string_view field : split(text, ',')) {
+    const auto marker = take.markerIndex(trim(field));
+    if (!marker)
+      throw UsageError("--stabilize: the take has no marker '" + std::string(field) + "'");
+    markers.push_back(*marker);
+  }
+  return markers;
+}
+
+std::string formatNumber(double value, int decimals)
+{
+  if (!std::isfinite(value))
+    return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+void writeText(const std::string& file, const FillEvaluation& evaluation)
+{
+  std::cout << file << ": " << evaluation.copies << " corrupted copies per gap length, seed "
+            << evaluation.seed << "; errors in mm, border velocity jump in mm/s (truth in brackets)\n";
+  char line[200];
+  std::snprintf(line, sizeof line, "%-13s %6s %8s %8s %8s %8s %18s %9s\n", "method", "length", "mean", "rmse",
+                "p95", "max", "border jump", "unfilled");
+  std::cout << line;
+  Eigen::Index length = -1;
+  for (const FillScore& s : evaluation.scores) {
+    if (s.gapLength != length && length >= 0)
+      std::cout << '\n';
+    length = s.gapLength;
+    const std::string jump =
+        formatNumber(s.borderVelocityJump, 1) + " (" + formatNumber(s.trueBorderVelocityJump, 1) + ")";
+    const std::string unfilled = std::to_string(s.unfilled) + "/" + std::to_string(s.gaps);
+    std::snprintf(line, sizeof line, "%-13s %6lld %8s %8s %8s %8s %18s %9s\n",
+                  std::string(fillMethodName(s.method)).c_str(), static_cast<long long>(s.gapLength),
+                  formatNumber(s.meanError, 3).c_str(), formatNumber(s.rmse, 3).c_str(),
+                  formatNumber(s.p95, 3).c_str(), formatNumber(s.max, 3).c_str(), jump.c_str(),
+                  unfilled.c_str());
+    std::cout << line;
+  }
+}
+
+void writeJson(const std::string& file, const FillEvaluation& evaluation)
+{
+  JsonWriter json;
+  json.beginObject();
+  json.key("take").value(file);
+  json.key("copies").value(evaluation.copies);
+  json.key("seed").value(static_cast<std::int64_t>(evaluation.seed));
+  json.key("results").beginArray();
+  for (const FillScore& s : evaluation.scores) {
+    json.beginObject();
+    json.key("method").value(fillMethodName(s.method));
+    json.key("gap_length").value(static_cast<std::int64_t>(s.gapLength));
+    json.key("mean_error").value(s.meanError);
+    json.key("rmse").value(s.rmse);
+    json.key("p95").value(s.p95);
+    json.key("max").value(s.max);
+    json.key("border_velocity_jump").value(s.borderVelocityJump);
+    json.key("true_border_velocity_jump").value(s.trueBorderVelocityJump);
+    json.key("gaps").value(static_cast<std::int64_t>(s.gaps));
+    json.key("unfilled").value(static_cast<std::int64_t>(s.unfilled));
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  std::cout << json.str() << '\n';
+}
+
+} // namespace
+
+int runEvalFill(const std::vector<std::string>& args)
+{
+  const Arguments arguments(
+      args, {"--json"},
+      {"--lengths", "--copies", "--seed", "--methods", "--neighbours", "--gaps-per-copy", "--stabilize"});
+  arguments.expectPositionals(1, "one TAKE");
+  FillEvaluationOptions options;
+  if (const auto text = arguments.value("--lengths"))
+    options.gapLengths = parseLengths(*text);
+  if (const auto text = arguments.value("--copies")) {
+    options.copies = static_cast<int>(parseUnsigned("--copies", *text, 100000));
+    if (options.copies == 0)
+      throw UsageError("--copies must be at least 1");
+  }
+  if (const auto text = arguments.value("--seed"))
+    options.seed =
+        parseUnsigned("--seed", *text, static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()));
+  if (const auto text = arguments.value("--methods"))
+    options.methods = parseMethods(*text);
+  if (const auto text = arguments.value("--neighbours")) {
+    options.neighbours = static_cast<int>(parseUnsigned("--neighbours", *text, 1000));
+    if (options.neighbours == 0)
+      throw UsageError("--neighbours must be at least 1");
+  }
+  if (const auto text = arguments.value("--gaps-per-copy"))
+    options.gapsPerCopy = static_cast<int>(parseUnsigned("--gaps-per-copy", *text, 100000));
+
+  const std::string& file = arguments.positionals()[0];
+  Take take = readTake(file);
+  if (const auto text = arguments.value("--stabilize"))
+    removeHeadMotion(take, estimateHeadMotion(take, parseMarkers(take, *text)));
+  if (options.gapsPerCopy > take.markerCount())
+    throw UsageError("--gaps-per-copy exceeds the take's " + std::to_string(take.markerCount()) + " markers");
+  for (const Eigen::Index length : options.gapLengths)
+    if (length > take.frameCount() - 2)
+      throw UsageError("--lengths: a gap of " + std::to_string(length) +
+                       " frames does not fit in the take's " + std::to_string(take.frameCount()) + " frames");
+  const FillEvaluation evaluation = evaluateFill(take, options);
+  if (arguments.has("--json"))
+    writeJson(file, evaluation);
+  else
+    writeText(file, evaluation);
+  return kExitOk;
+}
+
+} // namespace mocap::cli

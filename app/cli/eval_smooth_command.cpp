@@ -1,0 +1,86 @@
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/json_writer.h"
+#include "mocap/smoothing_evaluation.h"
+#include "mocap/take_io.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace mocap::cli {
+
+namespace {
+
+void writeJson(const std::string& file, const SmoothingEvaluation& evaluation)
+{
+  JsonWriter json;
+  json.beginObject();
+  json.key("take").value(file);
+  json.key("noise").value(evaluation.noiseMm);
+  json.key("seed").value(static_cast<std::int64_t>(evaluation.seed));
+  json.key("units").value("rmse: mm, acceleration_rmse: mm/s^2");
+  json.key("samples").value(static_cast<std::int64_t>(evaluation.samples));
+  json.key("acceleration_samples").value(static_cast<std::int64_t>(evaluation.accelerationSamples));
+  json.key("noisy_rmse").value(evaluation.noisyRmse);
+  json.key("noisy_acceleration_rmse").value(evaluation.noisyAccelerationRmse);
+  json.key("methods").beginArray();
+  for (const SmoothingScore& score : evaluation.scores) {
+    json.beginObject();
+    json.key("method").value(smoothMethodName(score.options.method));
+    json.key("parameters").value(score.parameters);
+    json.key("default").value(score.isDefault);
+    json.key("rmse").value(score.rmse);
+    json.key("acceleration_rmse").value(score.accelerationRmse);
+    json.key("seconds").value(score.seconds);
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  std::cout << json.str() << '\n';
+}
+
+void writeText(const std::string& file, const SmoothingEvaluation& evaluation)
+{
+  char line[200];
+  std::cout << "take: " << file << "  noise: " << evaluation.noiseMm
+            << " mm per axis  seed: " << evaluation.seed << '\n';
+  std::snprintf(line, sizeof line, "%-12s %-28s %10s %14s %9s\n", "method", "parameters", "rmse mm",
+                "accel mm/s^2", "seconds");
+  std::cout << line;
+  std::snprintf(line, sizeof line, "%-12s %-28s %10.4f %14.1f\n", "(noisy)", "", evaluation.noisyRmse,
+                evaluation.noisyAccelerationRmse);
+  std::cout << line;
+  for (const SmoothingScore& score : evaluation.scores) {
+    const std::string name =
+        std::string(smoothMethodName(score.options.method)) + (score.isDefault ? "*" : "");
+    std::snprintf(line, sizeof line, "%-12s %-28s %10.4f %14.1f %9.3f\n", name.c_str(),
+                  score.parameters.c_str(), score.rmse, score.accelerationRmse, score.seconds);
+    std::cout << line;
+  }
+  std::cout << "* default (SmoothOptions{})\n";
+}
+
+} // namespace
+
+int runEvalSmooth(const std::vector<std::string>& args)
+{
+  const Arguments arguments(args, {"--json"}, {"--noise", "--seed"});
+  arguments.expectPositionals(1, "one TAKE");
+  const std::string& file = arguments.positionals()[0];
+  SmoothingEvaluationOptions options;
+  if (const auto noise = arguments.number("--noise", 0.0, 1e4))
+    options.noiseMm = *noise;
+  if (const auto seed = arguments.integer("--seed", 0, std::numeric_limits<long long>::max()))
+    options.seed = static_cast<std::uint64_t>(*seed);
+  const Take take = readTake(file);
+  const SmoothingEvaluation evaluation = evaluateSmoothing(take, options);
+  if (arguments.has("--json"))
+    writeJson(file, evaluation);
+  else
+    writeText(file, evaluation);
+  return kExitOk;
+}
+
+} // namespace mocap::cli

@@ -1,0 +1,581 @@
+// `mocap pfa`: plans a reduced facial marker layout (Wellein et al. 2007) and reports the
+// error-vs-marker-count curve of PFA, greedy selection and random sets.
+#include "arguments.h"
+#include "cli_error.h"
+
+#include "mocap/error.h"
+#include "mocap/file_io.h"
+#include "mocap/json_writer.h"
+#include "mocap/marker_selection.h"
+#include "mocap/number_text.h"
+#include "mocap/take_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+namespace mocap::cli {
+
+/// `mocap pfa TAKE [TAKE…] ...`: marker layout planning; see kPfaHelp. Returns the exit code.
+int runPfa(const std::vector<std::string>& args);
+
+namespace {
+
+// Glob match with `*` (any run) and `?` (any one character).
+bool globMatch(const std::string& pattern, const std::string& text)
+{
+  std::size_t p = 0, t = 0, star = std::string::npos, resume = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
+      ++p;
+      ++t;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      resume = t;
+    } else if (star != std::string::npos) {
+      p = star + 1;
+      t = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*')
+    ++p;
+  return p == pattern.size();
+}
+
+std::vector<std::string> matching(const std::vector<std::string>& labels, const std::string& patterns,
+                                  const std::string& option)
+{
+  std::set<std::string> found;
+  for (const std::string& pattern : splitList(patterns, option)) {
+    bool any = false;
+    for (const std::string& label : labels)
+      if (globMatch(pattern, label)) {
+        found.insert(label);
+        any = true;
+      }
+    if (!any)
+      throw UsageError(option + ": no marker matches '" + pattern + "'");
+  }
+  std::vector<std::string> ordered;
+  for (const std::string& label : labels)
+    if (found.count(label) != 0)
+      ordered.push_back(label);
+  return ordered;
+}
+
+std::string number(double value, int decimals)
+{
+  if (!std::isfinite(value))
+    return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+  return buffer;
+}
+
+std::string csvNumber(double value)
+{
+  std::string text;
+  appendNumber(text, value);
+  return text;
+}
+
+// --k MIN:MAX or K.
+std::pair<Eigen::Index, Eigen::Index> parseKRange(const std::string& text)
+{
+  const auto parse = [&](const std::string& part) {
+    std::size_t used = 0;
+    long long value = 0;
+    try {
+      value = std::stoll(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || value < 1 || value > 1000000)
+      throw UsageError("--k needs MIN:MAX or K with whole numbers ≥ 1, not '" + text + "'");
+    return static_cast<Eigen::Index>(value);
+  };
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    const Eigen::Index k = parse(text);
+    return {k, k};
+  }
+  const Eigen::Index low = parse(text.substr(0, colon));
+  const Eigen::Index high = parse(text.substr(colon + 1));
+  if (low > high)
+    throw UsageError("--k: MIN must not exceed MAX in '" + text + "'");
+  return {low, high};
+}
+
+// --keyposes F1,F2,… : frame numbers as the first take counts them, or TAKE:FRAME (TAKE from 1).
+std::vector<Eigen::Index> keyFrameRows(const std::string& text, const std::vector<Take>& takes,
+                                       const LayoutFrames& frames)
+{
+  std::vector<Eigen::Index> rows;
+  for (const std::string& field : splitList(text, "--keyposes")) {
+    std::size_t take = 0;
+    std::string frameText = field;
+    if (const std::size_t colon = field.find(':'); colon != std::string::npos) {
+      const std::string takeText = field.substr(0, colon);
+      if (takeText.empty() || takeText.find_first_not_of("0123456789") != std::string::npos)
+        throw UsageError("--keyposes: bad take number in '" + field + "'");
+      take = static_cast<std::size_t>(std::stoul(takeText)) - 1;
+      if (take >= takes.size())
+        throw UsageError("--keyposes: there is no take " + takeText);
+      frameText = field.substr(colon + 1);
+    }
+    std::size_t used = 0;
+    long long frame = 0;
+    try {
+      frame = std::stoll(frameText, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != frameText.size())
+      throw UsageError("--keyposes needs auto or frame numbers, not '" + field + "'");
+    const Eigen::Index index = static_cast<Eigen::Index>(frame - takes[take].firstFrame());
+    const Eigen::Index row = index >= 0 && index < takes[take].frameCount() ? frames.rowOf(take, index) : -1;
+    if (row < 0)
+      throw UsageError("--keyposes: frame " + field + " is outside the take or lacks a planned marker");
+    if (std::find(rows.begin(), rows.end(), row) != rows.end())
+      throw UsageError("--keyposes: frame " + field + " is given twice");
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::vector<std::string> labelsOf(const LayoutFrames& frames, const std::vector<Eigen::Index>& markers)
+{
+  std::vector<std::string> labels;
+  for (const Eigen::Index m : markers)
+    labels.push_back(frames.labels[static_cast<std::size_t>(m)]);
+  return labels;
+}
+
+// A take holding only `labels` of `source` (all frames, original positions and states).
+Take subsetTake(const Take& source, const std::vector<std::string>& labels)
+{
+  Take take(labels, source.frameCount(), source.frameRate());
+  take.setFirstFrame(source.firstFrame());
+  take.setUnits(source.units());
+  for (Eigen::Index j = 0; j < take.markerCount(); ++j) {
+    const Eigen::Index m = *source.markerIndex(labels[static_cast<std::size_t>(j)]);
+    take.trajectory(j) = source.trajectory(m);
+    take.valid().col(j) = source.valid().col(m);
+    take.residuals().col(j) = source.residuals().col(m);
+    take.cameraMasks().col(j) = source.cameraMasks().col(m);
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      take.setState(f, j, source.state(f, m));
+  }
+  return take;
+}
+
+struct Report
+{
+  std::vector<std::string> inputs;
+  const LayoutFrames& frames;
+  const LayoutPlan& plan;
+  const MarkerSymmetry& symmetry;
+  const std::optional<PairDetection>& detection;
+  std::string pairSource;
+};
+
+void writeLayout(JsonWriter& json, const Report& report, const ScoredLayout& layout, bool withFrequencies)
+{
+  json.beginObject();
+  json.key("labels").beginArray();
+  for (const std::string& label : labelsOf(report.frames, layout.markers))
+    json.value(label);
+  json.endArray();
+  if (withFrequencies) {
+    json.key("k").value(static_cast<std::int64_t>(layout.k));
+    json.key("stability").value(layout.stability);
+    json.key("pair_frequencies").beginArray();
+    std::set<Eigen::Index> units;
+    for (const Eigen::Index m : layout.markers)
+      units.insert(report.symmetry.unitOf(m));
+    for (const Eigen::Index u : units) {
+      const auto& unit = report.symmetry.units()[static_cast<std::size_t>(u)];
+      json.beginObject();
+      json.key("markers").beginArray();
+      for (const std::string& label : labelsOf(report.frames, unit))
+        json.value(label);
+      json.endArray();
+      json.key("frequency").value(layout.unitFrequency[static_cast<std::size_t>(u)]);
+      json.endObject();
+    }
+    json.endArray();
+  }
+  json.key("blendshape_mse").value(layout.blendshapeError);
+  json.key("reconstruction_rmse_mm").value(layout.reconstructionRmse);
+  json.endObject();
+}
+
+std::string jsonReport(const Report& report)
+{
+  const LayoutPlan& plan = report.plan;
+  const LayoutFrames& frames = report.frames;
+  JsonWriter json;
+  json.beginObject();
+  json.key("inputs").beginArray();
+  for (const std::string& input : report.inputs)
+    json.value(input);
+  json.endArray();
+  json.key("method").value(selectionMethodName(plan.method));
+  json.key("markers").beginArray();
+  for (const std::string& label : frames.labels)
+    json.value(label);
+  json.endArray();
+  json.key("frames").beginObject();
+  json.key("used").value(static_cast<std::int64_t>(frames.frames.rows()));
+  json.key("training").value(static_cast<std::int64_t>(frames.training.size()));
+  json.key("test").value(static_cast<std::int64_t>(frames.test.size()));
+  json.key("dropped").value(static_cast<std::int64_t>(frames.droppedFrames));
+  json.key("stabilized").value(frames.stabilized);
+  json.endObject();
+  json.key("pca").beginObject();
+  json.key("components").value(static_cast<std::int64_t>(plan.pcaComponents));
+  json.key("explained_variance").value(plan.explainedVariance);
+  json.endObject();
+  json.key("symmetry").beginObject();
+  json.key("source").value(report.pairSource);
+  json.key("pairs").beginArray();
+  if (report.detection) {
+    for (const DetectedPair& pair : report.detection->pairs) {
+      json.beginObject();
+      json.key("markers")
+          .beginArray()
+          .value(frames.labels[static_cast<std::size_t>(pair.first)])
+          .value(frames.labels[static_cast<std::size_t>(pair.second)])
+          .endArray();
+      json.key("mismatch_mm").value(pair.mismatch);
+      json.key("from_labels").value(pair.fromLabels);
+      json.endObject();
+    }
+  } else {
+    for (const auto& [a, b] : report.symmetry.pairs()) {
+      json.beginObject();
+      json.key("markers")
+          .beginArray()
+          .value(frames.labels[static_cast<std::size_t>(a)])
+          .value(frames.labels[static_cast<std::size_t>(b)])
+          .endArray();
+      json.endObject();
+    }
+  }
+  json.endArray();
+  json.key("single").beginArray();
+  for (const auto& unit : report.symmetry.units())
+    if (unit.size() == 1)
+      json.value(frames.labels[static_cast<std::size_t>(unit[0])]);
+  json.endArray();
+  json.endObject();
+  json.key("key_poses").beginObject();
+  const auto frameName = [&](Eigen::Index row) {
+    const auto& [take, frame] = frames.origin[static_cast<std::size_t>(row)];
+    return std::to_string(take + 1) + ":" + std::to_string(frame);
+  };
+  json.key("neutral").value(frameName(plan.basis.neutralFrame));
+  json.key("frames").beginArray();
+  for (const Eigen::Index row : plan.basis.keyFrames)
+    json.value(frameName(row));
+  json.endArray();
+  json.endObject();
+  json.key("motion_rms_mm").value(plan.motionRms);
+  json.key("sizes").beginArray();
+  for (const LayoutSize& entry : plan.sizes) {
+    json.beginObject();
+    json.key("markers").value(static_cast<std::int64_t>(entry.markerCount));
+    if (const ScoredLayout* layout = entry.layout(plan.method)) {
+      json.key("selected");
+      writeLayout(json, report, *layout, plan.method == SelectionMethod::Pfa);
+    } else {
+      json.key("selected").null();
+    }
+    json.key("pfa");
+    if (entry.pfa)
+      writeLayout(json, report, *entry.pfa, true);
+    else
+      json.null();
+    json.key("greedy");
+    if (entry.greedy)
+      writeLayout(json, report, *entry.greedy, false);
+    else
+      json.null();
+    json.key("random").beginObject();
+    json.key("count").value(entry.randomCount);
+    json.key("blendshape_mse").value(entry.randomCount ? entry.randomBlendshapeError : std::nan(""));
+    json.key("reconstruction_rmse_mm")
+        .value(entry.randomCount ? entry.randomReconstructionRmse : std::nan(""));
+    json.endObject();
+    json.endObject();
+  }
+  json.endArray();
+  json.key("recommended").beginObject();
+  json.key("markers").value(static_cast<std::int64_t>(plan.recommendedSize));
+  json.key("rule").value(plan.recommendationRule);
+  json.key("labels").beginArray();
+  if (const LayoutSize* entry = plan.size(plan.recommendedSize))
+    if (const ScoredLayout* layout = entry->layout(plan.method))
+      for (const std::string& label : labelsOf(frames, layout->markers))
+        json.value(label);
+  json.endArray();
+  json.endObject();
+  json.key("cancelled").value(plan.cancelled);
+  json.endObject();
+  return json.str() + "\n";
+}
+
+std::string curveCsv(const LayoutPlan& plan)
+{
+  std::string csv = "markers,pfa_k,pfa_blendshape_mse,pfa_rmse_mm,greedy_blendshape_mse,greedy_rmse_mm,"
+                    "random_blendshape_mse,"
+                    "random_rmse_mm\n";
+  for (const LayoutSize& entry : plan.sizes) {
+    csv += std::to_string(entry.markerCount) + ",";
+    if (entry.pfa)
+      csv += std::to_string(entry.pfa->k) + "," + csvNumber(entry.pfa->blendshapeError) + "," +
+             csvNumber(entry.pfa->reconstructionRmse) + ",";
+    else
+      csv += ",,,";
+    if (entry.greedy)
+      csv +=
+          csvNumber(entry.greedy->blendshapeError) + "," + csvNumber(entry.greedy->reconstructionRmse) + ",";
+    else
+      csv += ",,";
+    if (entry.randomCount > 0)
+      csv += csvNumber(entry.randomBlendshapeError) + "," + csvNumber(entry.randomReconstructionRmse);
+    else
+      csv += ",";
+    csv += "\n";
+  }
+  return csv;
+}
+
+void printText(const Report& report)
+{
+  const LayoutPlan& plan = report.plan;
+  const LayoutFrames& frames = report.frames;
+  std::ostringstream out;
+  out << frames.markerCount() << " markers, " << frames.frames.rows() << " frames (" << frames.training.size()
+      << " training, " << frames.test.size() << " test, " << frames.droppedFrames
+      << " dropped for a missing marker)" << (frames.stabilized ? ", head motion removed" : "") << "\n";
+  if (plan.pcaComponents > 0)
+    out << "PCA: " << plan.pcaComponents << " components explain "
+        << number(100.0 * plan.explainedVariance, 2) << " % of the variance\n";
+  out << "symmetry (" << report.pairSource << "): " << report.symmetry.pairs().size() << " pairs";
+  if (report.detection) {
+    out << "\n";
+    for (const DetectedPair& pair : report.detection->pairs)
+      out << "  " << frames.labels[static_cast<std::size_t>(pair.first)] << " <-> "
+          << frames.labels[static_cast<std::size_t>(pair.second)] << "  mismatch " << number(pair.mismatch, 1)
+          << " mm" << (pair.fromLabels ? " (labels)" : "") << "\n";
+    out << "  midline:";
+    for (const Eigen::Index m : report.detection->midline)
+      out << " " << frames.labels[static_cast<std::size_t>(m)];
+    out << "\n  unpaired:";
+    for (const Eigen::Index m : report.detection->unpaired)
+      out << " " << frames.labels[static_cast<std::size_t>(m)];
+  }
+  out << "\nkey poses: " << plan.basis.keyPoseCount()
+      << " (blendshape basis from the full set); test motion RMS " << number(plan.motionRms, 2) << " mm\n\n";
+  out << "markers   k | PFA blend-MSE  RMSE mm | greedy blend-MSE  RMSE mm | random("
+      << "mean) blend-MSE  RMSE mm\n";
+  for (const LayoutSize& entry : plan.sizes) {
+    char line[256];
+    const auto cell = [](const std::optional<ScoredLayout>& layout, bool mse) {
+      return layout ? number(mse ? layout->blendshapeError : layout->reconstructionRmse, mse ? 5 : 3)
+                    : std::string("-");
+    };
+    std::snprintf(line, sizeof line, "%7lld %3s | %13s %8s | %16s %8s | %22s %8s%s\n",
+                  static_cast<long long>(entry.markerCount),
+                  entry.pfa ? std::to_string(entry.pfa->k).c_str() : "-", cell(entry.pfa, true).c_str(),
+                  cell(entry.pfa, false).c_str(), cell(entry.greedy, true).c_str(),
+                  cell(entry.greedy, false).c_str(),
+                  entry.randomCount ? number(entry.randomBlendshapeError, 5).c_str() : "-",
+                  entry.randomCount ? number(entry.randomReconstructionRmse, 3).c_str() : "-",
+                  entry.markerCount == plan.recommendedSize ? "  <- recommended" : "");
+    out << line;
+  }
+  // The paper's claim (half the markers, about the same quality), read off the curve.
+  const double half = 0.5 * static_cast<double>(frames.markerCount());
+  for (const SelectionMethod method : {SelectionMethod::Pfa, SelectionMethod::Greedy}) {
+    const LayoutSize* nearest = nullptr;
+    for (const LayoutSize& entry : plan.sizes)
+      if (entry.layout(method) &&
+          (!nearest || std::abs(static_cast<double>(entry.markerCount) - half) <
+                           std::abs(static_cast<double>(nearest->markerCount) - half)))
+        nearest = &entry;
+    if (!nearest)
+      continue;
+    const ScoredLayout& layout = *nearest->layout(method);
+    out << "\nat about half the markers (" << nearest->markerCount << " of " << frames.markerCount() << "), "
+        << selectionMethodName(method) << ": blendshape weights off by "
+        << number(std::sqrt(layout.blendshapeError), 3) << " RMS, markers reconstructed to "
+        << number(layout.reconstructionRmse, 2) << " mm RMS ("
+        << number(100.0 * layout.reconstructionRmse / plan.motionRms, 1) << " % of the motion RMS)";
+    if (nearest->randomCount > 0)
+      out << "; random: " << number(std::sqrt(nearest->randomBlendshapeError), 3) << " and "
+          << number(nearest->randomReconstructionRmse, 2) << " mm";
+  }
+  out << "\n";
+  out << "\nrecommended: " << plan.recommendedSize << " of " << frames.markerCount() << " markers ("
+      << plan.recommendationRule << ")\n";
+  if (const LayoutSize* entry = plan.size(plan.recommendedSize))
+    if (const ScoredLayout* layout = entry->layout(plan.method)) {
+      out << " ";
+      for (const std::string& label : labelsOf(frames, layout->markers))
+        out << " " << label;
+      out << "\n";
+    }
+  if (plan.cancelled)
+    out << "cancelled: results are incomplete\n";
+  std::cout << out.str();
+}
+
+} // namespace
+
+int runPfa(const std::vector<std::string>& args)
+{
+  // --export-subset takes two values (K OUT), which Arguments cannot express: take it out first.
+  std::vector<std::string> rest;
+  std::optional<std::pair<std::string, std::string>> exportRequest;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--export-subset") {
+      if (i + 2 >= args.size())
+        throw UsageError("--export-subset needs K and OUT");
+      exportRequest = std::make_pair(args[i + 1], args[i + 2]);
+      i += 2;
+    } else {
+      rest.push_back(args[i]);
+    }
+  }
+  const Arguments arguments(rest, {"--json", "--progress"},
+                            {"--method", "--variance", "--restarts", "--k", "--seed", "--pairs",
+                             "--stabilize", "--keyposes", "--curve", "--markers", "--exclude", "--threads",
+                             "--random"});
+  if (arguments.positionals().empty())
+    throw UsageError("expected one or more takes");
+
+  LayoutPlanOptions options;
+  if (const auto method = arguments.value("--method")) {
+    const auto parsed = parseSelectionMethod(*method);
+    if (!parsed)
+      throw UsageError("--method must be pfa or greedy, not '" + *method + "'");
+    options.method = *parsed;
+  }
+  if (const auto variance = arguments.number("--variance", 1e-6, 1.0))
+    options.pfa.varianceFraction = *variance;
+  if (const auto restarts = arguments.integer("--restarts", 1, 1000000))
+    options.pfa.restarts = static_cast<int>(*restarts);
+  if (const auto seed = arguments.integer("--seed", 0, std::numeric_limits<long long>::max()))
+    options.pfa.seed = static_cast<std::uint64_t>(*seed);
+  if (const auto k = arguments.value("--k"))
+    std::tie(options.pfa.minK, options.pfa.maxK) = parseKRange(*k);
+  if (const auto random = arguments.integer("--random", 0, 100000))
+    options.randomSubsets = static_cast<int>(*random);
+  RunControl control;
+  if (const auto threads = arguments.integer("--threads", 1, 256))
+    control.threads = static_cast<int>(*threads);
+  if (arguments.has("--progress"))
+    control.progress = [](double fraction) {
+      std::cerr << "\rpfa: " << static_cast<int>(std::lround(100.0 * fraction)) << " %" << std::flush;
+      if (fraction >= 1.0)
+        std::cerr << '\n';
+    };
+  std::optional<Eigen::Index> exportSize;
+  if (exportRequest) {
+    const std::string& text = exportRequest->first;
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
+      throw UsageError("--export-subset needs a marker count K, not '" + text + "'");
+    exportSize = static_cast<Eigen::Index>(std::stol(text));
+    (void)formatFromPath(exportRequest->second);
+  }
+
+  std::vector<Take> takes;
+  for (const std::string& input : arguments.positionals()) {
+    std::vector<std::string> warnings;
+    takes.push_back(readTake(input, &warnings));
+    for (const auto& w : warnings)
+      std::cerr << input << ": warning: " << w << '\n';
+  }
+  LayoutFramesOptions frameOptions;
+  if (const auto labels = arguments.value("--stabilize"))
+    frameOptions.stabilizeLabels = splitList(*labels, "--stabilize");
+  const std::vector<std::string>& allLabels = takes.front().labels();
+  std::vector<std::string> planned;
+  if (const auto patterns = arguments.value("--markers")) {
+    planned = matching(allLabels, *patterns, "--markers");
+  } else {
+    for (const std::string& label : allLabels)
+      if (std::find(frameOptions.stabilizeLabels.begin(), frameOptions.stabilizeLabels.end(), label) ==
+          frameOptions.stabilizeLabels.end())
+        planned.push_back(label);
+  }
+  if (const auto patterns = arguments.value("--exclude")) {
+    const std::vector<std::string> excluded = matching(allLabels, *patterns, "--exclude");
+    planned.erase(std::remove_if(planned.begin(), planned.end(),
+                                 [&](const std::string& label) {
+                                   return std::find(excluded.begin(), excluded.end(), label) !=
+                                          excluded.end();
+                                 }),
+                  planned.end());
+  }
+  frameOptions.markers = planned;
+  const LayoutFrames frames = collectLayoutFrames(takes, frameOptions);
+  if (const auto keyposes = arguments.value("--keyposes"); keyposes && *keyposes != "auto")
+    options.keyFrames = keyFrameRows(*keyposes, takes, frames);
+
+  std::optional<PairDetection> detection;
+  std::string pairSource;
+  MarkerSymmetry symmetry;
+  if (const auto pairsFile = arguments.value("--pairs")) {
+    symmetry = readMarkerPairs(*pairsFile, frames.labels);
+    pairSource = "file " + *pairsFile;
+  } else {
+    std::vector<Eigen::Index> candidates;
+    for (const Eigen::Index r : frames.training)
+      if (std::find(options.keyFrames.begin(), options.keyFrames.end(), r) == options.keyFrames.end())
+        candidates.push_back(r);
+    const Eigen::Index neutral = findNeutralFrame(frames.frames, candidates);
+    Eigen::MatrixX3d positions(frames.markerCount(), 3);
+    for (Eigen::Index m = 0; m < frames.markerCount(); ++m)
+      positions.row(m) = frames.frames.row(neutral).segment<3>(3 * m);
+    detection = detectMarkerPairs(positions, frames.labels);
+    symmetry = detection->symmetry;
+    pairSource = "detected on the neutral frame: labels, then mirror matching";
+  }
+
+  const LayoutPlan plan = planMarkerLayout(frames, symmetry, options, control);
+  const Report report{arguments.positionals(), frames, plan, symmetry, detection, pairSource};
+  if (arguments.has("--json"))
+    std::cout << jsonReport(report);
+  else
+    printText(report);
+  if (const auto curve = arguments.value("--curve"))
+    writeFileAtomically(*curve, curveCsv(plan));
+  if (exportSize) {
+    const LayoutSize* entry = plan.size(*exportSize);
+    const ScoredLayout* layout = entry ? entry->layout(plan.method) : nullptr;
+    if (!layout && *exportSize != frames.markerCount()) {
+      std::string sizes;
+      for (const LayoutSize& e : plan.sizes)
+        if (e.layout(plan.method))
+          sizes += (sizes.empty() ? "" : ", ") + std::to_string(e.markerCount);
+      throw UsageError("--export-subset: the " + std::string(selectionMethodName(plan.method)) +
+                       " plan has no " + std::to_string(*exportSize) + "-marker layout (sizes: " + sizes +
+                       ")");
+    }
+    // The planned markers plus the head reference markers a capture with this layout still needs.
+    std::vector<std::string> labels = layout ? labelsOf(frames, layout->markers) : frames.labels;
+    labels.insert(labels.end(), frameOptions.stabilizeLabels.begin(), frameOptions.stabilizeLabels.end());
+    writeTake(subsetTake(takes.front(), labels), exportRequest->second);
+  }
+  return plan.cancelled ? kExitBadInput : kExitOk;
+}
+
+} // namespace mocap::cli

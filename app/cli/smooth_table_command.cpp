@@ -1,0 +1,107 @@
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/json_writer.h"
+#include "mocap/sample_patch.h"
+#include "mocap/smoothing_evaluation.h"
+#include "mocap/spike_detection.h"
+#include "mocap/take_io.h"
+
+#include <cstdio>
+#include <iostream>
+
+namespace mocap::cli {
+
+namespace {
+
+void writeJson(const std::string& file, const Take& take, const SmoothnessTable& table, double knotSpacing)
+{
+  JsonWriter json;
+  json.beginObject();
+  json.key("take").value(file);
+  json.key("measure").value(smoothnessMeasureDefinition());
+  json.key("method").value("least-squares clamped B-spline, order = degree (eqs 11-12)");
+  json.key("knot_spacing").value(knotSpacing);
+  json.key("markers").beginArray();
+  for (Eigen::Index m : table.markers)
+    json.value(take.label(m));
+  json.endArray();
+  json.key("raw_smoothness").value(table.rawSmoothness);
+  json.key("rows").beginArray();
+  for (const SmoothnessRow& row : table.rows) {
+    json.beginObject();
+    json.key("order").value(row.order);
+    json.key("preprocessing").value(!row.preprocessing.empty());
+    if (!row.preprocessing.empty())
+      json.key("preprocessing_method").value(row.preprocessing);
+    json.key("smoothness").value(row.smoothness);
+    json.key("per_marker").beginArray();
+    for (double v : row.perMarker)
+      json.value(v);
+    json.endArray();
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  std::cout << json.str() << '\n';
+}
+
+void writeText(const std::string& file, const SmoothnessTable& table, double knotSpacing)
+{
+  char line[160];
+  std::cout << "take: " << file << "  markers: " << table.markers.size() << "  knot spacing: " << knotSpacing
+            << " frames\nmeasure: " << smoothnessMeasureDefinition() << '\n';
+  std::snprintf(line, sizeof line, "%-6s %-16s %14s\n", "order", "preprocessing", "smoothness mm^2");
+  std::cout << line;
+  std::snprintf(line, sizeof line, "%-6s %-16s %14.6g\n", "raw", "", table.rawSmoothness);
+  std::cout << line;
+  for (const SmoothnessRow& row : table.rows) {
+    std::snprintf(line, sizeof line, "%-6d %-16s %14.6g\n", row.order,
+                  row.preprocessing.empty() ? "none" : row.preprocessing.c_str(), row.smoothness);
+    std::cout << line;
+  }
+}
+
+} // namespace
+
+int runSmoothTable(const std::vector<std::string>& args)
+{
+  const Arguments arguments(args, {"--json"}, {"--markers", "--knot-spacing", "--spikes"});
+  arguments.expectPositionals(1, "one TAKE");
+  const std::string& file = arguments.positionals()[0];
+  SmoothnessTableOptions options;
+  if (const auto spacing = arguments.number("--knot-spacing", 1.0, 1e6))
+    options.knotSpacing = *spacing;
+  // The paper's preprocessing is its own spike test (eqs 8-10); "robust" uses our default detector.
+  std::optional<SpikeMethod> spikes = SpikeMethod::Paper;
+  if (const auto name = arguments.value("--spikes")) {
+    spikes = *name == "off" ? std::nullopt : parseSpikeMethod(*name);
+    if (!spikes && *name != "off")
+      throw UsageError("--spikes must be paper, robust or off, not '" + *name + "'");
+  }
+  const Take take = readTake(file);
+  if (const auto list = arguments.value("--markers"))
+    for (const std::string& label : splitList(*list, "--markers")) {
+      const auto marker = take.markerIndex(label);
+      if (!marker)
+        throw UsageError("--markers: no marker '" + label + "' in " + file);
+      options.markers.push_back(*marker);
+    }
+  if (spikes) {
+    SpikeOptions spikeOptions;
+    spikeOptions.method = *spikes;
+    options.preprocessName = "spikes-" + std::string(spikeMethodName(*spikes));
+    options.preprocess = [spikeOptions](Take& t) {
+      applyPatches(t, replaceSpikes(t, detectSpikes(t, spikeOptions)));
+    };
+  }
+  const SmoothnessTable table = smoothnessTable(take, options);
+  if (arguments.has("--json"))
+    writeJson(file, take, table, options.knotSpacing);
+  else
+    writeText(file, table, options.knotSpacing);
+  return kExitOk;
+}
+
+} // namespace mocap::cli
