@@ -1,0 +1,87 @@
+#include "panels/smoothing_step.h"
+
+#include "mocap/smoothing.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QSpinBox>
+
+namespace mocap::ui {
+
+SmoothingStep::SmoothingStep(QWidget* parent) : CleaningStep(parent)
+{
+  const SmoothOptions defaults;
+  auto* form = new QFormLayout(this);
+  m_method = new QComboBox(this);
+  m_method->addItem(tr("Smoothing spline (GCV)"), static_cast<int>(SmoothMethod::Gcvspl));
+  m_method->addItem(tr("B-spline (eqs 11–12)"), static_cast<int>(SmoothMethod::BSpline));
+  m_method->addItem(tr("Butterworth (zero lag)"), static_cast<int>(SmoothMethod::Butterworth));
+  m_method->addItem(tr("Savitzky–Golay"), static_cast<int>(SmoothMethod::SavGol));
+  form->addRow(tr("Method"), m_method);
+  m_degree = new QSpinBox(this);
+  m_degree->setRange(2, 7);
+  m_degree->setValue(defaults.degree);
+  m_degree->setToolTip(tr("B-spline degree: 3 is cubic, the paper's \"third order\""));
+  form->addRow(tr("Degree"), m_degree);
+  m_knotSpacing = new QDoubleSpinBox(this);
+  m_knotSpacing->setRange(1.5, 100.0);
+  m_knotSpacing->setValue(defaults.knotSpacing);
+  m_knotSpacing->setSuffix(tr(" frames"));
+  form->addRow(tr("Knot spacing"), m_knotSpacing);
+  m_cutoff = new QDoubleSpinBox(this);
+  m_cutoff->setRange(0.5, 100.0);
+  m_cutoff->setValue(defaults.cutoffHz);
+  m_cutoff->setSuffix(tr(" Hz"));
+  form->addRow(tr("Cutoff"), m_cutoff);
+  m_window = new QSpinBox(this);
+  m_window->setRange(5, 101);
+  m_window->setSingleStep(2);
+  m_window->setValue(defaults.savgolWindow);
+  m_window->setSuffix(tr(" frames"));
+  form->addRow(tr("Window"), m_window);
+  updateEnabled();
+  connect(m_method, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
+    updateEnabled();
+    emit changed();
+  });
+  connect(m_degree, qOverload<int>(&QSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_knotSpacing, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_cutoff, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_window, qOverload<int>(&QSpinBox::valueChanged), this, &CleaningStep::changed);
+}
+
+void SmoothingStep::updateEnabled()
+{
+  const auto method = static_cast<SmoothMethod>(m_method->currentData().toInt());
+  m_degree->setEnabled(method == SmoothMethod::BSpline);
+  m_knotSpacing->setEnabled(method == SmoothMethod::BSpline);
+  m_cutoff->setEnabled(method == SmoothMethod::Butterworth);
+  m_window->setEnabled(method == SmoothMethod::SavGol);
+}
+
+QString SmoothingStep::title() const
+{
+  return tr("Smoothing");
+}
+
+StepJob SmoothingStep::job() const
+{
+  SmoothOptions options;
+  options.method = static_cast<SmoothMethod>(m_method->currentData().toInt());
+  options.degree = m_degree->value();
+  options.knotSpacing = m_knotSpacing->value();
+  options.cutoffHz = m_cutoff->value();
+  options.savgolWindow = m_window->value() | 1;  // odd
+  return [options](const Take& take) {
+    StepResult result;
+    result.patches = smoothTake(take, options);
+    result.summary = QCoreApplication::translate("SmoothingStep", "%1 smoothing")
+                         .arg(QString::fromUtf8(smoothMethodName(options.method).data(),
+                                                static_cast<int>(smoothMethodName(options.method).size())));
+    return result;
+  };
+}
+
+} // namespace mocap::ui
