@@ -27,4 +27,7 @@ int runEvalSmooth(const std::vector<std::string>& args);
 /// `mocap smooth-table TAKE ...`: the paper's Table 1 (smoothness per B-spline order).
 int runSmoothTable(const std::vector<std::string>& args);
 
+/// `mocap pfa TAKE [TAKE...] ...`: marker layout planning (Principal Feature Analysis and greedy).
+int runPfa(const std::vector<std::string>& args);
+
 } // namespace mocap::cli

@@ -22,7 +22,11 @@ constexpr const char* kUsage =
     "  eval-smooth TAKE [--noise MM] [--seed S] [--json]\n"
     "                       add noise, report position and acceleration RMSE per smoother\n"
     "  smooth-table TAKE [--markers A,B,...] [--json]\n"
-    "                       the paper's Table 1: smoothness per B-spline order\n";
+    "                       the paper's Table 1: smoothness per B-spline order\n"
+    "  pfa TAKE [TAKE...] [--method pfa|greedy] [--variance 0.98] [--restarts 1000] [--k MIN:MAX]\n"
+    "      [--seed S] [--pairs FILE] [--stabilize LABELS] [--keyposes auto|F1,F2,...] [--json]\n"
+    "      [--curve OUT.csv] [--export-subset K OUT.c3d]\n"
+    "                       marker layout planning: error vs marker count, recommended size\n";
 
 } // namespace
 
@@ -35,6 +39,7 @@ int main(int argc, char** argv)
       {"eval-spikes", runEvalSpikes},
       {"eval-smooth", runEvalSmooth},
       {"smooth-table", runSmoothTable},
+      {"pfa", runPfa},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";

@@ -19,7 +19,12 @@
 
 namespace mocap::cli {
 
-/// `mocap pfa TAKE [TAKE…] ...`: marker layout planning; see kPfaHelp. Returns the exit code.
+/// `mocap pfa TAKE [TAKE…] [--method pfa|greedy] [--variance 0.98] [--restarts 1000] [--k MIN:MAX]
+/// [--seed S] [--pairs FILE] [--stabilize LABELS] [--keyposes auto|F1,F2,…] [--markers PATTERNS]
+/// [--exclude PATTERNS] [--threads N] [--random N] [--progress] [--json] [--curve OUT.csv]
+/// [--export-subset K OUT.c3d]`: plans a marker layout and prints the error curve. Key-pose frames
+/// are numbered as the first take counts them (TAKE:FRAME for another take); PATTERNS are
+/// comma-separated globs (`*`, `?`). Returns the exit code.
 int runPfa(const std::vector<std::string>& args);
 
 namespace {
@@ -333,8 +338,7 @@ std::string jsonReport(const Report& report)
 std::string curveCsv(const LayoutPlan& plan)
 {
   std::string csv = "markers,pfa_k,pfa_blendshape_mse,pfa_rmse_mm,greedy_blendshape_mse,greedy_rmse_mm,"
-                    "random_blendshape_mse,"
-                    "random_rmse_mm\n";
+                    "random_blendshape_mse,random_rmse_mm\n";
   for (const LayoutSize& entry : plan.sizes) {
     csv += std::to_string(entry.markerCount) + ",";
     if (entry.pfa)
@@ -383,8 +387,8 @@ void printText(const Report& report)
   }
   out << "\nkey poses: " << plan.basis.keyPoseCount()
       << " (blendshape basis from the full set); test motion RMS " << number(plan.motionRms, 2) << " mm\n\n";
-  out << "markers   k | PFA blend-MSE  RMSE mm | greedy blend-MSE  RMSE mm | random("
-      << "mean) blend-MSE  RMSE mm\n";
+  out << "markers   k | PFA blend-MSE  RMSE mm | greedy blend-MSE  RMSE mm | random(mean) blend-MSE  "
+         "RMSE mm\n";
   for (const LayoutSize& entry : plan.sizes) {
     char line[256];
     const auto cell = [](const std::optional<ScoredLayout>& layout, bool mse) {

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <Eigen/Core>
+
+namespace mocap {
+
+/// min ‖A·w − b‖² subject to lower ≤ w ≤ upper, for many right-hand sides b with the same A
+/// (the blendshape weights of every frame, Wellein et al. 2007 §1: "optimal linear combination of
+/// blendshapes with minimal least-square error", weights in [0, 1]). Precompute/solve split: the
+/// constructor forms AᵀA once; solve() runs a primal active-set method (Lawson & Hanson's NNLS
+/// generalised to two bounds, as in Stark & Parker's BVLS) on the normal equations.
+///
+/// A rank-deficient A (fewer measured coordinates than weights, e.g. a small marker subset) has
+/// many minimisers; a ridge of 1e-12·trace(AᵀA)/#weights picks the one of least norm among them
+/// and leaves a full-rank problem's solution unchanged to ~1e-12 relative.
+class BoundedLeastSquares
+{
+public:
+  /// `a` is #equations × #weights. O(#equations · #weights²).
+  /// Throws InvalidArgument for no weights, a non-finite entry, bounds of the wrong size,
+  /// non-finite bounds or lower > upper.
+  BoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                      const Eigen::Ref<const Eigen::VectorXd>& lower,
+                      const Eigen::Ref<const Eigen::VectorXd>& upper);
+
+  [[nodiscard]] Eigen::Index weightCount() const { return m_gram.rows(); }
+  [[nodiscard]] Eigen::Index equationCount() const { return m_a.rows(); }
+
+  /// The constrained minimiser for `b` (#equations). Starts from all weights at the lower bound
+  /// (or from `start`, clamped, e.g. the previous frame's solution). Each active-set step costs
+  /// O(#free³); there are typically a few per weight. Total O(#equations · #weights + steps · #weights³).
+  /// Throws InvalidArgument when `b` has the wrong size or a non-finite entry.
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::Ref<const Eigen::VectorXd>& b,
+                                      const Eigen::VectorXd* start = nullptr) const;
+
+  /// The same from Aᵀb directly, when the caller has it. O(steps · #weights³).
+  [[nodiscard]] Eigen::VectorXd solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb,
+                                            const Eigen::VectorXd* start = nullptr) const;
+
+private:
+  Eigen::MatrixXd m_a;
+  Eigen::MatrixXd m_gram;  // AᵀA + ridge
+  Eigen::VectorXd m_lower;
+  Eigen::VectorXd m_upper;
+};
+
+/// One-off form: BoundedLeastSquares(a, lower, upper).solve(b).
+[[nodiscard]] Eigen::VectorXd solveBoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                                       const Eigen::Ref<const Eigen::VectorXd>& b,
+                                                       const Eigen::Ref<const Eigen::VectorXd>& lower,
+                                                       const Eigen::Ref<const Eigen::VectorXd>& upper);
+
+} // namespace mocap

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "mocap/take.h"
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace mocap {
+
+/// The rigid motion of the head through a take: per frame, the pose mapping the stabilised head
+/// (the head as it was in `referenceFrame`) to the captured one, so captured = poses[f] · stabilised.
+struct HeadMotion
+{
+  std::vector<Eigen::Isometry3d> poses;
+  /// True where the pose was measured (≥ 3 reference markers valid); false where it was
+  /// interpolated between measured neighbours (or held from the nearest one at the take's ends).
+  std::vector<bool> known;
+  Eigen::Index referenceFrame = 0;
+};
+
+/// Estimates the head pose of every frame from head-mounted `referenceMarkers` (indices into the
+/// take, ≥ 3, distinct): per frame, the Kabsch fit (kabsch.h) of the reference markers valid in
+/// that frame, as they were in `referenceFrame`, onto their captured positions. `referenceFrame`
+/// −1 picks the first frame where all reference markers are valid. Frames with fewer than three
+/// valid reference markers get a pose interpolated between the nearest measured frames (the
+/// reference markers' centre on a straight line, the rotation by slerp), or the nearest measured
+/// pose before the first / after the last one, and known = false. Not a paper equation: the
+/// paper restricts head motion at capture time (§5.1); this removes it in software so
+/// neighbour-based recovery (eqs 3-7) sees facial motion only. Throws InvalidArgument for fewer
+/// than three or repeated or out-of-range markers, an empty take, a reference frame out of range
+/// or with an invalid reference marker, no frame where all are valid, or a non-finite valid
+/// reference sample. O(#frames · #referenceMarkers).
+[[nodiscard]] HeadMotion estimateHeadMotion(const Take& take,
+                                            const std::vector<Eigen::Index>& referenceMarkers,
+                                            Eigen::Index referenceFrame = -1);
+
+/// Maps every sample (valid or not; validity and states untouched) into the stabilised head
+/// frame: p ← poses[f]⁻¹ · p. Throws InvalidArgument unless motion has one pose per frame.
+/// Not a paper equation. O(#frames · #markers).
+void removeHeadMotion(Take& take, const HeadMotion& motion);
+
+/// The exact inverse of removeHeadMotion (up to rounding): p ← poses[f] · p.
+/// Throws InvalidArgument unless motion has one pose per frame. Not a paper equation.
+/// O(#frames · #markers).
+void restoreHeadMotion(Take& take, const HeadMotion& motion);
+
+} // namespace mocap
