@@ -1,5 +1,6 @@
 // mocap-studio: the desktop editor. Parses the command line and wires the main window; all
 // views, models and commands live in mocap::widgets.
+#include "language.h"
 #include "main_window.h"
 
 #include "document/take_document.h"
@@ -8,6 +9,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QElapsedTimer>
 #include <QTimer>
@@ -80,6 +82,10 @@ int main(int argc, char** argv)
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("MocapStudio"));
   QApplication::setApplicationName(QStringLiteral("Mocap Studio"));
+  const QString language =
+      QSettings().value(QStringLiteral("language"), mocap::studio::defaultLanguage()).toString();
+  if (!mocap::studio::installLanguage(app, language))
+    mocap::studio::installLanguage(app, QStringLiteral("en"));
 
   QCommandLineParser parser;
   parser.setApplicationDescription(QStringLiteral("Mocap Studio: clean and use facial motion capture."));

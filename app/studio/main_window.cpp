@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "language.h"
+
 #include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
@@ -34,7 +36,8 @@ namespace mocap::studio {
 
 namespace {
 constexpr int kMaxRecent = 8;
-const char* const kOpenFilter = QT_TRANSLATE_NOOP("MainWindow", "Motion capture (*.c3d *.trc);;All files (*)");
+const char* const kOpenFilter =
+    QT_TRANSLATE_NOOP("mocap::studio::MainWindow", "Motion capture (*.c3d *.trc);;All files (*)");
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui::TakeDocument(this))
@@ -155,6 +158,19 @@ void MainWindow::createActions()
   trails->setCheckable(true);
   trails->setChecked(true);
   connect(trails, &QAction::toggled, this, [this](bool on) { m_view3d->setTrailFrames(on ? 50 : 0); });
+  QMenu* languages = m_viewMenu->addMenu(tr("&Language"));
+  auto* languageGroup = new QActionGroup(this);
+  const QString current = QSettings().value(QStringLiteral("language"), defaultLanguage()).toString();
+  for (const QString& code : availableLanguages()) {
+    QAction* action = languages->addAction(languageName(code));
+    action->setCheckable(true);
+    action->setChecked(code == current);
+    languageGroup->addAction(action);
+    connect(action, &QAction::triggered, this, [this, code] {
+      QSettings().setValue(QStringLiteral("language"), code);
+      QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
+    });
+  }
 
   // Transport keys work wherever the focus is (window shortcuts).
   auto addShortcut = [this](const QKeySequence& keys, auto slot) {

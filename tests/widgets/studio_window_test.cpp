@@ -3,6 +3,7 @@
 
 #include "commands/apply_patches_command.h"
 #include "document/take_document.h"
+#include "language.h"
 #include "main_window.h"
 #include "panels/cleaning_panel.h"
 #include "views/marker_view_3d.h"
@@ -198,6 +199,20 @@ TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
   EXPECT_TRUE(doc.preview().empty());
   doc.undoStack()->undo();
   EXPECT_EQ(doc.take().position(1500, marker), before.position(1500, marker));
+}
+
+TEST(StudioLanguage, GermanAndChineseAreBuiltInAndComplete)
+{
+  auto& app = *QCoreApplication::instance();
+  ASSERT_TRUE(studio::installLanguage(app, QStringLiteral("de")));
+  EXPECT_EQ(QCoreApplication::translate("mocap::studio::MainWindow", "&File"), QStringLiteral("&Datei"));
+  EXPECT_EQ(QCoreApplication::translate("SpikeStep", "%n bad point(s) found", nullptr, 2),
+            QStringLiteral("2 Ausreißer gefunden"));
+  ASSERT_TRUE(studio::installLanguage(app, QStringLiteral("zh_CN")));
+  EXPECT_EQ(QCoreApplication::translate("mocap::studio::MainWindow", "&File"), QStringLiteral("文件(&F)"));
+  EXPECT_FALSE(studio::installLanguage(app, QStringLiteral("xx")));
+  ASSERT_TRUE(studio::installLanguage(app, QStringLiteral("en")));
+  EXPECT_EQ(QCoreApplication::translate("mocap::studio::MainWindow", "&File"), QStringLiteral("&File"));
 }
 
 /// Mean absolute difference per channel, 0–255.

@@ -76,7 +76,8 @@ StepJob SpikeStep::job() const
     for (const SpikeFlag& flag : flags)
       result.flags.emplace_back(flag.marker, flag.frame);
     result.patches = replaceSpikes(take, flags);
-    result.summary = QCoreApplication::translate("SpikeStep", "%n bad point(s) found", nullptr, static_cast<int>(flags.size()));
+    const int count = static_cast<int>(flags.size());  // a plain variable, so lupdate sees the plural
+    result.summary = QCoreApplication::translate("SpikeStep", "%n bad point(s) found", nullptr, count);
     return result;
   };
 }

@@ -1,0 +1,635 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>GapFillStep</name>
+    <message numerus="yes">
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+81"/>
+        <source>, %n left open</source>
+        <translation>
+            <numerusform>, %n offen geblieben</numerusform>
+            <numerusform>, %n offen geblieben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="-2"/>
+        <source>%n gap(s) filled</source>
+        <translation>
+            <numerusform>%n Lücke gefüllt</numerusform>
+            <numerusform>%n Lücken gefüllt</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RenameMarkerCommand</name>
+    <message>
+        <location filename="../widgets/commands/rename_marker_command.cpp" line="+12"/>
+        <source>Rename %1 to %2</source>
+        <translation>%1 in %2 umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>SmoothingStep</name>
+    <message>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+80"/>
+        <source>%1 smoothing</source>
+        <translation>Glättung: %1</translation>
+    </message>
+</context>
+<context>
+    <name>SpikeStep</name>
+    <message numerus="yes">
+        <location filename="../widgets/panels/spike_step.cpp" line="+80"/>
+        <source>%n bad point(s) found</source>
+        <translation>
+            <numerusform>%n Ausreißer gefunden</numerusform>
+            <numerusform>%n Ausreißer gefunden</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>mocap::studio::MainWindow</name>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="+49"/>
+        <source>Timeline</source>
+        <translation>Zeitleiste</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Frame %1 of %2 — %3 markers selected</source>
+        <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Markers</source>
+        <translation>Marker</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Curves</source>
+        <translation>Kurven</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cleaning</source>
+        <translation>Bereinigung</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportieren…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Delete Range</source>
+        <translation>Bereich &amp;löschen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Make the selected frame range of the selected markers a gap (Shift-drag on the curves)</source>
+        <translation>Den ausgewählten Frame-Bereich der ausgewählten Marker zur Lücke machen (Umschalt-Ziehen auf den Kurven)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Rename Marker…</source>
+        <translation>Marker &amp;umbenennen…</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Reset Camera</source>
+        <translation>Kamera &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y Axis Up</source>
+        <translation>Y-Achse nach oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z Axis Up</source>
+        <translation>Z-Achse nach oben</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Trails</source>
+        <translation>&amp;Spuren</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The new language is used from the next start.</source>
+        <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About Mocap Studio</source>
+        <translation>&amp;Über Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About Mocap Studio</source>
+        <translation>Über Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+R reset camera.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Verwendung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelschritt (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+R Kamera zurücksetzen.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Select markers and Shift-drag a frame range on the curves first</source>
+        <translation>Zuerst Marker auswählen und auf den Kurven per Umschalt-Ziehen einen Frame-Bereich markieren</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Delete frames %1–%2</source>
+        <translation>Frames %1–%2 löschen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot open file</source>
+        <translation>Datei kann nicht geöffnet werden</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n warning(s) while reading; the first: %1</source>
+        <translation>
+            <numerusform>%n Warnung beim Lesen: %1</numerusform>
+            <numerusform>%n Warnungen beim Lesen; die erste: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open take</source>
+        <translation>Take öffnen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Overwrite the original?</source>
+        <translation>Original überschreiben?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save over %1? The original capture is replaced by the edited take.</source>
+        <translation>%1 überschreiben? Die Originalaufnahme wird durch den bearbeiteten Take ersetzt.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+12"/>
+        <source>Cannot save</source>
+        <translation>Speichern nicht möglich</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Save take as</source>
+        <translation>Take speichern unter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Unsaved edits</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The take has unsaved edits. Save them?</source>
+        <translation>Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1[*] — Mocap Studio</source>
+        <translation>%1[*] — Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="-277"/>
+        <source>Motion capture (*.c3d *.trc);;All files (*)</source>
+        <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::CleaningPanel</name>
+    <message>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+27"/>
+        <source>Live preview</source>
+        <translation>Live-Vorschau</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Selected markers only</source>
+        <translation>Nur ausgewählte Marker</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Computing…</source>
+        <translation>Wird berechnet…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+27"/>
+        <source>%1 — %n sample(s) would change</source>
+        <translation>
+            <numerusform>%1 — %n Abtastwert würde sich ändern</numerusform>
+            <numerusform>%1 — %n Abtastwerte würden sich ändern</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Nothing to apply</source>
+        <translation>Nichts anzuwenden</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::CurveView</name>
+    <message>
+        <location filename="../widgets/views/curve_view.cpp" line="+84"/>
+        <source>Select a marker to see its curves</source>
+        <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::GapFillStep</name>
+    <message>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="-58"/>
+        <source>Auto (best blend)</source>
+        <translation>Automatisch (beste Überblendung)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rigid neighbours</source>
+        <translation>Starre Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PCA (marker correlations)</source>
+        <translation>PCA (Marker-Korrelationen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cubic spline</source>
+        <translation>Kubischer Spline</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Linear</source>
+        <translation>Linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper: three neighbours (eqs 3–5)</source>
+        <translation>Paper: drei Nachbarn (Gl. 3–5)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper: n neighbours (eqs 6–7)</source>
+        <translation>Paper: n Nachbarn (Gl. 6–7)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Neighbour average (Guenter)</source>
+        <translation>Nachbarmittelwert (Guenter)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance-weighted neighbours (Lin–Ouhyoung)</source>
+        <translation>Distanzgewichtete Nachbarn (Lin–Ouhyoung)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Neighbours</source>
+        <translation>Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>unlimited</source>
+        <translation>unbegrenzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> frames</source>
+        <translation> Frames</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longest gap</source>
+        <translation>Längste Lücke</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Gaps</source>
+        <translation>Lücken</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::MarkerTableModel</name>
+    <message>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+68"/>
+        <source>Marker</source>
+        <translation>Marker</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Valid %</source>
+        <translation>Gültig %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gaps</source>
+        <translation>Lücken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longest gap</source>
+        <translation>Längste Lücke</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SmoothingStep</name>
+    <message>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-62"/>
+        <source>Smoothing spline (GCV)</source>
+        <translation>Glättungsspline (GCV)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B-spline (eqs 11–12)</source>
+        <translation>B-Spline (Gl. 11–12)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Butterworth (zero lag)</source>
+        <translation>Butterworth (ohne Phasenverzug)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Savitzky–Golay</source>
+        <translation>Savitzky–Golay</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>B-spline degree: 3 is cubic, the paper&apos;s &quot;third order&quot;</source>
+        <translation>B-Spline-Grad: 3 ist kubisch, die „dritte Ordnung“ des Papers</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Degree</source>
+        <translation>Grad</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source> frames</source>
+        <translation> Frames</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Knot spacing</source>
+        <translation>Knotenabstand</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cutoff</source>
+        <translation>Grenzfrequenz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Window</source>
+        <translation>Fenster</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Smoothing</source>
+        <translation>Glättung</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SpikeStep</name>
+    <message>
+        <location filename="../widgets/panels/spike_step.cpp" line="-56"/>
+        <source>Robust (local fit + MAD)</source>
+        <translation>Robust (lokale Anpassung + MAD)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper (eqs 8–10)</source>
+        <translation>Paper (Gl. 8–10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Paper: a sample is bad when both adjacent steps exceed this multiple of the mean step</source>
+        <translation>Paper: Ein Abtastwert ist ein Ausreißer, wenn beide angrenzenden Schritte dieses Vielfache des mittleren Schritts überschreiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Factor</source>
+        <translation>Faktor</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Robust: flag samples this many robust standard deviations off the local fit</source>
+        <translation>Robust: Abtastwerte markieren, die um so viele robuste Standardabweichungen von der lokalen Anpassung abweichen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Threshold</source>
+        <translation>Schwellenwert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Click to go to a flag; uncheck to keep that sample</source>
+        <translation>Klicken, um zum markierten Abtastwert zu springen; Häkchen entfernen, um ihn zu behalten</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Bad points</source>
+        <translation>Ausreißer</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 at frame %2</source>
+        <translation>%1 bei Frame %2</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::TimelineWidget</name>
+    <message>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+33"/>
+        <source>Previous gap</source>
+        <translation>Vorherige Lücke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Previous frame (Left)</source>
+        <translation>Vorheriger Frame (Links)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Play / pause (Space)</source>
+        <translation>Wiedergabe / Pause (Leertaste)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next frame (Right)</source>
+        <translation>Nächster Frame (Rechts)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next gap</source>
+        <translation>Nächste Lücke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Loop</source>
+        <translation>Schleife</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Playback speed</source>
+        <translation>Wiedergabegeschwindigkeit</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::VtkViewport</name>
+    <message>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+129"/>
+        <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
+        <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
+        <translation>Die 3D-Ansicht benötigt OpenGL 3.2; diese Anzeige bietet %1.%2.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,630 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>GapFillStep</name>
+    <message numerus="yes">
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+81"/>
+        <source>, %n left open</source>
+        <translation>
+            <numerusform>，%n 个未填补</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="-2"/>
+        <source>%n gap(s) filled</source>
+        <translation>
+            <numerusform>已填补 %n 个缺口</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RenameMarkerCommand</name>
+    <message>
+        <location filename="../widgets/commands/rename_marker_command.cpp" line="+12"/>
+        <source>Rename %1 to %2</source>
+        <translation>将 %1 重命名为 %2</translation>
+    </message>
+</context>
+<context>
+    <name>SmoothingStep</name>
+    <message>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+80"/>
+        <source>%1 smoothing</source>
+        <translation>%1 平滑</translation>
+    </message>
+</context>
+<context>
+    <name>SpikeStep</name>
+    <message numerus="yes">
+        <location filename="../widgets/panels/spike_step.cpp" line="+80"/>
+        <source>%n bad point(s) found</source>
+        <translation>
+            <numerusform>发现 %n 个坏点</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>mocap::studio::MainWindow</name>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="+49"/>
+        <source>Timeline</source>
+        <translation>时间轴</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Frame %1 of %2 — %3 markers selected</source>
+        <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Markers</source>
+        <translation>标记点</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Curves</source>
+        <translation>曲线</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cleaning</source>
+        <translation>清理</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Export…</source>
+        <translation>导出(&amp;E)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Delete Range</source>
+        <translation>删除范围(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Make the selected frame range of the selected markers a gap (Shift-drag on the curves)</source>
+        <translation>将所选标记点的所选帧范围设为缺口（在曲线上按住 Shift 拖动）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Rename Marker…</source>
+        <translation>重命名标记点(&amp;M)…</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Reset Camera</source>
+        <translation>重置相机(&amp;C)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y Axis Up</source>
+        <translation>Y 轴朝上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z Axis Up</source>
+        <translation>Z 轴朝上</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Trails</source>
+        <translation>轨迹(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The new language is used from the next start.</source>
+        <translation>新语言将在下次启动时生效。</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About Mocap Studio</source>
+        <translation>关于 Mocap Studio(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About Mocap Studio</source>
+        <translation>关于 Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+R reset camera.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;面部光学动作捕捉数据的清理与使用。&lt;/p&gt;&lt;p&gt;快捷键：空格键 播放/暂停，←/→ 逐帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+R 重置相机。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Select markers and Shift-drag a frame range on the curves first</source>
+        <translation>请先选择标记点，并在曲线上按住 Shift 拖动选取帧范围</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Delete frames %1–%2</source>
+        <translation>删除第 %1–%2 帧</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot open file</source>
+        <translation>无法打开文件</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n warning(s) while reading; the first: %1</source>
+        <translation>
+            <numerusform>读取时出现 %n 条警告；第一条：%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open take</source>
+        <translation>打开动捕片段</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Overwrite the original?</source>
+        <translation>覆盖原始文件？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save over %1? The original capture is replaced by the edited take.</source>
+        <translation>要覆盖 %1 吗？原始捕捉数据将被编辑后的动捕片段替换。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+12"/>
+        <source>Cannot save</source>
+        <translation>无法保存</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Save take as</source>
+        <translation>动捕片段另存为</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported %1</source>
+        <translation>已导出 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Unsaved edits</source>
+        <translation>未保存的修改</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The take has unsaved edits. Save them?</source>
+        <translation>动捕片段有未保存的修改。是否保存？</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1[*] — Mocap Studio</source>
+        <translation>%1[*] — Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="-277"/>
+        <source>Motion capture (*.c3d *.trc);;All files (*)</source>
+        <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::CleaningPanel</name>
+    <message>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+27"/>
+        <source>Live preview</source>
+        <translation>实时预览</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Selected markers only</source>
+        <translation>仅限所选标记点</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Computing…</source>
+        <translation>正在计算…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+27"/>
+        <source>%1 — %n sample(s) would change</source>
+        <translation>
+            <numerusform>%1 — 将更改 %n 个采样点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Nothing to apply</source>
+        <translation>没有可应用的更改</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::CurveView</name>
+    <message>
+        <location filename="../widgets/views/curve_view.cpp" line="+84"/>
+        <source>Select a marker to see its curves</source>
+        <translation>选择一个标记点以查看其曲线</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::GapFillStep</name>
+    <message>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="-58"/>
+        <source>Auto (best blend)</source>
+        <translation>自动（最佳混合）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rigid neighbours</source>
+        <translation>刚性邻近点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PCA (marker correlations)</source>
+        <translation>PCA（标记点相关性）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cubic spline</source>
+        <translation>三次样条</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Linear</source>
+        <translation>线性</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper: three neighbours (eqs 3–5)</source>
+        <translation>论文：三个邻近点（式 3–5）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper: n neighbours (eqs 6–7)</source>
+        <translation>论文：n 个邻近点（式 6–7）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Neighbour average (Guenter)</source>
+        <translation>邻近点平均（Guenter）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance-weighted neighbours (Lin–Ouhyoung)</source>
+        <translation>距离加权邻近点（Lin–Ouhyoung）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Neighbours</source>
+        <translation>邻近点数</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>unlimited</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> frames</source>
+        <translation> 帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longest gap</source>
+        <translation>最长缺口</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Gaps</source>
+        <translation>缺口</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::MarkerTableModel</name>
+    <message>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+68"/>
+        <source>Marker</source>
+        <translation>标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Valid %</source>
+        <translation>有效 %</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gaps</source>
+        <translation>缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longest gap</source>
+        <translation>最长缺口</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SmoothingStep</name>
+    <message>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-62"/>
+        <source>Smoothing spline (GCV)</source>
+        <translation>平滑样条（GCV）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B-spline (eqs 11–12)</source>
+        <translation>B 样条（式 11–12）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Butterworth (zero lag)</source>
+        <translation>Butterworth（零相位延迟）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Savitzky–Golay</source>
+        <translation>Savitzky–Golay</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>B-spline degree: 3 is cubic, the paper&apos;s &quot;third order&quot;</source>
+        <translation>B 样条次数：3 为三次，即论文中的“三阶”</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Degree</source>
+        <translation>次数</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source> frames</source>
+        <translation> 帧</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Knot spacing</source>
+        <translation>节点间距</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cutoff</source>
+        <translation>截止频率</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Window</source>
+        <translation>窗口</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Smoothing</source>
+        <translation>平滑</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SpikeStep</name>
+    <message>
+        <location filename="../widgets/panels/spike_step.cpp" line="-56"/>
+        <source>Robust (local fit + MAD)</source>
+        <translation>稳健（局部拟合 + MAD）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper (eqs 8–10)</source>
+        <translation>论文（式 8–10）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Paper: a sample is bad when both adjacent steps exceed this multiple of the mean step</source>
+        <translation>论文：当前后两步的位移均超过平均步长的此倍数时，该采样点判为坏点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Factor</source>
+        <translation>倍数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Robust: flag samples this many robust standard deviations off the local fit</source>
+        <translation>稳健：偏离局部拟合超过此数量个稳健标准差的采样点将被标为坏点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Threshold</source>
+        <translation>阈值</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Click to go to a flag; uncheck to keep that sample</source>
+        <translation>单击跳转到该坏点；取消勾选可保留该采样点</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Bad points</source>
+        <translation>坏点</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 at frame %2</source>
+        <translation>%1，第 %2 帧</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::TimelineWidget</name>
+    <message>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+33"/>
+        <source>Previous gap</source>
+        <translation>上一个缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Previous frame (Left)</source>
+        <translation>上一帧（左方向键）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Play / pause (Space)</source>
+        <translation>播放/暂停（空格键）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next frame (Right)</source>
+        <translation>下一帧（右方向键）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next gap</source>
+        <translation>下一个缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Loop</source>
+        <translation>循环播放</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Frame</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Playback speed</source>
+        <translation>播放速度</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::VtkViewport</name>
+    <message>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+129"/>
+        <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
+        <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
+        <translation>3D 视图需要 OpenGL 3.2，当前显示仅提供 %1.%2。</translation>
+    </message>
+</context>
+</TS>
