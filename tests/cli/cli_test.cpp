@@ -126,6 +126,30 @@ TEST(Cli, ConvertRescalesUnitsOnRequest)
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
 }
 
+TEST(Cli, EvaluationAndPlanningCommandsPrintJson)
+{
+  test::TempDir dir;
+  const std::string nose = q(test::dataFile("trc/NoseMoCap.trc"));
+  const CommandResult spikes = runMocap("eval-spikes " + nose + " --count 50 --json", dir);
+  ASSERT_EQ(spikes.exitCode, 0) << spikes.err;
+  EXPECT_NE(spikes.out.find("\"method\": \"robust\""), std::string::npos) << spikes.out.substr(0, 400);
+  EXPECT_NE(spikes.out.find("\"recall\""), std::string::npos);
+  const CommandResult smooth = runMocap("eval-smooth " + nose + " --noise 0.5 --json", dir);
+  ASSERT_EQ(smooth.exitCode, 0) << smooth.err;
+  EXPECT_NE(smooth.out.find("\"acceleration_rmse\""), std::string::npos);
+  const CommandResult table = runMocap("smooth-table " + nose + " --json", dir);
+  ASSERT_EQ(table.exitCode, 0) << table.err;
+  EXPECT_NE(table.out.find("\"smoothness\""), std::string::npos);
+  const CommandResult pfa =
+      runMocap("pfa " + nose + " --restarts 20 --k 5:7 --json --curve " + q(dir.file("curve.csv")), dir);
+  ASSERT_EQ(pfa.exitCode, 0) << pfa.err;
+  EXPECT_NE(pfa.out.find("\"recommended\""), std::string::npos);
+  EXPECT_GT(std::filesystem::file_size(dir.file("curve.csv")), 50u);
+  EXPECT_EQ(runMocap("pfa " + nose + " --k 9:3", dir).exitCode, 2);
+  EXPECT_EQ(runMocap("eval-spikes " + nose + " --amplitude -5", dir).exitCode, 2);
+  EXPECT_EQ(runMocap("eval-smooth " + q(dir.file("missing.trc")), dir).exitCode, 1);
+}
+
 TEST(Cli, FailedConvertLeavesNoOutputFile)
 {
   test::TempDir dir;
