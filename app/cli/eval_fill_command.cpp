@@ -1,5 +1,9 @@
-// `mocap eval-fill TAKE`: every gap-filling method against hidden truth, Gløersen & Federolf's
-// protocol (core/include/mocap/fill_evaluation.h), as a text table or JSON.
+// `mocap eval-fill TAKE [--lengths 10,30,60,120,240] [--copies N] [--seed S] [--methods a,b,...]
+// [--neighbours N] [--gaps-per-copy N] [--stabilize LABEL,LABEL,LABEL...] [--keep-jumps] [--json]`:
+// every gap-filling method against hidden truth, Gløersen & Federolf's protocol
+// (core/include/mocap/fill_evaluation.h), as a text table or JSON. --stabilize removes the head
+// motion given by head-mounted markers first (head_stabilization.h); --keep-jumps also hides
+// (and scores against) stretches where the take jumps, such as label swaps.
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -11,6 +15,7 @@
 #include "mocap/text.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -20,29 +25,26 @@ namespace mocap::cli {
 
 namespace {
 
-std::uint64_t parseUnsigned(const std::string& option, const std::string& text, std::uint64_t max)
+// A whole number in [min, max] given to `option`; UsageError otherwise.
+std::uint64_t parseNumber(const std::string& option, std::string_view text, std::uint64_t min,
+                          std::uint64_t max)
 {
-  const std::string_view trimmed = trim(text);
-  const bool digits = !trimmed.empty() && trimmed.find_first_not_of("0123456789") == std::string_view::npos;
+  const std::string digits(trim(text));
+  const bool wellFormed = !digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos;
   errno = 0;
-  char* end = nullptr;
-  const std::string copy(trimmed);
-  const unsigned long long value = digits ? std::strtoull(copy.c_str(), &end, 10) : 0;
-  if (!digits || errno == ERANGE || value > max)
-    throw UsageError(option + " expects a whole number from 0 to " + std::to_string(max) + ", got '" + text +
-                     "'");
+  const unsigned long long value = wellFormed ? std::strtoull(digits.c_str(), nullptr, 10) : 0;
+  if (!wellFormed || errno == ERANGE || value < min || value > max)
+    throw UsageError(option + " expects a whole number from " + std::to_string(min) + " to " +
+                     std::to_string(max) + ", got '" + std::string(text) + "'");
   return value;
 }
 
 std::vector<Eigen::Index> parseLengths(const std::string& text)
 {
   std::vector<Eigen::Index> lengths;
-  for (const std::string_view field : split(text, ',')) {
-    const auto value = parseUnsigned("--lengths", std::string(field), 1000000);
-    if (value == 0)
-      throw UsageError("--lengths: a gap is at least one frame long");
-    lengths.push_back(static_cast<Eigen::Index>(value));
-  }
+  for (const std::string_view field : split(text, ','))
+    lengths.push_back(
+        static_cast<Eigen::Index>(parseNumber("--lengths (gap lengths in frames)", field, 1, 1000000)));
   return lengths;
 }
 
@@ -140,29 +142,24 @@ void writeJson(const std::string& file, const FillEvaluation& evaluation)
 int runEvalFill(const std::vector<std::string>& args)
 {
   const Arguments arguments(
-      args, {"--json"},
+      args, {"--json", "--keep-jumps"},
       {"--lengths", "--copies", "--seed", "--methods", "--neighbours", "--gaps-per-copy", "--stabilize"});
   arguments.expectPositionals(1, "one TAKE");
   FillEvaluationOptions options;
   if (const auto text = arguments.value("--lengths"))
     options.gapLengths = parseLengths(*text);
-  if (const auto text = arguments.value("--copies")) {
-    options.copies = static_cast<int>(parseUnsigned("--copies", *text, 100000));
-    if (options.copies == 0)
-      throw UsageError("--copies must be at least 1");
-  }
+  if (const auto text = arguments.value("--copies"))
+    options.copies = static_cast<int>(parseNumber("--copies", *text, 1, 100000));
   if (const auto text = arguments.value("--seed"))
     options.seed =
-        parseUnsigned("--seed", *text, static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()));
+        parseNumber("--seed", *text, 0, static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()));
   if (const auto text = arguments.value("--methods"))
     options.methods = parseMethods(*text);
-  if (const auto text = arguments.value("--neighbours")) {
-    options.neighbours = static_cast<int>(parseUnsigned("--neighbours", *text, 1000));
-    if (options.neighbours == 0)
-      throw UsageError("--neighbours must be at least 1");
-  }
+  if (const auto text = arguments.value("--neighbours"))
+    options.neighbours = static_cast<int>(parseNumber("--neighbours", *text, 1, 1000));
+  options.skipJumps = !arguments.has("--keep-jumps");
   if (const auto text = arguments.value("--gaps-per-copy"))
-    options.gapsPerCopy = static_cast<int>(parseUnsigned("--gaps-per-copy", *text, 100000));
+    options.gapsPerCopy = static_cast<int>(parseNumber("--gaps-per-copy", *text, 0, 100000));
 
   const std::string& file = arguments.positionals()[0];
   Take take = readTake(file);

@@ -17,6 +17,12 @@ constexpr const char* kUsage =
     "  info FILE [--json]   markers, frames, rate, units, analog channels, valid fraction and every gap\n"
     "  convert IN OUT [--units mm|cm|m]\n"
     "                       convert between .c3d .trc (read/write) and .csv .bvh (write)\n"
+    "  clean IN -o OUT [--spikes paper|robust|off] [--spike-factor F] [--fill METHOD|off] [--max-gap N]\n"
+    "      [--neighbours N] [--smooth bspline|butterworth|gcvspl|savgol|off] [--order K]\n"
+    "      [--knot-spacing N] [--cutoff HZ] [--stabilize LABEL,...] [--keep-stabilized] [--report FILE.json]\n"
+    "                       stabilise, remove spikes, fill gaps, smooth; write OUT and a JSON report\n"
+    "  eval-fill TAKE [--lengths 10,30,60,120,240] [--copies N] [--seed S] [--methods a,b,...] [--json]\n"
+    "                       gap-filling methods against hidden truth (Gloersen & Federolf protocol)\n"
     "  eval-spikes TAKE [--count N] [--amplitude MM] [--seed S] [--json]\n"
     "                       inject spikes, report recall and false alarms per detector\n"
     "  eval-smooth TAKE [--noise MM] [--seed S] [--json]\n"
@@ -40,6 +46,8 @@ int main(int argc, char** argv)
       {"eval-smooth", runEvalSmooth},
       {"smooth-table", runSmoothTable},
       {"pfa", runPfa},
+      {"eval-fill", runEvalFill},
+      {"clean", runClean},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";

@@ -6,6 +6,7 @@
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "panels/gap_fill_step.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
@@ -108,6 +109,7 @@ void MainWindow::createDocks()
 
   m_cleaning = new ui::CleaningPanel(*m_document, this);
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
+  m_cleaning->addStep(new ui::GapFillStep(*m_document, m_cleaning));
   m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
   auto* cleaningDock = new QDockWidget(tr("Cleaning"), this);
   cleaningDock->setObjectName(QStringLiteral("cleaningDock"));

@@ -150,6 +150,32 @@ TEST(Cli, EvaluationAndPlanningCommandsPrintJson)
   EXPECT_EQ(runMocap("eval-smooth " + q(dir.file("missing.trc")), dir).exitCode, 1);
 }
 
+TEST(Cli, CleanFillsTheSampleAndReportsEveryStep)
+{
+  test::TempDir dir;
+  const CommandResult run = runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("clean.c3d")) +
+                                         " --stabilize root-1,root-2,root-3,root-4,root-5,root-6 --smooth bspline"
+                                         " --max-gap 200 --report " + q(dir.file("report.json")),
+                                     dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string report = readFileBytes(dir.file("report.json"));
+  for (const char* key : {"\"spikes\"", "\"fill\"", "\"smooth\"", "\"gaps\"", "\"flagged\"", "\"filled_gaps\""})
+    EXPECT_NE(report.find(key), std::string::npos) << key;
+  // Interior gaps up to 200 frames are filled; the stray Unlabeled1 (35 valid frames) is not.
+  EXPECT_NE(report.find("\"marker\": \"section6-1\",\n        \"first_frame\": 1935,\n        \"length\": 192,\n"
+                        "        \"filled\": true"),
+            std::string::npos)
+      << report.substr(0, 3000);
+  const CommandResult info = runMocap("info " + q(dir.file("clean.c3d")) + " --json", dir);
+  ASSERT_EQ(info.exitCode, 0);
+  EXPECT_EQ(info.out.find("\"marker\": \"section3-1\""), std::string::npos) << "section3-1's gap was filled";
+  EXPECT_EQ(runMocap("clean " + q(test::sampleTake()), dir).exitCode, 2) << "-o is required";
+  EXPECT_EQ(runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --fill magic", dir).exitCode, 2);
+  EXPECT_EQ(runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --stabilize nope", dir).exitCode,
+            2);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
+}
+
 TEST(Cli, FailedConvertLeavesNoOutputFile)
 {
   test::TempDir dir;

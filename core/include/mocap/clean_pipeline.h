@@ -1,0 +1,42 @@
+#pragma once
+
+#include "mocap/gap_fill.h"
+#include "mocap/head_stabilization.h"
+#include "mocap/smoothing.h"
+#include "mocap/spike_detection.h"
+#include "mocap/take.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mocap {
+
+/// Which cleaning steps run, in the fixed order stabilise → spikes → fill → smooth.
+/// A step whose options are empty is skipped.
+struct CleanOptions
+{
+  std::vector<std::string> stabilizeLabels;  ///< head reference markers; empty: no stabilisation
+  bool keepStabilized = false;               ///< false: head motion is put back after cleaning
+  std::optional<SpikeOptions> spikes = SpikeOptions{};
+  std::optional<FillOptions> fill = FillOptions{};
+  std::optional<SmoothOptions> smooth = SmoothOptions{};
+};
+
+/// What the pipeline did, for the `--report` JSON and the studio's review lists.
+struct CleanReport
+{
+  std::vector<Eigen::Index> stabilizeMarkers;
+  Eigen::Index unknownHeadPoses = 0;     ///< frames where the head pose had to be interpolated or was unknown
+  std::optional<HeadMotion> headMotion;  ///< when stabilised (e.g. for the BVH root)
+  std::vector<SpikeFlag> spikes;
+  std::vector<GapFillReport> gaps;
+  Eigen::Index filledSamples = 0;
+  Eigen::Index smoothedSamples = 0;
+};
+
+/// Runs the steps on `take` in place. Throws InvalidArgument for an unknown stabilisation label.
+/// Cost: the sum of the steps (each O(#frames · #markers) up to its neighbour search).
+CleanReport cleanTake(Take& take, const CleanOptions& options);
+
+} // namespace mocap

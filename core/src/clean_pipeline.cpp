@@ -1,0 +1,62 @@
+#include "mocap/clean_pipeline.h"
+
+#include "mocap/error.h"
+#include "mocap/sample_patch.h"
+
+namespace mocap {
+
+namespace {
+
+std::vector<Eigen::Index> markerIndices(const Take& take, const std::vector<std::string>& labels)
+{
+  std::vector<Eigen::Index> indices;
+  for (const std::string& label : labels) {
+    const auto index = take.markerIndex(label);
+    if (!index)
+      throw InvalidArgument("no marker labelled '" + label + "' to stabilise on");
+    indices.push_back(*index);
+  }
+  return indices;
+}
+
+Eigen::Index patchSamples(const std::vector<SamplePatch>& patches)
+{
+  Eigen::Index count = 0;
+  for (const SamplePatch& p : patches)
+    count += static_cast<Eigen::Index>(p.size());
+  return count;
+}
+
+} // namespace
+
+CleanReport cleanTake(Take& take, const CleanOptions& options)
+{
+  CleanReport report;
+  if (!options.stabilizeLabels.empty()) {
+    report.stabilizeMarkers = markerIndices(take, options.stabilizeLabels);
+    report.headMotion = estimateHeadMotion(take, report.stabilizeMarkers);
+    for (bool known : report.headMotion->known)
+      report.unknownHeadPoses += known ? 0 : 1;
+    removeHeadMotion(take, *report.headMotion);
+  }
+  if (options.spikes) {
+    report.spikes = detectSpikes(take, *options.spikes);
+    applyPatches(take, replaceSpikes(take, report.spikes));
+  }
+  if (options.fill) {
+    FillResult filled = fillGaps(take, *options.fill);
+    report.filledSamples = patchSamples(filled.patches);
+    report.gaps = std::move(filled.gaps);
+    applyPatches(take, std::move(filled.patches));
+  }
+  if (options.smooth) {
+    std::vector<SamplePatch> smoothed = smoothTake(take, *options.smooth);
+    report.smoothedSamples = patchSamples(smoothed);
+    applyPatches(take, std::move(smoothed));
+  }
+  if (report.headMotion && !options.keepStabilized)
+    restoreHeadMotion(take, *report.headMotion);
+  return report;
+}
+
+} // namespace mocap
