@@ -5,6 +5,7 @@
 #include "mocap/number_text.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace mocap::cli {
 
@@ -94,6 +95,15 @@ std::optional<long long> Arguments::integer(const std::string& option, long long
     throw UsageError(option + " must be between " + std::to_string(min) + " and " + std::to_string(max) + ", not " +
                      *text);
   return parsed;
+}
+
+std::string fixedNumber(double value, int decimals)
+{
+  if (!std::isfinite(value))
+    return "-";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
 }
 
 std::vector<std::string> splitList(const std::string& text, const std::string& option)

@@ -33,6 +33,9 @@ private:
   std::map<std::string, std::string> m_values;
 };
 
+/// `value` with `decimals` decimals for text tables; "-" when it is not finite.
+[[nodiscard]] std::string fixedNumber(double value, int decimals);
+
 /// Splits "a,b,c" into its fields; UsageError when a field is empty.
 [[nodiscard]] std::vector<std::string> splitList(const std::string& text, const std::string& option);
 

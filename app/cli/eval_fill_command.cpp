@@ -66,24 +66,9 @@ std::vector<FillMethod> parseMethods(const std::string& text)
 
 std::vector<Eigen::Index> parseMarkers(const Take& take, const std::string& text)
 {
-  std::vector<Eigen::Index> markers;
-  for (const std::string_view field : split(text, ',')) {
-    const auto marker = take.markerIndex(trim(field));
-    if (!marker)
-      throw UsageError("--stabilize: the take has no marker '" + std::string(field) + "'");
-    markers.push_back(*marker);
-  }
-  return markers;
+  return markerIndices(take, splitList(text, "--stabilize"));
 }
 
-std::string formatNumber(double value, int decimals)
-{
-  if (!std::isfinite(value))
-    return "-";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
 
 void writeText(const std::string& file, const FillEvaluation& evaluation)
 {
@@ -99,12 +84,12 @@ void writeText(const std::string& file, const FillEvaluation& evaluation)
       std::cout << '\n';
     length = s.gapLength;
     const std::string jump =
-        formatNumber(s.borderVelocityJump, 1) + " (" + formatNumber(s.trueBorderVelocityJump, 1) + ")";
+        fixedNumber(s.borderVelocityJump, 1) + " (" + fixedNumber(s.trueBorderVelocityJump, 1) + ")";
     const std::string unfilled = std::to_string(s.unfilled) + "/" + std::to_string(s.gaps);
     std::snprintf(line, sizeof line, "%-13s %6lld %8s %8s %8s %8s %18s %9s\n",
                   std::string(fillMethodName(s.method)).c_str(), static_cast<long long>(s.gapLength),
-                  formatNumber(s.meanError, 3).c_str(), formatNumber(s.rmse, 3).c_str(),
-                  formatNumber(s.p95, 3).c_str(), formatNumber(s.max, 3).c_str(), jump.c_str(),
+                  fixedNumber(s.meanError, 3).c_str(), fixedNumber(s.rmse, 3).c_str(),
+                  fixedNumber(s.p95, 3).c_str(), fixedNumber(s.max, 3).c_str(), jump.c_str(),
                   unfilled.c_str());
     std::cout << line;
   }

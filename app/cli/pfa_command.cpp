@@ -73,14 +73,6 @@ std::vector<std::string> matching(const std::vector<std::string>& labels, const 
   return ordered;
 }
 
-std::string number(double value, int decimals)
-{
-  if (!std::isfinite(value))
-    return "-";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  return buffer;
-}
 
 std::string csvNumber(double value)
 {
@@ -370,13 +362,13 @@ void printText(const Report& report)
       << " dropped for a missing marker)" << (frames.stabilized ? ", head motion removed" : "") << "\n";
   if (plan.pcaComponents > 0)
     out << "PCA: " << plan.pcaComponents << " components explain "
-        << number(100.0 * plan.explainedVariance, 2) << " % of the variance\n";
+        << fixedNumber(100.0 * plan.explainedVariance, 2) << " % of the variance\n";
   out << "symmetry (" << report.pairSource << "): " << report.symmetry.pairs().size() << " pairs";
   if (report.detection) {
     out << "\n";
     for (const DetectedPair& pair : report.detection->pairs)
       out << "  " << frames.labels[static_cast<std::size_t>(pair.first)] << " <-> "
-          << frames.labels[static_cast<std::size_t>(pair.second)] << "  mismatch " << number(pair.mismatch, 1)
+          << frames.labels[static_cast<std::size_t>(pair.second)] << "  mismatch " << fixedNumber(pair.mismatch, 1)
           << " mm" << (pair.fromLabels ? " (labels)" : "") << "\n";
     out << "  midline:";
     for (const Eigen::Index m : report.detection->midline)
@@ -386,13 +378,13 @@ void printText(const Report& report)
       out << " " << frames.labels[static_cast<std::size_t>(m)];
   }
   out << "\nkey poses: " << plan.basis.keyPoseCount()
-      << " (blendshape basis from the full set); test motion RMS " << number(plan.motionRms, 2) << " mm\n\n";
+      << " (blendshape basis from the full set); test motion RMS " << fixedNumber(plan.motionRms, 2) << " mm\n\n";
   out << "markers   k | PFA blend-MSE  RMSE mm | greedy blend-MSE  RMSE mm | random(mean) blend-MSE  "
          "RMSE mm\n";
   for (const LayoutSize& entry : plan.sizes) {
     char line[256];
     const auto cell = [](const std::optional<ScoredLayout>& layout, bool mse) {
-      return layout ? number(mse ? layout->blendshapeError : layout->reconstructionRmse, mse ? 5 : 3)
+      return layout ? fixedNumber(mse ? layout->blendshapeError : layout->reconstructionRmse, mse ? 5 : 3)
                     : std::string("-");
     };
     std::snprintf(line, sizeof line, "%7lld %3s | %13s %8s | %16s %8s | %22s %8s%s\n",
@@ -400,8 +392,8 @@ void printText(const Report& report)
                   entry.pfa ? std::to_string(entry.pfa->k).c_str() : "-", cell(entry.pfa, true).c_str(),
                   cell(entry.pfa, false).c_str(), cell(entry.greedy, true).c_str(),
                   cell(entry.greedy, false).c_str(),
-                  entry.randomCount ? number(entry.randomBlendshapeError, 5).c_str() : "-",
-                  entry.randomCount ? number(entry.randomReconstructionRmse, 3).c_str() : "-",
+                  entry.randomCount ? fixedNumber(entry.randomBlendshapeError, 5).c_str() : "-",
+                  entry.randomCount ? fixedNumber(entry.randomReconstructionRmse, 3).c_str() : "-",
                   entry.markerCount == plan.recommendedSize ? "  <- recommended" : "");
     out << line;
   }
@@ -419,12 +411,12 @@ void printText(const Report& report)
     const ScoredLayout& layout = *nearest->layout(method);
     out << "\nat about half the markers (" << nearest->markerCount << " of " << frames.markerCount() << "), "
         << selectionMethodName(method) << ": blendshape weights off by "
-        << number(std::sqrt(layout.blendshapeError), 3) << " RMS, markers reconstructed to "
-        << number(layout.reconstructionRmse, 2) << " mm RMS ("
-        << number(100.0 * layout.reconstructionRmse / plan.motionRms, 1) << " % of the motion RMS)";
+        << fixedNumber(std::sqrt(layout.blendshapeError), 3) << " RMS, markers reconstructed to "
+        << fixedNumber(layout.reconstructionRmse, 2) << " mm RMS ("
+        << fixedNumber(100.0 * layout.reconstructionRmse / plan.motionRms, 1) << " % of the motion RMS)";
     if (nearest->randomCount > 0)
-      out << "; random: " << number(std::sqrt(nearest->randomBlendshapeError), 3) << " and "
-          << number(nearest->randomReconstructionRmse, 2) << " mm";
+      out << "; random: " << fixedNumber(std::sqrt(nearest->randomBlendshapeError), 3) << " and "
+          << fixedNumber(nearest->randomReconstructionRmse, 2) << " mm";
   }
   out << "\n";
   out << "\nrecommended: " << plan.recommendedSize << " of " << frames.markerCount() << " markers ("

@@ -82,12 +82,7 @@ int runSmoothTable(const std::vector<std::string>& args)
   }
   const Take take = readTake(file);
   if (const auto list = arguments.value("--markers"))
-    for (const std::string& label : splitList(*list, "--markers")) {
-      const auto marker = take.markerIndex(label);
-      if (!marker)
-        throw UsageError("--markers: no marker '" + label + "' in " + file);
-      options.markers.push_back(*marker);
-    }
+    options.markers = markerIndices(take, splitList(*list, "--markers"));
   if (spikes) {
     SpikeOptions spikeOptions;
     spikeOptions.method = *spikes;

@@ -7,18 +7,6 @@ namespace mocap {
 
 namespace {
 
-std::vector<Eigen::Index> markerIndices(const Take& take, const std::vector<std::string>& labels)
-{
-  std::vector<Eigen::Index> indices;
-  for (const std::string& label : labels) {
-    const auto index = take.markerIndex(label);
-    if (!index)
-      throw InvalidArgument("no marker labelled '" + label + "' to stabilise on");
-    indices.push_back(*index);
-  }
-  return indices;
-}
-
 Eigen::Index patchSamples(const std::vector<SamplePatch>& patches)
 {
   Eigen::Index count = 0;

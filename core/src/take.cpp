@@ -46,6 +46,19 @@ std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels)
   return warnings;
 }
 
+std::vector<Eigen::Index> markerIndices(const Take& take, const std::vector<std::string>& labels)
+{
+  std::vector<Eigen::Index> indices;
+  indices.reserve(labels.size());
+  for (const std::string& label : labels) {
+    const auto index = take.markerIndex(label);
+    if (!index)
+      throw InvalidArgument("the take has no marker labelled '" + label + "'");
+    indices.push_back(*index);
+  }
+  return indices;
+}
+
 Take::Take(std::vector<std::string> labels, Eigen::Index frameCount, double frameRate)
     : Take(std::move(labels), frameCount, frameRate, Uninitialized{})
 {

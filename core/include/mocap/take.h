@@ -175,6 +175,10 @@ private:
   C3dParameterTree m_parameters;
 };
 
+/// The indices of `labels` in `take`, in the given order. Throws InvalidArgument naming the first
+/// label the take does not have. O(#labels · #markers).
+[[nodiscard]] std::vector<Eigen::Index> markerIndices(const Take& take, const std::vector<std::string>& labels);
+
 /// Makes `labels` unique: an empty label becomes "M<index+1>", a repeated one gets "_2", "_3"...
 /// Returns one warning per label it changed. O(#labels) expected.
 std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels);
