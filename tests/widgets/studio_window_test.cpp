@@ -42,7 +42,7 @@ protected:
     window->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
     window->activateWindow();  // shortcuts need the active window (Xvfb has no window manager)
-    ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
+    (void)QTest::qWaitForWindowActive(window.get());  // asserted only where a test needs it
     ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
   }
 
@@ -163,6 +163,7 @@ TEST_F(StudioWindow, RenamingInTheTableIsUndoable)
 
 TEST_F(StudioWindow, DeleteRangeMakesAGapForTheSelectedMarkers)
 {
+  ASSERT_TRUE(QTest::qWaitForWindowActive(window.get())) << "the Delete shortcut needs the active window";
   TakeDocument& doc = window->document();
   window->selectLabels({QStringLiteral("root-1"), QStringLiteral("root-3")});
   doc.setRange(100, 149);
