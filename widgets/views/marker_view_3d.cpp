@@ -122,7 +122,9 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   vtkNew<vtkPolyDataMapper> trailMapper;
   trailMapper->SetInputData(m_trails);
   m_trailActor->SetMapper(trailMapper);
-  m_trailActor->GetProperty()->SetColor(selectionColor().redF(), selectionColor().greenF(), selectionColor().blueF());
+  const QColor trail = selectionColor();
+  m_trailActor->GetProperty()->SetColor(static_cast<double>(trail.redF()), static_cast<double>(trail.greenF()),
+                                        static_cast<double>(trail.blueF()));
   m_trailActor->GetProperty()->SetOpacity(0.7);
   m_trailActor->GetProperty()->SetLineWidth(2.0f);
   m_viewport->renderer()->AddActor(m_trailActor);
