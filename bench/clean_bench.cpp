@@ -68,6 +68,40 @@ void BM_CleanPipeline(benchmark::State& state)
 }
 BENCHMARK(BM_CleanPipeline)->Arg(5000)->Arg(10000)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oN);
 
+// One step of the pipeline alone (0 spikes, 1 fill, 2 smoothing), on the take as the step
+// before it leaves it, to show where the pipeline's time goes.
+void BM_CleanStep(benchmark::State& state)
+{
+  const int step = static_cast<int>(state.range(1));
+  mocap::CleanOptions before;
+  before.smooth.reset();
+  if (step < 1)
+    before.spikes.reset();
+  if (step < 2)
+    before.fill.reset();
+  mocap::Take original = syntheticTake(state.range(0));
+  mocap::cleanTake(original, before);
+  mocap::CleanOptions only;
+  only.spikes.reset();
+  only.fill.reset();
+  only.smooth.reset();
+  if (step == 0)
+    only.spikes = mocap::SpikeOptions{};
+  else if (step == 1)
+    only.fill = mocap::FillOptions{};
+  else
+    only.smooth = mocap::SmoothOptions{mocap::SmoothMethod::BSpline};
+  for (auto _ : state) {
+    state.PauseTiming();
+    mocap::Take take = original;
+    state.ResumeTiming();
+    const mocap::CleanReport report = mocap::cleanTake(take, only);
+    benchmark::DoNotOptimize(report.filledSamples);
+  }
+}
+BENCHMARK(BM_CleanStep)->ArgNames({"frames", "step"})->Args({10000, 0})->Args({10000, 1})->Args({10000, 2})
+    ->Unit(benchmark::kMillisecond);
+
 void BM_TouchEverySample(benchmark::State& state)
 {
   const mocap::Take original = syntheticTake(state.range(0));
