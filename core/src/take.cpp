@@ -188,6 +188,95 @@ Eigen::Index Take::addMarker(std::string label)
   return markerCount() - 1;
 }
 
+namespace {
+
+// Moves the block of `count` elements at `from` to `to` (block indices) by rotation, shifting the
+// blocks in between by one. O(buffer size).
+template <typename T>
+void moveBlock(SampleBuffer<T>& buffer, std::size_t count, std::size_t from, std::size_t to)
+{
+  T* data = buffer.data();
+  if (from < to)
+    std::rotate(data + from * count, data + (from + 1) * count, data + (to + 1) * count);
+  else if (to < from)
+    std::rotate(data + to * count, data + from * count, data + (from + 1) * count);
+}
+
+} // namespace
+
+MarkerColumn Take::column(Eigen::Index marker) const
+{
+  checkIndex(0, marker);
+  MarkerColumn column;
+  column.label = m_labels[static_cast<std::size_t>(marker)];
+  column.positions = trajectory(marker);
+  column.valid = valid().col(marker);
+  column.residuals = residuals().col(marker);
+  const auto frames = static_cast<std::size_t>(m_frameCount);
+  const auto offset = static_cast<std::size_t>(marker) * frames;
+  column.cameraMasks.assign(m_cameraMasks.data() + offset, m_cameraMasks.data() + offset + frames);
+  column.states.resize(frames);
+  for (std::size_t f = 0; f < frames; ++f)
+    column.states[f] = static_cast<SampleState>(m_states.data()[offset + f]);
+  return column;
+}
+
+MarkerColumn Take::removeMarker(Eigen::Index marker)
+{
+  if (marker < 0 || marker >= markerCount())
+    throw InvalidArgument("no marker " + std::to_string(marker) + " to remove: the take has " +
+                          std::to_string(markerCount()) + " markers");
+  MarkerColumn removed = column(marker);
+  const auto frames = static_cast<std::size_t>(m_frameCount);
+  const auto index = static_cast<std::size_t>(marker);
+  const std::size_t last = m_labels.size() - 1;
+  auto dropBlock = [&](auto& buffer, std::size_t count) {
+    moveBlock(buffer, count, index, last);
+    buffer.resize(buffer.size() - count);
+  };
+  dropBlock(m_positions, frames * 3);
+  dropBlock(m_valid, frames);
+  dropBlock(m_residuals, frames);
+  dropBlock(m_cameraMasks, frames);
+  dropBlock(m_states, frames);
+  m_labels.erase(m_labels.begin() + static_cast<std::ptrdiff_t>(marker));
+  return removed;
+}
+
+void Take::insertMarker(Eigen::Index marker, MarkerColumn column)
+{
+  if (marker < 0 || marker > markerCount())
+    throw InvalidArgument("cannot insert a marker at index " + std::to_string(marker) + ": the take has " +
+                          std::to_string(markerCount()) + " markers");
+  const auto frames = static_cast<std::size_t>(m_frameCount);
+  if (column.frameCount() != m_frameCount || column.valid.size() != m_frameCount ||
+      column.residuals.size() != m_frameCount || column.cameraMasks.size() != frames ||
+      column.states.size() != frames)
+    throw InvalidArgument("marker '" + column.label + "' has " + std::to_string(column.frameCount()) +
+                          " frames but the take has " + std::to_string(m_frameCount));
+  if (column.label.empty())
+    throw InvalidArgument("a marker needs a label");
+  if (markerIndex(column.label))
+    throw InvalidArgument("the take already has a marker labelled '" + column.label + "'");
+  const auto index = static_cast<std::size_t>(marker);
+  const std::size_t last = m_labels.size();
+  auto addBlock = [&](auto& buffer, std::size_t count, const auto* values) {
+    const std::size_t old = buffer.size();
+    buffer.resize(old + count);
+    std::copy_n(values, count, buffer.data() + old);
+    moveBlock(buffer, count, last, index);
+  };
+  std::vector<std::uint8_t> states(frames);
+  for (std::size_t f = 0; f < frames; ++f)
+    states[f] = static_cast<std::uint8_t>(column.states[f]);
+  addBlock(m_positions, frames * 3, column.positions.data());
+  addBlock(m_valid, frames, column.valid.data());
+  addBlock(m_residuals, frames, column.residuals.data());
+  addBlock(m_cameraMasks, frames, column.cameraMasks.data());
+  addBlock(m_states, frames, states.data());
+  m_labels.insert(m_labels.begin() + static_cast<std::ptrdiff_t>(marker), std::move(column.label));
+}
+
 double Take::validFraction() const
 {
   if (m_valid.size() == 0)

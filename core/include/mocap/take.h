@@ -76,6 +76,20 @@ struct Event
   double time = 0.0;        ///< seconds from the start of the trial
 };
 
+/// Everything a take holds for one marker, detached from it: what removeMarker hands back and
+/// insertMarker takes, so deleting a marker can be undone bit for bit.
+struct MarkerColumn
+{
+  std::string label;
+  Eigen::Matrix<double, Eigen::Dynamic, 3> positions;  ///< #frames × 3
+  ValidMask valid;
+  Eigen::ArrayXd residuals;
+  std::vector<std::uint8_t> cameraMasks;
+  std::vector<SampleState> states;
+
+  [[nodiscard]] Eigen::Index frameCount() const { return positions.rows(); }
+};
+
 /// A motion-capture take: labelled marker trajectories with an explicit validity mask,
 /// residuals, camera masks and per-sample edit states, plus analog data, events and the full
 /// C3D parameter tree so a round trip loses nothing.
@@ -145,6 +159,16 @@ public:
 
   /// Appends a marker (label made unique) with every sample invalid; returns its index.
   Eigen::Index addMarker(std::string label);
+  /// Takes marker `marker` out of the take and returns it (later markers move down one index).
+  /// Throws InvalidArgument for an index outside the take. O(#frames · #markers).
+  MarkerColumn removeMarker(Eigen::Index marker);
+  /// Puts `column` in as marker `marker` (0..markerCount(); later markers move up one index).
+  /// Throws InvalidArgument when the index is out of range, the column's frame count or array
+  /// sizes differ from the take's, or its label is empty or already taken (the take is then
+  /// unchanged). O(#frames · #markers).
+  void insertMarker(Eigen::Index marker, MarkerColumn column);
+  /// A copy of marker `marker`'s data. O(#frames).
+  [[nodiscard]] MarkerColumn column(Eigen::Index marker) const;
   /// Fraction of valid samples over all markers and frames (0 for an empty take).
   [[nodiscard]] double validFraction() const;
 

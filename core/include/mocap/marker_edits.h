@@ -1,0 +1,30 @@
+#pragma once
+
+#include "mocap/sample_patch.h"
+#include "mocap/take.h"
+
+#include <string>
+#include <vector>
+
+namespace mocap {
+
+/// Edits a technician makes to whole markers (the studio's marker menu), each returned as data
+/// the caller puts in through an undoable step (SamplePatch or Take::insertMarker).
+
+/// A virtual marker at the mean of `sources` in every frame where all of them are valid
+/// (invalid elsewhere, residual −1), residual 0 and state Edited where valid, labelled `label`.
+/// Used for a marker that was never placed (e.g. the midpoint of two eye corners) or to stand in
+/// for one that is lost. Throws InvalidArgument for no sources, an index outside the take or a
+/// repeated source. O(#frames · #sources).
+[[nodiscard]] MarkerColumn averagedMarker(const Take& take, const std::vector<Eigen::Index>& sources,
+                                          std::string label);
+
+/// Patches that exchange everything markers `a` and `b` hold over frames [first, last]
+/// (positions, validity, residuals, states): the fix for two labels swapped by the tracker after
+/// the markers crossed. Apply both (applyPatches); applying the undo patches swaps back. Throws
+/// InvalidArgument when a == b, an index is outside the take or the range is empty or outside it.
+/// O(last − first).
+[[nodiscard]] std::vector<SamplePatch> swapMarkersOverRange(const Take& take, Eigen::Index a, Eigen::Index b,
+                                                            Eigen::Index first, Eigen::Index last);
+
+} // namespace mocap

@@ -1,0 +1,126 @@
+#include "test_support.h"
+
+#include "mocap/c3d_reader.h"
+#include "mocap/error.h"
+#include "mocap/marker_edits.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace mocap {
+namespace {
+
+// Every per-sample array and the labels, compared exactly (positions bit for bit, NaN included).
+void expectIdentical(const Take& a, const Take& b)
+{
+  ASSERT_EQ(a.labels(), b.labels());
+  ASSERT_EQ(a.frameCount(), b.frameCount());
+  const auto count = static_cast<std::size_t>(a.markerCount() * a.frameCount() * 3);
+  EXPECT_EQ(std::memcmp(a.positionData(), b.positionData(), count * sizeof(double)), 0);
+  EXPECT_TRUE((a.valid() == b.valid()).all());
+  EXPECT_TRUE((a.residuals() == b.residuals()).all());
+  EXPECT_TRUE((a.cameraMasks() == b.cameraMasks()).all());
+  EXPECT_TRUE((a.states() == b.states()).all());
+}
+
+TEST(MarkerEdits, RemoveThenInsertRestoresTheTakeBitForBit)
+{
+  Take take = readC3d(test::sampleTake());
+  take.setState(10, 5, SampleState::Smoothed);
+  const Take original = take;
+  for (const Eigen::Index marker : {Eigen::Index{0}, Eigen::Index{17}, take.markerCount() - 1}) {
+    const std::string label = take.label(marker);
+    const Eigen::Vector3d position = take.position(900, marker);
+    MarkerColumn removed = take.removeMarker(marker);
+    EXPECT_EQ(take.markerCount(), original.markerCount() - 1);
+    EXPECT_FALSE(take.markerIndex(label));
+    EXPECT_EQ(removed.label, label);
+    EXPECT_EQ(Eigen::Vector3d(removed.positions.row(900)), position);
+    // The markers after it moved down one index with their data.
+    if (marker + 1 < original.markerCount()) {
+      EXPECT_EQ(take.position(900, marker), original.position(900, marker + 1));
+    }
+    take.insertMarker(marker, std::move(removed));
+    expectIdentical(take, original);
+  }
+}
+
+TEST(MarkerEdits, InsertRejectsMismatchedOrDuplicateColumnsAndLeavesTheTakeAlone)
+{
+  Take take({"a", "b", "c"}, 5, 100.0);
+  const Take original = take;
+  MarkerColumn duplicate = take.column(1);
+  EXPECT_THROW(take.insertMarker(0, duplicate), InvalidArgument);
+  MarkerColumn shorter = take.column(1);
+  shorter.label = "d";
+  shorter.positions.conservativeResize(4, 3);
+  EXPECT_THROW(take.insertMarker(0, shorter), InvalidArgument);
+  MarkerColumn unnamed = take.column(1);
+  unnamed.label.clear();
+  EXPECT_THROW(take.insertMarker(0, unnamed), InvalidArgument);
+  MarkerColumn fine = take.column(1);
+  fine.label = "d";
+  EXPECT_THROW(take.insertMarker(4, fine), InvalidArgument);
+  EXPECT_THROW(take.insertMarker(-1, fine), InvalidArgument);
+  EXPECT_THROW(static_cast<void>(take.removeMarker(3)), InvalidArgument);
+  expectIdentical(take, original);
+  take.insertMarker(3, fine);
+  EXPECT_EQ(take.label(3), "d");
+}
+
+TEST(MarkerEdits, RemovingTheOnlyMarkerLeavesAnEmptyTake)
+{
+  Take take({"a"}, 3, 100.0);
+  take.setPosition(1, 0, {1, 2, 3});
+  MarkerColumn column = take.removeMarker(0);
+  EXPECT_TRUE(take.empty());
+  take.insertMarker(0, std::move(column));
+  EXPECT_EQ(take.position(1, 0), Eigen::Vector3d(1, 2, 3));
+}
+
+TEST(MarkerEdits, AveragedMarkerIsTheMeanWhereAllSourcesAreValid)
+{
+  Take take({"a", "b", "c"}, 4, 100.0);
+  for (Eigen::Index f = 0; f < 4; ++f) {
+    const auto t = static_cast<double>(f);
+    take.setPosition(f, 0, {t, 0, 0});
+    take.setPosition(f, 1, {0, 2 * t, 4});
+    take.valid()(f, 0) = take.valid()(f, 1) = true;
+  }
+  take.valid()(2, 1) = false;
+  const MarkerColumn mid = averagedMarker(take, {0, 1}, "mid");
+  EXPECT_EQ(mid.label, "mid");
+  EXPECT_EQ(Eigen::Vector3d(mid.positions.row(3)), Eigen::Vector3d(1.5, 3, 2));
+  EXPECT_TRUE(mid.valid(1));
+  EXPECT_FALSE(mid.valid(2));
+  EXPECT_EQ(mid.residuals(2), -1.0);
+  EXPECT_EQ(mid.states[1], SampleState::Edited);
+  take.insertMarker(take.markerCount(), mid);
+  EXPECT_EQ(*take.markerIndex("mid"), 3);
+  EXPECT_THROW(static_cast<void>(averagedMarker(take, {}, "x")), InvalidArgument);
+  EXPECT_THROW(static_cast<void>(averagedMarker(take, {0, 0}, "x")), InvalidArgument);
+  EXPECT_THROW(static_cast<void>(averagedMarker(take, {0, 9}, "x")), InvalidArgument);
+}
+
+TEST(MarkerEdits, SwapOverRangeExchangesOnlyThatRangeAndSwapsBack)
+{
+  Take take = readC3d(test::sampleTake());
+  const Take original = take;
+  const Eigen::Index a = *take.markerIndex("section4-1");  // has a gap at 822-863
+  const Eigen::Index b = *take.markerIndex("section4-2");
+  std::vector<SamplePatch> undo = applyPatches(take, swapMarkersOverRange(take, a, b, 800, 900));
+  EXPECT_EQ(take.position(850, a), original.position(850, b));
+  EXPECT_EQ(take.isValid(850, b), original.isValid(850, a));
+  EXPECT_EQ(take.isValid(850, a), original.isValid(850, b));
+  EXPECT_EQ(take.position(799, a), original.position(799, a));
+  EXPECT_EQ(take.position(901, b), original.position(901, b));
+  applyPatches(take, std::move(undo));
+  expectIdentical(take, original);
+  EXPECT_THROW(static_cast<void>(swapMarkersOverRange(take, a, a, 0, 1)), InvalidArgument);
+  EXPECT_THROW(static_cast<void>(swapMarkersOverRange(take, a, b, 5, 4)), InvalidArgument);
+  EXPECT_THROW(static_cast<void>(swapMarkersOverRange(take, a, b, 0, take.frameCount())), InvalidArgument);
+}
+
+} // namespace
+} // namespace mocap
