@@ -3,6 +3,8 @@
 #include "language.h"
 
 #include "commands/apply_patches_command.h"
+#include "commands/insert_marker_command.h"
+#include "commands/remove_markers_command.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
@@ -22,6 +24,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -32,6 +35,8 @@
 #include <QTableView>
 #include <QToolBar>
 #include <QUndoStack>
+
+#include "mocap/marker_edits.h"
 
 namespace mocap::studio {
 
@@ -144,6 +149,8 @@ void MainWindow::createActions()
       m_table->edit(current.siblingAtColumn(ui::MarkerTableModel::LabelColumn));
   });
 
+  createMarkerMenu();
+
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);
   auto* upGroup = new QActionGroup(this);
@@ -200,6 +207,80 @@ void MainWindow::createActions()
                           "gap, Ctrl+R reset camera.</p>"));
   });
   updateRecentMenu();
+}
+
+void MainWindow::createMarkerMenu()
+{
+  QMenu* markers = menuBar()->addMenu(tr("&Marker"));
+  markers->addAction(tr("&Delete Markers"), QKeySequence(Qt::CTRL | Qt::Key_Delete), this, &MainWindow::deleteMarkers)
+      ->setToolTip(tr("Remove the selected markers from the take (undoable)"));
+  markers->addAction(tr("Add &Averaged Marker…"), QKeySequence(Qt::CTRL | Qt::Key_M), this,
+                     &MainWindow::addAveragedMarker)
+      ->setToolTip(tr("A virtual marker at the mean of the selected markers"));
+  markers->addAction(tr("&Swap Over Range"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X), this,
+                     &MainWindow::swapOverRange)
+      ->setToolTip(tr("Exchange the data of the two selected markers over the selected frame range"));
+  markers->addSeparator();
+  markers->addAction(tr("&Hide Selected"), QKeySequence(Qt::Key_H), this,
+                     [this] { m_document->setHidden(m_document->selection(), true); });
+  markers->addAction(tr("Show &All"), QKeySequence(Qt::SHIFT | Qt::Key_H), this,
+                     [this] { m_document->showAllMarkers(); });
+}
+
+void MainWindow::deleteMarkers()
+{
+  if (m_document->selection().empty()) {
+    statusBar()->showMessage(tr("Select the markers to delete first"), 5000);
+    return;
+  }
+  m_document->undoStack()->push(new ui::RemoveMarkersCommand(*m_document, m_document->selection()));
+}
+
+void MainWindow::addAveragedMarker()
+{
+  const auto& selection = m_document->selection();
+  if (selection.empty()) {
+    statusBar()->showMessage(tr("Select the markers to average first"), 5000);
+    return;
+  }
+  const Take& take = m_document->take();
+  QStringList sources;
+  for (Eigen::Index m : selection)
+    sources << QString::fromStdString(take.label(m));
+  bool ok = false;
+  const QString label = QInputDialog::getText(this, tr("Add Averaged Marker"),
+                                              tr("Label of the marker at the mean of %1:").arg(sources.join(", ")),
+                                              QLineEdit::Normal, QStringLiteral("avg_") + sources.join('_'), &ok)
+                            .trimmed();
+  if (!ok)
+    return;
+  if (label.isEmpty() || take.markerIndex(label.toStdString())) {
+    QMessageBox::warning(this, tr("Add Averaged Marker"),
+                         tr("'%1' is empty or already a marker label; choose another.").arg(label));
+    return;
+  }
+  MarkerColumn column = averagedMarker(take, selection, label.toStdString());
+  m_document->undoStack()->push(new ui::InsertMarkerCommand(*m_document, std::move(column),
+                                                            tr("Add averaged marker %1").arg(label)));
+  m_document->setSelection({m_document->take().markerCount() - 1});
+}
+
+void MainWindow::swapOverRange()
+{
+  const auto& selection = m_document->selection();
+  if (selection.size() != 2 || !m_document->hasRange()) {
+    statusBar()->showMessage(tr("Select exactly two markers and Shift-drag a frame range on the curves first"), 5000);
+    return;
+  }
+  const Take& take = m_document->take();
+  auto patches = swapMarkersOverRange(take, selection[0], selection[1], m_document->rangeFirst(),
+                                      m_document->rangeLast());
+  m_document->undoStack()->push(new ui::ApplyPatchesCommand(
+      *m_document, std::move(patches),
+      tr("Swap %1 and %2 over frames %3–%4")
+          .arg(QString::fromStdString(take.label(selection[0])), QString::fromStdString(take.label(selection[1])))
+          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeFirst()))
+          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast()))));
 }
 
 void MainWindow::deleteRange()

@@ -56,6 +56,10 @@ private:
   bool saveAs();
   void exportDialog();
   void deleteRange();
+  void createMarkerMenu();
+  void deleteMarkers();
+  void addAveragedMarker();
+  void swapOverRange();
   bool confirmDiscard();
   void updateTitle();
   void updateRecentMenu();

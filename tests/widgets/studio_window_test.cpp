@@ -13,6 +13,7 @@
 #include "mocap/file_io.h"
 #include "mocap/gaps.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QImage>
 #include <QItemSelectionModel>
@@ -176,6 +177,58 @@ TEST_F(StudioWindow, DeleteRangeMakesAGapForTheSelectedMarkers)
   EXPECT_TRUE(doc.take().valid().col(1).all()) << "root-2 was not selected";
   doc.undoStack()->undo();
   EXPECT_TRUE(doc.take().valid().col(0).all());
+}
+
+TEST_F(StudioWindow, DeletingMarkersUpdatesTheTableAndUndoRestoresThemBitForBit)
+{
+  ASSERT_TRUE(QTest::qWaitForWindowActive(window.get())) << "the shortcut needs the active window";
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  window->selectLabels({QStringLiteral("section4-1"), QStringLiteral("root-2")});
+  QTest::keyClick(window.get(), Qt::Key_Delete, Qt::ControlModifier);
+  EXPECT_EQ(doc.take().markerCount(), original.markerCount() - 2);
+  EXPECT_FALSE(doc.take().markerIndex("section4-1"));
+  EXPECT_EQ(window->markerTable()->model()->rowCount(), original.markerCount() - 2);
+  EXPECT_TRUE(doc.selection().empty());
+  doc.undoStack()->undo();
+  ASSERT_EQ(doc.take().labels(), original.labels());
+  EXPECT_TRUE((doc.take().valid() == original.valid()).all());
+  EXPECT_TRUE((doc.take().states() == original.states()).all());
+  for (Eigen::Index m = 0; m < original.markerCount(); ++m)
+    ASSERT_TRUE(doc.take().trajectory(m).cwiseEqual(original.trajectory(m)).all() ||
+                !original.valid().col(m).all())
+        << original.label(m);
+  EXPECT_EQ(window->markerTable()->model()->rowCount(), original.markerCount());
+}
+
+TEST_F(StudioWindow, SwapOverRangeAndHideAreMenuActions)
+{
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  window->selectLabels({QStringLiteral("root-1"), QStringLiteral("root-2")});
+  doc.setRange(10, 19);
+  QAction* swap = nullptr;
+  QAction* hide = nullptr;
+  for (QAction* action : window->findChildren<QAction*>()) {
+    if (action->text() == QStringLiteral("&Swap Over Range"))
+      swap = action;
+    if (action->text() == QStringLiteral("&Hide Selected"))
+      hide = action;
+  }
+  ASSERT_NE(swap, nullptr);
+  ASSERT_NE(hide, nullptr);
+  swap->trigger();
+  EXPECT_EQ(doc.take().position(15, 0), original.position(15, 1));
+  EXPECT_EQ(doc.take().position(15, 1), original.position(15, 0));
+  EXPECT_EQ(doc.take().position(20, 0), original.position(20, 0));
+  doc.undoStack()->undo();
+  EXPECT_EQ(doc.take().position(15, 0), original.position(15, 0));
+  hide->trigger();
+  EXPECT_TRUE(doc.isHidden(0) && doc.isHidden(1));
+  EXPECT_FALSE(doc.isHidden(2));
+  EXPECT_FALSE(doc.isModified()) << "hiding is a view setting, not an edit";
+  doc.showAllMarkers();
+  EXPECT_EQ(doc.hiddenCount(), 0);
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)

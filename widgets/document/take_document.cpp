@@ -53,6 +53,7 @@ void TakeDocument::setTake(Take take, const QString& path)
   m_rangeLast = -1;
   m_preview.clear();
   m_flags.clear();
+  m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
   emit takeReset();
   emit filePathChanged(m_filePath);
   emit currentFrameChanged(m_currentFrame);
@@ -139,6 +140,72 @@ void TakeDocument::setFlags(std::vector<std::pair<Eigen::Index, Eigen::Index>> f
     return;
   m_flags = std::move(flags);
   emit flagsChanged();
+}
+
+} // namespace mocap::ui
+
+namespace mocap::ui {
+
+MarkerColumn TakeDocument::removeMarker(Eigen::Index marker)
+{
+  MarkerColumn column = m_take.removeMarker(marker);
+  m_hidden.erase(m_hidden.begin() + static_cast<std::ptrdiff_t>(marker));
+  std::vector<Eigen::Index> selection;
+  for (Eigen::Index m : m_selection)
+    if (m != marker)
+      selection.push_back(m > marker ? m - 1 : m);
+  m_selection = std::move(selection);
+  m_preview.clear();  // previews and flags index markers; the panels recompute them
+  m_flags.clear();
+  emit markersChanged();
+  emit selectionChanged();
+  return column;
+}
+
+void TakeDocument::insertMarker(Eigen::Index marker, MarkerColumn column)
+{
+  m_take.insertMarker(marker, std::move(column));
+  m_hidden.insert(m_hidden.begin() + static_cast<std::ptrdiff_t>(marker), false);
+  for (Eigen::Index& m : m_selection)
+    if (m >= marker)
+      ++m;
+  m_preview.clear();
+  m_flags.clear();
+  emit markersChanged();
+  emit selectionChanged();
+}
+
+bool TakeDocument::isHidden(Eigen::Index marker) const
+{
+  const auto index = static_cast<std::size_t>(marker);
+  return marker >= 0 && index < m_hidden.size() && m_hidden[index];
+}
+
+void TakeDocument::setHidden(const std::vector<Eigen::Index>& markers, bool hidden)
+{
+  bool changed = false;
+  for (Eigen::Index m : markers) {
+    const auto index = static_cast<std::size_t>(m);
+    if (m >= 0 && index < m_hidden.size() && m_hidden[index] != hidden) {
+      m_hidden[index] = hidden;
+      changed = true;
+    }
+  }
+  if (changed)
+    emit visibilityChanged();
+}
+
+void TakeDocument::showAllMarkers()
+{
+  if (hiddenCount() == 0)
+    return;
+  std::fill(m_hidden.begin(), m_hidden.end(), false);
+  emit visibilityChanged();
+}
+
+Eigen::Index TakeDocument::hiddenCount() const
+{
+  return static_cast<Eigen::Index>(std::count(m_hidden.begin(), m_hidden.end(), true));
 }
 
 } // namespace mocap::ui

@@ -46,6 +46,19 @@ public:
 
   /// Puts `patches` into the take and returns the undo patches (for commands only).
   std::vector<SamplePatch> applyPatches(std::vector<SamplePatch> patches);
+  /// Takes a marker out of the take and returns it (for commands only). Selection and hidden
+  /// markers follow the index shift; emits markersChanged.
+  MarkerColumn removeMarker(Eigen::Index marker);
+  /// Puts a marker in at `marker` (for commands only); throws InvalidArgument as
+  /// Take::insertMarker does, leaving everything unchanged. Emits markersChanged.
+  void insertMarker(Eigen::Index marker, MarkerColumn column);
+
+  /// Hidden markers are not drawn in the 3D and curve views (a view setting, not an edit).
+  [[nodiscard]] bool isHidden(Eigen::Index marker) const;
+  void setHidden(const std::vector<Eigen::Index>& markers, bool hidden);
+  void showAllMarkers();
+  [[nodiscard]] Eigen::Index hiddenCount() const;
+
   /// Renames a marker and returns the old label (for commands only). Throws
   /// InvalidArgument for an empty or duplicate label.
   std::string renameMarker(Eigen::Index marker, std::string label);
@@ -75,6 +88,9 @@ signals:
   void modifiedChanged(bool modified);
   void filePathChanged(const QString& path);
   void markerRenamed(Eigen::Index marker);
+  /// Markers were removed or inserted (indices shifted): views rebuild their per-marker state.
+  void markersChanged();
+  void visibilityChanged();
   void rangeChanged();
   void previewChanged();
   void flagsChanged();
@@ -86,6 +102,7 @@ private:
   Eigen::Index m_currentFrame = 0;
   std::vector<Eigen::Index> m_selection;
   std::vector<std::string> m_loadWarnings;
+  std::vector<bool> m_hidden;  // one per marker
   std::vector<SamplePatch> m_preview;
   std::vector<std::pair<Eigen::Index, Eigen::Index>> m_flags;
   Eigen::Index m_rangeFirst = 0;

@@ -3,6 +3,7 @@
 #include "commands/rename_marker_command.h"
 #include "document/take_document.h"
 
+#include <QColor>
 #include <QUndoStack>
 
 #include "mocap/gaps.h"
@@ -13,6 +14,11 @@ MarkerTableModel::MarkerTableModel(TakeDocument& document, QObject* parent)
     : QAbstractTableModel(parent), m_document(document)
 {
   connect(&document, &TakeDocument::takeReset, this, &MarkerTableModel::rebuild);
+  connect(&document, &TakeDocument::markersChanged, this, &MarkerTableModel::rebuild);
+  connect(&document, &TakeDocument::visibilityChanged, this, [this] {
+    if (rowCount() > 0)
+      emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ForegroundRole});
+  });
   connect(&document, &TakeDocument::samplesChanged, this, &MarkerTableModel::refresh);
   connect(&document, &TakeDocument::markerRenamed, this, [this](Eigen::Index marker) {
     const QModelIndex cell = index(static_cast<int>(marker), LabelColumn);
@@ -55,6 +61,8 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
     default: return {};
     }
   }
+  if (role == Qt::ForegroundRole && m_document.isHidden(marker))
+    return QColor(Qt::gray);  // hidden in the 3D view
   if (role == Qt::TextAlignmentRole && index.column() != LabelColumn)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   return {};

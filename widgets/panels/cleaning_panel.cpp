@@ -63,6 +63,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   connect(m_tabs, &QTabWidget::currentChanged, this, &CleaningPanel::schedule);
   connect(&document, &TakeDocument::takeReset, this, &CleaningPanel::schedule);
   connect(&document, &TakeDocument::samplesChanged, this, &CleaningPanel::schedule);
+  connect(&document, &TakeDocument::markersChanged, this, &CleaningPanel::schedule);
   connect(&document, &TakeDocument::selectionChanged, this, [this] {
     if (m_selectedOnly->isChecked())
       schedule();

@@ -36,6 +36,7 @@ CurveView::CurveView(TakeDocument& document, QWidget* parent) : QWidget(parent),
   connect(&document, &TakeDocument::rangeChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::previewChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::flagsChanged, this, qOverload<>(&CurveView::update));
+  connect(&document, &TakeDocument::markersChanged, this, qOverload<>(&CurveView::update));
   showAll();
 }
 

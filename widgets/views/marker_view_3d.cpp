@@ -152,6 +152,8 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   connect(&document, &TakeDocument::samplesChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::markersChanged, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::visibilityChanged, this, &MarkerView3d::updateFrame);
   rebuildScene();
 }
 
@@ -234,7 +236,7 @@ void MarkerView3d::updateFrame()
   m_drawnMarkers.clear();
   if (frame < take.frameCount()) {
     for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
-      if (!take.isValid(frame, m))
+      if (!take.isValid(frame, m) || m_document.isHidden(m))
         continue;
       const Eigen::Vector3d p = take.position(frame, m);
       m_points->InsertNextPoint(p.data());
@@ -261,6 +263,8 @@ void MarkerView3d::updateTrails()
   const Eigen::Index frame = m_document.currentFrame();
   if (m_trailFrames > 0 && frame < take.frameCount()) {
     for (Eigen::Index m : m_document.selection()) {
+      if (m_document.isHidden(m))
+        continue;
       const Eigen::Index first = std::max<Eigen::Index>(0, frame - m_trailFrames);
       const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, frame + m_trailFrames);
       std::vector<vtkIdType> run;
@@ -316,7 +320,7 @@ void MarkerView3d::updateLabels()
   const double offset = 2.5 * m_markerScale * m_takeSize;
   for (std::size_t i = 0; i < m_labels.size(); ++i) {
     const Eigen::Index m = m_labelMarkers[i];
-    const bool visible = frame < take.frameCount() && take.isValid(frame, m);
+    const bool visible = frame < take.frameCount() && take.isValid(frame, m) && !m_document.isHidden(m);
     m_labels[i]->SetVisibility(visible);
     if (!visible)
       continue;
