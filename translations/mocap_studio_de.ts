@@ -50,7 +50,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+49"/>
+        <location filename="../app/studio/main_window.cpp" line="+55"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -70,7 +70,7 @@
         <translation>Kurven</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Cleaning</source>
         <translation>Bereinigung</translation>
     </message>
@@ -140,7 +140,7 @@
         <translation>Marker &amp;umbenennen…</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -200,7 +200,93 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Verwendung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelschritt (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+R Kamera zurücksetzen.&lt;/p&gt;</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>&amp;Marker</source>
+        <translation>&amp;Marker</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Delete Markers</source>
+        <translation>Marker &amp;löschen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove the selected markers from the take (undoable)</source>
+        <translation>Die ausgewählten Marker aus der Aufnahme entfernen (rückgängig machbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add &amp;Averaged Marker…</source>
+        <translation>&amp;Gemittelten Marker hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A virtual marker at the mean of the selected markers</source>
+        <translation>Ein virtueller Marker im Mittel der ausgewählten Marker</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Swap Over Range</source>
+        <translation>Im Bereich &amp;tauschen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exchange the data of the two selected markers over the selected frame range</source>
+        <translation>Die Daten der beiden ausgewählten Marker im ausgewählten Bildbereich vertauschen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Hide Selected</source>
+        <translation>Auswahl &amp;ausblenden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;All</source>
+        <translation>&amp;Alle einblenden</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Select the markers to delete first</source>
+        <translation>Wählen Sie zuerst die zu löschenden Marker aus</translation>
+    </message>
+    <message>
         <location line="+10"/>
+        <source>Select the markers to average first</source>
+        <translation>Wählen Sie zuerst die zu mittelnden Marker aus</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+7"/>
+        <source>Add Averaged Marker</source>
+        <translation>Gemittelten Marker hinzufügen</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Label of the marker at the mean of %1:</source>
+        <translation>Name des Markers im Mittel von %1:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; is empty or already a marker label; choose another.</source>
+        <translation>„%1“ ist leer oder bereits ein Markername; wählen Sie einen anderen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add averaged marker %1</source>
+        <translation>Gemittelten Marker %1 hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Select exactly two markers and Shift-drag a frame range on the curves first</source>
+        <translation>Wählen Sie genau zwei Marker aus und ziehen Sie zuerst mit Umschalt einen Bildbereich in den Kurven auf</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Swap %1 and %2 over frames %3–%4</source>
+        <translation>%1 und %2 in den Bildern %3–%4 tauschen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Select markers and Shift-drag a frame range on the curves first</source>
         <translation>Zuerst Marker auswählen und auf den Kurven per Umschalt-Ziehen einen Frame-Bereich markieren</translation>
     </message>
@@ -294,7 +380,7 @@
         <translation>%1[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-354"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -322,7 +408,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+84"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -348,7 +434,7 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+84"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+85"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
@@ -434,7 +520,7 @@
 <context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
-        <location filename="../widgets/models/marker_table_model.cpp" line="+68"/>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+76"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>

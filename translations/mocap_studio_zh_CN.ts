@@ -47,7 +47,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+49"/>
+        <location filename="../app/studio/main_window.cpp" line="+55"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -67,7 +67,7 @@
         <translation>曲线</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Cleaning</source>
         <translation>清理</translation>
     </message>
@@ -137,7 +137,7 @@
         <translation>重命名标记点(&amp;M)…</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
@@ -197,7 +197,93 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;面部光学动作捕捉数据的清理与使用。&lt;/p&gt;&lt;p&gt;快捷键：空格键 播放/暂停，←/→ 逐帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+R 重置相机。&lt;/p&gt;</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>&amp;Marker</source>
+        <translation>标记点(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Delete Markers</source>
+        <translation>删除标记点(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove the selected markers from the take (undoable)</source>
+        <translation>从拍摄中移除所选标记点（可撤销）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add &amp;Averaged Marker…</source>
+        <translation>添加平均标记点(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A virtual marker at the mean of the selected markers</source>
+        <translation>位于所选标记点平均位置的虚拟标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Swap Over Range</source>
+        <translation>在范围内交换(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exchange the data of the two selected markers over the selected frame range</source>
+        <translation>在所选帧范围内交换两个所选标记点的数据</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Hide Selected</source>
+        <translation>隐藏所选(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;All</source>
+        <translation>全部显示(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Select the markers to delete first</source>
+        <translation>请先选择要删除的标记点</translation>
+    </message>
+    <message>
         <location line="+10"/>
+        <source>Select the markers to average first</source>
+        <translation>请先选择要平均的标记点</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+7"/>
+        <source>Add Averaged Marker</source>
+        <translation>添加平均标记点</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Label of the marker at the mean of %1:</source>
+        <translation>位于 %1 平均位置的标记点名称：</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; is empty or already a marker label; choose another.</source>
+        <translation>“%1”为空或已是标记点名称，请另选一个。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add averaged marker %1</source>
+        <translation>添加平均标记点 %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Select exactly two markers and Shift-drag a frame range on the curves first</source>
+        <translation>请先选择恰好两个标记点，并在曲线上按住 Shift 拖动选择帧范围</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Swap %1 and %2 over frames %3–%4</source>
+        <translation>在第 %3–%4 帧交换 %1 和 %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Select markers and Shift-drag a frame range on the curves first</source>
         <translation>请先选择标记点，并在曲线上按住 Shift 拖动选取帧范围</translation>
     </message>
@@ -290,7 +376,7 @@
         <translation>%1[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-354"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -318,7 +404,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+84"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -343,7 +429,7 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+84"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+85"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
@@ -429,7 +515,7 @@
 <context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
-        <location filename="../widgets/models/marker_table_model.cpp" line="+68"/>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+76"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
