@@ -50,7 +50,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+55"/>
+        <location filename="../app/studio/main_window.cpp" line="+58"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -60,7 +60,12 @@
         <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+7"/>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Markers</source>
         <translation>Marker</translation>
     </message>
@@ -380,7 +385,32 @@
         <translation>%1[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="-354"/>
+        <location line="+30"/>
+        <source>an untitled take</source>
+        <translation>einer unbenannten Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recover unsaved edits?</source>
+        <translation>Ungesicherte Änderungen wiederherstellen?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?</source>
+        <translation>Mocap Studio wurde nicht normal beendet. Ungesicherte Änderungen von %1 wurden am %2 aufbewahrt. Wiederherstellen?</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot recover</source>
+        <translation>Wiederherstellen nicht möglich</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Recovered unsaved edits of %1; save them to keep them</source>
+        <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
+    </message>
+    <message>
+        <location line="-411"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>

@@ -47,7 +47,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+55"/>
+        <location filename="../app/studio/main_window.cpp" line="+58"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -57,7 +57,12 @@
         <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+7"/>
+        <source>Autosave failed: %1</source>
+        <translation>自动保存失败：%1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
         <source>Markers</source>
         <translation>标记点</translation>
     </message>
@@ -376,7 +381,32 @@
         <translation>%1[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="-354"/>
+        <location line="+30"/>
+        <source>an untitled take</source>
+        <translation>未命名拍摄</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recover unsaved edits?</source>
+        <translation>恢复未保存的编辑？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?</source>
+        <translation>Mocap Studio 未正常关闭。%1 的未保存编辑已于 %2 保留。是否恢复？</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot recover</source>
+        <translation>无法恢复</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Recovered unsaved edits of %1; save them to keep them</source>
+        <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
+    </message>
+    <message>
+        <location line="-411"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>

@@ -127,5 +127,7 @@ int main(int argc, char** argv)
   if (parser.isSet(screenshot))
     scheduleScreenshot(window, parser.value(screenshot));
   window.show();
+  if (!parser.isSet(screenshot))
+    QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
   return QApplication::exec();
 }

@@ -5,6 +5,7 @@
 #include "commands/apply_patches_command.h"
 #include "commands/insert_marker_command.h"
 #include "commands/remove_markers_command.h"
+#include "document/autosave.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
@@ -25,6 +26,7 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QInputDialog>
+#include <QLocale>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -37,6 +39,7 @@
 #include <QUndoStack>
 
 #include "mocap/marker_edits.h"
+#include "mocap/take_io.h"
 
 namespace mocap::studio {
 
@@ -71,6 +74,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
                           .arg(static_cast<qlonglong>(take.firstFrame() + frame))
                           .arg(static_cast<qlonglong>(take.frameCount()))
                           .arg(m_document->selection().size()));
+  });
+  m_autosave = new ui::Autosave(*m_document, {}, this);
+  connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 10000);
   });
   readSettings();
   updateTitle();
@@ -421,6 +428,39 @@ void MainWindow::updateRecentMenu()
         openFile(path);
     })->setToolTip(path);
   m_recentMenu->setEnabled(!m_recent.isEmpty());
+}
+
+bool MainWindow::offerRecovery()
+{
+  for (const ui::RecoveryFile& file : ui::Autosave::leftovers()) {
+    const QString name =
+        file.originalPath.isEmpty() ? tr("an untitled take") : QFileInfo(file.originalPath).fileName();
+    const auto answer = QMessageBox::question(
+        this, tr("Recover unsaved edits?"),
+        tr("Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?")
+            .arg(name, QLocale().toString(file.written, QLocale::ShortFormat)),
+        QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
+    if (answer == QMessageBox::Ignore)
+      continue;  // ask again next time
+    if (answer == QMessageBox::Discard) {
+      ui::Autosave::remove(file);
+      continue;
+    }
+    try {
+      m_document->setTake(readTake(file.path.toStdString()), file.originalPath);
+    } catch (const std::exception& e) {
+      QMessageBox::critical(this, tr("Cannot recover"), QString::fromStdString(e.what()));
+      continue;
+    }
+    m_document->markModified();
+    m_confirmedOverwrite = false;
+    // Our own recovery copy first, then the old one goes: the edits are never only in memory.
+    if (m_autosave->saveNow().isEmpty())
+      ui::Autosave::remove(file);
+    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 10000);
+    return true;
+  }
+  return false;
 }
 
 int MainWindow::selectLabels(const QStringList& labels)

@@ -10,6 +10,7 @@ class QSortFilterProxyModel;
 class QTableView;
 
 namespace mocap::ui {
+class Autosave;
 class CleaningPanel;
 class CurveView;
 class MarkerTableModel;
@@ -42,6 +43,10 @@ public:
   [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
+  /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether
+  /// one was recovered.
+  bool offerRecovery();
+  [[nodiscard]] ui::Autosave* autosave() const { return m_autosave; }
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -69,6 +74,7 @@ private:
   void writeSettings() const;
 
   ui::TakeDocument* m_document = nullptr;
+  ui::Autosave* m_autosave = nullptr;
   ui::MarkerView3d* m_view3d = nullptr;
   ui::CurveView* m_curves = nullptr;
   ui::TimelineWidget* m_timeline = nullptr;

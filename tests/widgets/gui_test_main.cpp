@@ -3,6 +3,7 @@
 #include "views/vtk_viewport.h"
 
 #include <QApplication>
+#include <QStandardPaths>
 #include <QSurfaceFormat>
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@ int main(int argc, char** argv)
   QSurfaceFormat::setDefaultFormat(mocap::ui::VtkViewport::defaultFormat());
   QApplication::setOrganizationName(QStringLiteral("MocapStudioTests"));
   QApplication::setApplicationName(QStringLiteral("Mocap Studio GUI tests"));
+  QStandardPaths::setTestModeEnabled(true);  // settings and recovery files away from the user's
   QApplication app(argc, argv);
   return RUN_ALL_TESTS();
 }

@@ -36,6 +36,9 @@ public:
   /// Writes the take atomically (format by extension). Returns an empty string or the error.
   /// `markClean` makes the written file the document's file (Save / Save As, not Export).
   QString save(const QString& path, bool markClean = true);
+  /// Marks the take as having unsaved edits that are not in the undo history (a recovered
+  /// take), so closing asks to save it.
+  void markModified() { m_undoStack.resetClean(); }
   /// Replaces the take (e.g. a new take built in code); clears the undo history.
   void setTake(Take take, const QString& path = {});
 
