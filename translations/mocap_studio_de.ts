@@ -464,9 +464,14 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+85"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+88"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
+    </message>
+    <message>
+        <location line="+200"/>
+        <source>Move %1 %2 at frame %3</source>
+        <translation>%1 %2 in Bild %3 verschieben</translation>
     </message>
 </context>
 <context>

@@ -459,9 +459,14 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+85"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+88"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
+    </message>
+    <message>
+        <location line="+200"/>
+        <source>Move %1 %2 at frame %3</source>
+        <translation>移动 %1 的 %2（第 %3 帧）</translation>
     </message>
 </context>
 <context>

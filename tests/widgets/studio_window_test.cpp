@@ -6,6 +6,7 @@
 #include "language.h"
 #include "main_window.h"
 #include "panels/cleaning_panel.h"
+#include "views/curve_view.h"
 #include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
 
@@ -17,6 +18,7 @@
 #include <QApplication>
 #include <QImage>
 #include <QItemSelectionModel>
+#include <QMouseEvent>
 #include <QSettings>
 #include <QTableView>
 #include <QTest>
@@ -229,6 +231,37 @@ TEST_F(StudioWindow, SwapOverRangeAndHideAreMenuActions)
   EXPECT_FALSE(doc.isModified()) << "hiding is a view setting, not an edit";
   doc.showAllMarkers();
   EXPECT_EQ(doc.hiddenCount(), 0);
+}
+
+TEST_F(StudioWindow, DraggingASampleOnTheCurvesEditsOneCoordinateUndoably)
+{
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  const Eigen::Index marker = *doc.take().markerIndex("section7-1");
+  window->selectLabels({QStringLiteral("section7-1")});
+  ui::CurveView* curves = window->curveView();
+  curves->setVisibleRange(500, 540);
+  curves->repaint();
+  const auto point = curves->pointOf(marker, 520, 2);
+  ASSERT_TRUE(point.has_value());
+  const QPoint start = point->toPoint();
+  QTest::mousePress(curves, Qt::LeftButton, Qt::NoModifier, start);
+  QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(0, -20)), curves->mapToGlobal(QPointF(start)),
+                   Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(curves, &move);
+  EXPECT_EQ(doc.preview().size(), 1u) << "the drag is previewed";
+  EXPECT_EQ(doc.take().position(520, marker), original.position(520, marker)) << "not applied while dragging";
+  QTest::mouseRelease(curves, Qt::LeftButton, Qt::NoModifier, start + QPoint(0, -20));
+  const Eigen::Vector3d edited = doc.take().position(520, marker);
+  EXPECT_GT(edited.z(), original.position(520, marker).z()) << "dragged up: z grew";
+  EXPECT_EQ(edited.x(), original.position(520, marker).x());
+  EXPECT_EQ(edited.y(), original.position(520, marker).y());
+  EXPECT_EQ(doc.take().state(520, marker), SampleState::Edited);
+  EXPECT_EQ(doc.take().position(519, marker), original.position(519, marker));
+  EXPECT_TRUE(doc.preview().empty());
+  doc.undoStack()->undo();
+  EXPECT_EQ(doc.take().position(520, marker), original.position(520, marker));
+  EXPECT_EQ(doc.take().state(520, marker), original.state(520, marker));
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)

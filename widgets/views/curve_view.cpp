@@ -1,5 +1,6 @@
 #include "views/curve_view.h"
 
+#include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 #include "views/sample_colors.h"
 
@@ -7,6 +8,7 @@
 #include "mocap/sample_patch.h"
 
 #include <QKeyEvent>
+#include <QUndoStack>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
@@ -14,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace mocap::ui {
 
@@ -114,6 +117,7 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
   const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(m_first)));
   const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(m_last)));
   painter.fillRect(strip, QColor(38, 41, 46));
+  m_scales[static_cast<std::size_t>(axis)].drawn = false;
 
   // Shade the gaps of the first selected marker.
   for (const Gap& gap : findGaps(take.valid().col(selection.front()), selection.front())) {
@@ -143,6 +147,7 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
   painter.drawText(QRectF(0, strip.top() + 14, kLeftMargin - 6, 14), Qt::AlignRight, QString::number(hi, 'f', 1));
   painter.drawText(QRectF(0, strip.bottom() - 14, kLeftMargin - 6, 14), Qt::AlignRight, QString::number(lo, 'f', 1));
   auto yOf = [&](double v) { return strip.bottom() - (v - lo) / (hi - lo) * strip.height(); };
+  m_scales[static_cast<std::size_t>(axis)] = {strip, lo, hi, true};
 
   painter.setRenderHint(QPainter::Antialiasing, false);
   const double framesPerPixel = (m_last - m_first) / strip.width();
@@ -216,10 +221,82 @@ void CurveView::paintOverlay(QPainter& painter, const QRectF& strip, int axis, d
   painter.restore();
 }
 
+std::optional<QPointF> CurveView::pointOf(Eigen::Index marker, Eigen::Index frame, int axis) const
+{
+  const Take& take = m_document.take();
+  if (axis < 0 || axis > 2 || marker < 0 || marker >= take.markerCount() || frame < 0 ||
+      frame >= take.frameCount() || !take.isValid(frame, marker))
+    return std::nullopt;
+  const StripScale& scale = m_scales[static_cast<std::size_t>(axis)];
+  if (!scale.drawn)
+    return std::nullopt;
+  return QPointF(xOf(static_cast<double>(frame)), scale.yOf(take.trajectory(marker)(frame, axis)));
+}
+
+// A drag starts on a drawn sample of a selected marker, within a few pixels, and only when the
+// view is zoomed in far enough that one pixel column does not stand for several frames.
+bool CurveView::startDrag(const QPointF& position)
+{
+  constexpr double kGrabPixels = 6.0;
+  if ((m_last - m_first) / plotArea().width() > 0.5)
+    return false;
+  const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(position.x())));
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!m_scales[static_cast<std::size_t>(axis)].rect.contains(position))
+      continue;
+    for (Eigen::Index m : m_document.selection()) {
+      const auto point = pointOf(m, frame, axis);
+      if (point && std::abs(point->y() - position.y()) <= kGrabPixels &&
+          std::abs(point->x() - position.x()) <= kGrabPixels) {
+        m_drag = Drag{m, frame, axis, point->y(), m_document.take().position(frame, m)};
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+SamplePatch CurveView::dragPatch(const QPointF& position) const
+{
+  const StripScale& scale = m_scales[static_cast<std::size_t>(m_drag->axis)];
+  Eigen::Vector3d moved = m_drag->original;
+  moved(m_drag->axis) = scale.valueAt(position.y());
+  return makePatch(m_drag->marker, {m_drag->frame}, moved.transpose(), SampleState::Edited);
+}
+
+void CurveView::updateDrag(const QPointF& position)
+{
+  m_document.setPreview({dragPatch(position)});
+}
+
+void CurveView::finishDrag(const std::optional<QPointF>& commitAt)
+{
+  if (!m_drag)
+    return;
+  // The patch comes from the release position, not from the preview, which a cleaning panel's
+  // live preview may have replaced meanwhile.
+  std::vector<SamplePatch> patches;
+  if (commitAt)
+    patches.push_back(dragPatch(*commitAt));
+  const Drag drag = *std::exchange(m_drag, std::nullopt);
+  m_document.clearPreview();
+  if (patches.empty())
+    return;
+  const Take& take = m_document.take();
+  m_document.undoStack()->push(new ApplyPatchesCommand(
+      m_document, std::move(patches),
+      tr("Move %1 %2 at frame %3")
+          .arg(QString::fromStdString(take.label(drag.marker)), kAxisNames[drag.axis])
+          .arg(static_cast<qlonglong>(take.firstFrame() + drag.frame))));
+}
+
 void CurveView::mousePressEvent(QMouseEvent* event)
 {
   const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(event->position().x())));
-  if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
+  if (event->button() == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier) &&
+      startDrag(event->position())) {
+    m_document.setCurrentFrame(frame);
+  } else if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
     m_rangeAnchor = frame;
     m_document.setRange(frame, frame);
   } else if (event->button() == Qt::LeftButton) {
@@ -235,7 +312,9 @@ void CurveView::mousePressEvent(QMouseEvent* event)
 void CurveView::mouseMoveEvent(QMouseEvent* event)
 {
   const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(event->position().x())));
-  if ((event->buttons() & Qt::LeftButton) && m_rangeAnchor >= 0) {
+  if (m_drag && (event->buttons() & Qt::LeftButton)) {
+    updateDrag(event->position());
+  } else if ((event->buttons() & Qt::LeftButton) && m_rangeAnchor >= 0) {
     m_document.setRange(std::min(m_rangeAnchor, frame), std::max(m_rangeAnchor, frame));
   } else if (event->buttons() & Qt::LeftButton) {
     m_document.setCurrentFrame(frame);
@@ -246,9 +325,12 @@ void CurveView::mouseMoveEvent(QMouseEvent* event)
   }
 }
 
-void CurveView::mouseReleaseEvent(QMouseEvent*)
+void CurveView::mouseReleaseEvent(QMouseEvent* event)
 {
   m_rangeAnchor = -1;
+  if (m_drag && event->button() == Qt::LeftButton)
+    finishDrag(std::abs(event->position().y() - m_drag->startY) >= 1.0 ? std::optional(event->position())
+                                                                        : std::nullopt);
 }
 
 void CurveView::wheelEvent(QWheelEvent* event)
@@ -263,6 +345,8 @@ void CurveView::keyPressEvent(QKeyEvent* event)
 {
   if (event->key() == Qt::Key_Home && event->modifiers() & Qt::ControlModifier)
     showAll();
+  else if (event->key() == Qt::Key_Escape && m_drag)
+    finishDrag(std::nullopt);
   else
     QWidget::keyPressEvent(event);
 }
