@@ -21,6 +21,19 @@
     </message>
 </context>
 <context>
+    <name>RemoveMarkersCommand</name>
+    <message>
+        <location filename="../widgets/commands/remove_markers_command.cpp" line="+18"/>
+        <source>Delete marker %1</source>
+        <translation>Marker %1 löschen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Delete %1 markers</source>
+        <translation>%1 Marker löschen</translation>
+    </message>
+</context>
+<context>
     <name>RenameMarkerCommand</name>
     <message>
         <location filename="../widgets/commands/rename_marker_command.cpp" line="+12"/>
@@ -50,7 +63,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+58"/>
+        <location filename="../app/studio/main_window.cpp" line="+59"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -145,7 +158,12 @@
         <translation>Marker &amp;umbenennen…</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -165,27 +183,34 @@
         <translation>Z-Achse nach oben</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>&amp;Trails</source>
         <translation>&amp;Spuren</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+68"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-68"/>
+        <location line="+68"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="-64"/>
+        <source>&amp;Head-Stabilised View…</source>
+        <translation>&amp;Kopfstabilisierte Ansicht…</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -205,7 +230,34 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Verwendung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelschritt (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+R Kamera zurücksetzen.&lt;/p&gt;</translation>
     </message>
     <message>
+        <location line="+52"/>
+        <source>3D view in the lab frame</source>
+        <translation>3D-Ansicht im Laborkoordinatensystem</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <location line="+9"/>
+        <location line="+7"/>
+        <source>Head-Stabilised View</source>
+        <translation>Kopfstabilisierte Ansicht</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <source>Head-mounted reference markers (at least three, comma separated):</source>
+        <translation>Am Kopf befestigte Referenzmarker (mindestens drei, durch Kommas getrennt):</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>There is no marker &apos;%1&apos;.</source>
+        <translation>Es gibt keinen Marker „%1“.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>3D view stabilised on the head (Ctrl+B again for the lab frame)</source>
+        <translation>3D-Ansicht auf den Kopf stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Marker</source>
         <translation>&amp;Marker</translation>
     </message>
@@ -410,9 +462,17 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-411"/>
+        <location line="-501"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::Autosave</name>
+    <message>
+        <location filename="../widgets/document/autosave.cpp" line="+82"/>
+        <source>Cannot create the recovery folder %1</source>
+        <translation>Der Wiederherstellungsordner %1 kann nicht angelegt werden</translation>
     </message>
 </context>
 <context>
@@ -573,6 +633,79 @@
         <location line="+1"/>
         <source>Longest gap</source>
         <translation>Längste Lücke</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::PreferencesDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+59"/>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Radius of the marker spheres as a share of the take&apos;s size</source>
+        <translation>Radius der Markerkugeln als Anteil der Größe der Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Marker size:</source>
+        <translation>Markergröße:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frames before and after the current one drawn as trails of the selected markers</source>
+        <translation>Bilder vor und nach dem aktuellen, die als Spuren der ausgewählten Marker gezeichnet werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trail length (frames):</source>
+        <translation>Spurlänge (Bilder):</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y up</source>
+        <translation>Y oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Up axis:</source>
+        <translation>Hochachse:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Used from the next start</source>
+        <translation>Wird ab dem nächsten Start verwendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Language:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How often unsaved edits are copied to a recovery file</source>
+        <translation>Wie oft ungesicherte Änderungen in eine Wiederherstellungsdatei kopiert werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Autosave every:</source>
+        <translation>Automatisch sichern alle:</translation>
     </message>
 </context>
 <context>

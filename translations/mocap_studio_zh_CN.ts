@@ -19,6 +19,19 @@
     </message>
 </context>
 <context>
+    <name>RemoveMarkersCommand</name>
+    <message>
+        <location filename="../widgets/commands/remove_markers_command.cpp" line="+18"/>
+        <source>Delete marker %1</source>
+        <translation>删除标记点 %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Delete %1 markers</source>
+        <translation>删除 %1 个标记点</translation>
+    </message>
+</context>
+<context>
     <name>RenameMarkerCommand</name>
     <message>
         <location filename="../widgets/commands/rename_marker_command.cpp" line="+12"/>
@@ -47,7 +60,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+58"/>
+        <location filename="../app/studio/main_window.cpp" line="+59"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -142,7 +155,12 @@
         <translation>重命名标记点(&amp;M)…</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>&amp;Preferences…</source>
+        <translation>首选项(&amp;P)…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
@@ -162,27 +180,34 @@
         <translation>Z 轴朝上</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>&amp;Trails</source>
         <translation>轨迹(&amp;T)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
         <location line="+10"/>
+        <location line="+68"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-68"/>
+        <location line="+68"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="-64"/>
+        <source>&amp;Head-Stabilised View…</source>
+        <translation>头部稳定视图(&amp;H)…</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
@@ -202,7 +227,34 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;面部光学动作捕捉数据的清理与使用。&lt;/p&gt;&lt;p&gt;快捷键：空格键 播放/暂停，←/→ 逐帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+R 重置相机。&lt;/p&gt;</translation>
     </message>
     <message>
+        <location line="+52"/>
+        <source>3D view in the lab frame</source>
+        <translation>三维视图使用实验室坐标系</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <location line="+9"/>
+        <location line="+7"/>
+        <source>Head-Stabilised View</source>
+        <translation>头部稳定视图</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <source>Head-mounted reference markers (at least three, comma separated):</source>
+        <translation>头戴参考标记点（至少三个，以逗号分隔）：</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>There is no marker &apos;%1&apos;.</source>
+        <translation>没有标记点“%1”。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>3D view stabilised on the head (Ctrl+B again for the lab frame)</source>
+        <translation>三维视图已按头部稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Marker</source>
         <translation>标记点(&amp;M)</translation>
     </message>
@@ -406,9 +458,17 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-411"/>
+        <location line="-501"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::Autosave</name>
+    <message>
+        <location filename="../widgets/document/autosave.cpp" line="+82"/>
+        <source>Cannot create the recovery folder %1</source>
+        <translation>无法创建恢复文件夹 %1</translation>
     </message>
 </context>
 <context>
@@ -568,6 +628,79 @@
         <location line="+1"/>
         <source>Longest gap</source>
         <translation>最长缺口</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::PreferencesDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+59"/>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Radius of the marker spheres as a share of the take&apos;s size</source>
+        <translation>标记点球体半径占拍摄尺寸的比例</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Marker size:</source>
+        <translation>标记点大小：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Off</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frames before and after the current one drawn as trails of the selected markers</source>
+        <translation>作为所选标记点轨迹绘制的当前帧前后的帧数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trail length (frames):</source>
+        <translation>轨迹长度（帧）：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Y up</source>
+        <translation>Y 轴向上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z up</source>
+        <translation>Z 轴向上</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Up axis:</source>
+        <translation>向上轴：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Used from the next start</source>
+        <translation>下次启动时生效</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Language:</source>
+        <translation>语言：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> min</source>
+        <translation> 分钟</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>How often unsaved edits are copied to a recovery file</source>
+        <translation>未保存的编辑复制到恢复文件的频率</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Autosave every:</source>
+        <translation>自动保存间隔：</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 #include "commands/apply_patches_command.h"
 #include "commands/insert_marker_command.h"
 #include "commands/remove_markers_command.h"
+#include "dialogs/preferences_dialog.h"
 #include "document/autosave.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
@@ -155,25 +156,29 @@ void MainWindow::createActions()
     if (current.isValid())
       m_table->edit(current.siblingAtColumn(ui::MarkerTableModel::LabelColumn));
   });
+  edit->addSeparator();
+  QAction* preferences =
+      edit->addAction(tr("&Preferences…"), QKeySequence(Qt::CTRL | Qt::Key_Comma), this, &MainWindow::editPreferences);
+  preferences->setMenuRole(QAction::PreferencesRole);
 
   createMarkerMenu();
 
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);
   auto* upGroup = new QActionGroup(this);
-  QAction* yUp = m_viewMenu->addAction(tr("Y Axis Up"));
-  QAction* zUp = m_viewMenu->addAction(tr("Z Axis Up"));
-  for (QAction* a : {yUp, zUp}) {
+  m_yUp = m_viewMenu->addAction(tr("Y Axis Up"));
+  m_zUp = m_viewMenu->addAction(tr("Z Axis Up"));
+  for (QAction* a : {m_yUp, m_zUp}) {
     a->setCheckable(true);
     upGroup->addAction(a);
   }
-  zUp->setChecked(true);
-  connect(yUp, &QAction::triggered, this, [this] { m_view3d->setUpAxis(1); });
-  connect(zUp, &QAction::triggered, this, [this] { m_view3d->setUpAxis(2); });
-  QAction* trails = m_viewMenu->addAction(tr("&Trails"));
-  trails->setCheckable(true);
-  trails->setChecked(true);
-  connect(trails, &QAction::toggled, this, [this](bool on) { m_view3d->setTrailFrames(on ? 50 : 0); });
+  connect(m_yUp, &QAction::triggered, this, [this] { changePreferences([](ui::Preferences& p) { p.upAxis = 1; }); });
+  connect(m_zUp, &QAction::triggered, this, [this] { changePreferences([](ui::Preferences& p) { p.upAxis = 2; }); });
+  m_trails = m_viewMenu->addAction(tr("&Trails"));
+  m_trails->setCheckable(true);
+  connect(m_trails, &QAction::triggered, this, [this](bool on) {
+    changePreferences([on](ui::Preferences& p) { p.trailFrames = on ? std::max(p.trailFrames, 50) : 0; });
+  });
   QMenu* languages = m_viewMenu->addMenu(tr("&Language"));
   auto* languageGroup = new QActionGroup(this);
   const QString current = QSettings().value(QStringLiteral("language"), defaultLanguage()).toString();
@@ -183,10 +188,13 @@ void MainWindow::createActions()
     action->setChecked(code == current);
     languageGroup->addAction(action);
     connect(action, &QAction::triggered, this, [this, code] {
-      QSettings().setValue(QStringLiteral("language"), code);
+      changePreferences([code](ui::Preferences& p) { p.language = code; });
       QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
     });
   }
+  m_viewMenu->addSeparator();
+  m_viewMenu->addAction(tr("&Head-Stabilised View…"), QKeySequence(Qt::CTRL | Qt::Key_B), this,
+                        &MainWindow::chooseStabilisation);
 
   // Transport keys work wherever the focus is (window shortcuts).
   auto addShortcut = [this](const QKeySequence& keys, auto slot) {
@@ -214,6 +222,89 @@ void MainWindow::createActions()
                           "gap, Ctrl+R reset camera.</p>"));
   });
   updateRecentMenu();
+}
+
+void MainWindow::applyPreferences(const ui::Preferences& preferences)
+{
+  m_view3d->setMarkerScale(preferences.markerSizePercent / 100.0);
+  m_view3d->setTrailFrames(preferences.trailFrames);
+  m_view3d->setUpAxis(preferences.upAxis);
+  m_autosave->setInterval(preferences.autosaveMinutes * 60 * 1000);
+  m_yUp->setChecked(preferences.upAxis == 1);
+  m_zUp->setChecked(preferences.upAxis == 2);
+  m_trails->setChecked(preferences.trailFrames > 0);
+}
+
+void MainWindow::changePreferences(const std::function<void(ui::Preferences&)>& change)
+{
+  ui::Preferences preferences = ui::Preferences::load();
+  change(preferences);
+  preferences = preferences.clamped();
+  preferences.save();
+  applyPreferences(preferences);
+}
+
+void MainWindow::editPreferences()
+{
+  ui::Preferences preferences = ui::Preferences::load();
+  if (preferences.language.isEmpty())
+    preferences.language = defaultLanguage();
+  QStringList names;
+  for (const QString& code : availableLanguages())
+    names << languageName(code);
+  ui::PreferencesDialog dialog(preferences, availableLanguages(), names, this);
+  if (dialog.exec() != QDialog::Accepted)
+    return;
+  const ui::Preferences chosen = dialog.preferences();
+  if (chosen.language != preferences.language)
+    QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
+  chosen.save();
+  applyPreferences(chosen);
+}
+
+void MainWindow::chooseStabilisation()
+{
+  const Take& take = m_document->take();
+  if (take.empty())
+    return;
+  if (!m_view3d->headReference().empty()) {  // the action toggles back to the lab frame
+    m_view3d->setHeadReference({});
+    statusBar()->showMessage(tr("3D view in the lab frame"), 5000);
+    return;
+  }
+  // Default: the selection when it can carry a head pose, else markers named like head markers.
+  QStringList labels;
+  if (m_document->selection().size() >= 3) {
+    for (Eigen::Index m : m_document->selection())
+      labels << QString::fromStdString(take.label(m));
+  } else {
+    for (const std::string& label : take.labels()) {
+      const QString name = QString::fromStdString(label).toLower();
+      if (name.startsWith(QStringLiteral("root")) || name.startsWith(QStringLiteral("head")))
+        labels << QString::fromStdString(label);
+    }
+  }
+  bool ok = false;
+  const QString text =
+      QInputDialog::getText(this, tr("Head-Stabilised View"),
+                            tr("Head-mounted reference markers (at least three, comma separated):"),
+                            QLineEdit::Normal, labels.join(QStringLiteral(",")), &ok);
+  if (!ok)
+    return;
+  std::vector<Eigen::Index> markers;
+  for (const QString& label : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+    const auto index = take.markerIndex(label.trimmed().toStdString());
+    if (!index) {
+      QMessageBox::warning(this, tr("Head-Stabilised View"), tr("There is no marker '%1'.").arg(label.trimmed()));
+      return;
+    }
+    markers.push_back(*index);
+  }
+  const QString error = m_view3d->setHeadReference(std::move(markers));
+  if (!error.isEmpty())
+    QMessageBox::warning(this, tr("Head-Stabilised View"), error);
+  else
+    statusBar()->showMessage(tr("3D view stabilised on the head (Ctrl+B again for the lab frame)"), 5000);
 }
 
 void MainWindow::createMarkerMenu()
@@ -519,6 +610,7 @@ void MainWindow::readSettings()
   restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
   restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
   updateRecentMenu();
+  applyPreferences(ui::Preferences::load());
 }
 
 void MainWindow::writeSettings() const

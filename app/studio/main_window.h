@@ -3,6 +3,8 @@
 #include <QMainWindow>
 #include <QStringList>
 
+#include <functional>
+
 class QAction;
 class QLabel;
 class QMenu;
@@ -11,6 +13,7 @@ class QTableView;
 
 namespace mocap::ui {
 class Autosave;
+struct Preferences;
 class CleaningPanel;
 class CurveView;
 class MarkerTableModel;
@@ -65,6 +68,10 @@ private:
   void deleteMarkers();
   void addAveragedMarker();
   void swapOverRange();
+  void editPreferences();
+  void applyPreferences(const ui::Preferences& preferences);
+  void changePreferences(const std::function<void(ui::Preferences&)>& change);
+  void chooseStabilisation();
   bool confirmDiscard();
   void updateTitle();
   void updateRecentMenu();
@@ -84,6 +91,9 @@ private:
   QTableView* m_table = nullptr;
   QMenu* m_recentMenu = nullptr;
   QMenu* m_viewMenu = nullptr;
+  QAction* m_yUp = nullptr;
+  QAction* m_zUp = nullptr;
+  QAction* m_trails = nullptr;
   QLabel* m_status = nullptr;
   QStringList m_recent;
   bool m_syncingSelection = false;

@@ -264,6 +264,32 @@ TEST_F(StudioWindow, DraggingASampleOnTheCurvesEditsOneCoordinateUndoably)
   EXPECT_EQ(doc.take().state(520, marker), original.state(520, marker));
 }
 
+TEST_F(StudioWindow, HeadStabilisedViewHoldsTheHeadMarkersStillWithoutTouchingTheTake)
+{
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  ui::MarkerView3d* view = window->markerView();
+  std::vector<Eigen::Index> roots;
+  for (const char* label : {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"})
+    roots.push_back(*doc.take().markerIndex(label));
+  ASSERT_EQ(view->setHeadReference(roots), QString());
+  // The head moves 20-30 mm over the take; stabilised, its markers stay within the rigid body's
+  // own jitter (about 2 mm).
+  const Eigen::Index root = roots.front();
+  double labSpread = 0.0, stableSpread = 0.0;
+  for (Eigen::Index f = 0; f < doc.take().frameCount(); f += 50) {
+    labSpread = std::max(labSpread, (doc.take().position(f, root) - doc.take().position(0, root)).norm());
+    stableSpread = std::max(stableSpread, (view->displayPosition(f, root) - view->displayPosition(0, root)).norm());
+  }
+  EXPECT_GT(labSpread, 20.0);
+  EXPECT_LT(stableSpread, 3.0);
+  EXPECT_EQ(doc.take().position(500, root), original.position(500, root)) << "a view setting, not an edit";
+  EXPECT_FALSE(view->setHeadReference({roots[0], roots[1]}).isEmpty()) << "two markers cannot carry a pose";
+  EXPECT_EQ(view->headReference().size(), 6u) << "a refused reference leaves the view as it was";
+  ASSERT_EQ(view->setHeadReference({}), QString());
+  EXPECT_EQ(view->displayPosition(500, root), original.position(500, root));
+}
+
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
 {
   TakeDocument& doc = window->document();

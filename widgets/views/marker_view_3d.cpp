@@ -147,12 +147,28 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
     m_axesRenderer->ResetCameraClippingRange();
   });
 
-  connect(&document, &TakeDocument::takeReset, this, &MarkerView3d::rebuildScene);
+  connect(&document, &TakeDocument::takeReset, this, [this] {
+    m_headReference.clear();  // a new take
+    m_headMotion.reset();
+    rebuildScene();
+  });
   connect(&document, &TakeDocument::currentFrameChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::samplesChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
-  connect(&document, &TakeDocument::markersChanged, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::markersChanged, this, [this] {
+    m_headReference.clear();  // indices shifted
+    m_headMotion.reset();
+    updateFrame();
+  });
+  connect(&document, &TakeDocument::samplesChanged, this, [this](const std::vector<Eigen::Index>& markers) {
+    // An edit of a reference marker moves the head pose: estimate it again.
+    for (Eigen::Index m : markers)
+      if (std::find(m_headReference.begin(), m_headReference.end(), m) != m_headReference.end()) {
+        setHeadReference(m_headReference);
+        return;
+      }
+  });
   connect(&document, &TakeDocument::visibilityChanged, this, &MarkerView3d::updateFrame);
   rebuildScene();
 }
@@ -217,6 +233,32 @@ void MarkerView3d::resetCamera()
   m_viewport->requestRender();
 }
 
+QString MarkerView3d::setHeadReference(std::vector<Eigen::Index> referenceMarkers)
+{
+  std::optional<HeadMotion> motion;
+  if (!referenceMarkers.empty()) {
+    try {
+      motion = estimateHeadMotion(m_document.take(), referenceMarkers);
+    } catch (const std::exception& e) {
+      return QString::fromStdString(e.what());
+    }
+  }
+  m_headReference = std::move(referenceMarkers);
+  m_headMotion = std::move(motion);
+  updateFrame();
+  return {};
+}
+
+Eigen::Vector3d MarkerView3d::displayPosition(Eigen::Index frame, Eigen::Index marker) const
+{
+  const Eigen::Vector3d p = m_document.take().position(frame, marker);
+  if (!m_headMotion)
+    return p;
+  // The pose maps the reference frame's head onto the captured one; its inverse takes the
+  // captured sample back into the reference frame's head.
+  return m_headMotion->poses[static_cast<std::size_t>(frame)].inverse() * p;
+}
+
 void MarkerView3d::rebuildScene()
 {
   m_takeSize = takeSize();
@@ -238,7 +280,7 @@ void MarkerView3d::updateFrame()
     for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
       if (!take.isValid(frame, m) || m_document.isHidden(m))
         continue;
-      const Eigen::Vector3d p = take.position(frame, m);
+      const Eigen::Vector3d p = displayPosition(frame, m);
       m_points->InsertNextPoint(p.data());
       const QColor color = isSelected(selection, m) ? selectionColor() : stateColor(take.state(frame, m));
       const unsigned char rgb[3] = {static_cast<unsigned char>(color.red()), static_cast<unsigned char>(color.green()),
@@ -278,7 +320,7 @@ void MarkerView3d::updateTrails()
           flush();  // a gap breaks the trail
           continue;
         }
-        run.push_back(points->InsertNextPoint(take.position(f, m).data()));
+        run.push_back(points->InsertNextPoint(displayPosition(f, m).data()));
       }
       flush();
     }
@@ -324,7 +366,7 @@ void MarkerView3d::updateLabels()
     m_labels[i]->SetVisibility(visible);
     if (!visible)
       continue;
-    const Eigen::Vector3d p = take.position(frame, m);
+    const Eigen::Vector3d p = displayPosition(frame, m);
     const Eigen::Vector3d lifted = p + offset * Eigen::Vector3d::Unit(m_upAxis);
     m_labels[i]->SetPosition(lifted.x(), lifted.y(), lifted.z());
   }

@@ -1,6 +1,10 @@
 #pragma once
 
+#include "mocap/head_stabilization.h"
+
 #include <QWidget>
+
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -49,6 +53,14 @@ public:
   void setUpAxis(int axis);
   [[nodiscard]] int upAxis() const { return m_upAxis; }
   void resetCamera();
+  /// Head-stabilised view: draws every marker relative to the head pose estimated from these
+  /// reference markers (head_stabilization.h), so only facial motion remains; empty = lab frame.
+  /// A view setting: the take is not changed. Returns an error message (the view is then
+  /// unchanged) or an empty string. Dropped when markers are added or removed.
+  QString setHeadReference(std::vector<Eigen::Index> referenceMarkers);
+  [[nodiscard]] const std::vector<Eigen::Index>& headReference() const { return m_headReference; }
+  /// Where marker `marker` is drawn in `frame` (stabilised when the view is).
+  [[nodiscard]] Eigen::Vector3d displayPosition(Eigen::Index frame, Eigen::Index marker) const;
   /// The marker drawn nearest to `position` (widget coordinates), within `radius` pixels.
   [[nodiscard]] Eigen::Index markerAt(QPoint position, int radius = 12) const;
 
@@ -81,6 +93,8 @@ private:
   int m_trailFrames = 50;
   double m_markerScale = 0.012;
   int m_upAxis = 2;
+  std::vector<Eigen::Index> m_headReference;
+  std::optional<HeadMotion> m_headMotion;
 };
 
 } // namespace mocap::ui

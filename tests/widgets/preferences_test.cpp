@@ -1,0 +1,60 @@
+// Preferences: remembered across runs, and absurd hand-edited values are clamped, never used.
+#include "dialogs/preferences_dialog.h"
+
+#include <QSettings>
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace mocap {
+namespace {
+
+using ui::Preferences;
+
+TEST(Preferences, SavedValuesComeBackAndAbsurdOnesAreClamped)
+{
+  QSettings().clear();
+  Preferences p;
+  p.markerSizePercent = 2.5;
+  p.trailFrames = 120;
+  p.upAxis = 1;
+  p.language = QStringLiteral("de");
+  p.autosaveMinutes = 5;
+  p.save();
+  const Preferences loaded = Preferences::load();
+  EXPECT_DOUBLE_EQ(loaded.markerSizePercent, 2.5);
+  EXPECT_EQ(loaded.trailFrames, 120);
+  EXPECT_EQ(loaded.upAxis, 1);
+  EXPECT_EQ(loaded.language, QStringLiteral("de"));
+  EXPECT_EQ(loaded.autosaveMinutes, 5);
+
+  QSettings settings;
+  settings.setValue(QStringLiteral("view/markerSizePercent"), std::numeric_limits<double>::quiet_NaN());
+  settings.setValue(QStringLiteral("view/trailFrames"), -7);
+  settings.setValue(QStringLiteral("view/upAxis"), 9);
+  settings.setValue(QStringLiteral("autosaveMinutes"), 100000);
+  settings.sync();
+  const Preferences clamped = Preferences::load();
+  EXPECT_DOUBLE_EQ(clamped.markerSizePercent, Preferences{}.markerSizePercent);
+  EXPECT_EQ(clamped.trailFrames, 0);
+  EXPECT_EQ(clamped.upAxis, 2);
+  EXPECT_EQ(clamped.autosaveMinutes, 60);
+  QSettings().clear();
+}
+
+TEST(Preferences, TheDialogShowsAndReturnsThePreferences)
+{
+  Preferences p;
+  p.trailFrames = 33;
+  p.language = QStringLiteral("zh_CN");
+  const ui::PreferencesDialog dialog(p, {QStringLiteral("en"), QStringLiteral("de"), QStringLiteral("zh_CN")},
+                                     {QStringLiteral("English"), QStringLiteral("Deutsch"), QStringLiteral("中文")});
+  const Preferences shown = dialog.preferences();
+  EXPECT_EQ(shown.trailFrames, 33);
+  EXPECT_EQ(shown.language, QStringLiteral("zh_CN"));
+  EXPECT_EQ(shown.upAxis, 2);
+}
+
+} // namespace
+} // namespace mocap

@@ -1,0 +1,108 @@
+#include "dialogs/preferences_dialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QSettings>
+#include <QSpinBox>
+
+#include <algorithm>
+
+namespace mocap::ui {
+
+namespace {
+constexpr double kMinMarkerPercent = 0.1, kMaxMarkerPercent = 10.0;
+constexpr int kMaxTrailFrames = 1000;
+constexpr int kMaxAutosaveMinutes = 60;
+} // namespace
+
+Preferences Preferences::load()
+{
+  const QSettings settings;
+  Preferences p;
+  p.markerSizePercent = settings.value(QStringLiteral("view/markerSizePercent"), p.markerSizePercent).toDouble();
+  p.trailFrames = settings.value(QStringLiteral("view/trailFrames"), p.trailFrames).toInt();
+  p.upAxis = settings.value(QStringLiteral("view/upAxis"), p.upAxis).toInt();
+  p.language = settings.value(QStringLiteral("language")).toString();
+  p.autosaveMinutes = settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt();
+  return p.clamped();
+}
+
+void Preferences::save() const
+{
+  QSettings settings;
+  settings.setValue(QStringLiteral("view/markerSizePercent"), markerSizePercent);
+  settings.setValue(QStringLiteral("view/trailFrames"), trailFrames);
+  settings.setValue(QStringLiteral("view/upAxis"), upAxis);
+  if (!language.isEmpty())
+    settings.setValue(QStringLiteral("language"), language);
+  settings.setValue(QStringLiteral("autosaveMinutes"), autosaveMinutes);
+}
+
+Preferences Preferences::clamped() const
+{
+  Preferences p = *this;
+  p.markerSizePercent = std::clamp(p.markerSizePercent, kMinMarkerPercent, kMaxMarkerPercent);
+  if (!(p.markerSizePercent == p.markerSizePercent))  // NaN from a hand-edited file
+    p.markerSizePercent = Preferences{}.markerSizePercent;
+  p.trailFrames = std::clamp(p.trailFrames, 0, kMaxTrailFrames);
+  p.upAxis = p.upAxis == 1 ? 1 : 2;
+  p.autosaveMinutes = std::clamp(p.autosaveMinutes, 1, kMaxAutosaveMinutes);
+  return p;
+}
+
+PreferencesDialog::PreferencesDialog(const Preferences& preferences, const QStringList& languageCodes,
+                                     const QStringList& languageNames, QWidget* parent)
+    : QDialog(parent)
+{
+  setWindowTitle(tr("Preferences"));
+  auto* form = new QFormLayout(this);
+  m_markerSize = new QDoubleSpinBox(this);
+  m_markerSize->setRange(kMinMarkerPercent, kMaxMarkerPercent);
+  m_markerSize->setSingleStep(0.1);
+  m_markerSize->setSuffix(QStringLiteral(" %"));
+  m_markerSize->setValue(preferences.markerSizePercent);
+  m_markerSize->setToolTip(tr("Radius of the marker spheres as a share of the take's size"));
+  form->addRow(tr("Marker size:"), m_markerSize);
+  m_trail = new QSpinBox(this);
+  m_trail->setRange(0, kMaxTrailFrames);
+  m_trail->setValue(preferences.trailFrames);
+  m_trail->setSpecialValueText(tr("Off"));
+  m_trail->setToolTip(tr("Frames before and after the current one drawn as trails of the selected markers"));
+  form->addRow(tr("Trail length (frames):"), m_trail);
+  m_upAxis = new QComboBox(this);
+  m_upAxis->addItem(tr("Y up"), 1);
+  m_upAxis->addItem(tr("Z up"), 2);
+  m_upAxis->setCurrentIndex(preferences.upAxis == 1 ? 0 : 1);
+  form->addRow(tr("Up axis:"), m_upAxis);
+  m_language = new QComboBox(this);
+  for (int i = 0; i < languageCodes.size() && i < languageNames.size(); ++i)
+    m_language->addItem(languageNames[i], languageCodes[i]);
+  m_language->setCurrentIndex(std::max(0, static_cast<int>(languageCodes.indexOf(preferences.language))));
+  m_language->setToolTip(tr("Used from the next start"));
+  form->addRow(tr("Language:"), m_language);
+  m_autosave = new QSpinBox(this);
+  m_autosave->setRange(1, kMaxAutosaveMinutes);
+  m_autosave->setSuffix(tr(" min"));
+  m_autosave->setValue(preferences.autosaveMinutes);
+  m_autosave->setToolTip(tr("How often unsaved edits are copied to a recovery file"));
+  form->addRow(tr("Autosave every:"), m_autosave);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+  connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  form->addRow(buttons);
+}
+
+Preferences PreferencesDialog::preferences() const
+{
+  Preferences p;
+  p.markerSizePercent = m_markerSize->value();
+  p.trailFrames = m_trail->value();
+  p.upAxis = m_upAxis->currentData().toInt();
+  p.language = m_language->currentData().toString();
+  p.autosaveMinutes = m_autosave->value();
+  return p.clamped();
+}
+
+} // namespace mocap::ui
