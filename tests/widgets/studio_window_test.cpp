@@ -290,6 +290,31 @@ TEST_F(StudioWindow, HeadStabilisedViewHoldsTheHeadMarkersStillWithoutTouchingTh
   EXPECT_EQ(view->displayPosition(500, root), original.position(500, root));
 }
 
+TEST_F(StudioWindow, RubberBandSelectsTheMarkersInsideIt)
+{
+  TakeDocument& doc = window->document();
+  ui::MarkerView3d* view = window->markerView();
+  view->viewport()->repaint();
+  QApplication::processEvents();
+  const Eigen::Index a = *doc.take().markerIndex("section13-1");
+  const Eigen::Index b = *doc.take().markerIndex("section14-1");
+  const auto pa = view->screenPosition(a);
+  const auto pb = view->screenPosition(b);
+  ASSERT_TRUE(pa && pb);
+  const QRect band = QRectF(*pa, *pb).normalized().adjusted(-3, -3, 3, 3).toRect();
+  const std::vector<Eigen::Index> inside = view->markersIn(band);
+  ASSERT_GE(inside.size(), 2u);
+  QWidget* viewport = view->viewport();
+  QTest::mousePress(viewport, Qt::LeftButton, Qt::ControlModifier, band.topLeft());
+  QMouseEvent move(QEvent::MouseMove, QPointF(band.bottomRight()), viewport->mapToGlobal(QPointF(band.bottomRight())),
+                   Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+  QApplication::sendEvent(viewport, &move);
+  QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, band.bottomRight());
+  EXPECT_EQ(doc.selection(), inside);
+  EXPECT_TRUE(std::find(inside.begin(), inside.end(), a) != inside.end());
+  EXPECT_LT(inside.size(), static_cast<std::size_t>(doc.take().markerCount())) << "not everything";
+}
+
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
 {
   TakeDocument& doc = window->document();

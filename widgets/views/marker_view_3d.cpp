@@ -101,6 +101,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
     m_stack->setCurrentWidget(m_failure);
   });
   connect(m_viewport, &VtkViewport::clicked, this, &MarkerView3d::onClicked);
+  connect(m_viewport, &VtkViewport::rectangleSelected, this, &MarkerView3d::onRectangle);
 
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(16);
@@ -372,28 +373,59 @@ void MarkerView3d::updateLabels()
   }
 }
 
-Eigen::Index MarkerView3d::markerAt(QPoint position, int radius) const
+QPointF MarkerView3d::projected(vtkIdType id) const
 {
   vtkRenderer* renderer = m_viewport->renderer();
+  double world[4] = {0, 0, 0, 1};
+  m_points->GetPoint(id, world);
+  renderer->SetWorldPoint(world);
+  renderer->WorldToDisplay();
+  double display[3];
+  renderer->GetDisplayPoint(display);
   const double ratio = m_viewport->devicePixelRatioF();
-  const double x = position.x() * ratio;
-  const double y = (m_viewport->height() - position.y()) * ratio;  // VTK display y grows upwards
+  return {display[0] / ratio, m_viewport->height() - display[1] / ratio};  // VTK display y grows upwards
+}
+
+Eigen::Index MarkerView3d::markerAt(QPoint position, int radius) const
+{
   Eigen::Index best = -1;
-  double bestDistance = radius * ratio;
+  double bestDistance = radius;
   for (vtkIdType id = 0; id < m_points->GetNumberOfPoints(); ++id) {
-    double world[4] = {0, 0, 0, 1};
-    m_points->GetPoint(id, world);
-    renderer->SetWorldPoint(world);
-    renderer->WorldToDisplay();
-    double display[3];
-    renderer->GetDisplayPoint(display);
-    const double distance = std::hypot(display[0] - x, display[1] - y);
+    const QPointF p = projected(id);
+    const double distance = std::hypot(p.x() - position.x(), p.y() - position.y());
     if (distance <= bestDistance) {
       bestDistance = distance;
       best = m_drawnMarkers[static_cast<std::size_t>(id)];
     }
   }
   return best;
+}
+
+std::vector<Eigen::Index> MarkerView3d::markersIn(const QRect& rectangle) const
+{
+  std::vector<Eigen::Index> markers;
+  const QRectF area(rectangle);
+  for (vtkIdType id = 0; id < m_points->GetNumberOfPoints(); ++id)
+    if (area.contains(projected(id)))
+      markers.push_back(m_drawnMarkers[static_cast<std::size_t>(id)]);
+  std::sort(markers.begin(), markers.end());
+  return markers;
+}
+
+std::optional<QPointF> MarkerView3d::screenPosition(Eigen::Index marker) const
+{
+  const auto it = std::find(m_drawnMarkers.begin(), m_drawnMarkers.end(), marker);
+  if (it == m_drawnMarkers.end())
+    return std::nullopt;
+  return projected(static_cast<vtkIdType>(it - m_drawnMarkers.begin()));
+}
+
+void MarkerView3d::onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers)
+{
+  std::vector<Eigen::Index> selection = markersIn(rectangle);
+  if (modifiers & Qt::ShiftModifier)  // Ctrl draws the band; Shift as well adds to the selection
+    selection.insert(selection.end(), m_document.selection().begin(), m_document.selection().end());
+  m_document.setSelection(std::move(selection));
 }
 
 void MarkerView3d::onClicked(QPoint position, Qt::KeyboardModifiers modifiers)

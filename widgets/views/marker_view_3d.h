@@ -33,7 +33,7 @@ class VtkViewport;
 /// The 3D viewport: the current frame's markers as spheres coloured by sample state
 /// (original, filled, smoothed, edited; selected markers highlighted and labelled), trails of
 /// the selected markers over ±trailFrames frames, and an axes marker in the corner.
-/// Missing samples are not drawn. Click picks the nearest marker (Ctrl/Shift adds to the
+/// Missing samples are not drawn. Click picks the nearest marker, Ctrl+drag a rubber band picks all inside it (Ctrl/Shift adds to the
 /// selection); the camera faces the take's markers from the side they protrude to.
 class MarkerView3d final : public QWidget
 {
@@ -63,6 +63,10 @@ public:
   [[nodiscard]] Eigen::Vector3d displayPosition(Eigen::Index frame, Eigen::Index marker) const;
   /// The marker drawn nearest to `position` (widget coordinates), within `radius` pixels.
   [[nodiscard]] Eigen::Index markerAt(QPoint position, int radius = 12) const;
+  /// The markers drawn inside `rectangle` (widget coordinates), ascending.
+  [[nodiscard]] std::vector<Eigen::Index> markersIn(const QRect& rectangle) const;
+  /// Where drawn marker `marker` appears in the widget; nullopt when it is not drawn.
+  [[nodiscard]] std::optional<QPointF> screenPosition(Eigen::Index marker) const;
 
 private:
   void rebuildScene();
@@ -70,6 +74,9 @@ private:
   void updateTrails();
   void updateLabels();
   void onClicked(QPoint position, Qt::KeyboardModifiers modifiers);
+  void onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers);
+  /// Drawn point `id` in widget (logical) coordinates.
+  [[nodiscard]] QPointF projected(vtkIdType id) const;
   [[nodiscard]] double takeSize() const;
 
   TakeDocument& m_document;

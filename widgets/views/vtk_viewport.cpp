@@ -4,6 +4,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <QRubberBand>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -204,6 +205,12 @@ void VtkViewport::mousePressEvent(QMouseEvent* event)
 {
   m_pressPosition = m_lastPosition = event->position().toPoint();
   m_dragged = false;
+  if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier)) {
+    if (!m_band)
+      m_band = new QRubberBand(QRubberBand::Rectangle, this);
+    m_band->setGeometry(QRect(m_pressPosition, QSize()));
+    m_band->show();
+  }
   event->accept();
 }
 
@@ -214,6 +221,10 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event)
     m_dragged = true;
   const QPoint delta = position - m_lastPosition;
   m_lastPosition = position;
+  if (m_band && m_band->isVisible()) {  // rubber band: the camera stays
+    m_band->setGeometry(QRect(m_pressPosition, position).normalized());
+    return;
+  }
   if (!m_dragged || event->buttons() == Qt::NoButton)
     return;
   vtkCamera* camera = m_renderer->GetActiveCamera();
@@ -253,7 +264,12 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event)
 
 void VtkViewport::mouseReleaseEvent(QMouseEvent* event)
 {
-  if (!m_dragged && event->button() == Qt::LeftButton)
+  const bool band = m_band && m_band->isVisible();
+  if (band)
+    m_band->hide();
+  if (band && m_dragged)
+    emit rectangleSelected(QRect(m_pressPosition, event->position().toPoint()).normalized(), event->modifiers());
+  else if (!m_dragged && event->button() == Qt::LeftButton)
     emit clicked(event->position().toPoint(), event->modifiers());
   m_dragged = false;
 }

@@ -2,9 +2,12 @@
 
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QRect>
 #include <QString>
 
 #include <vtkNew.h>
+
+class QRubberBand;
 
 #include <vector>
 
@@ -47,6 +50,9 @@ public:
 signals:
   /// A press-release without dragging, in widget (logical) coordinates.
   void clicked(QPoint position, Qt::KeyboardModifiers modifiers);
+  /// A Ctrl+left drag drew this rectangle (rubber-band selection), in widget coordinates;
+  /// `modifiers` as held at release.
+  void rectangleSelected(QRect rectangle, Qt::KeyboardModifiers modifiers);
   /// No usable OpenGL context: the reason, for a message in place of the view.
   void failed(const QString& reason);
   /// Emitted just before VTK renders, so owners can update props lazily.
@@ -78,6 +84,7 @@ private:
   QPoint m_pressPosition;
   QPoint m_lastPosition;
   bool m_dragged = false;
+  QRubberBand* m_band = nullptr;  // shown during a Ctrl+left drag
 };
 
 } // namespace mocap::ui
