@@ -189,28 +189,33 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>Marker &amp;Links</source>
+        <translation>Marker&amp;verbindungen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+68"/>
+        <location line="+71"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-68"/>
-        <location line="+68"/>
+        <location line="-71"/>
+        <location line="+71"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="-64"/>
+        <location line="-67"/>
         <source>&amp;Head-Stabilised View…</source>
         <translation>&amp;Kopfstabilisierte Ansicht…</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -225,12 +230,16 @@
         <translation>Über Mocap Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+R reset camera.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Verwendung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelschritt (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+R Kamera zurücksetzen.&lt;/p&gt;</translation>
+        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Verwendung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelschritt (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+R Kamera zurücksetzen.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+1"/>
+        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>3D view in the lab frame</source>
         <translation>3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
@@ -462,7 +471,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-501"/>
+        <location line="-513"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -876,7 +885,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+129"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+130"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>

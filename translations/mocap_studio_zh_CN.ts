@@ -186,28 +186,33 @@
     </message>
     <message>
         <location line="+5"/>
+        <source>Marker &amp;Links</source>
+        <translation>标记点连线(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+68"/>
+        <location line="+71"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-68"/>
-        <location line="+68"/>
+        <location line="-71"/>
+        <location line="+71"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="-64"/>
+        <location line="-67"/>
         <source>&amp;Head-Stabilised View…</source>
         <translation>头部稳定视图(&amp;H)…</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
@@ -222,12 +227,16 @@
         <translation>关于 Mocap Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+R reset camera.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;面部光学动作捕捉数据的清理与使用。&lt;/p&gt;&lt;p&gt;快捷键：空格键 播放/暂停，←/→ 逐帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+R 重置相机。&lt;/p&gt;</translation>
+        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;面部光学动作捕捉数据的清理与使用。&lt;/p&gt;&lt;p&gt;快捷键：空格键 播放/暂停，←/→ 逐帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+R 重置相机。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+1"/>
+        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+53"/>
         <source>3D view in the lab frame</source>
         <translation>三维视图使用实验室坐标系</translation>
     </message>
@@ -458,7 +467,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-501"/>
+        <location line="-513"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -871,7 +880,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+129"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+130"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>

@@ -179,6 +179,15 @@ void MainWindow::createActions()
   connect(m_trails, &QAction::triggered, this, [this](bool on) {
     changePreferences([on](ui::Preferences& p) { p.trailFrames = on ? std::max(p.trailFrames, 50) : 0; });
   });
+  QAction* links = m_viewMenu->addAction(tr("Marker &Links"));
+  links->setShortcut(QKeySequence(Qt::Key_L));
+  links->setCheckable(true);
+  links->setChecked(QSettings().value(QStringLiteral("view/links"), false).toBool());
+  m_view3d->setLinksVisible(links->isChecked());
+  connect(links, &QAction::toggled, this, [this](bool on) {
+    m_view3d->setLinksVisible(on);
+    QSettings().setValue(QStringLiteral("view/links"), on);
+  });
   QMenu* languages = m_viewMenu->addMenu(tr("&Language"));
   auto* languageGroup = new QActionGroup(this);
   const QString current = QSettings().value(QStringLiteral("language"), defaultLanguage()).toString();
@@ -213,13 +222,16 @@ void MainWindow::createActions()
   addShortcut(QKeySequence(Qt::Key_End), [this] { m_document->setCurrentFrame(m_document->take().frameCount() - 1); });
   addShortcut(QKeySequence(Qt::Key_PageDown), [this] { m_timeline->jumpToGap(1); });
   addShortcut(QKeySequence(Qt::Key_PageUp), [this] { m_timeline->jumpToGap(-1); });
+  addShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageDown), [this] { m_timeline->jumpToFlag(1); });
+  addShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageUp), [this] { m_timeline->jumpToFlag(-1); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Mocap Studio"), this, [this] {
     QMessageBox::about(this, tr("About Mocap Studio"),
                        tr("<b>Mocap Studio</b><p>Cleaning and using facial optical motion capture.</p>"
                           "<p>Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next "
-                          "gap, Ctrl+R reset camera.</p>"));
+                          "gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, "
+                          "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.</p>"));
   });
   updateRecentMenu();
 }

@@ -124,3 +124,36 @@ TEST(MarkerEdits, SwapOverRangeExchangesOnlyThatRangeAndSwapsBack)
 
 } // namespace
 } // namespace mocap
+
+#include "mocap/marker_links.h"
+
+namespace mocap {
+namespace {
+
+TEST(MarkerLinks, NearestNeighboursOnAGridSkipAStrayMarker)
+{
+  // A 3 × 3 grid 10 mm apart and one stray marker 500 mm away.
+  Take take({"a", "b", "c", "d", "e", "f", "g", "h", "i", "stray"}, 2, 100.0);
+  for (Eigen::Index m = 0; m < 9; ++m) {
+    take.setPosition(1, m, {10.0 * static_cast<double>(m % 3), 10.0 * static_cast<double>(m / 3), 0.0});
+    take.valid()(1, m) = true;
+  }
+  take.setPosition(1, 9, {500, 500, 0});
+  take.valid()(1, 9) = true;
+  take.valid()(0, 0) = true;
+  EXPECT_EQ(mostCompleteFrame(take), 1);
+  const auto links = nearestNeighbourLinks(take, 1, 2);
+  for (const auto& [a, b] : links) {
+    EXPECT_LT(a, b);
+    EXPECT_NE(b, 9) << "the stray marker's links are far longer than the median";
+    EXPECT_NEAR((take.position(1, a) - take.position(1, b)).norm(), 10.0, 1e-9) << "grid neighbours only";
+  }
+  EXPECT_GE(links.size(), 9u);
+  EXPECT_TRUE(std::is_sorted(links.begin(), links.end()));
+  EXPECT_THROW(static_cast<void>(nearestNeighbourLinks(take, 2)), InvalidArgument);
+  EXPECT_THROW(static_cast<void>(nearestNeighbourLinks(take, 1, 0)), InvalidArgument);
+  EXPECT_TRUE(nearestNeighbourLinks(take, 0).empty()) << "one valid marker links to nothing";
+}
+
+} // namespace
+} // namespace mocap

@@ -8,11 +8,13 @@
 #include "panels/cleaning_panel.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
+#include "views/timeline_widget.h"
 #include "views/vtk_viewport.h"
 
 #include "mocap/c3d_reader.h"
 #include "mocap/file_io.h"
 #include "mocap/gaps.h"
+#include "mocap/marker_links.h"
 
 #include <QAction>
 #include <QApplication>
@@ -313,6 +315,45 @@ TEST_F(StudioWindow, RubberBandSelectsTheMarkersInsideIt)
   EXPECT_EQ(doc.selection(), inside);
   EXPECT_TRUE(std::find(inside.begin(), inside.end(), a) != inside.end());
   EXPECT_LT(inside.size(), static_cast<std::size_t>(doc.take().markerCount())) << "not everything";
+}
+
+TEST_F(StudioWindow, MarkerLinksJoinNeighboursOfTheFace)
+{
+  ui::MarkerView3d* view = window->markerView();
+  view->setLinksVisible(true);
+  const Take& take = window->document().take();
+  ASSERT_GE(view->links().size(), static_cast<std::size_t>(take.markerCount()));
+  // Neighbours on a face about 250 mm tall are a few centimetres apart, and every face marker is
+  // joined to some other.
+  const Eigen::Index frame = mostCompleteFrame(take);
+  std::vector<bool> linked(static_cast<std::size_t>(take.markerCount()), false);
+  for (const auto& [a, b] : view->links()) {
+    EXPECT_LT((take.position(frame, a) - take.position(frame, b)).norm(), 80.0) << take.label(a) << "-" << take.label(b);
+    linked[static_cast<std::size_t>(a)] = linked[static_cast<std::size_t>(b)] = true;
+  }
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    if (take.label(m).rfind("section", 0) == 0 && take.isValid(frame, m)) {
+      EXPECT_TRUE(linked[static_cast<std::size_t>(m)]) << take.label(m);
+    }
+  view->setLinksVisible(false);
+}
+
+TEST_F(StudioWindow, TimelineJumpsBetweenFlaggedSamples)
+{
+  TakeDocument& doc = window->document();
+  doc.setFlags({{3, 700}, {5, 250}, {3, 1200}});
+  doc.setCurrentFrame(300);
+  window->timeline()->jumpToFlag(1);
+  EXPECT_EQ(doc.currentFrame(), 700);
+  window->timeline()->jumpToFlag(-1);
+  EXPECT_EQ(doc.currentFrame(), 250);
+  doc.setSelection({3});
+  window->timeline()->jumpToFlag(1);
+  EXPECT_EQ(doc.currentFrame(), 700) << "only the selected marker's flags";
+  window->timeline()->jumpToFlag(1);
+  EXPECT_EQ(doc.currentFrame(), 1200);
+  window->timeline()->jumpToFlag(1);
+  EXPECT_EQ(doc.currentFrame(), 1200) << "no flag after the last one: stay";
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)

@@ -2,6 +2,8 @@
 
 #include "document/take_document.h"
 #include "views/sample_colors.h"
+
+#include "mocap/marker_links.h"
 #include "views/vtk_viewport.h"
 
 #include <QLabel>
@@ -130,6 +132,15 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   m_trailActor->GetProperty()->SetLineWidth(2.0f);
   m_viewport->renderer()->AddActor(m_trailActor);
 
+  vtkNew<vtkPolyDataMapper> linkMapper;
+  linkMapper->SetInputData(m_linkLines);
+  m_linkActor->SetMapper(linkMapper);
+  m_linkActor->GetProperty()->SetColor(0.55, 0.6, 0.7);
+  m_linkActor->GetProperty()->SetOpacity(0.6);
+  m_linkActor->GetProperty()->SetLineWidth(1.0f);
+  m_linkActor->SetVisibility(false);
+  m_viewport->renderer()->AddActor(m_linkActor);
+
   // A small corner renderer shows the lab axes with the main camera's orientation.
   m_axesRenderer->SetViewport(0.0, 0.0, 0.16, 0.2);
   m_axesRenderer->InteractiveOff();
@@ -151,6 +162,9 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   connect(&document, &TakeDocument::takeReset, this, [this] {
     m_headReference.clear();  // a new take
     m_headMotion.reset();
+    m_links.clear();
+    if (m_linksVisible)
+      computeLinks();
     rebuildScene();
   });
   connect(&document, &TakeDocument::currentFrameChanged, this, &MarkerView3d::updateFrame);
@@ -160,6 +174,9 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   connect(&document, &TakeDocument::markersChanged, this, [this] {
     m_headReference.clear();  // indices shifted
     m_headMotion.reset();
+    m_links.clear();
+    if (m_linksVisible)
+      computeLinks();
     updateFrame();
   });
   connect(&document, &TakeDocument::samplesChanged, this, [this](const std::vector<Eigen::Index>& markers) {
@@ -293,9 +310,48 @@ void MarkerView3d::updateFrame()
   m_points->Modified();
   m_colors->Modified();
   m_markers->Modified();
+  updateLinks();
   updateTrails();
   updateLabels();
   m_viewport->requestRender();
+}
+
+void MarkerView3d::setLinksVisible(bool visible)
+{
+  m_linksVisible = visible;
+  if (visible && m_links.empty())
+    computeLinks();
+  m_linkActor->SetVisibility(visible);
+  updateFrame();
+}
+
+void MarkerView3d::computeLinks()
+{
+  const Take& take = m_document.take();
+  m_links.clear();
+  if (!take.empty())
+    m_links = nearestNeighbourLinks(take, mostCompleteFrame(take));
+}
+
+void MarkerView3d::updateLinks()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  const Take& take = m_document.take();
+  const Eigen::Index frame = m_document.currentFrame();
+  if (m_linksVisible && frame < take.frameCount()) {
+    for (const auto& [a, b] : m_links) {
+      if (a >= take.markerCount() || b >= take.markerCount() || !take.isValid(frame, a) || !take.isValid(frame, b) ||
+          m_document.isHidden(a) || m_document.isHidden(b))
+        continue;
+      const vtkIdType ends[2] = {points->InsertNextPoint(displayPosition(frame, a).data()),
+                                 points->InsertNextPoint(displayPosition(frame, b).data())};
+      lines->InsertNextCell(2, ends);
+    }
+  }
+  m_linkLines->SetPoints(points);
+  m_linkLines->SetLines(lines);
+  m_linkLines->Modified();
 }
 
 void MarkerView3d::updateTrails()

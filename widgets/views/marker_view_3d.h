@@ -49,6 +49,10 @@ public:
   [[nodiscard]] int trailFrames() const { return m_trailFrames; }
   /// Sphere radius as a fraction of the take's size.
   void setMarkerScale(double fraction);
+  /// Lines between neighbouring markers (each to its nearest three in the most complete frame).
+  void setLinksVisible(bool visible);
+  [[nodiscard]] bool linksVisible() const { return m_linksVisible; }
+  [[nodiscard]] const std::vector<std::pair<Eigen::Index, Eigen::Index>>& links() const { return m_links; }
   /// Which lab axis points up on screen: 1 = Y, 2 = Z.
   void setUpAxis(int axis);
   [[nodiscard]] int upAxis() const { return m_upAxis; }
@@ -72,6 +76,8 @@ private:
   void rebuildScene();
   void updateFrame();
   void updateTrails();
+  void updateLinks();
+  void computeLinks();
   void updateLabels();
   void onClicked(QPoint position, Qt::KeyboardModifiers modifiers);
   void onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers);
@@ -101,6 +107,10 @@ private:
   double m_markerScale = 0.012;
   int m_upAxis = 2;
   std::vector<Eigen::Index> m_headReference;
+  vtkNew<vtkPolyData> m_linkLines;
+  vtkNew<vtkActor> m_linkActor;
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> m_links;
+  bool m_linksVisible = false;
   std::optional<HeadMotion> m_headMotion;
 };
 

@@ -137,27 +137,53 @@ void TimelineWidget::step(int frames)
   m_document.setCurrentFrame(m_document.currentFrame() + frames);
 }
 
+namespace {
+
+// The nearest of `frames` after (direction > 0) or before (< 0) `current`; −1 when there is none.
+Eigen::Index nearestInDirection(const std::vector<Eigen::Index>& frames, Eigen::Index current, int direction)
+{
+  Eigen::Index best = -1;
+  for (Eigen::Index f : frames) {
+    if (direction > 0 && f > current && (best < 0 || f < best))
+      best = f;
+    if (direction < 0 && f < current && (best < 0 || f > best))
+      best = f;
+  }
+  return best;
+}
+
+} // namespace
+
+void TimelineWidget::jumpTo(Eigen::Index frame)
+{
+  if (frame < 0)
+    return;
+  setPlaying(false);
+  m_document.setCurrentFrame(frame);
+}
+
 void TimelineWidget::jumpToGap(int direction)
 {
   const Take& take = m_document.take();
-  const Eigen::Index current = m_document.currentFrame();
-  Eigen::Index best = -1;
   std::vector<Eigen::Index> markers = m_document.selection();
   if (markers.empty())
     for (Eigen::Index m = 0; m < take.markerCount(); ++m)
       markers.push_back(m);
+  std::vector<Eigen::Index> starts;
   for (Eigen::Index m : markers)
-    for (const Gap& gap : findGaps(take.valid().col(m), m)) {
-      const Eigen::Index start = gap.firstFrame;
-      if (direction > 0 && start > current && (best < 0 || start < best))
-        best = start;
-      if (direction < 0 && start < current && (best < 0 || start > best))
-        best = start;
-    }
-  if (best >= 0) {
-    setPlaying(false);
-    m_document.setCurrentFrame(best);
-  }
+    for (const Gap& gap : findGaps(take.valid().col(m), m))
+      starts.push_back(gap.firstFrame);
+  jumpTo(nearestInDirection(starts, m_document.currentFrame(), direction));
+}
+
+void TimelineWidget::jumpToFlag(int direction)
+{
+  const auto& selection = m_document.selection();
+  std::vector<Eigen::Index> frames;
+  for (const auto& [marker, frame] : m_document.flags())
+    if (selection.empty() || std::binary_search(selection.begin(), selection.end(), marker))
+      frames.push_back(frame);
+  jumpTo(nearestInDirection(frames, m_document.currentFrame(), direction));
 }
 
 } // namespace mocap::ui

@@ -32,10 +32,14 @@ public:
   void step(int frames);
   /// Moves to the start of the next (direction 1) or previous (−1) gap of the selected markers.
   void jumpToGap(int direction);
+  /// Moves to the next (1) or previous (−1) flagged sample (bad point under review) of the
+  /// selected markers, or of all markers when none is selected.
+  void jumpToFlag(int direction);
   [[nodiscard]] double speed() const { return m_speed; }
 
 private:
   void syncFromDocument();
+  void jumpTo(Eigen::Index frame);
   void advance();
 
   TakeDocument& m_document;
