@@ -230,10 +230,6 @@
         <translation>Über Mocap Studio</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+R reset camera.&lt;/p&gt;</source>
-        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Verwendung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelschritt (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+R Kamera zurücksetzen.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>

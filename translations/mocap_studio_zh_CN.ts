@@ -227,10 +227,6 @@
         <translation>关于 Mocap Studio</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+R reset camera.&lt;/p&gt;</source>
-        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;面部光学动作捕捉数据的清理与使用。&lt;/p&gt;&lt;p&gt;快捷键：空格键 播放/暂停，←/→ 逐帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+R 重置相机。&lt;/p&gt;</translation>
-    </message>
-    <message>
         <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
