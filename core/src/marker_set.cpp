@@ -89,7 +89,7 @@ bool isUnlabelledLabel(std::string_view label)
 {
   label = trim(label);
   if (!label.empty() && label.front() == '*')
-    return allDigits(label.substr(1));
+    return label.size() > 1 && allDigits(label.substr(1));
   const std::string lower = toLower(label);
   for (const std::string_view prefix : {std::string_view("unlabeled"), std::string_view("unlabelled")}) {
     if (lower.compare(0, prefix.size(), prefix) != 0)

@@ -5,6 +5,7 @@
 #include "mocap/json_reader.h"
 #include "mocap/json_writer.h"
 
+#include <cmath>
 #include <map>
 
 namespace mocap {
@@ -83,10 +84,11 @@ MarkerSet markerSetFromJson(const JsonValue& root)
     for (Eigen::Index k = 0; k < 3; ++k)
       set.neutral(static_cast<Eigen::Index>(i), k) = xyz[static_cast<std::size_t>(k)].number("a coordinate");
     const JsonValue* vertex = list[i].find("vertex", "each marker");
-    anyVertex = anyVertex || vertex;
-    set.meshVertices.push_back(vertex ? static_cast<Eigen::Index>(vertex->number("\"vertex\"")) : -1);
-    if (vertex && vertex->number("\"vertex\"") != static_cast<double>(set.meshVertices.back()))
-      throw InvalidArgument("\"vertex\" must be an integer");
+    anyVertex = anyVertex || vertex != nullptr;
+    const double index = vertex ? vertex->number("\"vertex\"") : -1.0;
+    if (index != std::floor(index) || index < -1.0 || index > 1e12)
+      throw InvalidArgument("\"vertex\" must be an integer from -1 to 10^12");
+    set.meshVertices.push_back(static_cast<Eigen::Index>(index));
   }
   if (!anyVertex)
     set.meshVertices.clear();
