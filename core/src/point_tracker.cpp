@@ -12,6 +12,9 @@ namespace mocap {
 namespace {
 
 constexpr Eigen::Index kGateSampleFrames = 200;
+// The closest markers decide how far a track may reach: a low quantile of nearest distances, not
+// the median, so a marker whose point vanishes cannot take its close neighbour's.
+constexpr double kGateQuantile = 0.1;
 
 double nearestDistance(const PointCloud& cloud, Eigen::Index frame, Eigen::Index i)
 {
@@ -59,9 +62,9 @@ double automaticGate(const PointCloud& cloud)
         distances.push_back(nearestDistance(cloud, f, i));
   if (distances.empty())
     return std::numeric_limits<double>::infinity();
-  auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
-  std::nth_element(distances.begin(), middle, distances.end());
-  return 0.5 * *middle;
+  auto low = distances.begin() + static_cast<std::ptrdiff_t>(kGateQuantile * static_cast<double>(distances.size() - 1));
+  std::nth_element(distances.begin(), low, distances.end());
+  return 0.5 * *low;
 }
 
 TrackingResult trackPoints(const PointCloud& cloud, const TrackerOptions& options)

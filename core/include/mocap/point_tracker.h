@@ -41,8 +41,9 @@ struct TrackingResult
   double gate = 0.0;                ///< the gating distance used
 };
 
-/// Half the median distance between nearest points of a frame, over up to 200 frames spread
-/// through the cloud: far enough for real marker motion per frame, short of the next marker.
+/// Half the 10th percentile of the distances between nearest points of a frame, over up to 200
+/// frames spread through the cloud: far enough for a marker's deviation from its predicted path,
+/// short of the closest neighbouring markers.
 /// +infinity when no frame has two points. O(#sampled frames · points²).
 [[nodiscard]] double automaticGate(const PointCloud& cloud);
 
