@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace mocap {
 namespace {
 
@@ -42,6 +44,27 @@ TEST(MarkerSetIo, RoundTripKeepsEverythingExactly)
   EXPECT_EQ(back.meshVertices, set.meshVertices);
   EXPECT_EQ(back.units, set.units);
   EXPECT_EQ(back.symmetry().pairs().size(), set.pairs.size());
+}
+
+TEST(MarkerSetIo, PfaReadsPairsFromAMarkerSetFile)
+{
+  const MarkerSet set = sampleSet();
+  test::TempDir dir;
+  writeMarkerSet(set, dir.file("set.json"));
+  std::vector<std::string> labels = set.labels;
+  std::reverse(labels.begin(), labels.end());  // pairs go by label, not by index
+  const MarkerSymmetry symmetry = readMarkerPairs(dir.file("set.json"), labels);
+  ASSERT_EQ(symmetry.pairs().size(), set.pairs.size());
+  for (const LabelPair& pair : set.pairs) {
+    const auto at = [&](Eigen::Index i) {
+      return static_cast<Eigen::Index>(std::find(labels.begin(), labels.end(), set.labels[static_cast<std::size_t>(i)]) -
+                                       labels.begin());
+    };
+    EXPECT_EQ(symmetry.mirror(at(pair.first)), at(pair.second));
+  }
+  labels.pop_back();
+  labels.erase(std::find(labels.begin(), labels.end(), set.labels[static_cast<std::size_t>(set.pairs[0].first)]));
+  EXPECT_THROW((void)readMarkerPairs(dir.file("set.json"), labels), FormatError);
 }
 
 TEST(MarkerSetIo, MinimalFileAndOptionalMembers)
