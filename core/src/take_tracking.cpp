@@ -4,6 +4,8 @@
 #include "mocap/fragment_joining.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 
 namespace mocap {
 
@@ -21,7 +23,15 @@ std::vector<Fragment> fragmentsToLabel(const Take& take, const std::vector<Eigen
 {
   if (!options.retrack)
     return fragmentsOfMarkers(take, unlabelled);
-  TrackingResult tracked = trackPoints(pointCloudFromTake(take, unlabelled), options.tracker);
+  TrackerOptions tracker = options.tracker;
+  if (tracker.maxSpeed == 0.0) {
+    // Measure the spacing on every marker: a few unlabelled points alone do not show it.
+    std::vector<Eigen::Index> all(static_cast<std::size_t>(take.markerCount()));
+    std::iota(all.begin(), all.end(), Eigen::Index{0});
+    const double gate = automaticGate(pointCloudFromTake(take, all));
+    tracker.maxSpeed = std::isfinite(gate) ? gate : 0.0;
+  }
+  TrackingResult tracked = trackPoints(pointCloudFromTake(take, unlabelled), tracker);
   report.gate = tracked.gate;
   return std::move(tracked.fragments);
 }

@@ -32,7 +32,7 @@ struct TrackReport
 };
 
 /// Tracks and labels a take (paper §2): its unlabelled markers (isUnlabelledLabel) are re-tracked
-/// into fragments (trackPoints) or taken run by run, then labelled with `set` (labelFragments),
+/// into fragments (trackPoints; an automatic gate is measured on all the take's markers) or taken run by run, then labelled with `set` (labelFragments),
 /// which also joins fragments into the gaps of the take's own labelled markers. With no `set`,
 /// the take's labelled markers form it (markerSetFromTake); with neither, the fragments come back
 /// unlabelled. The result has the set's labels first (with the take's samples of those labels),
