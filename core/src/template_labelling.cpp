@@ -29,8 +29,8 @@ void checkPoints(const Eigen::Ref<const PointSet>& points, const char* what)
 }
 
 // Distance from each row of `moved` to its closest row of `points`, and that row.
-void closestPoints(const PointSet& moved, const Eigen::Ref<const PointSet>& points, Eigen::VectorXd& distance,
-                   std::vector<Eigen::Index>& closest)
+void closestPoints(const Eigen::Ref<const PointSet>& moved, const Eigen::Ref<const PointSet>& points,
+                   Eigen::VectorXd& distance, std::vector<Eigen::Index>& closest)
 {
   distance.resize(moved.rows());
   closest.resize(static_cast<std::size_t>(moved.rows()));
@@ -64,17 +64,19 @@ PointSet transformed(const Similarity& s, const Eigen::Ref<const PointSet>& poin
   return out;
 }
 
-// ICP from `start`; returns the transform and its trimmed mean closest-point distance.
+// ICP from `start`: each data point pulls its closest template point (the data may miss markers
+// and hold strays, so correspondences go from the data); returns the transform and the trimmed
+// mean distance of the data points to their closest template point.
 std::pair<Similarity, double> refineIcp(const Eigen::Ref<const PointSet>& templ, const Eigen::Ref<const PointSet>& points,
                                         Similarity s)
 {
   Eigen::VectorXd distance;
   std::vector<Eigen::Index> closest;
   for (int iteration = 0; iteration < kIcpIterations; ++iteration) {
-    closestPoints(transformed(s, templ), points, distance, closest);
+    closestPoints(points, transformed(s, templ), distance, closest);
     const double limit = kIcpInlierFactor * quantile(distance, 0.5) + 1e-12;
     std::vector<Eigen::Index> inliers;
-    for (Eigen::Index i = 0; i < templ.rows(); ++i)
+    for (Eigen::Index i = 0; i < points.rows(); ++i)
       if (distance(i) <= limit)
         inliers.push_back(i);
     if (inliers.size() < 3)
@@ -82,8 +84,8 @@ std::pair<Similarity, double> refineIcp(const Eigen::Ref<const PointSet>& templ,
     PointSet from(static_cast<Eigen::Index>(inliers.size()), 3);
     PointSet to(from.rows(), 3);
     for (std::size_t k = 0; k < inliers.size(); ++k) {
-      from.row(static_cast<Eigen::Index>(k)) = templ.row(inliers[k]);
-      to.row(static_cast<Eigen::Index>(k)) = points.row(closest[static_cast<std::size_t>(inliers[k])]);
+      from.row(static_cast<Eigen::Index>(k)) = templ.row(closest[static_cast<std::size_t>(inliers[k])]);
+      to.row(static_cast<Eigen::Index>(k)) = points.row(inliers[k]);
     }
     const Similarity next = fitSimilarity(from, to);
     const double change = (next.rotation - s.rotation).norm() + std::abs(next.scale - s.scale) +
@@ -92,7 +94,7 @@ std::pair<Similarity, double> refineIcp(const Eigen::Ref<const PointSet>& templ,
     if (change < 1e-10)
       break;
   }
-  closestPoints(transformed(s, templ), points, distance, closest);
+  closestPoints(points, transformed(s, templ), distance, closest);
   return {s, trimmedMean(distance)};
 }
 

@@ -24,11 +24,12 @@ struct Similarity
 [[nodiscard]] Similarity fitSimilarity(const Eigen::Ref<const PointSet>& from, const Eigen::Ref<const PointSet>& to);
 
 /// Aligns a template to unlabelled points without correspondences: iterative closest points with
-/// a similarity fit (fitSimilarity) on the closest pairs within 2.5 × their median distance, from
-/// five starts (the centroids matched with the identity rotation and with the four proper
-/// rotations taking the template's principal axes onto the points'). The start whose result has
-/// the smallest trimmed mean distance (best 75 % of template points to their closest point) wins;
-/// that distance goes to `residual`. Not a paper equation (§2 labels by hand or by the vendor's
+/// a similarity fit (fitSimilarity) of each data point's closest template point onto it (the data
+/// may miss markers), pairs within 2.5 × their median distance, from five starts (the centroids
+/// matched with the identity rotation and with the four proper rotations taking the template's
+/// principal axes onto the points'). The start whose result has the smallest trimmed mean distance
+/// (best 75 % of data points to their closest template point) wins; that distance goes to
+/// `residual`. Not a paper equation (§2 labels by hand or by the vendor's
 /// model). Throws InvalidArgument when either set is empty or not finite.
 /// O(starts · iterations · #template · #points).
 [[nodiscard]] Similarity alignTemplate(const Eigen::Ref<const PointSet>& templ, const Eigen::Ref<const PointSet>& points,
