@@ -1,4 +1,5 @@
-// `mocap eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--json]`: the
+// `mocap eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--keep-fragments]
+// [--json]`: the
 // issue-8 protocol (core/include/mocap/tracking_evaluation.h): label recovery of an unlabelled,
 // fragmented copy and swaps found / false alarms on a copy with injected swaps.
 #include "arguments.h"
@@ -46,7 +47,7 @@ std::string evaluationJson(const std::string& file, const TrackingEvaluation& e)
 
 int runEvalTrack(const std::vector<std::string>& args)
 {
-  const Arguments arguments(args, {"--json"}, {"--seed", "--fragment-length", "--cut-gap", "--swaps"});
+  const Arguments arguments(args, {"--json", "--keep-fragments"}, {"--seed", "--fragment-length", "--cut-gap", "--swaps"});
   arguments.expectPositionals(1, "one labelled take");
   const std::string file = arguments.positionals()[0];
   TrackingEvaluationOptions options;
@@ -58,6 +59,7 @@ int runEvalTrack(const std::vector<std::string>& args)
     options.maxCutGap = static_cast<Eigen::Index>(*gap);
   if (const auto swaps = arguments.integer("--swaps", 0, 1000))
     options.swaps = static_cast<int>(*swaps);
+  options.track.retrack = !arguments.has("--keep-fragments");
   std::vector<std::string> warnings;
   const Take take = readTake(file, &warnings);
   const TrackingEvaluation e = evaluateTracking(take, options);

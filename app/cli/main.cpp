@@ -38,7 +38,7 @@ constexpr const char* kUsage =
     "                       unlabelled points (C3D/TRC fragments or CSV frame,x,y,z) into labelled trajectories\n"
     "  fix-swaps IN -o OUT [--report FILE.json] [--jump-factor F] [--json]\n"
     "                       find and repair frames where two labels exchange\n"
-    "  eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--json]\n"
+    "  eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--keep-fragments] [--json]\n"
     "                       label recovery of a fragmented unlabelled copy; injected swaps found\n";
 
 } // namespace
