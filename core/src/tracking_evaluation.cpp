@@ -85,15 +85,18 @@ UnlabelledCopy makeUnlabelledCopy(const Take& take, const TrackingEvaluationOpti
   std::vector<Fragment> pieces;
   for (const Eigen::Index m : labelledMarkers(take))
     cutMarker(take, m, options, state, pieces, copy.kept);
+  std::vector<Eigen::Index> strays;  // the take's own unlabelled markers: points to ignore
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    if (isUnlabelledLabel(take.label(m)))
+      strays.push_back(m);
+  for (Fragment& piece : fragmentsOfMarkers(take, strays))
+    pieces.push_back(std::move(piece));
   for (std::size_t i = pieces.size(); i > 1; --i)  // Fisher–Yates: no order reveals the label
     std::swap(pieces[i - 1], pieces[static_cast<std::size_t>(below(state, static_cast<Eigen::Index>(i)))]);
-  copy.fragments = static_cast<Eigen::Index>(pieces.size());
+  copy.fragments = static_cast<Eigen::Index>(pieces.size());  // strays included
   copy.take = Take({}, take.frameCount(), take.frameRate());
   copy.take.setUnits(take.units());
   copy.take.setFirstFrame(take.firstFrame());
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    if (isUnlabelledLabel(take.label(m)))
-      copyMarker(take, m, copy.take, copy.take.addMarker("Unlabeled" + std::to_string(m + 1) + "_stray"));
   std::vector<Eigen::Index> all(pieces.size());
   for (std::size_t i = 0; i < all.size(); ++i)
     all[i] = static_cast<Eigen::Index>(i);

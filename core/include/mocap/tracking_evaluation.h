@@ -27,7 +27,7 @@ struct TrackingEvaluationOptions
 /// A take made unlabelled, with which truth samples it still holds.
 struct UnlabelledCopy
 {
-  Take take;          ///< only Unlabeled markers: the take's own plus the shuffled fragments
+  Take take;          ///< only Unlabeled markers holding the shuffled fragments
   SampleMask kept;    ///< #frames × #take markers: the sample is in the copy (scored)
   Eigen::Index fragments = 0;
 };
@@ -65,8 +65,8 @@ struct TrackingEvaluation
 };
 
 /// The take's labelled markers (not isUnlabelledLabel) cut into fragments at random (see the
-/// options), shuffled and packed into "Unlabeled" markers (appendFragments); the take's own
-/// unlabelled markers are kept as they are (strays to ignore). Deterministic in (take, options).
+/// options), shuffled with the valid runs of the take's own unlabelled markers (strays, not
+/// scored) and packed into "Unlabeled" markers (appendFragments). Deterministic in (take, options).
 /// Throws InvalidArgument for options out of range. O(#frames · #markers).
 [[nodiscard]] UnlabelledCopy makeUnlabelledCopy(const Take& take, const TrackingEvaluationOptions& options = {});
 
