@@ -30,4 +30,14 @@ int runSmoothTable(const std::vector<std::string>& args);
 /// `mocap pfa TAKE [TAKE...] ...`: marker layout planning (Principal Feature Analysis and greedy).
 int runPfa(const std::vector<std::string>& args);
 
+/// `mocap track IN -o OUT [--template TAKE_OR_MARKERSET] [--max-speed MM_PER_FRAME] [--json]`:
+/// unlabelled points into labelled trajectories.
+int runTrack(const std::vector<std::string>& args);
+
+/// `mocap fix-swaps IN -o OUT [--report FILE.json]`: finds and repairs label swaps.
+int runFixSwaps(const std::vector<std::string>& args);
+
+/// `mocap eval-track TAKE [--seed S] [--json]`: label recovery and swap detection on a labelled take.
+int runEvalTrack(const std::vector<std::string>& args);
+
 } // namespace mocap::cli

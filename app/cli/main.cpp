@@ -32,7 +32,14 @@ constexpr const char* kUsage =
     "  pfa TAKE [TAKE...] [--method pfa|greedy] [--variance 0.98] [--restarts 1000] [--k MIN:MAX]\n"
     "      [--seed S] [--pairs FILE] [--stabilize LABELS] [--keyposes auto|F1,F2,...] [--json]\n"
     "      [--curve OUT.csv] [--export-subset K OUT.c3d]\n"
-    "                       marker layout planning: error vs marker count, recommended size\n";
+    "                       marker layout planning: error vs marker count, recommended size\n"
+    "  track IN -o OUT [--template TAKE_OR_MARKERSET] [--max-speed MM_PER_FRAME] [--keep-fragments]\n"
+    "      [--rate HZ] [--save-marker-set FILE.json] [--json]\n"
+    "                       unlabelled points (C3D/TRC fragments or CSV frame,x,y,z) into labelled trajectories\n"
+    "  fix-swaps IN -o OUT [--report FILE.json] [--jump-factor F] [--json]\n"
+    "                       find and repair frames where two labels exchange\n"
+    "  eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--keep-fragments] [--json]\n"
+    "                       label recovery of a fragmented unlabelled copy; injected swaps found\n";
 
 } // namespace
 
@@ -48,6 +55,9 @@ int main(int argc, char** argv)
       {"pfa", runPfa},
       {"eval-fill", runEvalFill},
       {"clean", runClean},
+      {"track", runTrack},
+      {"fix-swaps", runFixSwaps},
+      {"eval-track", runEvalTrack},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";

@@ -2,6 +2,7 @@
 
 #include "mocap/error.h"
 #include "mocap/file_io.h"
+#include "mocap/marker_set_io.h"
 #include "mocap/text.h"
 
 #include <Eigen/Eigenvalues>
@@ -147,7 +148,21 @@ MarkerSymmetry parseMarkerPairs(std::string_view text, const std::vector<std::st
 
 MarkerSymmetry readMarkerPairs(const std::filesystem::path& path, const std::vector<std::string>& labels)
 {
-  return parseMarkerPairs(readFileBytes(path), labels, path.string());
+  if (lowerExtension(path) != "json")
+    return parseMarkerPairs(readFileBytes(path), labels, path.string());
+  // A marker-set file: its pairs by label, mapped onto `labels`.
+  const MarkerSet set = readMarkerSet(path);
+  const auto indexOf = [&](Eigen::Index i) {
+    const std::string& label = set.labels[static_cast<std::size_t>(i)];
+    const auto it = std::find(labels.begin(), labels.end(), label);
+    if (it == labels.end())
+      throw FormatError(path.string(), "pair label '" + label + "' is not a marker of the take");
+    return static_cast<Eigen::Index>(it - labels.begin());
+  };
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> pairs;
+  for (const LabelPair& pair : set.pairs)
+    pairs.emplace_back(indexOf(pair.first), indexOf(pair.second));
+  return MarkerSymmetry(static_cast<Eigen::Index>(labels.size()), pairs);
 }
 
 std::vector<std::string> mirroredLabelCandidates(std::string_view label)

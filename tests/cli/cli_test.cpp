@@ -2,6 +2,9 @@
 #include "../core/test_support.h"
 
 #include "mocap/file_io.h"
+#include "mocap/marker_set_io.h"
+#include "mocap/take_io.h"
+#include "mocap/tracking_evaluation.h"
 
 #include <gtest/gtest.h>
 
@@ -188,6 +191,77 @@ TEST(Cli, FailedConvertLeavesNoOutputFile)
   const CommandResult same = runMocap("convert " + q(dir.file("cut.c3d")) + " " + q(dir.file("cut.c3d")), dir);
   EXPECT_EQ(same.exitCode, 2);
   EXPECT_EQ(readFileBytes(dir.file("cut.c3d")).size(), 1500u);
+}
+
+TEST(Cli, TrackLabelsAnUnlabelledC3dWithATemplateAndFixSwapsRepairs)
+{
+  test::TempDir dir;
+  const Take truth = readTake(test::dataFile("trc/NoseMoCap.trc"));
+  const UnlabelledCopy copy = makeUnlabelledCopy(truth);
+  writeTake(copy.take, dir.file("unlabelled.c3d"));
+  writeMarkerSet(markerSetFromTake(truth), dir.file("set.json"));
+  for (const std::string& templ : {q(test::dataFile("trc/NoseMoCap.trc")), q(dir.file("set.json"))}) {
+    const CommandResult run = runMocap("track " + q(dir.file("unlabelled.c3d")) + " -o " + q(dir.file("out.c3d")) +
+                                           " --template " + templ + " --max-speed 8 --json",
+                                       dir);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    for (const char* key : {"\"fragments\"", "\"labelled_fragments\"", "\"unlabelled_samples\"", "\"gate\": 8"})
+      EXPECT_NE(run.out.find(key), std::string::npos) << key << "\n" << run.out;
+    // C3D stores floats: compare against the truth as written and read back.
+    writeTake(truth, dir.file("truth.c3d"));
+    const Take truthAsC3d = readTake(dir.file("truth.c3d"));
+    EXPECT_GE(labelAgreement(truthAsC3d, readTake(dir.file("out.c3d")), copy.kept), 0.995);
+  }
+
+  std::vector<InjectedSwap> injected;
+  writeTake(makeSwappedCopy(truth, {}, injected), dir.file("swapped.trc"));
+  const CommandResult fix = runMocap("fix-swaps " + q(dir.file("swapped.trc")) + " -o " + q(dir.file("fixed.trc")) +
+                                         " --report " + q(dir.file("swaps.json")),
+                                     dir);
+  ASSERT_EQ(fix.exitCode, 0) << fix.err;
+  const std::string report = readFileBytes(dir.file("swaps.json"));
+  EXPECT_NE(report.find("\"count\": " + std::to_string(2 * injected.size())), std::string::npos) << report;
+  EXPECT_NE(report.find("\"first\": \""), std::string::npos);
+  writeTake(truth, dir.file("truth.trc"));
+  EXPECT_EQ(labelAgreement(readTake(dir.file("truth.trc")), readTake(dir.file("fixed.trc")), {}), 1.0);
+
+  const CommandResult eval = runMocap("eval-track " + q(test::dataFile("trc/NoseMoCap.trc")) + " --seed 3 --json", dir);
+  ASSERT_EQ(eval.exitCode, 0) << eval.err;
+  for (const char* key : {"\"label_recovery\"", "\"swaps_found\"", "\"false_alarms\""})
+    EXPECT_NE(eval.out.find(key), std::string::npos) << key;
+
+  EXPECT_EQ(runMocap("track " + q(dir.file("unlabelled.c3d")), dir).exitCode, 2) << "-o is required";
+  EXPECT_EQ(runMocap("track " + q(dir.file("unlabelled.c3d")) + " -o " + q(dir.file("x.c3d")) + " --max-speed -3", dir)
+                .exitCode,
+            2);
+  writeFileAtomically(dir.file("bad.json"), "{\"format\": \"mocap-marker-set\", \"version\": 1, \"markers\": [");
+  const CommandResult bad = runMocap("track " + q(dir.file("unlabelled.c3d")) + " -o " + q(dir.file("x.c3d")) +
+                                         " --template " + q(dir.file("bad.json")),
+                                     dir);
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("bad.json"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
+}
+
+TEST(Cli, TrackReadsACsvOfRawPoints)
+{
+  test::TempDir dir;
+  std::string csv = "frame,x,y,z\n";
+  for (int f = 0; f < 50; ++f)  // three points 40 mm apart drifting 1 mm per frame
+    for (int p = 0; p < 3; ++p)
+      csv += std::to_string(f) + "," + std::to_string(40 * p + f) + ",0,0\n";
+  writeFileAtomically(dir.file("points.csv"), csv);
+  const CommandResult run = runMocap("track " + q(dir.file("points.csv")) + " -o " + q(dir.file("out.trc")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("\"fragments\": 3"), std::string::npos) << run.out;
+  const Take out = readTake(dir.file("out.trc"));
+  EXPECT_EQ(out.markerCount(), 3);
+  EXPECT_EQ(out.frameCount(), 50);
+  EXPECT_EQ(out.validFraction(), 1.0);
+  writeFileAtomically(dir.file("broken.csv"), "0,1,2,3\n1,2,oops,4\n");
+  const CommandResult broken = runMocap("track " + q(dir.file("broken.csv")) + " -o " + q(dir.file("y.trc")), dir);
+  EXPECT_EQ(broken.exitCode, 1);
+  EXPECT_NE(broken.err.find("line 2"), std::string::npos) << broken.err;
 }
 
 } // namespace

@@ -51,7 +51,9 @@ private:
 [[nodiscard]] MarkerSymmetry parseMarkerPairs(std::string_view text, const std::vector<std::string>& labels,
                                               const std::string& sourceName);
 
-/// parseMarkerPairs on a file's content. Throws IoError when it cannot be read. O(file size + #labels).
+/// parseMarkerPairs on a file's content, or, for a .json marker-set file (marker_set_io.h), its
+/// pairs by label (FormatError for a label not in `labels`). Throws IoError when it cannot be
+/// read. O(file size + #labels).
 [[nodiscard]] MarkerSymmetry readMarkerPairs(const std::filesystem::path& path,
                                              const std::vector<std::string>& labels);
 

@@ -1,0 +1,83 @@
+// `mocap eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--keep-fragments]
+// [--json]`: the
+// issue-8 protocol (core/include/mocap/tracking_evaluation.h): label recovery of an unlabelled,
+// fragmented copy and swaps found / false alarms on a copy with injected swaps.
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/json_writer.h"
+#include "mocap/take_io.h"
+#include "mocap/tracking_evaluation.h"
+
+#include <iostream>
+
+namespace mocap::cli {
+
+namespace {
+
+std::string evaluationJson(const std::string& file, const TrackingEvaluation& e)
+{
+  JsonWriter json;
+  json.beginObject();
+  json.key("take").value(file);
+  json.key("seed").value(static_cast<std::int64_t>(e.seed));
+  json.key("markers").value(static_cast<std::int64_t>(e.markers));
+  json.key("frames").value(static_cast<std::int64_t>(e.frames));
+  json.key("fragments").value(static_cast<std::int64_t>(e.fragments));
+  json.key("tracked_fragments").value(static_cast<std::int64_t>(e.track.fragments));
+  json.key("unlabelled_fragments").value(static_cast<std::int64_t>(e.track.unlabelledFragments));
+  json.key("samples").value(static_cast<std::int64_t>(e.samples));
+  json.key("recovered").value(static_cast<std::int64_t>(e.recovered));
+  json.key("label_recovery").value(e.labelRecovery);
+  json.key("clean_samples").value(static_cast<std::int64_t>(e.cleanSamples));
+  json.key("clean_recovered").value(static_cast<std::int64_t>(e.cleanRecovered));
+  json.key("clean_label_recovery").value(e.cleanLabelRecovery);
+  json.key("swaps_injected").value(e.swapsInjected);
+  json.key("swaps_found").value(e.swapsFound);
+  json.key("false_alarms").value(e.falseAlarms);
+  json.key("swaps_in_original").value(e.swapsInOriginal);
+  json.key("swapped_agreement").value(e.swappedAgreement);
+  json.key("repaired_agreement").value(e.repairedAgreement);
+  json.endObject();
+  return json.str() + "\n";
+}
+
+} // namespace
+
+int runEvalTrack(const std::vector<std::string>& args)
+{
+  const Arguments arguments(args, {"--json", "--keep-fragments"}, {"--seed", "--fragment-length", "--cut-gap", "--swaps"});
+  arguments.expectPositionals(1, "one labelled take");
+  const std::string file = arguments.positionals()[0];
+  TrackingEvaluationOptions options;
+  if (const auto seed = arguments.integer("--seed", 0, 1LL << 53))
+    options.seed = static_cast<std::uint64_t>(*seed);
+  if (const auto length = arguments.integer("--fragment-length", 1, 1000000))
+    options.meanFragmentLength = static_cast<Eigen::Index>(*length);
+  if (const auto gap = arguments.integer("--cut-gap", 0, 1000))
+    options.maxCutGap = static_cast<Eigen::Index>(*gap);
+  if (const auto swaps = arguments.integer("--swaps", 0, 1000))
+    options.swaps = static_cast<int>(*swaps);
+  options.track.retrack = !arguments.has("--keep-fragments");
+  std::vector<std::string> warnings;
+  const Take take = readTake(file, &warnings);
+  const TrackingEvaluation e = evaluateTracking(take, options);
+  if (arguments.has("--json")) {
+    std::cout << evaluationJson(file, e);
+    return kExitOk;
+  }
+  std::cout << file << ": " << e.markers << " markers, " << e.frames << " frames, seed " << e.seed << '\n'
+            << "  labelling: " << e.fragments << " fragments (" << e.track.fragments << " after re-tracking), "
+            << fixedNumber(100.0 * e.labelRecovery, 3) << " % of " << e.samples
+            << " samples back under their true label\n"
+            << "             " << fixedNumber(100.0 * e.cleanLabelRecovery, 3) << " % of the " << e.cleanSamples
+            << " samples in runs of the take without a jump (its own tracking errors left out)\n"
+            << "  swaps: " << e.swapsFound << " of " << e.swapsInjected << " found, " << e.falseAlarms
+            << " false alarms (" << e.swapsInOriginal << " in the untouched take); agreement "
+            << fixedNumber(100.0 * e.swappedAgreement, 3) << " % -> " << fixedNumber(100.0 * e.repairedAgreement, 3)
+            << " %\n";
+  return kExitOk;
+}
+
+} // namespace mocap::cli

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mocap {
+
+/// A parsed JSON value (RFC 8259): null, boolean, number, string, array or object. Objects keep
+/// their keys sorted; a repeated key keeps its last value.
+class JsonValue
+{
+public:
+  enum class Type { Null, Boolean, Number, String, Array, Object };
+
+  JsonValue() = default;
+  [[nodiscard]] Type type() const { return m_type; }
+  [[nodiscard]] bool isNull() const { return m_type == Type::Null; }
+  [[nodiscard]] bool isNumber() const { return m_type == Type::Number; }
+  [[nodiscard]] bool isString() const { return m_type == Type::String; }
+  [[nodiscard]] bool isArray() const { return m_type == Type::Array; }
+  [[nodiscard]] bool isObject() const { return m_type == Type::Object; }
+
+  /// The value as the type asked for; throws InvalidArgument naming `what` when it is another type.
+  [[nodiscard]] double number(const std::string& what) const;
+  [[nodiscard]] const std::string& string(const std::string& what) const;
+  [[nodiscard]] const std::vector<JsonValue>& array(const std::string& what) const;
+  /// The member `key` of an object, or nullptr when absent; throws when this is not an object.
+  [[nodiscard]] const JsonValue* find(const std::string& key, const std::string& what) const;
+  [[nodiscard]] const std::map<std::string, JsonValue>& object(const std::string& what) const;
+
+private:
+  friend class JsonParser;
+  Type m_type = Type::Null;
+  bool m_boolean = false;
+  double m_number = 0.0;
+  std::string m_string;
+  std::vector<JsonValue> m_array;
+  std::shared_ptr<std::map<std::string, JsonValue>> m_object;
+};
+
+/// Parses one JSON document. Throws FormatError(sourceName, byte offset, message) for malformed
+/// text, trailing content or nesting deeper than 256. O(text size).
+[[nodiscard]] JsonValue parseJson(std::string_view text, const std::string& sourceName);
+
+} // namespace mocap

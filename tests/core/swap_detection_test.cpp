@@ -1,0 +1,92 @@
+#include "test_support.h"
+
+#include "mocap/error.h"
+#include "mocap/swap_detection.h"
+#include "mocap/take_io.h"
+#include "mocap/tracking_evaluation.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mocap {
+namespace {
+
+Take noseTake()
+{
+  return readTake(test::dataFile("trc/NoseMoCap.trc"));
+}
+
+TEST(SwapDetection, FindsAndRepairsInjectedSwapsOfNeighbouringMarkers)
+{
+  const Take take = noseTake();
+  for (const std::uint64_t seed : {1U, 2U, 3U}) {
+    TrackingEvaluationOptions options;
+    options.seed = seed;
+    options.swaps = 8;
+    std::vector<InjectedSwap> injected;
+    Take swapped = makeSwappedCopy(take, options, injected);
+    ASSERT_EQ(injected.size(), 8U);
+    EXPECT_LT(labelAgreement(take, swapped, {}), 0.99);
+    const std::vector<LabelSwap> found = repairSwaps(swapped);
+    EXPECT_EQ(labelAgreement(take, swapped, {}), 1.0) << "seed " << seed;
+    ASSERT_EQ(found.size(), 2 * injected.size());  // each swap and its swap back
+    for (const InjectedSwap& swap : injected) {
+      const auto at = [&](Eigen::Index frame) {
+        return std::any_of(found.begin(), found.end(), [&](const LabelSwap& s) {
+          return s.frame == frame && s.first == swap.first && s.second == swap.second;
+        });
+      };
+      EXPECT_TRUE(at(swap.begin));
+      EXPECT_TRUE(at(swap.end));
+    }
+  }
+}
+
+TEST(SwapDetection, DetectLeavesTheTakeAloneAndFindsNothingInACleanTake)
+{
+  const Take take = noseTake();
+  EXPECT_TRUE(detectSwaps(take).empty());
+  TrackingEvaluationOptions options;
+  std::vector<InjectedSwap> injected;
+  const Take swapped = makeSwappedCopy(take, options, injected);
+  const Take before = swapped;
+  EXPECT_EQ(detectSwaps(swapped).size(), 2 * injected.size());
+  EXPECT_EQ(labelAgreement(before, swapped, {}), 1.0);
+}
+
+TEST(SwapDetection, ExchangingTwiceRestoresTheTake)
+{
+  const Take take = noseTake();
+  Take copy = take;
+  copy.setState(500, 3, SampleState::Edited);
+  const Take edited = copy;
+  exchangeMarkersFrom(copy, 3, 9, 400);
+  EXPECT_EQ(copy.position(600, 3), take.position(600, 9));
+  EXPECT_EQ(copy.state(500, 9), SampleState::Edited);
+  EXPECT_EQ(copy.position(399, 3), take.position(399, 3));
+  exchangeMarkersFrom(copy, 3, 9, 400);
+  EXPECT_EQ(labelAgreement(edited, copy, {}), 1.0);
+  EXPECT_EQ(copy.state(500, 3), SampleState::Edited);
+  EXPECT_THROW(exchangeMarkersFrom(copy, 3, copy.markerCount(), 0), InvalidArgument);
+}
+
+TEST(SwapDetection, RejectsOptionsOutOfRange)
+{
+  Take take = noseTake();
+  SwapOptions options;
+  options.jumpFactor = 1.0;
+  EXPECT_THROW((void)repairSwaps(take, options), InvalidArgument);
+  options = {};
+  options.swappedFraction = 1.0;
+  EXPECT_THROW((void)repairSwaps(take, options), InvalidArgument);
+  options = {};
+  options.minJump = std::nan("");
+  EXPECT_THROW((void)repairSwaps(take, options), InvalidArgument);
+  Take empty;
+  EXPECT_TRUE(repairSwaps(empty).empty());
+}
+
+} // namespace
+} // namespace mocap

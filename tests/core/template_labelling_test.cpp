@@ -1,0 +1,118 @@
+#include "test_support.h"
+
+#include "mocap/error.h"
+#include "mocap/fragment_joining.h"
+#include "mocap/take_io.h"
+#include "mocap/template_labelling.h"
+#include "mocap/tracking_evaluation.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+namespace mocap {
+namespace {
+
+Take noseTake()
+{
+  return readTake(test::dataFile("trc/NoseMoCap.trc"));
+}
+
+PointSet randomPoints(Eigen::Index n)
+{
+  std::srand(3);
+  return PointSet::Random(n, 3) * 50.0;
+}
+
+TEST(TemplateLabelling, SimilarityFitRecoversScaleRotationAndTranslation)
+{
+  const PointSet from = randomPoints(8);
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  PointSet to(from.rows(), 3);
+  for (Eigen::Index i = 0; i < from.rows(); ++i)
+    to.row(i) = (1.3 * (rotation * from.row(i).transpose()) + Eigen::Vector3d(5, -7, 11)).transpose();
+  const Similarity s = fitSimilarity(from, to);
+  EXPECT_NEAR(s.scale, 1.3, 1e-10);
+  EXPECT_LT((s.rotation - rotation).norm(), 1e-10);
+  EXPECT_LT((s.translation - Eigen::Vector3d(5, -7, 11)).norm(), 1e-9);
+  EXPECT_THROW((void)fitSimilarity(from, to.topRows(3)), InvalidArgument);
+}
+
+TEST(TemplateLabelling, AlignsATemplateToShuffledMovedPointsWithoutCorrespondences)
+{
+  const Take take = noseTake();
+  const MarkerSet set = markerSetFromTake(take);
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  PointSet moved(set.size(), 3);
+  for (Eigen::Index i = 0; i < set.size(); ++i)  // reversed order: no correspondence by index
+    moved.row(set.size() - 1 - i) = (rotation * set.neutral.row(i).transpose() + Eigen::Vector3d(40, 10, -30)).transpose();
+  double residual = -1.0;
+  const Similarity s = alignTemplate(set.neutral, moved.topRows(set.size() - 4), &residual);  // four points missing
+  EXPECT_LT(residual, 1e-6);
+  for (Eigen::Index i = 4; i < set.size(); ++i)
+    EXPECT_LT((s.apply(set.neutral.row(i).transpose()) - moved.row(set.size() - 1 - i).transpose()).norm(), 1e-6);
+}
+
+TEST(TemplateLabelling, RecoversTheLabelsOfAFragmentedUnlabelledTake)
+{
+  const Take take = noseTake();
+  TrackingEvaluationOptions options;
+  options.seed = 4;
+  const UnlabelledCopy copy = makeUnlabelledCopy(take, options);
+  ASSERT_GT(copy.fragments, 100);
+  for (const bool retrack : {true, false}) {
+    TrackOptions track;
+    track.retrack = retrack;
+    // A template moved rigidly away from the data: the labeller must find the alignment itself.
+    MarkerSet set = markerSetFromTake(take);
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    for (Eigen::Index i = 0; i < set.size(); ++i)
+      set.neutral.row(i) = (turn * set.neutral.row(i).transpose() + Eigen::Vector3d(300, 0, 0)).transpose();
+    TrackReport report;
+    const Take labelled = trackTake(copy.take, &set, track, &report);
+    EXPECT_GE(labelAgreement(take, labelled, copy.kept), 0.995) << "retrack " << retrack;
+    EXPECT_EQ(report.labelledSamples + report.unlabelledSamples, copy.kept.count());
+    for (Eigen::Index m = 0; m < set.size(); ++m)
+      EXPECT_EQ(labelled.label(m), set.labels[static_cast<std::size_t>(m)]);
+  }
+}
+
+TEST(TemplateLabelling, JoinsAnUnlabelledFragmentIntoTheGapItFills)
+{
+  Take take = noseTake();
+  const Take truth = take;
+  const Eigen::Index marker = 7;
+  const Eigen::Index stray = take.addMarker("Unlabeled1");
+  for (Eigen::Index f = 300; f < 420; ++f) {  // move a stretch of the marker to an unlabelled one
+    take.setPosition(f, stray, take.position(f, marker));
+    take.valid()(f, stray) = take.isValid(f, marker);
+    take.residuals()(f, stray) = 0.0;
+    take.valid()(f, marker) = false;
+  }
+  TrackOptions options;
+  options.retrack = false;
+  TrackReport report;
+  const Take joined = trackTake(take, nullptr, options, &report);
+  EXPECT_EQ(joined.markerCount(), truth.markerCount());  // nothing left unlabelled
+  EXPECT_EQ(report.unlabelledFragments, 0);
+  EXPECT_EQ(labelAgreement(truth, joined, {}), 1.0);
+}
+
+TEST(TemplateLabelling, RejectsBadOptions)
+{
+  Take take = noseTake();
+  const MarkerSet set = markerSetFromTake(take);
+  LabellingOptions options;
+  options.gateFactor = 0.0;
+  EXPECT_THROW((void)labelFragments(take, {}, set, options), InvalidArgument);
+  options = {};
+  options.neighbours = 2;
+  EXPECT_THROW((void)labelFragments(take, {}, set, options), InvalidArgument);
+  Fragment outside;
+  outside.first = take.frameCount();
+  outside.positions.emplace_back(0, 0, 0);
+  EXPECT_THROW((void)labelFragments(take, {outside}, set), InvalidArgument);
+}
+
+} // namespace
+} // namespace mocap
