@@ -39,13 +39,13 @@ void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
 /// Steps through every frame with the selection's trails drawn, painting synchronously, and
 /// prints frame-time statistics as JSON (the playback budget at 100 Hz is 10 ms), with the time
 /// the file took to open (read, table statistics, views).
-int profilePlayback(mocap::studio::MainWindow& window, double openSeconds)
+int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen::Index maxFrames)
 {
   window.resize(1280, 800);
   window.show();
   QApplication::processEvents();
   auto& document = window.document();
-  const Eigen::Index frames = document.take().frameCount();
+  const Eigen::Index frames = std::min(document.take().frameCount(), maxFrames);
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(frames));
   QElapsedTimer total;
@@ -101,7 +101,10 @@ int main(int argc, char** argv)
                                   QStringLiteral("LABELS"));
   const QCommandLineOption profile(QStringLiteral("profile"),
                                    QStringLiteral("Step through every frame, print frame times as JSON, exit."));
-  parser.addOptions({screenshot, frame, select, profile});
+  const QCommandLineOption profileFrames(QStringLiteral("profile-frames"),
+                                         QStringLiteral("With --profile, step through only the first N frames."),
+                                         QStringLiteral("N"));
+  parser.addOptions({screenshot, frame, select, profile, profileFrames});
   parser.process(app);
 
   mocap::studio::MainWindow window;
@@ -127,8 +130,16 @@ int main(int argc, char** argv)
     }
     window.document().setCurrentFrame(static_cast<Eigen::Index>(number - window.document().take().firstFrame()));
   }
-  if (parser.isSet(profile))
-    return profilePlayback(window, openSeconds);
+  if (parser.isSet(profile)) {
+    bool ok = true;
+    const qlonglong limit = parser.isSet(profileFrames) ? parser.value(profileFrames).toLongLong(&ok) : -1;
+    if (!ok || (parser.isSet(profileFrames) && limit < 1)) {
+      std::cerr << "mocap-studio: --profile-frames needs a positive number of frames\n";
+      return 2;
+    }
+    return profilePlayback(window, openSeconds,
+                           limit > 0 ? static_cast<Eigen::Index>(limit) : window.document().take().frameCount());
+  }
   if (parser.isSet(screenshot))
     scheduleScreenshot(window, parser.value(screenshot));
   window.show();

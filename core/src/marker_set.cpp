@@ -1,9 +1,13 @@
 #include "mocap/marker_set.h"
 
+#include "mocap/marker_links.h"
+
 #include "mocap/error.h"
 #include "mocap/text.h"
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <cctype>
 #include <set>
 
@@ -41,19 +45,7 @@ Eigen::Index nearestValidFrame(const Take& take, Eigen::Index marker, Eigen::Ind
 
 std::vector<LabelPair> nearestLinks(const PointSet& points)
 {
-  std::set<LabelPair> links;
-  const Eigen::Index n = points.rows();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    std::vector<std::pair<double, Eigen::Index>> byDistance;
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (j != i)
-        byDistance.emplace_back((points.row(i) - points.row(j)).squaredNorm(), j);
-    const auto count = std::min<std::size_t>(static_cast<std::size_t>(kLinksPerMarker), byDistance.size());
-    std::partial_sort(byDistance.begin(), byDistance.begin() + static_cast<std::ptrdiff_t>(count), byDistance.end());
-    for (std::size_t k = 0; k < count; ++k)
-      links.insert({std::min(i, byDistance[k].second), std::max(i, byDistance[k].second)});
-  }
-  return {links.begin(), links.end()};
+  return nearestNeighbourLinks(points, kLinksPerMarker, std::numeric_limits<double>::infinity());
 }
 
 } // namespace
@@ -117,6 +109,13 @@ Eigen::Index mostCompleteFrame(const Take& take, const std::vector<Eigen::Index>
     }
   }
   return best;
+}
+
+Eigen::Index mostCompleteFrame(const Take& take)
+{
+  std::vector<Eigen::Index> all(static_cast<std::size_t>(take.markerCount()));
+  std::iota(all.begin(), all.end(), Eigen::Index{0});
+  return mostCompleteFrame(take, all);
 }
 
 MarkerSet markerSetFromTake(const Take& take, Eigen::Index frame)

@@ -126,6 +126,7 @@ TEST(MarkerEdits, SwapOverRangeExchangesOnlyThatRangeAndSwapsBack)
 } // namespace mocap
 
 #include "mocap/marker_links.h"
+#include "mocap/marker_set.h"
 
 namespace mocap {
 namespace {

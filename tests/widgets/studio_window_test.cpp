@@ -15,6 +15,7 @@
 #include "mocap/file_io.h"
 #include "mocap/gaps.h"
 #include "mocap/marker_links.h"
+#include "mocap/marker_set.h"
 
 #include <QAction>
 #include <QApplication>

@@ -4,6 +4,7 @@
 #include "views/sample_colors.h"
 
 #include "mocap/marker_links.h"
+#include "mocap/marker_set.h"
 #include "views/vtk_viewport.h"
 
 #include <QLabel>

@@ -2,6 +2,8 @@
 
 #include "mocap/take.h"
 
+#include <Eigen/Core>
+
 #include <utility>
 #include <vector>
 
@@ -10,14 +12,15 @@ namespace mocap {
 /// A line drawn between two markers (indices, first < second) so the face reads as a surface.
 using MarkerLink = std::pair<Eigen::Index, Eigen::Index>;
 
-/// The frame with the most valid markers (the first of equals): a stand-in for the neutral frame
-/// when none is given. −1 for an empty take. O(#frames · #markers).
-[[nodiscard]] Eigen::Index mostCompleteFrame(const Take& take);
+/// Links each point (a row) to its `neighbours` nearest other points, dropping links longer than
+/// `maxRatio` × the median link (infinity keeps all), as row index pairs, sorted, without repeats.
+/// Throws InvalidArgument for neighbours < 1 or maxRatio not > 0. O(#points² log #points).
+[[nodiscard]] std::vector<MarkerLink> nearestNeighbourLinks(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& points,
+                                                            int neighbours, double maxRatio);
 
-/// Links each marker valid in `frame` to its `neighbours` nearest valid markers there, dropping
-/// links longer than `maxRatio` × the median link (a stray marker does not get drawn across the
-/// face). Sorted, without repeats. Throws InvalidArgument for a frame outside the take,
-/// neighbours < 1 or maxRatio ≤ 0. O(#markers² log #markers).
+/// The same over the markers valid (and finite) in `frame` of a take, as marker indices: by
+/// default each to its three nearest, without links over twice the median (a stray marker is
+/// not drawn across the face). Also throws InvalidArgument for a frame outside the take.
 [[nodiscard]] std::vector<MarkerLink> nearestNeighbourLinks(const Take& take, Eigen::Index frame, int neighbours = 3,
                                                             double maxRatio = 2.0);
 

@@ -45,6 +45,8 @@ void validateMarkerSet(const MarkerSet& set);
 /// The frame where most of `markers` are valid (the first such frame): the neutral frame a
 /// template is taken from. −1 when none is ever valid. O(#frames · #markers).
 [[nodiscard]] Eigen::Index mostCompleteFrame(const Take& take, const std::vector<Eigen::Index>& markers);
+/// The same over all markers of the take.
+[[nodiscard]] Eigen::Index mostCompleteFrame(const Take& take);
 
 /// A marker set from a labelled take: its labelled markers (isUnlabelledLabel ones and markers
 /// never valid are left out), their positions in `frame` (−1: mostCompleteFrame) or, for a marker
