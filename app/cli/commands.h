@@ -30,4 +30,12 @@ int runSmoothTable(const std::vector<std::string>& args);
 /// `mocap pfa TAKE [TAKE...] ...`: marker layout planning (Principal Feature Analysis and greedy).
 int runPfa(const std::vector<std::string>& args);
 
+/// `mocap deform --mesh FACE.obj --binding BIND.json --take TAKE ... -o OUT.pc2|OUTDIR`: RBF or
+/// Laplacian face-mesh deformation driven by the take's markers.
+int runDeform(const std::vector<std::string>& args);
+
+/// `mocap bind --mesh FACE.obj --take TAKE [--pairs LABEL=VERTEX,...] -o BIND.json`: binds markers
+/// to mesh points (similarity alignment of the neutral frame, nearest surface points).
+int runBind(const std::vector<std::string>& args);
+
 } // namespace mocap::cli

@@ -32,7 +32,16 @@ constexpr const char* kUsage =
     "  pfa TAKE [TAKE...] [--method pfa|greedy] [--variance 0.98] [--restarts 1000] [--k MIN:MAX]\n"
     "      [--seed S] [--pairs FILE] [--stabilize LABELS] [--keyposes auto|F1,F2,...] [--json]\n"
     "      [--curve OUT.csv] [--export-subset K OUT.c3d]\n"
-    "                       marker layout planning: error vs marker count, recommended size\n";
+    "                       marker layout planning: error vs marker count, recommended size\n"
+    "  bind --mesh FACE.obj --take TAKE [--pairs LABEL=VERTEX,...] [--neutral FRAME] [--stabilize LABELS]\n"
+    "      [--markers LABELS] [--vertices FIRST:LAST] -o BIND.json [--json]\n"
+    "                       bind markers to mesh points; per-marker residuals\n"
+    "  deform --mesh FACE.obj --binding BIND.json --take TAKE [--neutral FRAME] [--method rbf|laplacian]\n"
+    "      [--kernel exp|gaussian|biharmonic|thin-plate] [--radius C] [--regions] [--no-affine] [--up x|y|z]\n"
+    "      [--weights uniform|cotangent|mean-value] [--constraint-weight W] [--stabilize LABELS]\n"
+    "      [--scale uniform|per-axis] [--frames FIRST:LAST] [--leave-out FRACTION] [--seed S] [--ply]\n"
+    "      -o OUT.pc2|OUTDIR [--json]\n"
+    "                       deform a face mesh by the take; PC2 cache or one mesh per frame\n";
 
 } // namespace
 
@@ -48,6 +57,8 @@ int main(int argc, char** argv)
       {"pfa", runPfa},
       {"eval-fill", runEvalFill},
       {"clean", runClean},
+      {"deform", runDeform},
+      {"bind", runBind},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";
