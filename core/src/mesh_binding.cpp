@@ -268,14 +268,16 @@ struct IcpResult
   double rms = std::numeric_limits<double>::infinity();
 };
 
-IcpResult icp(const Eigen::Ref<const PointSet>& markers, const PointSet& candidates, Similarity start, int iterations)
+// `closest` maps a point to the nearest point of the target (a vertex or a surface point).
+template <typename Closest>
+IcpResult icp(const Eigen::Ref<const PointSet>& markers, const Closest& closest, Similarity start, int iterations)
 {
   IcpResult result{start, std::numeric_limits<double>::infinity()};
   PointSet matched(markers.rows(), 3);
   for (int it = 0; it < iterations; ++it) {
-    const PointSet moved = result.transform.apply(markers);
+    const PointSet moved = result.transform.applyToRows(markers);
     for (Eigen::Index m = 0; m < markers.rows(); ++m)
-      matched.row(m) = candidates.row(nearest(candidates, moved.row(m).transpose()));
+      matched.row(m) = closest(Eigen::Vector3d(moved.row(m).transpose())).transpose();
     const double rms = std::sqrt((moved - matched).rowwise().squaredNorm().mean());
     if (rms >= result.rms * (1.0 - 1e-9) && it > 0)
       break;
@@ -341,26 +343,44 @@ MeshBinding autoBind(const Mesh& mesh, const std::vector<std::string>& labels, c
     }
     binding.alignment = fitSimilarity(from, to);
   } else {
-    // The 8 right-handed sign choices of matching principal axes (two orders of the two largest).
+    // Starts: the 8 right-handed sign choices of matching principal axes (two orders of the two
+    // largest), each also turned ±20° about every axis, since the markers cover only part of the
+    // mesh and their axes match the mesh's only roughly. Every start runs a cheap ICP to the
+    // nearest vertex; the best few are refined against the surface.
     const Frame3 source = principalFrame(neutral);
     const Frame3 target = principalFrame(candidates);
-    IcpResult best;
+    const auto toVertex = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+      return candidates.row(nearest(candidates, p)).transpose();
+    };
+    const auto toSurface = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+      return closestSurfacePoint(mesh.vertices, triangles, p).first.on(mesh.vertices);
+    };
+    std::vector<IcpResult> coarse;
     for (int order = 0; order < 2; ++order)
-      for (int signs = 0; signs < 4; ++signs) {
-        Eigen::Matrix3d axes = target.axes;
-        if (order == 1)
-          axes.col(0).swap(axes.col(1));
-        axes.col(0) *= (signs & 1) ? -1.0 : 1.0;
-        axes.col(1) *= (signs & 2) ? -1.0 : 1.0;
-        axes.col(2) = axes.col(0).cross(axes.col(1));
-        Similarity start;
-        start.rotation = axes * source.axes.transpose();
-        start.scale = source.radius > 0.0 ? target.radius / source.radius : 1.0;
-        start.translation = target.centre - start.scale * start.rotation * source.centre;
-        const IcpResult result = icp(neutral, candidates, start, options.icpIterations);
-        if (result.rms < best.rms)
-          best = result;
-      }
+      for (int signs = 0; signs < 4; ++signs)
+        for (int turn = 0; turn < 7; ++turn) {
+          Eigen::Matrix3d axes = target.axes;
+          if (order == 1)
+            axes.col(0).swap(axes.col(1));
+          axes.col(0) *= (signs & 1) ? -1.0 : 1.0;
+          axes.col(1) *= (signs & 2) ? -1.0 : 1.0;
+          axes.col(2) = axes.col(0).cross(axes.col(1));
+          const double angle = turn == 0 ? 0.0 : (turn % 2 ? 0.35 : -0.35);
+          const Eigen::Matrix3d tilt =
+              Eigen::AngleAxisd(angle, target.axes.col(turn == 0 ? 0 : (turn - 1) / 2)).toRotationMatrix();
+          Similarity start;
+          start.rotation = tilt * axes * source.axes.transpose();
+          start.scale = source.radius > 0.0 ? target.radius / source.radius : 1.0;
+          start.translation = target.centre - start.scale * start.rotation * source.centre;
+          coarse.push_back(icp(neutral, toVertex, start, options.icpIterations));
+        }
+    std::sort(coarse.begin(), coarse.end(), [](const IcpResult& a, const IcpResult& b) { return a.rms < b.rms; });
+    IcpResult best;
+    for (std::size_t i = 0; i < std::min<std::size_t>(4, coarse.size()); ++i) {
+      const IcpResult refined = icp(neutral, toSurface, coarse[i].transform, options.icpIterations);
+      if (refined.rms < best.rms)
+        best = refined;
+    }
     binding.alignment = best.transform;
   }
   for (Eigen::Index m = 0; m < neutral.rows(); ++m) {

@@ -7,7 +7,7 @@
 
 namespace mocap {
 
-PointSet Similarity::apply(const Eigen::Ref<const PointSet>& points) const
+PointSet Similarity::applyToRows(const Eigen::Ref<const PointSet>& points) const
 {
   return ((scale * points * rotation.transpose()).rowwise() + translation.transpose());
 }
@@ -42,7 +42,7 @@ double similarityResidual(const Similarity& transform, const Eigen::Ref<const Po
 {
   if (from.rows() != to.rows() || from.rows() == 0)
     throw InvalidArgument("similarity: residual needs two non-empty point sets of one size");
-  return std::sqrt((transform.apply(from) - to).rowwise().squaredNorm().mean());
+  return std::sqrt((transform.applyToRows(from) - to).rowwise().squaredNorm().mean());
 }
 
 } // namespace mocap

@@ -18,7 +18,7 @@ struct Similarity
     return scale * (rotation * point) + translation;
   }
   /// Every row of `points` mapped. O(#points).
-  [[nodiscard]] PointSet apply(const Eigen::Ref<const PointSet>& points) const;
+  [[nodiscard]] PointSet applyToRows(const Eigen::Ref<const PointSet>& points) const;
 };
 
 /// The similarity minimising Σ‖s·R·fromᵢ + t − toᵢ‖² (Umeyama 1991: R from the Kabsch step on the
