@@ -13,8 +13,7 @@ void MeshDeformer::deform(const Eigen::Ref<const PointSet>& displacements, MeshV
                           std::to_string(controlCount()) + " controls");
   if (!displacements.allFinite())
     throw InvalidArgument("deform: a control displacement is not finite");
-  out = m_rest;
-  out.noalias() += m_response * displacements;
+  addProduct(m_response, displacements, out);
 }
 
 void MeshDeformer::deform(const Eigen::Ref<const PointSet>& displacements, const std::vector<bool>& present,
@@ -30,19 +29,28 @@ void MeshDeformer::deform(const Eigen::Ref<const PointSet>& displacements, const
     deform(displacements, out);
     return;
   }
-  out = m_rest;
-  if (kept.empty())
+  if (kept.empty()) {
+    out = m_rest;
     return;
+  }
   auto found = m_cache.find(present);
   if (found == m_cache.end()) {
     if (m_cache.size() >= 64)
       m_cache.clear();
-    found = m_cache.emplace(present, responseFor(present)).first;
+    found = m_cache.emplace(present, responseFor(present).cast<float>()).first;
   }
   const PointSet subset = displacements(kept, Eigen::all);
   if (!subset.allFinite())
     throw InvalidArgument("deform: a control displacement is not finite");
-  out.noalias() += found->second * subset;
+  addProduct(found->second, subset, out);
+}
+
+void MeshDeformer::addProduct(const Eigen::MatrixXf& response, const PointSet& displacements, MeshVertices& out) const
+{
+  // Column-major single-precision product first (Eigen's fastest layout), then one pass adding
+  // it to the rest positions in double.
+  const Eigen::Matrix<float, Eigen::Dynamic, 3> moved = response * displacements.cast<float>();
+  out = m_rest + moved.cast<double>();
 }
 
 void checkDistinctControls(const Eigen::Ref<const PointSet>& controls, double tolerance,

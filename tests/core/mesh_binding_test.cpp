@@ -171,7 +171,7 @@ TEST(MeshBinding, LeaveOutErrorIsSmallForMotionTheControlsSpan)
   const LeaveOutResult result = evaluateLeaveOut(take, markers, points, 0, retarget, face().vertices, factory);
   EXPECT_EQ(result.hidden.size(), static_cast<std::size_t>(std::lround(0.2 * static_cast<double>(vertices.size()))));
   EXPECT_GT(result.samples, 0);
-  EXPECT_LT(result.meanError, 1e-6);
+  EXPECT_LT(result.meanError, 1e-4);
   EXPECT_GT(result.restError, 0.5);
   // Per-axis scale of a uniformly scaled set is the uniform scale.
   const Retarget perAxis = fitRetarget(markerPositions(take, 0, markers), face().vertices(vertices, Eigen::all),

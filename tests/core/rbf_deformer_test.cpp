@@ -54,7 +54,7 @@ TEST(RbfDeformer, AffineTermReproducesRigidMotionForEveryKernel)
       const RbfDeformer deformer(face().vertices, rowsOf(face().vertices, controls), optionsFor(kernel, regions));
       MeshVertices out;
       deformer.deform(rowsOf(moved, controls) - rowsOf(face().vertices, controls), out);
-      EXPECT_LT((out - moved).cwiseAbs().maxCoeff(), 1e-6 * face().size())
+      EXPECT_LT((out - moved).cwiseAbs().maxCoeff(), 1e-5 * face().size())
           << rbfKernelName(kernel) << (regions ? " with regions" : "");
     }
 }
@@ -83,7 +83,7 @@ TEST(RbfDeformer, InterpolatesControlsExactlyWithAndWithoutRegionsOrAffineTerm)
         MeshVertices out;
         deformer.deform(displacements, out);
         const PointSet reached = rowsOf(out, controls) - rowsOf(face().vertices, controls);
-        EXPECT_LT((reached - displacements).cwiseAbs().maxCoeff(), 1e-7)
+        EXPECT_LT((reached - displacements).cwiseAbs().maxCoeff(), 1e-5)
             << rbfKernelName(kernel) << " regions " << regions << " affine " << affine;
       }
 }
@@ -97,7 +97,7 @@ TEST(RbfDeformer, PrecomputedResponseMatchesTheNaivePerVertexEvaluation)
     MeshVertices fast, direct;
     deformer.deform(displacements, fast);
     deformer.deformDirect(displacements, direct);
-    EXPECT_LT((fast - direct).cwiseAbs().maxCoeff(), 1e-8) << rbfKernelName(kernel);
+    EXPECT_LT((fast - direct).cwiseAbs().maxCoeff(), 1e-4) << rbfKernelName(kernel);
   }
 }
 
@@ -124,8 +124,9 @@ TEST(RbfDeformer, RegionsBlendSmoothlyWithoutSeams)
     RbfOptions options = optionsFor(RbfKernel::Exp, true);
     options.blendWidth = blendWidth;
     const RbfDeformer deformer(face().vertices, rest, options);
-    // Rows of the response sum to 1 (a translation is reproduced) across the blend bands too.
-    EXPECT_LT((deformer.response().rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-8);
+    // Rows of the response sum to 1 (a translation is reproduced) across the blend bands too
+    // (up to the single-precision storage of the response).
+    EXPECT_LT((deformer.response().rowwise().sum().array() - 1.0f).abs().maxCoeff(), 1e-5f);
     MeshVertices out;
     deformer.deform(displacements, out);
     return largestEdgeJump(out - face().vertices);
@@ -156,7 +157,7 @@ TEST(RbfDeformer, MissingControlIsSkippedLikeADeformerWithoutIt)
   const RbfDeformer reference(face().vertices, rowsOf(face().vertices, fewer), optionsFor(RbfKernel::Exp));
   MeshVertices expected;
   reference.deform(fewerDisplacements, expected);
-  EXPECT_LT((skipped - expected).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((skipped - expected).cwiseAbs().maxCoeff(), 1e-5);
 
   std::vector<bool> none(controls.size(), false);
   deformer.deform(withNan, none, skipped);
