@@ -70,49 +70,17 @@ const Fixture* needFixture(benchmark::State& state)
   return f;
 }
 
-void perFrame(benchmark::State& state)
+// Times `step(out)` per iteration and reports frames per second.
+template <typename Step>
+void frames(benchmark::State& state, const Step& step)
 {
+  mocap::MeshVertices out;
+  for (auto _ : state) {
+    step(out);
+    benchmark::DoNotOptimize(out.data());
+  }
   state.counters["frames_per_second"] = benchmark::Counter(static_cast<double>(state.iterations()),
                                                            benchmark::Counter::kIsRate);
-}
-
-void BM_RbfSetup(benchmark::State& state)
-{
-  const Fixture* f = needFixture(state);
-  if (!f)
-    return;
-  for (auto _ : state) {
-    mocap::RbfDeformer deformer(f->mesh.vertices, f->restControls);
-    benchmark::DoNotOptimize(deformer.response().data());
-  }
-}
-
-void BM_RbfFrame(benchmark::State& state)
-{
-  const Fixture* f = needFixture(state);
-  if (!f)
-    return;
-  const mocap::RbfDeformer deformer(f->mesh.vertices, f->restControls);
-  mocap::MeshVertices out;
-  for (auto _ : state) {
-    deformer.deform(f->displacements, out);
-    benchmark::DoNotOptimize(out.data());
-  }
-  perFrame(state);
-}
-
-void BM_RbfFrameNaiveReference(benchmark::State& state)
-{
-  const Fixture* f = needFixture(state);
-  if (!f)
-    return;
-  const mocap::RbfDeformer deformer(f->mesh.vertices, f->restControls);
-  mocap::MeshVertices out;
-  for (auto _ : state) {
-    deformer.deformDirect(f->displacements, out);
-    benchmark::DoNotOptimize(out.data());
-  }
-  perFrame(state);
 }
 
 mocap::LaplacianOptions laplacianOptions(benchmark::State& state)
@@ -122,43 +90,60 @@ mocap::LaplacianOptions laplacianOptions(benchmark::State& state)
   return options;
 }
 
+std::unique_ptr<mocap::RbfDeformer> rbf(const Fixture& f)
+{
+  return std::make_unique<mocap::RbfDeformer>(f.mesh.vertices, f.restControls);
+}
+
+std::unique_ptr<mocap::LaplacianDeformer> laplacian(const Fixture& f, benchmark::State& state)
+{
+  return std::make_unique<mocap::LaplacianDeformer>(f.mesh.vertices, f.triangles, f.controls, laplacianOptions(state));
+}
+
+void BM_RbfSetup(benchmark::State& state)
+{
+  if (const Fixture* f = needFixture(state))
+    for (auto _ : state)
+      benchmark::DoNotOptimize(rbf(*f)->response().data());
+}
+
+void BM_RbfFrame(benchmark::State& state)
+{
+  if (const Fixture* f = needFixture(state)) {
+    const auto deformer = rbf(*f);
+    frames(state, [&](mocap::MeshVertices& out) { deformer->deform(f->displacements, out); });
+  }
+}
+
+void BM_RbfFrameNaiveReference(benchmark::State& state)
+{
+  if (const Fixture* f = needFixture(state)) {
+    const auto deformer = rbf(*f);
+    frames(state, [&](mocap::MeshVertices& out) { deformer->deformDirect(f->displacements, out); });
+  }
+}
+
 void BM_LaplacianSetup(benchmark::State& state)
 {
-  const Fixture* f = needFixture(state);
-  if (!f)
-    return;
-  for (auto _ : state) {
-    mocap::LaplacianDeformer deformer(f->mesh.vertices, f->triangles, f->controls, laplacianOptions(state));
-    benchmark::DoNotOptimize(deformer.response().data());
-  }
+  if (const Fixture* f = needFixture(state))
+    for (auto _ : state)
+      benchmark::DoNotOptimize(laplacian(*f, state)->response().data());
 }
 
 void BM_LaplacianFrame(benchmark::State& state)
 {
-  const Fixture* f = needFixture(state);
-  if (!f)
-    return;
-  const mocap::LaplacianDeformer deformer(f->mesh.vertices, f->triangles, f->controls, laplacianOptions(state));
-  mocap::MeshVertices out;
-  for (auto _ : state) {
-    deformer.deform(f->displacements, out);
-    benchmark::DoNotOptimize(out.data());
+  if (const Fixture* f = needFixture(state)) {
+    const auto deformer = laplacian(*f, state);
+    frames(state, [&](mocap::MeshVertices& out) { deformer->deform(f->displacements, out); });
   }
-  perFrame(state);
 }
 
 void BM_LaplacianFrameSubstitutionReference(benchmark::State& state)
 {
-  const Fixture* f = needFixture(state);
-  if (!f)
-    return;
-  const mocap::LaplacianDeformer deformer(f->mesh.vertices, f->triangles, f->controls, laplacianOptions(state));
-  mocap::MeshVertices out;
-  for (auto _ : state) {
-    deformer.deformBySubstitution(f->displacements, out);
-    benchmark::DoNotOptimize(out.data());
+  if (const Fixture* f = needFixture(state)) {
+    const auto deformer = laplacian(*f, state);
+    frames(state, [&](mocap::MeshVertices& out) { deformer->deformBySubstitution(f->displacements, out); });
   }
-  perFrame(state);
 }
 
 // Arg 0: mesh (0 MediaPipe, 1 ICT); arg 1 (Laplacian): weights (0 uniform, 1 cotangent, 2 mean-value).

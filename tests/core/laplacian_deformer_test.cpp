@@ -1,4 +1,4 @@
-#include "test_support.h"
+#include "face_mesh_fixture.h"
 
 #include "mocap/error.h"
 #include "mocap/laplacian_deformer.h"
@@ -15,14 +15,13 @@ namespace {
 
 const Mesh& face()
 {
-  static const Mesh mesh = readObj(test::dataFile("face_mesh/canonical_face_model.obj"));
-  return mesh;
+  return test::mediaPipeFace();
 }
 
 std::vector<MeshPoint> everyNth(Eigen::Index step)
 {
   std::vector<MeshPoint> points;
-  for (Eigen::Index v = 0; v < face().vertexCount(); v += step)
+  for (const Eigen::Index v : test::everyNthVertex(0, step))
     points.push_back(MeshPoint::atVertex(v));
   return points;
 }

@@ -1,4 +1,4 @@
-#include "test_support.h"
+#include "face_mesh_fixture.h"
 
 #include "mocap/deformation_evaluation.h"
 #include "mocap/error.h"
@@ -16,8 +16,7 @@ namespace {
 
 const Mesh& face()
 {
-  static const Mesh mesh = readObj(test::dataFile("face_mesh/canonical_face_model.obj"));
-  return mesh;
+  return test::mediaPipeFace();
 }
 
 // The take's view of mesh points: mm, Z up, facing −Y, offset — the mesh→take similarity inverted.
@@ -33,10 +32,7 @@ Similarity meshToTake()
 
 std::vector<Eigen::Index> markerVertices()
 {
-  std::vector<Eigen::Index> vertices;
-  for (Eigen::Index v = 3; v < face().vertexCount(); v += 16)
-    vertices.push_back(v);
-  return vertices;
+  return test::everyNthVertex(3, 16);
 }
 
 std::vector<std::string> labelsFor(std::size_t count)

@@ -1,4 +1,4 @@
-#include "test_support.h"
+#include "face_mesh_fixture.h"
 
 #include "mocap/error.h"
 #include "mocap/obj_io.h"
@@ -13,17 +13,13 @@ namespace {
 
 const Mesh& face()
 {
-  static const Mesh mesh = readObj(test::dataFile("face_mesh/canonical_face_model.obj"));
-  return mesh;
+  return test::mediaPipeFace();
 }
 
 // Every 15th vertex as a control (32 controls spread over the face).
 std::vector<Eigen::Index> controlVertices()
 {
-  std::vector<Eigen::Index> vertices;
-  for (Eigen::Index v = 0; v < face().vertexCount(); v += 15)
-    vertices.push_back(v);
-  return vertices;
+  return test::everyNthVertex(0, 15);
 }
 
 PointSet rowsOf(const MeshVertices& vertices, const std::vector<Eigen::Index>& rows)
