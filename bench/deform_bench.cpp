@@ -4,7 +4,8 @@
 // controls: RBF ≥ 1 000 frames/s and Laplacian ≥ 200 frames/s after set-up, set-up < 2 s.
 // References in the same run: the naive RBF (solve eq 2 for the frame, sum eq 3 at every vertex)
 // against the precomputed vertex × control product, and the per-frame Cholesky back-substitution
-// against the precomputed Laplacian response.
+// against the precomputed Laplacian response. The rotation-aware Laplacian (2 iterations) is
+// timed too; it has no frame-rate target.
 #include "mocap/laplacian_deformer.h"
 #include "mocap/obj_io.h"
 #include "mocap/rbf_deformer.h"
@@ -146,6 +147,17 @@ void BM_LaplacianFrameSubstitutionReference(benchmark::State& state)
   }
 }
 
+void BM_LaplacianFrameRotationAware(benchmark::State& state)
+{
+  if (const Fixture* f = needFixture(state)) {
+    const auto deformer = laplacian(*f, state);
+    const std::vector<bool> all(static_cast<std::size_t>(kControls), true);
+    frames(state, [&](mocap::MeshVertices& out) {
+      deformer->deformRotationAware(f->displacements, all, static_cast<int>(state.range(2)), out);
+    });
+  }
+}
+
 // Arg 0: mesh (0 MediaPipe, 1 ICT); arg 1 (Laplacian): weights (0 uniform, 1 cotangent, 2 mean-value).
 BENCHMARK(BM_RbfSetup)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RbfFrame)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
@@ -153,6 +165,8 @@ BENCHMARK(BM_RbfFrameNaiveReference)->Arg(0)->Arg(1)->Unit(benchmark::kMicroseco
 BENCHMARK(BM_LaplacianSetup)->Args({0, 2})->Args({1, 0})->Args({1, 1})->Args({1, 2})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_LaplacianFrame)->Args({0, 2})->Args({1, 2})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LaplacianFrameSubstitutionReference)->Args({0, 2})->Args({1, 2})->Unit(benchmark::kMicrosecond);
+// Arg 2: rotation-aware iterations.
+BENCHMARK(BM_LaplacianFrameRotationAware)->Args({0, 2, 2})->Args({1, 2, 2})->Unit(benchmark::kMicrosecond);
 
 } // namespace
 

@@ -51,6 +51,7 @@ struct DeformSettings
   bool laplacian = false;
   RbfOptions rbf;
   LaplacianOptions lap;
+  int rotations = 0;
 };
 
 DeformSettings parseSettings(const Arguments& arguments)
@@ -83,6 +84,9 @@ DeformSettings parseSettings(const Arguments& arguments)
   }
   if (const auto w = arguments.number("--constraint-weight", 1e-6, 1e6))
     settings.lap.constraintWeight = *w;
+  settings.rotations = static_cast<int>(arguments.integer("--rotations", 0, 100).value_or(0));
+  if (settings.rotations > 0 && !settings.laplacian)
+    throw UsageError("--rotations needs --method laplacian");
   return settings;
 }
 
@@ -156,7 +160,7 @@ int runDeform(const std::vector<std::string>& args)
   const Arguments arguments(args, {"--json", "--regions", "--ply", "--no-affine"},
                             {"--mesh", "--binding", "--take", "--neutral", "--method", "--kernel", "--radius",
                              "--weights", "--constraint-weight", "--stabilize", "--scale", "-o", "--leave-out",
-                             "--seed", "--frames", "--up"});
+                             "--seed", "--frames", "--up", "--rotations"});
   arguments.expectPositionals(0, "no positional arguments (--mesh, --binding, --take and -o)");
   const std::string meshPath = required(arguments, "--mesh");
   const std::string bindingPath = required(arguments, "--binding");
@@ -173,6 +177,7 @@ int runDeform(const std::vector<std::string>& args)
   LeaveOutOptions leaveOut;
   leaveOut.fraction = arguments.number("--leave-out", 0.0, 0.9).value_or(0.2);
   leaveOut.seed = static_cast<std::uint64_t>(arguments.integer("--seed", 0, 1LL << 62).value_or(1));
+  leaveOut.rotations = settings.rotations;
   const auto neutralNumber = arguments.integer("--neutral", -(1LL << 40), 1LL << 40);
 
   const Mesh mesh = readMesh(meshPath);
@@ -218,7 +223,7 @@ int runDeform(const std::vector<std::string>& args)
     controlDisplacements(take, markers, neutral, retarget, f, displacements, present);
     framesMissingControls += std::all_of(present.begin(), present.end(), [](bool p) { return p; }) ? 0 : 1;
     const Clock::time_point start = Clock::now();
-    deformer->deform(displacements, present, deformed);
+    deformFrame(*deformer, displacements, present, settings.rotations, deformed);
     frameSeconds.push_back(secondsSince(start));
     sink.add(deformed);
   }
@@ -251,6 +256,7 @@ int runDeform(const std::vector<std::string>& args)
     json.key(settings.laplacian ? "weights" : "kernel").value(variant);
     if (settings.laplacian) {
       json.key("constraint_weight").value(settings.lap.constraintWeight);
+      json.key("rotations").value(settings.rotations);
     } else {
       json.key("radius").value(settings.rbf.radius);
       json.key("affine").value(settings.rbf.affine);

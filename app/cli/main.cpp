@@ -38,7 +38,7 @@ constexpr const char* kUsage =
     "                       bind markers to mesh points; per-marker residuals\n"
     "  deform --mesh FACE.obj --binding BIND.json --take TAKE [--neutral FRAME] [--method rbf|laplacian]\n"
     "      [--kernel exp|gaussian|biharmonic|thin-plate] [--radius C] [--regions] [--no-affine] [--up x|y|z]\n"
-    "      [--weights uniform|cotangent|mean-value] [--constraint-weight W] [--stabilize LABELS]\n"
+    "      [--weights uniform|cotangent|mean-value] [--constraint-weight W] [--rotations N] [--stabilize LABELS]\n"
     "      [--scale uniform|per-axis] [--frames FIRST:LAST] [--leave-out FRACTION] [--seed S] [--ply]\n"
     "      -o OUT.pc2|OUTDIR [--json]\n"
     "                       deform a face mesh by the take; PC2 cache or one mesh per frame\n";

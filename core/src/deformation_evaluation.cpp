@@ -1,6 +1,7 @@
 #include "mocap/deformation_evaluation.h"
 
 #include "mocap/error.h"
+#include "mocap/laplacian_deformer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +48,7 @@ LeaveOutResult evaluateLeaveOut(const Take& take, const std::vector<Eigen::Index
     if (std::none_of(truthPresent.begin(), truthPresent.end(), [](bool p) { return p; }))
       continue;
     controlDisplacements(take, keptMarkers, neutralFrame, retarget, f, kept, keptPresent);
-    deformer->deform(kept, keptPresent, deformed);
+    deformFrame(*deformer, kept, keptPresent, options.rotations, deformed);
     for (std::size_t h = 0; h < hiddenPoints.size(); ++h) {
       if (!truthPresent[h])
         continue;

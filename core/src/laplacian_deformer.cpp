@@ -1,6 +1,7 @@
 #include "mocap/laplacian_deformer.h"
 
 #include "mocap/error.h"
+#include "mocap/kabsch.h"
 
 #include <Eigen/Cholesky>
 
@@ -90,6 +91,7 @@ LaplacianDeformer::LaplacianDeformer(MeshVertices rest, const std::vector<Triang
   if (m_solver.info() != Eigen::Success || (m_solver.vectorD().array() <= 0.0).any())
     throw InvalidArgument("laplacian: the system could not be factorised (is a control bound to an isolated "
                           "part of the mesh?)");
+  m_delta = m_laplacian * this->rest();
   m_inverseConstraints = m_solver.solve(Eigen::MatrixXd(m_constraints.transpose()));
   m_gram = m_constraints * m_inverseConstraints;
   setResponse((m_weight * m_weight) * m_inverseConstraints);
@@ -102,6 +104,50 @@ void LaplacianDeformer::deformBySubstitution(const Eigen::Ref<const PointSet>& d
   const Eigen::MatrixXd rhs = (m_weight * m_weight) * (m_constraints.transpose() * displacements);
   out = rest();
   out += m_solver.solve(rhs);
+}
+
+void LaplacianDeformer::deformRotationAware(const Eigen::Ref<const PointSet>& displacements,
+                                            const std::vector<bool>& present, int iterations, MeshVertices& out)
+{
+  if (iterations < 0 || iterations > 100)
+    throw InvalidArgument("laplacian: rotation iterations must be in 0 … 100");
+  deform(displacements, present, out);
+  const double w2 = m_weight * m_weight;
+  const Eigen::Index n = rest().rows();
+  // Targets: present controls as given, missing ones where the linear solution put them.
+  Eigen::Matrix<double, Eigen::Dynamic, 3> targets = m_constraints * (out - rest());
+  for (std::size_t c = 0; c < present.size(); ++c)
+    if (present[c])
+      targets.row(static_cast<Eigen::Index>(c)) = displacements.row(static_cast<Eigen::Index>(c));
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> constraintTerm = w2 * (m_constraints.transpose() * targets);
+  // Lᵀ: its column i lists row i of L, i.e. vertex i's one-ring.
+  const Eigen::SparseMatrix<double> rows = m_laplacian.transpose();
+  Eigen::Matrix<double, Eigen::Dynamic, 3> rotated(n, 3);
+  for (int it = 0; it < iterations; ++it) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+      for (Eigen::SparseMatrix<double>::InnerIterator entry(rows, i); entry; ++entry) {
+        const Eigen::Index j = entry.row();
+        if (j == i)
+          continue;
+        covariance += (out.row(j) - out.row(i)).transpose() * (rest().row(j) - rest().row(i));
+      }
+      rotated.row(i) = (kabschRotation(covariance) * m_delta.row(i).transpose()).transpose();
+    }
+    const Eigen::Matrix<double, Eigen::Dynamic, 3> rhs = rows * (rotated - m_delta) + constraintTerm;
+    out = rest() + m_solver.solve(rhs);
+  }
+}
+
+void deformFrame(MeshDeformer& deformer, const Eigen::Ref<const PointSet>& displacements,
+                 const std::vector<bool>& present, int rotations, MeshVertices& out)
+{
+  if (rotations > 0)
+    if (auto* laplacian = dynamic_cast<LaplacianDeformer*>(&deformer)) {
+      laplacian->deformRotationAware(displacements, present, rotations, out);
+      return;
+    }
+  deformer.deform(displacements, present, out);
 }
 
 Eigen::MatrixXd LaplacianDeformer::responseFor(const std::vector<bool>& present) const

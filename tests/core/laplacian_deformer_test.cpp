@@ -121,6 +121,29 @@ TEST(LaplacianDeformer, TranslationIsExactAndSmallRigidMotionWithinTolerance)
   }
 }
 
+TEST(LaplacianDeformer, RotationAwareIterationsFollowARotationCloser)
+{
+  const std::vector<MeshPoint> controls = everyNth(12);
+  LaplacianDeformer deformer(face().vertices, face().triangles(), controls);
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+  motion.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.1, 1.0, 0.3).normalized()).toRotationMatrix();
+  const MeshVertices moved = (face().vertices * motion.linear().transpose()).rowwise() + motion.translation().transpose();
+  const PointSet displacements = displacementsOf(moved, controls);
+  const std::vector<bool> all(controls.size(), true);
+  MeshVertices linear, rotated;
+  deformFrame(deformer, displacements, all, 0, linear);
+  deformFrame(deformer, displacements, all, 5, rotated);
+  const double linearError = (linear - moved).rowwise().norm().mean();
+  const double rotatedError = (rotated - moved).rowwise().norm().mean();
+  EXPECT_LT(rotatedError, 0.5 * linearError) << linearError << " → " << rotatedError;
+  // Zero iterations is the linear solution; a translation stays exact with rotations too.
+  EXPECT_EQ(linear, [&] { MeshVertices out; deformer.deform(displacements, out); return out; }());
+  const MeshVertices shifted = face().vertices.rowwise() + Eigen::RowVector3d(0.5, -1.0, 2.0);
+  deformer.deformRotationAware(displacementsOf(shifted, controls), all, 3, rotated);
+  EXPECT_LT((rotated - shifted).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_THROW(deformer.deformRotationAware(displacements, all, 101, rotated), InvalidArgument);
+}
+
 TEST(LaplacianDeformer, ZeroDisplacementLeavesTheMeshUnchanged)
 {
   const std::vector<MeshPoint> controls = everyNth(20);

@@ -16,6 +16,7 @@ struct LeaveOutOptions
 {
   double fraction = 0.2;   ///< share of the markers hidden (at least one, at least one kept)
   std::uint64_t seed = 1;  ///< which markers: the first of a seeded shuffle
+  int rotations = 0;       ///< Laplacian rotation-aware iterations per frame (deformFrame)
 };
 
 struct LeaveOutResult

@@ -39,6 +39,17 @@ public:
   /// factorisation. O(nnz(factor)) per frame; the same result as deform() up to rounding.
   void deformBySubstitution(const Eigen::Ref<const PointSet>& displacements, MeshVertices& out) const;
 
+  /// Rotation-aware variant (beyond the paper, which keeps δ fixed so rotated regions shear):
+  /// starting from the linear solution (missing controls skipped), `iterations` times estimate
+  /// each vertex's rotation Rᵢ from its one-ring (kabschRotation of rest edges onto deformed ones),
+  /// rotate its differential coordinate δᵢ by it and solve eq 7 again with the stored
+  /// factorisation, each missing control held where the previous solution put it (Sorkine et
+  /// al. 2004's rotated coordinates, iterated as in ARAP). O(iterations · (nnz(L) + nnz(factor)))
+  /// per frame. Throws InvalidArgument for a wrong size, a non-finite displacement or iterations
+  /// outside 0 … 100.
+  void deformRotationAware(const Eigen::Ref<const PointSet>& displacements, const std::vector<bool>& present,
+                           int iterations, MeshVertices& out);
+
   /// The normalised Laplacian L (unit diagonal, rows sum to zero).
   [[nodiscard]] const Eigen::SparseMatrix<double>& laplacian() const { return m_laplacian; }
 
@@ -51,7 +62,13 @@ private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_solver;
   Eigen::MatrixXd m_inverseConstraints;  // K = A⁻¹Cᵀ
   Eigen::MatrixXd m_gram;                // H = C·K
+  MeshVertices m_delta;                  // δ = L·V_rest, one row per vertex
   double m_weight = 1.0;
 };
+
+/// One frame: deformRotationAware with `rotations` iterations when `deformer` is a
+/// LaplacianDeformer and rotations > 0, otherwise deformer.deform (missing controls skipped).
+void deformFrame(MeshDeformer& deformer, const Eigen::Ref<const PointSet>& displacements,
+                 const std::vector<bool>& present, int rotations, MeshVertices& out);
 
 } // namespace mocap
