@@ -114,7 +114,6 @@ public:
       : m_out(out), m_mesh(mesh), m_name(name), m_ply(ply)
   {
     if (lowerExtension(out) == "pc2") {
-      writeObj(std::filesystem::path(out).replace_extension(".obj"), mesh);
       m_cache.emplace(out, mesh.vertexCount(), startFrame, 1.0f);
       return;
     }
@@ -138,10 +137,13 @@ public:
       writeObj(m_out / (m_name + number + ".obj"), m_mesh, vertices);
   }
 
+  // The OBJ beside a cache is written last, so a failed run leaves neither file.
   void finish()
   {
-    if (m_cache)
-      m_cache->finish();
+    if (!m_cache)
+      return;
+    m_cache->finish();
+    writeObj(std::filesystem::path(m_out).replace_extension(".obj"), m_mesh);
   }
 
 private:
