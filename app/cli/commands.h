@@ -40,4 +40,12 @@ int runFixSwaps(const std::vector<std::string>& args);
 /// `mocap eval-track TAKE [--seed S] [--json]`: label recovery and swap detection on a labelled take.
 int runEvalTrack(const std::vector<std::string>& args);
 
+/// `mocap deform --mesh FACE.obj --binding BIND.json --take TAKE ... -o OUT.pc2|OUTDIR`: RBF or
+/// Laplacian face-mesh deformation driven by the take's markers.
+int runDeform(const std::vector<std::string>& args);
+
+/// `mocap bind --mesh FACE.obj --take TAKE [--pairs LABEL=VERTEX,...] -o BIND.json`: binds markers
+/// to mesh points (similarity alignment of the neutral frame, nearest surface points).
+int runBind(const std::vector<std::string>& args);
+
 } // namespace mocap::cli

@@ -39,7 +39,16 @@ constexpr const char* kUsage =
     "  fix-swaps IN -o OUT [--report FILE.json] [--jump-factor F] [--json]\n"
     "                       find and repair frames where two labels exchange\n"
     "  eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--keep-fragments] [--json]\n"
-    "                       label recovery of a fragmented unlabelled copy; injected swaps found\n";
+    "                       label recovery of a fragmented unlabelled copy; injected swaps found\n"
+    "  bind --mesh FACE.obj --take TAKE [--pairs LABEL=VERTEX,...] [--neutral FRAME] [--stabilize LABELS]\n"
+    "      [--markers LABELS] [--vertices FIRST:LAST] -o BIND.json [--json]\n"
+    "                       bind markers to mesh points; per-marker residuals\n"
+    "  deform --mesh FACE.obj --binding BIND.json --take TAKE [--neutral FRAME] [--method rbf|laplacian]\n"
+    "      [--kernel exp|gaussian|biharmonic|thin-plate] [--radius C] [--regions] [--no-affine] [--up x|y|z]\n"
+    "      [--weights uniform|cotangent|mean-value] [--constraint-weight W] [--rotations N] [--stabilize LABELS]\n"
+    "      [--scale uniform|per-axis] [--frames FIRST:LAST] [--leave-out FRACTION] [--seed S] [--ply]\n"
+    "      -o OUT.pc2|OUTDIR [--json]\n"
+    "                       deform a face mesh by the take; PC2 cache or one mesh per frame\n";
 
 } // namespace
 
@@ -58,6 +67,8 @@ int main(int argc, char** argv)
       {"track", runTrack},
       {"fix-swaps", runFixSwaps},
       {"eval-track", runEvalTrack},
+      {"deform", runDeform},
+      {"bind", runBind},
   };
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string command = argc > 1 ? argv[1] : "";

@@ -87,31 +87,75 @@ MappedFile::~MappedFile()
     ::munmap(const_cast<unsigned char*>(m_data), m_size);
 }
 
-void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes)
+AtomicFileWriter::AtomicFileWriter(const std::filesystem::path& path) : m_path(path)
 {
   const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
   std::random_device random;
-  const std::filesystem::path temporary =
-      directory / ("." + path.filename().string() + ".tmp" + std::to_string(random()));
-  {
-    FilePtr file(std::fopen(temporary.c_str(), "wb"));
-    if (!file)
-      throw IoError(path.string() + ": cannot create (" + describeErrno() + ")");
-    const bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
-    const bool flushed = std::fflush(file.get()) == 0;
-    if (!written || !flushed) {
-      const std::string reason = describeErrno();
-      file.reset();
-      std::filesystem::remove(temporary);
-      throw IoError(path.string() + ": write failed (" + reason + ")");
-    }
+  m_temporary = directory / ("." + path.filename().string() + ".tmp" + std::to_string(random()));
+  m_file = std::fopen(m_temporary.c_str(), "wb");
+  if (!m_file)
+    throw IoError(path.string() + ": cannot create (" + describeErrno() + ")");
+}
+
+AtomicFileWriter::~AtomicFileWriter()
+{
+  if (m_file) {
+    std::fclose(m_file);
+    std::error_code ignored;
+    std::filesystem::remove(m_temporary, ignored);
   }
+}
+
+void AtomicFileWriter::write(std::string_view bytes)
+{
+  if (!m_file)
+    throw IoError(m_path.string() + ": write after commit");
+  if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), m_file) != bytes.size())
+    fail("write failed");
+}
+
+void AtomicFileWriter::patch(std::size_t offset, std::string_view bytes)
+{
+  if (!m_file)
+    throw IoError(m_path.string() + ": write after commit");
+  if (std::fseek(m_file, static_cast<long>(offset), SEEK_SET) != 0)
+    fail("seek failed");
+  write(bytes);
+  if (std::fseek(m_file, 0, SEEK_END) != 0)
+    fail("seek failed");
+}
+
+void AtomicFileWriter::fail(const std::string& what)
+{
+  const std::string reason = describeErrno();
+  std::fclose(m_file);
+  m_file = nullptr;
+  std::error_code ignored;
+  std::filesystem::remove(m_temporary, ignored);
+  throw IoError(m_path.string() + ": " + what + " (" + reason + ")");
+}
+
+void AtomicFileWriter::commit()
+{
+  if (!m_file)
+    throw IoError(m_path.string() + ": committed twice");
+  if (std::fflush(m_file) != 0)
+    fail("write failed");
+  std::fclose(m_file);
+  m_file = nullptr;
   std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
+  std::filesystem::rename(m_temporary, m_path, ec);
   if (ec) {
-    std::filesystem::remove(temporary);
-    throw IoError(path.string() + ": cannot replace (" + ec.message() + ")");
+    std::filesystem::remove(m_temporary, ec);
+    throw IoError(m_path.string() + ": cannot replace (" + ec.message() + ")");
   }
+}
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes)
+{
+  AtomicFileWriter file(path);
+  file.write(bytes);
+  file.commit();
 }
 
 std::string lowerExtension(const std::filesystem::path& path)

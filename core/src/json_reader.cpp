@@ -94,8 +94,14 @@ private:
       while (true) {
         if (peek() != '"')
           fail("expected a string key");
+        const std::size_t keyStart = m_pos;
         std::string key = parseString();
         expect(':');
+        // A repeated name would silently drop data (which one counts is up to the reader): refuse it.
+        if (value.m_object->count(key) != 0) {
+          m_pos = keyStart;
+          fail("repeated key \"" + key + "\"");
+        }
         (*value.m_object)[key] = parseValue(depth + 1);
         if (peek() == ',') {
           ++m_pos;

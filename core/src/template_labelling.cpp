@@ -87,7 +87,7 @@ std::pair<Similarity, double> refineIcp(const Eigen::Ref<const PointSet>& templ,
       from.row(static_cast<Eigen::Index>(k)) = templ.row(closest[static_cast<std::size_t>(inliers[k])]);
       to.row(static_cast<Eigen::Index>(k)) = points.row(inliers[k]);
     }
-    const Similarity next = fitSimilarity(from, to);
+    const Similarity next = fitSimilarityLoose(from, to);
     const double change = (next.rotation - s.rotation).norm() + std::abs(next.scale - s.scale) +
                           (next.translation - s.translation).norm() / (limit + 1.0);
     s = next;
@@ -271,7 +271,7 @@ private:
   {
     const std::vector<Eigen::Index> present = presentLabels(anchor);
     if (present.size() >= 3) {
-      m_result.scale = fitSimilarity(templateRows(present), positionsAt(present, anchor)).scale;
+      m_result.scale = fitSimilarityLoose(templateRows(present), positionsAt(present, anchor)).scale;
     } else if (const auto s = globalAlignment(anchor, &m_result.anchorResidual)) {
       m_result.scale = s->scale;
     }
@@ -321,7 +321,7 @@ private:
     const auto near = neighboursIn(label, frame, frame);
     if (near.size() < 3)
       return std::nullopt;
-    return fitSimilarity(templateRows(near), positionsAt(near, frame)).apply(m_set.neutral.row(label).transpose());
+    return fitSimilarityLoose(templateRows(near), positionsAt(near, frame)).apply(m_set.neutral.row(label).transpose());
   }
 
   bool freeThroughout(Eigen::Index label, const Fragment& f) const
@@ -404,26 +404,6 @@ private:
 };
 
 } // namespace
-
-Similarity fitSimilarity(const Eigen::Ref<const PointSet>& from, const Eigen::Ref<const PointSet>& to)
-{
-  if (from.rows() != to.rows() || from.rows() == 0)
-    throw InvalidArgument("similarity fit: the point sets must have the same, non-zero number of rows");
-  const Eigen::RowVector3d fromCentre = from.colwise().mean();
-  const Eigen::RowVector3d toCentre = to.colwise().mean();
-  Similarity s;
-  if (from.rows() > 1) {
-    const PointSet a = from.rowwise() - fromCentre;
-    const PointSet b = to.rowwise() - toCentre;
-    const Eigen::Matrix3d covariance = b.transpose() * a;
-    s.rotation = kabschRotation(covariance);
-    const double spread = a.squaredNorm();
-    const double scale = spread > 0.0 ? (s.rotation.transpose() * covariance).trace() / spread : 1.0;
-    s.scale = scale > 0.0 && std::isfinite(scale) ? scale : 1.0;
-  }
-  s.translation = toCentre.transpose() - s.scale * (s.rotation * fromCentre.transpose());
-  return s;
-}
 
 Similarity alignTemplate(const Eigen::Ref<const PointSet>& templ, const Eigen::Ref<const PointSet>& points,
                          double* residual)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -34,6 +35,31 @@ private:
 /// so `path` is either the old file or the complete new one, never a partial write.
 /// Throws IoError (and removes the temporary file) when any step fails.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
+
+/// writeFileAtomically for output too large to hold at once: bytes are streamed to a temporary
+/// file beside `path`, and commit() flushes it and renames it over `path`. Destroyed without
+/// commit() (e.g. by an exception), it removes the temporary file and leaves `path` untouched.
+/// Every method throws IoError naming `path` when a step fails.
+class AtomicFileWriter
+{
+public:
+  explicit AtomicFileWriter(const std::filesystem::path& path);
+  ~AtomicFileWriter();
+  AtomicFileWriter(const AtomicFileWriter&) = delete;
+  AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
+
+  void write(std::string_view bytes);
+  /// Overwrites already written bytes at `offset` (e.g. a header with counts known at the end).
+  void patch(std::size_t offset, std::string_view bytes);
+  void commit();
+
+private:
+  [[noreturn]] void fail(const std::string& what);
+
+  std::filesystem::path m_path;
+  std::filesystem::path m_temporary;
+  std::FILE* m_file = nullptr;
+};
 
 /// Lower-case extension without the dot ("c3d" for "take.C3D").
 [[nodiscard]] std::string lowerExtension(const std::filesystem::path& path);

@@ -9,7 +9,7 @@
 namespace mocap {
 
 /// A parsed JSON value (RFC 8259): null, boolean, number, string, array or object. Objects keep
-/// their keys sorted; a repeated key keeps its last value.
+/// their keys sorted; a document with a repeated key in one object is refused.
 class JsonValue
 {
 public:

@@ -2,29 +2,14 @@
 
 #include "mocap/marker_set.h"
 #include "mocap/point_tracker.h"
+#include "mocap/similarity_transform.h"
 
 #include <vector>
 
 namespace mocap {
 
-/// x ↦ s·R·x + t.
-struct Similarity
-{
-  double scale = 1.0;
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-
-  [[nodiscard]] Eigen::Vector3d apply(const Eigen::Vector3d& x) const { return scale * (rotation * x) + translation; }
-};
-
-/// The similarity minimising Σ‖s·R·fromᵢ + t − toᵢ‖² (Umeyama 1991: R from the Kabsch rotation of
-/// the cross-covariance, s = tr(Rᵀ·C) / Σ‖fromᵢ − from̄‖²). Rows correspond; ≥ 1 row. One row
-/// gives the translation only; coincident `from` rows give scale 1. Not a paper equation.
-/// Throws InvalidArgument when the sizes disagree or there are no rows. O(#rows).
-[[nodiscard]] Similarity fitSimilarity(const Eigen::Ref<const PointSet>& from, const Eigen::Ref<const PointSet>& to);
-
 /// Aligns a template to unlabelled points without correspondences: iterative closest points with
-/// a similarity fit (fitSimilarity) of each data point's closest template point onto it (the data
+/// a similarity fit (fitSimilarityLoose) of each data point's closest template point onto it (the data
 /// may miss markers), pairs within 2.5 × their median distance, from five starts (the centroids
 /// matched with the identity rotation and with the four proper rotations taking the template's
 /// principal axes onto the points'). The start whose result has the smallest trimmed mean distance

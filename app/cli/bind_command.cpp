@@ -1,0 +1,123 @@
+// `mocap bind`: binds a take's markers to points of a face mesh and writes the binding JSON that
+// `mocap deform` reads.
+#include "arguments.h"
+#include "cli_error.h"
+
+#include "mocap/error.h"
+#include "mocap/file_io.h"
+#include "mocap/mesh_binding.h"
+#include "mocap/mesh_io.h"
+#include "mocap/retarget.h"
+#include "mocap/take_io.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace mocap::cli {
+
+/// `mocap bind --mesh FACE.obj --take TAKE [--pairs LABEL=VERTEX,...] [--neutral FRAME]
+/// [--stabilize LABELS] [--markers LABELS] [--vertices FIRST:LAST] -o BIND.json [--json]`.
+/// Returns the exit code.
+int runBind(const std::vector<std::string>& args);
+
+namespace {
+
+std::vector<std::pair<Eigen::Index, Eigen::Index>> parsePairs(const std::string& text,
+                                                              const std::vector<std::string>& labels)
+{
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> pairs;
+  for (const std::string& field : splitList(text, "--pairs")) {
+    const std::size_t equals = field.rfind('=');
+    const std::string label = field.substr(0, equals == std::string::npos ? 0 : equals);
+    const std::string vertex = equals == std::string::npos ? "" : field.substr(equals + 1);
+    if (label.empty() || vertex.empty() || vertex.find_first_not_of("0123456789") != std::string::npos ||
+        vertex.size() > 9)
+      throw UsageError("--pairs needs LABEL=VERTEX entries, not '" + field + "'");
+    const auto found = std::find(labels.begin(), labels.end(), label);
+    if (found == labels.end())
+      throw UsageError("--pairs: " + label + " is not one of the markers being bound");
+    pairs.emplace_back(found - labels.begin(), static_cast<Eigen::Index>(std::stol(vertex)));
+  }
+  return pairs;
+}
+
+std::vector<Eigen::Index> vertexRange(const std::string& text, Eigen::Index vertexCount)
+{
+  long long first = 0, last = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lld:%lld%c", &first, &last, &tail) != 2 || first < 0 || last < first ||
+      last >= vertexCount)
+    throw UsageError("--vertices needs FIRST:LAST vertex indices of the mesh (0…" + std::to_string(vertexCount - 1) +
+                     "), not '" + text + "'");
+  std::vector<Eigen::Index> range;
+  for (long long v = first; v <= last; ++v)
+    range.push_back(static_cast<Eigen::Index>(v));
+  return range;
+}
+
+} // namespace
+
+int runBind(const std::vector<std::string>& args)
+{
+  const Arguments arguments(args, {"--json"},
+                            {"--mesh", "--take", "--pairs", "--neutral", "--stabilize", "--markers", "--vertices", "-o"});
+  arguments.expectPositionals(0, "no positional arguments (--mesh, --take and -o)");
+  const auto meshPath = arguments.value("--mesh");
+  const auto takePath = arguments.value("--take");
+  const auto out = arguments.value("-o");
+  if (!meshPath || !takePath || !out)
+    throw UsageError("--mesh, --take and -o are required");
+  const auto neutralNumber = arguments.integer("--neutral", -(1LL << 40), 1LL << 40);
+
+  const Mesh mesh = readMesh(*meshPath);
+  std::vector<std::string> warnings;
+  Take take = readTake(*takePath, &warnings);
+  for (const auto& w : warnings)
+    std::cerr << *takePath << ": warning: " << w << '\n';
+  const std::vector<std::string> reference =
+      arguments.value("--stabilize") ? splitList(*arguments.value("--stabilize"), "--stabilize") : std::vector<std::string>{};
+  (void)stabilizeTake(take, reference);
+  std::vector<std::string> labels;
+  if (const auto list = arguments.value("--markers")) {
+    labels = splitList(*list, "--markers");
+  } else {
+    for (const std::string& label : take.labels())
+      if (std::find(reference.begin(), reference.end(), label) == reference.end())
+        labels.push_back(label);
+  }
+  const std::vector<Eigen::Index> markers = markerIndices(take, labels);
+  const Eigen::Index neutral = chooseNeutralFrame(take, markers, neutralNumber);
+  AutoBindOptions options;
+  if (const auto pairs = arguments.value("--pairs"))
+    options.pairs = parsePairs(*pairs, labels);
+  if (const auto range = arguments.value("--vertices"))
+    options.vertexSubset = vertexRange(*range, mesh.vertexCount());
+  const MeshBinding binding = autoBind(mesh, labels, markerPositions(take, neutral, markers), options);
+  const std::string json = bindingJson(binding);
+  writeFileAtomically(*out, json);
+
+  if (arguments.has("--json")) {
+    std::cout << json;
+    return kExitOk;
+  }
+  double sum = 0.0, worst = 0.0;
+  std::cout << "bound " << binding.markers.size() << " markers of frame " << take.firstFrame() + neutral << " to "
+            << *meshPath << " (scale " << fixedNumber(binding.alignment.scale, 5) << " mesh units per take unit, "
+            << (options.pairs.empty() ? "aligned by ICP" : "aligned on the given pairs") << ")\n";
+  for (const MarkerBinding& marker : binding.markers) {
+    std::cout << "  " << marker.label << "  "
+              << (marker.point.isVertex() ? "vertex " + std::to_string(marker.point.vertices[0])
+                                          : "triangle " + std::to_string(marker.point.vertices[0]) + "/" +
+                                                std::to_string(marker.point.vertices[1]) + "/" +
+                                                std::to_string(marker.point.vertices[2]))
+              << "  residual " << fixedNumber(marker.residual, 2) << " mm\n";
+    sum += marker.residual;
+    worst = std::max(worst, marker.residual);
+  }
+  std::cout << "residual mean " << fixedNumber(sum / static_cast<double>(binding.markers.size()), 2) << " mm, max "
+            << fixedNumber(worst, 2) << " mm\nwrote " << *out << '\n';
+  return kExitOk;
+}
+
+} // namespace mocap::cli

@@ -1,0 +1,143 @@
+// `mocap bind` and `mocap deform` end to end on the bundled take and the MediaPipe face.
+#include "../core/test_support.h"
+
+#include "mocap/file_io.h"
+#include "mocap/json_reader.h"
+#include "mocap/pc2_io.h"
+#include "mocap/ply_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <sys/wait.h>
+
+namespace mocap {
+namespace {
+
+struct Outcome
+{
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs `mocap ARGUMENTS` through the shell with stdout and stderr captured in files of `dir`.
+Outcome mocap(const std::string& arguments, const test::TempDir& dir)
+{
+  const std::string command = std::string("'") + MOCAP_CLI + "' " + arguments + " >'" +
+                              dir.file("out.txt").string() + "' 2>'" + dir.file("err.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  Outcome run;
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = readFileBytes(dir.file("out.txt"));
+  run.err = readFileBytes(dir.file("err.txt"));
+  return run;
+}
+
+std::string faceMesh()
+{
+  return "'" + test::dataFile("face_mesh/canonical_face_model.obj").string() + "'";
+}
+
+std::string sample()
+{
+  return "'" + test::sampleTake().string() + "'";
+}
+
+const char* kStabilize = "--stabilize root-1,root-2,root-3,root-4,root-5,root-6";
+
+std::string faceMarkers()
+{
+  std::string list;
+  for (int section = 1; section <= 14; ++section)
+    for (int k = 1; k <= (section == 10 || section >= 13 ? 3 : 2); ++k)
+      list += (list.empty() ? "" : ",") + ("section" + std::to_string(section) + "-" + std::to_string(k));
+  return list;
+}
+
+TEST(DeformCli, BindThenDeformWritesAPointCacheAndTheIssueJsonKeys)
+{
+  test::TempDir dir;
+  const std::string binding = dir.file("bind.json").string();
+  const Outcome bound0 = mocap("bind --mesh " + faceMesh() + " --take " + sample() + " " + kStabilize + " --markers " +
+                             faceMarkers() + " -o '" + binding + "'",
+                         dir);
+  ASSERT_EQ(bound0.exitCode, 0) << bound0.err;
+  EXPECT_NE(bound0.out.find("bound 31 markers"), std::string::npos) << bound0.out;
+  const JsonValue bound = parseJson(readFileBytes(binding), binding);
+  ASSERT_NE(bound.find("markers", "binding"), nullptr);
+  EXPECT_EQ(bound.find("markers", "binding")->object("markers").size(), 31u);
+  // The take is in mm and the mesh in cm: the similarity scale is about 0.1.
+  const double scale = bound.find("alignment", "binding")->find("scale", "alignment")->number("scale");
+  EXPECT_GT(scale, 0.07);
+  EXPECT_LT(scale, 0.13);
+
+  for (const std::string method : {"rbf", "laplacian"}) {
+    const std::string cache = dir.file(method + ".pc2").string();
+    const Outcome run = mocap("deform --mesh " + faceMesh() + " --binding '" + binding + "' --take " + sample() + " " +
+                              kStabilize + " --method " + method + " --frames 1:200 -o '" + cache + "' --json",
+                          dir);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const JsonValue report = parseJson(run.out, "stdout");
+    for (const char* key : {"vertices", "frames", "setup_seconds", "frame_seconds_mean", "frame_seconds_p95",
+                            "leave_out_error_mm"})
+      ASSERT_NE(report.find(key, "report"), nullptr) << key << " missing in " << run.out;
+    EXPECT_EQ(report.find("vertices", "report")->number("vertices"), 468);
+    EXPECT_EQ(report.find("frames", "report")->number("frames"), 200);
+    const double error = report.find("leave_out_error_mm", "report")->number("leave_out_error_mm");
+    const double rest = report.find("leave_out", "report")->find("rest_error_mm", "leave_out")->number("rest_error_mm");
+    EXPECT_GT(error, 0.0);
+    EXPECT_LT(error, rest) << method << ": deforming must beat leaving the mesh at rest";
+    const PointCache points = readPc2(cache);
+    ASSERT_EQ(points.samples.size(), 200u);
+    EXPECT_EQ(points.samples[0].rows(), 468);
+    EXPECT_EQ(points.startFrame, 1.0f);
+    EXPECT_TRUE(std::filesystem::exists(dir.file(method + ".obj")));
+  }
+
+  const Outcome perFrame = mocap("deform --mesh " + faceMesh() + " --binding '" + binding + "' --take " + sample() +
+                                 " --frames 10:12 --ply --kernel thin-plate --regions --scale per-axis --leave-out 0 -o '" +
+                                 dir.file("frames").string() + "'",
+                             dir);
+  ASSERT_EQ(perFrame.exitCode, 0) << perFrame.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("frames") / "canonical_face_model_neutral.obj"));
+  EXPECT_EQ(readPly(dir.file("frames") / "canonical_face_model_0003.ply").vertexCount(), 468);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("frames") / "canonical_face_model_0004.ply"));
+}
+
+TEST(DeformCli, BadUsageAndBadInputGiveClearErrors)
+{
+  test::TempDir dir;
+  Outcome run = mocap("deform --binding b.json --take " + sample() + " -o x.pc2", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find("--mesh is required"), std::string::npos) << run.err;
+
+  writeFileAtomically(dir.file("off.json"), R"({"markers": {"section1-1": 5000, "section1-2": 2, "section2-1": 3}})");
+  run = mocap("deform --mesh " + faceMesh() + " --binding '" + dir.file("off.json").string() + "' --take " + sample() +
+                  " -o '" + dir.file("x.pc2").string() + "'",
+              dir);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("section1-1 is bound off the mesh"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.pc2")));
+
+  writeFileAtomically(dir.file("dup.json"),
+                      R"({"markers": {"section1-1": 5, "section1-2": 5, "section2-1": 3, "section2-2": 9}})");
+  run = mocap("deform --mesh " + faceMesh() + " --binding '" + dir.file("dup.json").string() + "' --take " +
+                  sample() + " -o '" + dir.file("x.pc2").string() + "'",
+              dir);
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.err.find("section1-1 and section1-2 are at the same mesh point"), std::string::npos) << run.err;
+
+  run = mocap("deform --mesh " + faceMesh() + " --binding '" + dir.file("dup.json").string() + "' --take " +
+                  sample() + " --kernel cubic -o x.pc2",
+              dir);
+  EXPECT_EQ(run.exitCode, 2);
+  run = mocap("bind --mesh " + faceMesh() + " --take " + sample() + " --markers section1-1,section1-2,section2-1 " +
+                  "--pairs section1-1=1,section1-2=2 -o '" + dir.file("b.json").string() + "'",
+              dir);
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.err.find("at least 3 correspondences"), std::string::npos) << run.err;
+}
+
+} // namespace
+} // namespace mocap
