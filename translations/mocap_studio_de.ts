@@ -63,7 +63,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+59"/>
+        <location filename="../app/studio/main_window.cpp" line="+60"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -89,6 +89,16 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>History</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;opened take&gt;</source>
+        <translation>&lt;geöffnete Aufnahme&gt;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Cleaning</source>
         <translation>Bereinigung</translation>
     </message>
@@ -199,13 +209,13 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+71"/>
+        <location line="+74"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+71"/>
+        <location line="-74"/>
+        <location line="+74"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
@@ -467,7 +477,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-513"/>
+        <location line="-524"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -620,7 +630,7 @@
 <context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
-        <location filename="../widgets/models/marker_table_model.cpp" line="+76"/>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+79"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -638,6 +648,11 @@
         <location line="+1"/>
         <source>Longest gap</source>
         <translation>Längste Lücke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bad points</source>
+        <translation>Fehlpunkte</translation>
     </message>
 </context>
 <context>

@@ -60,7 +60,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+59"/>
+        <location filename="../app/studio/main_window.cpp" line="+60"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -86,6 +86,16 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>History</source>
+        <translation>历史记录</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&lt;opened take&gt;</source>
+        <translation>&lt;已打开的拍摄&gt;</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Cleaning</source>
         <translation>清理</translation>
     </message>
@@ -196,13 +206,13 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+71"/>
+        <location line="+74"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-71"/>
-        <location line="+71"/>
+        <location line="-74"/>
+        <location line="+74"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
@@ -463,7 +473,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-513"/>
+        <location line="-524"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -615,7 +625,7 @@
 <context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
-        <location filename="../widgets/models/marker_table_model.cpp" line="+76"/>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+79"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -633,6 +643,11 @@
         <location line="+1"/>
         <source>Longest gap</source>
         <translation>最长缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bad points</source>
+        <translation>坏点</translation>
     </message>
 </context>
 <context>

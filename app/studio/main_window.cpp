@@ -38,6 +38,7 @@
 #include <QTableView>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QUndoView>
 
 #include "mocap/marker_edits.h"
 #include "mocap/take_io.h"
@@ -124,6 +125,14 @@ void MainWindow::createDocks()
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
   m_cleaning->addStep(new ui::GapFillStep(*m_document, m_cleaning));
   m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
+  auto* historyDock = new QDockWidget(tr("History"), this);
+  historyDock->setObjectName(QStringLiteral("historyDock"));
+  auto* history = new QUndoView(m_document->undoStack(), historyDock);
+  history->setEmptyLabel(tr("<opened take>"));
+  historyDock->setWidget(history);
+  addDockWidget(Qt::RightDockWidgetArea, historyDock);
+  historyDock->hide();  // View ▸ History shows it (clicking an entry undoes or redoes to it)
+
   auto* cleaningDock = new QDockWidget(tr("Cleaning"), this);
   cleaningDock->setObjectName(QStringLiteral("cleaningDock"));
   cleaningDock->setWidget(m_cleaning);
@@ -201,6 +210,9 @@ void MainWindow::createActions()
       QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
     });
   }
+  m_viewMenu->addSeparator();
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
   m_viewMenu->addAction(tr("&Head-Stabilised View…"), QKeySequence(Qt::CTRL | Qt::Key_B), this,
                         &MainWindow::chooseStabilisation);

@@ -5,6 +5,7 @@
 #include "document/take_document.h"
 #include "language.h"
 #include "main_window.h"
+#include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
@@ -355,6 +356,25 @@ TEST_F(StudioWindow, TimelineJumpsBetweenFlaggedSamples)
   EXPECT_EQ(doc.currentFrame(), 1200);
   window->timeline()->jumpToFlag(1);
   EXPECT_EQ(doc.currentFrame(), 1200) << "no flag after the last one: stay";
+}
+
+TEST_F(StudioWindow, TheTableCountsBadPointsUnderReview)
+{
+  TakeDocument& doc = window->document();
+  doc.setFlags({{2, 10}, {2, 20}, {7, 30}});
+  QAbstractItemModel* model = window->markerTable()->model();
+  auto badPoints = [&](Eigen::Index marker) {
+    for (int row = 0; row < model->rowCount(); ++row)
+      if (model->index(row, ui::MarkerTableModel::LabelColumn).data().toString() ==
+          QString::fromStdString(doc.take().label(marker)))
+        return model->index(row, ui::MarkerTableModel::BadPointsColumn).data().toInt();
+    return -1;
+  };
+  EXPECT_EQ(badPoints(2), 2);
+  EXPECT_EQ(badPoints(7), 1);
+  EXPECT_EQ(badPoints(3), 0);
+  doc.setFlags({});
+  EXPECT_EQ(badPoints(2), 0);
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)

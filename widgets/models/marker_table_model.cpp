@@ -15,6 +15,7 @@ MarkerTableModel::MarkerTableModel(TakeDocument& document, QObject* parent)
 {
   connect(&document, &TakeDocument::takeReset, this, &MarkerTableModel::rebuild);
   connect(&document, &TakeDocument::markersChanged, this, &MarkerTableModel::rebuild);
+  connect(&document, &TakeDocument::flagsChanged, this, &MarkerTableModel::countFlags);
   connect(&document, &TakeDocument::visibilityChanged, this, [this] {
     if (rowCount() > 0)
       emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ForegroundRole});
@@ -49,6 +50,7 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
     case ValidColumn: return QString::number(stats.validPercent, 'f', 1);
     case GapsColumn: return stats.gaps;
     case LongestGapColumn: return static_cast<qlonglong>(stats.longestGap);
+    case BadPointsColumn: return m_badPoints[static_cast<std::size_t>(index.row())];
     default: return {};
     }
   }
@@ -58,6 +60,7 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
     case ValidColumn: return stats.validPercent;
     case GapsColumn: return stats.gaps;
     case LongestGapColumn: return static_cast<qlonglong>(stats.longestGap);
+    case BadPointsColumn: return m_badPoints[static_cast<std::size_t>(index.row())];
     default: return {};
     }
   }
@@ -77,6 +80,7 @@ QVariant MarkerTableModel::headerData(int section, Qt::Orientation orientation, 
   case ValidColumn: return tr("Valid %");
   case GapsColumn: return tr("Gaps");
   case LongestGapColumn: return tr("Longest gap");
+  case BadPointsColumn: return tr("Bad points");
   default: return {};
   }
 }
@@ -121,7 +125,19 @@ void MarkerTableModel::rebuild()
   m_stats.clear();
   for (Eigen::Index m = 0; m < m_document.take().markerCount(); ++m)
     m_stats.push_back(statsOf(m));
+  m_badPoints.assign(m_stats.size(), 0);
   endResetModel();
+  countFlags();
+}
+
+void MarkerTableModel::countFlags()
+{
+  std::fill(m_badPoints.begin(), m_badPoints.end(), 0);
+  for (const auto& flag : m_document.flags())
+    if (flag.first >= 0 && static_cast<std::size_t>(flag.first) < m_badPoints.size())
+      ++m_badPoints[static_cast<std::size_t>(flag.first)];
+  if (rowCount() > 0)
+    emit dataChanged(index(0, BadPointsColumn), index(rowCount() - 1, BadPointsColumn));
 }
 
 void MarkerTableModel::refresh(const std::vector<Eigen::Index>& markers)

@@ -10,7 +10,7 @@ namespace mocap::ui {
 
 class TakeDocument;
 
-/// One row per marker: label, % valid, gap count, longest gap. Sort through a
+/// One row per marker: label, % valid, gap count, longest gap, bad points flagged for review. Sort through a
 /// QSortFilterProxyModel (Qt::UserRole gives the raw number of each cell). Statistics are
 /// recomputed only for the markers a change touches.
 class MarkerTableModel final : public QAbstractTableModel
@@ -24,6 +24,7 @@ public:
     ValidColumn,
     GapsColumn,
     LongestGapColumn,
+    BadPointsColumn,
     ColumnCount
   };
 
@@ -47,10 +48,12 @@ private:
   };
   void rebuild();
   void refresh(const std::vector<Eigen::Index>& markers);
+  void countFlags();
   [[nodiscard]] MarkerStats statsOf(Eigen::Index marker) const;
 
   TakeDocument& m_document;
   std::vector<MarkerStats> m_stats;
+  std::vector<int> m_badPoints;  // flags per marker
 };
 
 } // namespace mocap::ui
