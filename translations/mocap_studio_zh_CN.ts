@@ -651,6 +651,16 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::MarkerView3d</name>
+    <message>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+119"/>
+        <source>%1
+%2, %3, %4</source>
+        <translation>%1
+%2, %3, %4</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
         <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+59"/>

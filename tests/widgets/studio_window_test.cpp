@@ -25,6 +25,7 @@
 #include <QMouseEvent>
 #include <QSettings>
 #include <QTableView>
+#include <QToolTip>
 #include <QTest>
 #include <QUndoStack>
 
@@ -375,6 +376,23 @@ TEST_F(StudioWindow, TheTableCountsBadPointsUnderReview)
   EXPECT_EQ(badPoints(3), 0);
   doc.setFlags({});
   EXPECT_EQ(badPoints(2), 0);
+}
+
+TEST_F(StudioWindow, HoveringAMarkerShowsItsLabel)
+{
+  TakeDocument& doc = window->document();
+  ui::MarkerView3d* view = window->markerView();
+  view->viewport()->repaint();
+  QApplication::processEvents();
+  const Eigen::Index marker = *doc.take().markerIndex("section7-1");
+  const auto position = view->screenPosition(marker);
+  ASSERT_TRUE(position.has_value());
+  QWidget* viewport = view->viewport();
+  QMouseEvent move(QEvent::MouseMove, *position, viewport->mapToGlobal(*position), Qt::NoButton, Qt::NoButton,
+                   Qt::NoModifier);
+  QApplication::sendEvent(viewport, &move);
+  EXPECT_TRUE(QToolTip::text().startsWith(QStringLiteral("section7-1"))) << QToolTip::text().toStdString();
+  QToolTip::hideText();
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)

@@ -8,6 +8,7 @@
 #include "views/vtk_viewport.h"
 
 #include <QLabel>
+#include <QToolTip>
 #include <QStackedLayout>
 
 #include <vtkActor.h>
@@ -105,6 +106,23 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   });
   connect(m_viewport, &VtkViewport::clicked, this, &MarkerView3d::onClicked);
   connect(m_viewport, &VtkViewport::rectangleSelected, this, &MarkerView3d::onRectangle);
+  connect(m_viewport, &VtkViewport::hovered, this, [this](QPoint position) {
+    // The label of the marker under the cursor, as a tooltip that follows it.
+    const Eigen::Index marker = markerAt(position, 8);
+    if (marker < 0) {
+      QToolTip::hideText();
+      return;
+    }
+    const Take& take = m_document.take();
+    const Eigen::Vector3d p = take.position(m_document.currentFrame(), marker);
+    QToolTip::showText(m_viewport->mapToGlobal(position),
+                       tr("%1\n%2, %3, %4")
+                           .arg(QString::fromStdString(take.label(marker)))
+                           .arg(p.x(), 0, 'f', 1)
+                           .arg(p.y(), 0, 'f', 1)
+                           .arg(p.z(), 0, 'f', 1),
+                       m_viewport);
+  });
 
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(16);

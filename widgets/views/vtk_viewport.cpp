@@ -44,7 +44,7 @@ QSurfaceFormat VtkViewport::defaultFormat()
 VtkViewport::VtkViewport(QWidget* parent) : QOpenGLWidget(parent)
 {
   setFocusPolicy(Qt::StrongFocus);
-  setMouseTracking(false);
+  setMouseTracking(true);  // hover reports (labels under the cursor)
   m_window->AddRenderer(m_renderer);
   m_window->SetReadyForRendering(false);  // until initializeGL gives VTK a context
   for (unsigned long id : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
@@ -221,6 +221,10 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event)
     m_dragged = true;
   const QPoint delta = position - m_lastPosition;
   m_lastPosition = position;
+  if (event->buttons() == Qt::NoButton) {
+    emit hovered(position);
+    return;
+  }
   if (m_band && m_band->isVisible()) {  // rubber band: the camera stays
     m_band->setGeometry(QRect(m_pressPosition, position).normalized());
     return;

@@ -50,6 +50,8 @@ public:
 signals:
   /// A press-release without dragging, in widget (logical) coordinates.
   void clicked(QPoint position, Qt::KeyboardModifiers modifiers);
+  /// The cursor moved over the view with no button held, in widget coordinates.
+  void hovered(QPoint position);
   /// A Ctrl+left drag drew this rectangle (rubber-band selection), in widget coordinates;
   /// `modifiers` as held at release.
   void rectangleSelected(QRect rectangle, Qt::KeyboardModifiers modifiers);
