@@ -23,7 +23,7 @@
 <context>
     <name>RemoveMarkersCommand</name>
     <message>
-        <location filename="../widgets/commands/remove_markers_command.cpp" line="+18"/>
+        <location filename="../widgets/commands/remove_markers_command.cpp" line="+19"/>
         <source>Delete marker %1</source>
         <translation>Marker %1 löschen</translation>
     </message>
@@ -63,7 +63,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+60"/>
+        <location filename="../app/studio/main_window.cpp" line="+65"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -173,7 +173,7 @@
         <translation>&amp;Einstellungen…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -317,7 +317,90 @@
         <translation>&amp;Alle einblenden</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
+        <source>&amp;Label</source>
+        <translation>&amp;Beschriftung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Track and Label</source>
+        <translation>&amp;Verfolgen und beschriften</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
+        <translation>Die unbeschrifteten Punkte neu verfolgen und ihnen die Namen der beschrifteten Marker der Aufnahme geben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fix &amp;Swaps…</source>
+        <translation>&amp;Vertauschungen beheben…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find frames where two labels exchange and repair the ones you accept</source>
+        <translation>Bilder finden, in denen zwei Namen vertauscht sind, und die bestätigten reparieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Assign Label by Clicking</source>
+        <translation>Namen per &amp;Klick zuweisen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Select a marker in the table, then click a point in the 3D view to give it that label</source>
+        <translation>Einen Marker in der Tabelle wählen, dann einen Punkt in der 3D-Ansicht anklicken, um ihm diesen Namen zu geben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Labelling: select a marker in the table, then click the point that is it</source>
+        <translation>Beschriften: einen Marker in der Tabelle wählen, dann den Punkt anklicken, der er ist</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Track and Label</source>
+        <translation>Verfolgen und beschriften</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Track and label (%1 of %2 fragments labelled)</source>
+        <translation>Verfolgen und beschriften (%1 von %2 Fragmenten beschriftet)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
+        <translation>%1 von %2 Fragmenten beschriftet; %3 Abtastwerte unbeschriftet</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Fix Swaps</source>
+        <translation>Vertauschungen beheben</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No label swaps found</source>
+        <translation>Keine vertauschten Namen gefunden</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15"/>
+        <source>Repair %n label swap(s)</source>
+        <translation>
+            <numerusform>%n Namensvertauschung reparieren</numerusform>
+            <numerusform>%n Namensvertauschungen reparieren</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Select the one marker whose label the point gets, then click the point</source>
+        <translation>Den einen Marker wählen, dessen Namen der Punkt erhält, dann den Punkt anklicken</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Label %1 as %2</source>
+        <translation>%1 als %2 beschriften</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Select the markers to delete first</source>
         <translation>Wählen Sie zuerst die zu löschenden Marker aus</translation>
     </message>
@@ -477,7 +560,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-524"/>
+        <location line="-622"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -858,6 +941,32 @@
         <location line="+26"/>
         <source>%1 at frame %2</source>
         <translation>%1 bei Frame %2</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SwapReviewDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/swap_review_dialog.cpp" line="+16"/>
+        <source>Review Label Swaps</source>
+        <translation>Namensvertauschungen prüfen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n swap(s) found. Uncheck the ones to leave as they are; double-click one to see its frame.</source>
+        <translation>
+            <numerusform>%n Vertauschung gefunden. Abwählen, was bleiben soll; Doppelklick zeigt das Bild.</numerusform>
+            <numerusform>%n Vertauschungen gefunden. Abwählen, was bleiben soll; Doppelklick zeigt das Bild.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Frame %1: %2 ↔ %3 (jump %4 mm, %5 mm when exchanged)</source>
+        <translation>Bild %1: %2 ↔ %3 (Sprung %4 mm, %5 mm nach Tausch)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Repair Checked</source>
+        <translation>Ausgewählte reparieren</translation>
     </message>
 </context>
 <context>

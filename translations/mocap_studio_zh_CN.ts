@@ -21,7 +21,7 @@
 <context>
     <name>RemoveMarkersCommand</name>
     <message>
-        <location filename="../widgets/commands/remove_markers_command.cpp" line="+18"/>
+        <location filename="../widgets/commands/remove_markers_command.cpp" line="+19"/>
         <source>Delete marker %1</source>
         <translation>删除标记点 %1</translation>
     </message>
@@ -60,7 +60,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+60"/>
+        <location filename="../app/studio/main_window.cpp" line="+65"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -170,7 +170,7 @@
         <translation>首选项(&amp;P)…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
@@ -314,7 +314,89 @@
         <translation>全部显示(&amp;A)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
+        <source>&amp;Label</source>
+        <translation>标注(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Track and Label</source>
+        <translation>跟踪并标注(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
+        <translation>重新跟踪未标注的点，并赋予它们拍摄中已标注标记点的名称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fix &amp;Swaps…</source>
+        <translation>修复交换(&amp;S)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find frames where two labels exchange and repair the ones you accept</source>
+        <translation>查找两个名称互换的帧，并修复您接受的那些</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Assign Label by Clicking</source>
+        <translation>点击分配名称(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Select a marker in the table, then click a point in the 3D view to give it that label</source>
+        <translation>在表格中选择一个标记点，然后在三维视图中点击一个点以赋予它该名称</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Labelling: select a marker in the table, then click the point that is it</source>
+        <translation>标注：在表格中选择一个标记点，然后点击对应的点</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Track and Label</source>
+        <translation>跟踪并标注</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Track and label (%1 of %2 fragments labelled)</source>
+        <translation>跟踪并标注（已标注 %2 个片段中的 %1 个）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
+        <translation>已标注 %2 个片段中的 %1 个；%3 个采样未标注</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Fix Swaps</source>
+        <translation>修复交换</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No label swaps found</source>
+        <translation>未发现名称交换</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15"/>
+        <source>Repair %n label swap(s)</source>
+        <translation>
+            <numerusform>修复 %n 处名称交换</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Select the one marker whose label the point gets, then click the point</source>
+        <translation>请选择一个标记点作为该点的名称，然后点击该点</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Label %1 as %2</source>
+        <translation>将 %1 标注为 %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Select the markers to delete first</source>
         <translation>请先选择要删除的标记点</translation>
     </message>
@@ -473,7 +555,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-524"/>
+        <location line="-622"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -853,6 +935,31 @@
         <location line="+26"/>
         <source>%1 at frame %2</source>
         <translation>%1，第 %2 帧</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SwapReviewDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/swap_review_dialog.cpp" line="+16"/>
+        <source>Review Label Swaps</source>
+        <translation>检查名称交换</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n swap(s) found. Uncheck the ones to leave as they are; double-click one to see its frame.</source>
+        <translation>
+            <numerusform>发现 %n 处交换。取消勾选要保留原样的项；双击可查看其帧。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Frame %1: %2 ↔ %3 (jump %4 mm, %5 mm when exchanged)</source>
+        <translation>第 %1 帧：%2 ↔ %3（跳变 %4 mm，交换后 %5 mm）</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Repair Checked</source>
+        <translation>修复已勾选项</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,8 @@
 #include "commands/apply_patches_command.h"
 #include "commands/insert_marker_command.h"
 #include "commands/remove_markers_command.h"
+#include "commands/replace_take_command.h"
+#include "dialogs/swap_review_dialog.h"
 #include "dialogs/preferences_dialog.h"
 #include "document/autosave.h"
 #include "document/take_document.h"
@@ -41,7 +43,10 @@
 #include <QUndoView>
 
 #include "mocap/marker_edits.h"
+#include "mocap/marker_set.h"
+#include "mocap/swap_detection.h"
 #include "mocap/take_io.h"
+#include "mocap/take_tracking.h"
 
 namespace mocap::studio {
 
@@ -171,6 +176,7 @@ void MainWindow::createActions()
   preferences->setMenuRole(QAction::PreferencesRole);
 
   createMarkerMenu();
+  createLabelMenu();
 
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);
@@ -347,6 +353,103 @@ void MainWindow::createMarkerMenu()
                      [this] { m_document->setHidden(m_document->selection(), true); });
   markers->addAction(tr("Show &All"), QKeySequence(Qt::SHIFT | Qt::Key_H), this,
                      [this] { m_document->showAllMarkers(); });
+}
+
+void MainWindow::createLabelMenu()
+{
+  QMenu* label = menuBar()->addMenu(tr("&Label"));
+  label->addAction(tr("&Track and Label"), QKeySequence(Qt::CTRL | Qt::Key_T), this, &MainWindow::trackAndLabel)
+      ->setToolTip(tr("Re-track the unlabelled points and give them the labels of the take's labelled markers"));
+  label->addAction(tr("Fix &Swaps…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), this, &MainWindow::reviewSwaps)
+      ->setToolTip(tr("Find frames where two labels exchange and repair the ones you accept"));
+  QAction* assign = label->addAction(tr("&Assign Label by Clicking"));
+  assign->setShortcut(QKeySequence(Qt::Key_A));
+  assign->setCheckable(true);
+  assign->setToolTip(tr("Select a marker in the table, then click a point in the 3D view to give it that label"));
+  connect(assign, &QAction::toggled, this, [this](bool on) {
+    m_view3d->setLabellingMode(on);
+    statusBar()->showMessage(on ? tr("Labelling: select a marker in the table, then click the point that is it")
+                                : QString(),
+                             on ? 0 : 1);
+  });
+  connect(m_view3d, &ui::MarkerView3d::labelPointClicked, this, &MainWindow::assignLabel);
+}
+
+void MainWindow::trackAndLabel()
+{
+  const Take& take = m_document->take();
+  if (take.empty())
+    return;
+  TrackReport report;
+  Take tracked;
+  try {
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    tracked = trackTake(take, nullptr, {}, &report);
+    QApplication::restoreOverrideCursor();
+  } catch (const std::exception& e) {
+    QApplication::restoreOverrideCursor();
+    QMessageBox::warning(this, tr("Track and Label"), QString::fromStdString(e.what()));
+    return;
+  }
+  const auto labelled = static_cast<int>(report.labelledFragments);
+  const auto fragments = static_cast<int>(report.fragments);
+  m_document->undoStack()->push(new ui::ReplaceTakeCommand(
+      *m_document, std::move(tracked), tr("Track and label (%1 of %2 fragments labelled)").arg(labelled).arg(fragments)));
+  statusBar()->showMessage(tr("%1 of %2 fragments labelled; %3 samples left unlabelled")
+                               .arg(labelled)
+                               .arg(fragments)
+                               .arg(static_cast<qlonglong>(report.unlabelledSamples)),
+                           10000);
+}
+
+void MainWindow::reviewSwaps()
+{
+  const Take& take = m_document->take();
+  if (take.empty())
+    return;
+  std::vector<LabelSwap> swaps;
+  try {
+    swaps = detectSwaps(take);
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Fix Swaps"), QString::fromStdString(e.what()));
+    return;
+  }
+  if (swaps.empty()) {
+    statusBar()->showMessage(tr("No label swaps found"), 5000);
+    return;
+  }
+  ui::SwapReviewDialog dialog(take, std::move(swaps), this);
+  connect(&dialog, &ui::SwapReviewDialog::frameRequested, m_document, &ui::TakeDocument::setCurrentFrame);
+  if (dialog.exec() != QDialog::Accepted)
+    return;
+  const std::vector<LabelSwap> accepted = dialog.acceptedSwaps();
+  if (accepted.empty())
+    return;
+  Take repaired = take;
+  for (const LabelSwap& swap : accepted)  // in frame order, as found
+    exchangeMarkersFrom(repaired, swap.first, swap.second, swap.frame);
+  const int count = static_cast<int>(accepted.size());
+  m_document->undoStack()->push(
+      new ui::ReplaceTakeCommand(*m_document, std::move(repaired), tr("Repair %n label swap(s)", nullptr, count)));
+}
+
+void MainWindow::assignLabel(Eigen::Index point)
+{
+  const Take& take = m_document->take();
+  const auto& selection = m_document->selection();
+  if (selection.size() != 1 || selection.front() == point) {
+    statusBar()->showMessage(tr("Select the one marker whose label the point gets, then click the point"), 5000);
+    return;
+  }
+  const Eigen::Index target = selection.front();
+  auto* command = new QUndoCommand(tr("Label %1 as %2")
+                                       .arg(QString::fromStdString(take.label(point)),
+                                            QString::fromStdString(take.label(target))));
+  // The fragment's samples go to the marker, then the fragment goes; undo runs the children
+  // backwards, so the fragment is back before the marker's samples are.
+  new ui::ApplyPatchesCommand(*m_document, {validSamplesPatch(take, point, target)}, QString(), command);
+  new ui::RemoveMarkersCommand(*m_document, {point}, command);
+  m_document->undoStack()->push(command);
 }
 
 void MainWindow::deleteMarkers()

@@ -3,6 +3,8 @@
 #include <QMainWindow>
 #include <QStringList>
 
+#include <Eigen/Core>
+
 #include <functional>
 
 class QAction;
@@ -65,6 +67,10 @@ private:
   void exportDialog();
   void deleteRange();
   void createMarkerMenu();
+  void createLabelMenu();
+  void trackAndLabel();
+  void reviewSwaps();
+  void assignLabel(Eigen::Index point);
   void deleteMarkers();
   void addAveragedMarker();
   void swapOverRange();

@@ -63,6 +63,31 @@ MarkerColumn averagedMarker(const Take& take, const std::vector<Eigen::Index>& s
   return column;
 }
 
+SamplePatch validSamplesPatch(const Take& take, Eigen::Index from, Eigen::Index to)
+{
+  checkMarker(take, from);
+  checkMarker(take, to);
+  if (from == to)
+    throw InvalidArgument("a marker cannot take its own samples");
+  SamplePatch patch;
+  patch.marker = to;
+  for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+    if (take.isValid(f, from))
+      patch.frames.push_back(f);
+  const auto count = static_cast<Eigen::Index>(patch.frames.size());
+  patch.positions.resize(count, 3);
+  patch.valid = ValidMask::Constant(count, true);
+  patch.residuals.resize(count);
+  const auto xyz = take.trajectory(from);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    const Eigen::Index f = patch.frames[static_cast<std::size_t>(i)];
+    patch.positions.row(i) = xyz.row(f);
+    patch.residuals(i) = take.residuals()(f, from);
+    patch.states.push_back(take.state(f, from));
+  }
+  return patch;
+}
+
 std::vector<SamplePatch> swapMarkersOverRange(const Take& take, Eigen::Index a, Eigen::Index b, Eigen::Index first,
                                               Eigen::Index last)
 {

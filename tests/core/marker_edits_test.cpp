@@ -103,6 +103,26 @@ TEST(MarkerEdits, AveragedMarkerIsTheMeanWhereAllSourcesAreValid)
   EXPECT_THROW(static_cast<void>(averagedMarker(take, {0, 9}, "x")), InvalidArgument);
 }
 
+TEST(MarkerEdits, ValidSamplesPatchMovesAFragmentIntoItsMarker)
+{
+  Take take({"nose", "Unlabeled1"}, 6, 100.0);
+  for (Eigen::Index f = 0; f < 3; ++f) {
+    take.setPosition(f, 0, {1, 1, 1});
+    take.valid()(f, 0) = true;
+  }
+  for (Eigen::Index f = 3; f < 5; ++f) {
+    take.setPosition(f, 1, {2, 2, static_cast<double>(f)});
+    take.valid()(f, 1) = true;
+  }
+  const SamplePatch patch = validSamplesPatch(take, 1, 0);
+  EXPECT_EQ(patch.frames, (std::vector<Eigen::Index>{3, 4}));
+  applyPatches(take, {patch});
+  EXPECT_TRUE(take.valid().col(0).head(5).all());
+  EXPECT_FALSE(take.isValid(5, 0));
+  EXPECT_EQ(take.position(4, 0), Eigen::Vector3d(2, 2, 4));
+  EXPECT_THROW(static_cast<void>(validSamplesPatch(take, 1, 1)), InvalidArgument);
+}
+
 TEST(MarkerEdits, SwapOverRangeExchangesOnlyThatRangeAndSwapsBack)
 {
   Take take = readC3d(test::sampleTake());

@@ -2,6 +2,7 @@
 #include "../core/test_support.h"
 
 #include "commands/apply_patches_command.h"
+#include "commands/insert_marker_command.h"
 #include "document/take_document.h"
 #include "language.h"
 #include "main_window.h"
@@ -393,6 +394,57 @@ TEST_F(StudioWindow, HoveringAMarkerShowsItsLabel)
   QApplication::sendEvent(viewport, &move);
   EXPECT_TRUE(QToolTip::text().startsWith(QStringLiteral("section7-1"))) << QToolTip::text().toStdString();
   QToolTip::hideText();
+}
+
+/// Cuts frames [0, 99] of `label` out into an unlabelled fragment marker "Unlabeled2" (as a
+/// capture system leaves a marker it lost track of), in one undoable step per part.
+Eigen::Index cutIntoFragment(TakeDocument& doc, const std::string& label)
+{
+  const Eigen::Index marker = *doc.take().markerIndex(label);
+  MarkerColumn fragment = doc.take().column(marker);
+  fragment.label = "Unlabeled2";
+  fragment.valid.tail(fragment.valid.size() - 100).setConstant(false);
+  doc.undoStack()->push(new ui::InsertMarkerCommand(doc, std::move(fragment), QStringLiteral("fragment")));
+  doc.undoStack()->push(new ui::ApplyPatchesCommand(doc, {deleteSamples(doc.take(), marker, 0, 99)}, QStringLiteral("cut")));
+  return doc.take().markerCount() - 1;
+}
+
+TEST_F(StudioWindow, ClickingAPointInLabellingModeGivesItTheSelectedLabel)
+{
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  const Eigen::Index fragment = cutIntoFragment(doc, "section7-1");
+  const Eigen::Index marker = *doc.take().markerIndex("section7-1");
+  EXPECT_FALSE(doc.take().valid().col(marker).head(100).any());
+  window->selectLabels({QStringLiteral("section7-1")});
+  emit window->markerView()->labelPointClicked(fragment);
+  EXPECT_EQ(doc.take().markerCount(), original.markerCount()) << "the fragment joined its marker";
+  EXPECT_TRUE(doc.take().valid().col(marker).head(100).all());
+  EXPECT_EQ(doc.take().position(50, marker), original.position(50, marker));
+  doc.undoStack()->undo();
+  EXPECT_EQ(doc.take().markerCount(), original.markerCount() + 1);
+  EXPECT_EQ(doc.take().label(fragment), "Unlabeled2");
+  EXPECT_FALSE(doc.take().valid().col(marker).head(100).any());
+}
+
+TEST_F(StudioWindow, TrackAndLabelJoinsAFragmentBackAndUndoes)
+{
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  cutIntoFragment(doc, "section7-1");
+  const Eigen::Index withFragment = doc.take().markerCount();
+  QAction* track = nullptr;
+  for (QAction* action : window->findChildren<QAction*>())
+    if (action->text() == QStringLiteral("&Track and Label"))
+      track = action;
+  ASSERT_NE(track, nullptr);
+  track->trigger();
+  const Eigen::Index marker = *doc.take().markerIndex("section7-1");
+  EXPECT_GT(doc.take().valid().col(marker).head(100).count(), 90) << "the fragment got its label back";
+  EXPECT_NEAR((doc.take().position(50, marker) - original.position(50, marker)).norm(), 0.0, 1e-9);
+  doc.undoStack()->undo();
+  EXPECT_EQ(doc.take().markerCount(), withFragment);
+  EXPECT_FALSE(doc.take().valid().col(*doc.take().markerIndex("section7-1")).head(100).any());
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)

@@ -9,8 +9,9 @@
 
 namespace mocap::ui {
 
-RemoveMarkersCommand::RemoveMarkersCommand(TakeDocument& document, std::vector<Eigen::Index> markers)
-    : m_document(document), m_markers(std::move(markers))
+RemoveMarkersCommand::RemoveMarkersCommand(TakeDocument& document, std::vector<Eigen::Index> markers,
+                                           QUndoCommand* parent)
+    : QUndoCommand(parent), m_document(document), m_markers(std::move(markers))
 {
   std::sort(m_markers.begin(), m_markers.end(), std::greater<>());
   m_markers.erase(std::unique(m_markers.begin(), m_markers.end()), m_markers.end());

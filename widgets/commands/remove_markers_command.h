@@ -16,7 +16,7 @@ class TakeDocument;
 class RemoveMarkersCommand final : public QUndoCommand
 {
 public:
-  RemoveMarkersCommand(TakeDocument& document, std::vector<Eigen::Index> markers);
+  RemoveMarkersCommand(TakeDocument& document, std::vector<Eigen::Index> markers, QUndoCommand* parent = nullptr);
 
   void redo() override;
   void undo() override;

@@ -175,6 +175,20 @@ void TakeDocument::insertMarker(Eigen::Index marker, MarkerColumn column)
   emit selectionChanged();
 }
 
+Take TakeDocument::exchangeTake(Take take)
+{
+  std::swap(m_take, take);
+  m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
+  m_selection.clear();
+  m_preview.clear();
+  m_flags.clear();
+  m_currentFrame = std::clamp<Eigen::Index>(m_currentFrame, 0, std::max<Eigen::Index>(m_take.frameCount() - 1, 0));
+  emit markersChanged();
+  emit selectionChanged();
+  emit currentFrameChanged(m_currentFrame);
+  return take;
+}
+
 bool TakeDocument::isHidden(Eigen::Index marker) const
 {
   const auto index = static_cast<std::size_t>(marker);

@@ -56,6 +56,11 @@ public:
   /// Take::insertMarker does, leaving everything unchanged. Emits markersChanged.
   void insertMarker(Eigen::Index marker, MarkerColumn column);
 
+  /// Exchanges the whole take for `take` and returns the old one (for commands that rebuild the
+  /// take, e.g. tracking and labelling). Selection, hidden markers, preview and flags are reset;
+  /// the undo history and file stay. Emits markersChanged.
+  Take exchangeTake(Take take);
+
   /// Hidden markers are not drawn in the 3D and curve views (a view setting, not an edit).
   [[nodiscard]] bool isHidden(Eigen::Index marker) const;
   void setHidden(const std::vector<Eigen::Index>& markers, bool hidden);

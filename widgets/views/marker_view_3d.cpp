@@ -319,7 +319,10 @@ void MarkerView3d::updateFrame()
         continue;
       const Eigen::Vector3d p = displayPosition(frame, m);
       m_points->InsertNextPoint(p.data());
-      const QColor color = isSelected(selection, m) ? selectionColor() : stateColor(take.state(frame, m));
+      // Unlabelled points (fragments waiting for a label) stand apart from every labelled state.
+      const QColor color = isSelected(selection, m)                ? selectionColor()
+                           : isUnlabelledLabel(take.label(m)) ? QColor(200, 130, 255)
+                                                              : stateColor(take.state(frame, m));
       const unsigned char rgb[3] = {static_cast<unsigned char>(color.red()), static_cast<unsigned char>(color.green()),
                                     static_cast<unsigned char>(color.blue())};
       m_colors->InsertNextTypedTuple(rgb);
@@ -506,6 +509,11 @@ void MarkerView3d::onRectangle(const QRect& rectangle, Qt::KeyboardModifiers mod
 void MarkerView3d::onClicked(QPoint position, Qt::KeyboardModifiers modifiers)
 {
   const Eigen::Index marker = markerAt(position);
+  if (m_labellingMode) {
+    if (marker >= 0)
+      emit labelPointClicked(marker);
+    return;
+  }
   const bool extend = modifiers & (Qt::ControlModifier | Qt::ShiftModifier);
   std::vector<Eigen::Index> selection = extend ? m_document.selection() : std::vector<Eigen::Index>{};
   if (marker >= 0) {

@@ -49,6 +49,9 @@ public:
   [[nodiscard]] int trailFrames() const { return m_trailFrames; }
   /// Sphere radius as a fraction of the take's size.
   void setMarkerScale(double fraction);
+  /// Labelling mode: a click on a drawn marker emits labelPointClicked instead of selecting it.
+  void setLabellingMode(bool on) { m_labellingMode = on; }
+  [[nodiscard]] bool labellingMode() const { return m_labellingMode; }
   /// Lines between neighbouring markers (each to its nearest three in the most complete frame).
   void setLinksVisible(bool visible);
   [[nodiscard]] bool linksVisible() const { return m_linksVisible; }
@@ -71,6 +74,9 @@ public:
   [[nodiscard]] std::vector<Eigen::Index> markersIn(const QRect& rectangle) const;
   /// Where drawn marker `marker` appears in the widget; nullopt when it is not drawn.
   [[nodiscard]] std::optional<QPointF> screenPosition(Eigen::Index marker) const;
+
+signals:
+  void labelPointClicked(Eigen::Index marker);
 
 private:
   void rebuildScene();
@@ -111,6 +117,7 @@ private:
   vtkNew<vtkActor> m_linkActor;
   std::vector<std::pair<Eigen::Index, Eigen::Index>> m_links;
   bool m_linksVisible = false;
+  bool m_labellingMode = false;
   std::optional<HeadMotion> m_headMotion;
 };
 

@@ -27,4 +27,10 @@ namespace mocap {
 [[nodiscard]] std::vector<SamplePatch> swapMarkersOverRange(const Take& take, Eigen::Index a, Eigen::Index b,
                                                             Eigen::Index first, Eigen::Index last);
 
+/// A patch that gives marker `to` every valid sample of marker `from` (position, residual,
+/// state), overwriting `to` in those frames: how a hand-labelled fragment joins its marker
+/// (remove `from` afterwards). Empty when `from` has no valid sample. Throws InvalidArgument for
+/// an index outside the take or from == to. O(#frames).
+[[nodiscard]] SamplePatch validSamplesPatch(const Take& take, Eigen::Index from, Eigen::Index to);
+
 } // namespace mocap
