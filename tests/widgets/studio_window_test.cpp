@@ -3,6 +3,7 @@
 
 #include "commands/apply_patches_command.h"
 #include "commands/insert_marker_command.h"
+#include "dialogs/swap_review_dialog.h"
 #include "document/take_document.h"
 #include "language.h"
 #include "main_window.h"
@@ -23,6 +24,7 @@
 #include <QApplication>
 #include <QImage>
 #include <QItemSelectionModel>
+#include <QListWidget>
 #include <QMouseEvent>
 #include <QSettings>
 #include <QTableView>
@@ -445,6 +447,28 @@ TEST_F(StudioWindow, TrackAndLabelJoinsAFragmentBackAndUndoes)
   doc.undoStack()->undo();
   EXPECT_EQ(doc.take().markerCount(), withFragment);
   EXPECT_FALSE(doc.take().valid().col(*doc.take().markerIndex("section7-1")).head(100).any());
+}
+
+TEST_F(StudioWindow, SwapReviewReturnsOnlyTheAcceptedSwaps)
+{
+  const Take& take = window->document().take();
+  std::vector<LabelSwap> swaps(3);
+  for (std::size_t i = 0; i < swaps.size(); ++i)
+    swaps[i] = LabelSwap{static_cast<Eigen::Index>(100 * (i + 1)), 1, 2, 40.0, 1.0};
+  ui::SwapReviewDialog dialog(take, swaps);
+  auto* list = dialog.findChild<QListWidget*>();
+  ASSERT_NE(list, nullptr);
+  ASSERT_EQ(list->count(), 3);
+  EXPECT_TRUE(list->item(0)->text().contains(QStringLiteral("root-2")));
+  list->item(1)->setCheckState(Qt::Unchecked);
+  const auto accepted = dialog.acceptedSwaps();
+  ASSERT_EQ(accepted.size(), 2u);
+  EXPECT_EQ(accepted[0].frame, 100);
+  EXPECT_EQ(accepted[1].frame, 300);
+  Eigen::Index requested = -1;
+  QObject::connect(&dialog, &ui::SwapReviewDialog::frameRequested, [&](Eigen::Index f) { requested = f; });
+  emit list->itemDoubleClicked(list->item(2));
+  EXPECT_EQ(requested, 300);
 }
 
 TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
