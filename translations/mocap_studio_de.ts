@@ -63,7 +63,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+65"/>
+        <location filename="../app/studio/main_window.cpp" line="+66"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -209,18 +209,18 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+74"/>
+        <location line="+77"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+74"/>
+        <location line="-77"/>
+        <location line="+77"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-70"/>
         <source>&amp;Head-Stabilised View…</source>
         <translation>&amp;Kopfstabilisierte Ansicht…</translation>
     </message>
@@ -245,7 +245,7 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+56"/>
         <source>3D view in the lab frame</source>
         <translation>3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
@@ -560,7 +560,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-622"/>
+        <location line="-625"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -622,12 +622,12 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+88"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+95"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
     <message>
-        <location line="+200"/>
+        <location line="+203"/>
         <source>Move %1 %2 at frame %3</source>
         <translation>%1 %2 in Bild %3 verschieben</translation>
     </message>
@@ -741,17 +741,17 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+119"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+120"/>
         <source>%1
-%2, %3, %4</source>
+%2, %3, %4 %5</source>
         <translation>%1
-%2, %3, %4</translation>
+%2, %3, %4 %5</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+59"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+65"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
@@ -794,6 +794,16 @@
         <location line="+2"/>
         <source>Up axis:</source>
         <translation>Hochachse:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Unit of the curve labels and read-outs; the take keeps its own units</source>
+        <translation>Einheit der Kurvenbeschriftungen und Anzeigen; die Aufnahme behält ihre eigenen Einheiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display units:</source>
+        <translation>Anzeigeeinheit:</translation>
     </message>
     <message>
         <location line="+5"/>

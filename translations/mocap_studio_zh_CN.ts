@@ -60,7 +60,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+65"/>
+        <location filename="../app/studio/main_window.cpp" line="+66"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -206,18 +206,18 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+74"/>
+        <location line="+77"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-74"/>
-        <location line="+74"/>
+        <location line="-77"/>
+        <location line="+77"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-70"/>
         <source>&amp;Head-Stabilised View…</source>
         <translation>头部稳定视图(&amp;H)…</translation>
     </message>
@@ -242,7 +242,7 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+56"/>
         <source>3D view in the lab frame</source>
         <translation>三维视图使用实验室坐标系</translation>
     </message>
@@ -555,7 +555,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-622"/>
+        <location line="-625"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -616,12 +616,12 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+88"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+95"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
     <message>
-        <location line="+200"/>
+        <location line="+203"/>
         <source>Move %1 %2 at frame %3</source>
         <translation>移动 %1 的 %2（第 %3 帧）</translation>
     </message>
@@ -735,17 +735,17 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+119"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+120"/>
         <source>%1
-%2, %3, %4</source>
+%2, %3, %4 %5</source>
         <translation>%1
-%2, %3, %4</translation>
+%2, %3, %4 %5</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+59"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+65"/>
         <source>Preferences</source>
         <translation>首选项</translation>
     </message>
@@ -788,6 +788,16 @@
         <location line="+2"/>
         <source>Up axis:</source>
         <translation>向上轴：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Unit of the curve labels and read-outs; the take keeps its own units</source>
+        <translation>曲线标签和读数的单位；拍摄保留其自身单位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Display units:</source>
+        <translation>显示单位：</translation>
     </message>
     <message>
         <location line="+5"/>

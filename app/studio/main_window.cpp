@@ -42,6 +42,7 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include "mocap/length_unit.h"
 #include "mocap/marker_edits.h"
 #include "mocap/marker_set.h"
 #include "mocap/swap_detection.h"
@@ -260,6 +261,9 @@ void MainWindow::applyPreferences(const ui::Preferences& preferences)
   m_view3d->setTrailFrames(preferences.trailFrames);
   m_view3d->setUpAxis(preferences.upAxis);
   m_autosave->setInterval(preferences.autosaveMinutes * 60 * 1000);
+  const LengthUnit unit = parseLengthUnit(preferences.displayUnit.toStdString()).value_or(LengthUnit::Millimetre);
+  m_curves->setDisplayUnit(unit);
+  m_view3d->setDisplayUnit(unit);
   m_yUp->setChecked(preferences.upAxis == 1);
   m_zUp->setChecked(preferences.upAxis == 2);
   m_trails->setChecked(preferences.trailFrames > 0);

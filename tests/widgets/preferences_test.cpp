@@ -1,5 +1,6 @@
 // Preferences: remembered across runs, and absurd hand-edited values are clamped, never used.
 #include "dialogs/preferences_dialog.h"
+#include "views/display_units.h"
 
 #include <QSettings>
 
@@ -21,6 +22,7 @@ TEST(Preferences, SavedValuesComeBackAndAbsurdOnesAreClamped)
   p.upAxis = 1;
   p.language = QStringLiteral("de");
   p.autosaveMinutes = 5;
+  p.displayUnit = QStringLiteral("cm");
   p.save();
   const Preferences loaded = Preferences::load();
   EXPECT_DOUBLE_EQ(loaded.markerSizePercent, 2.5);
@@ -28,19 +30,30 @@ TEST(Preferences, SavedValuesComeBackAndAbsurdOnesAreClamped)
   EXPECT_EQ(loaded.upAxis, 1);
   EXPECT_EQ(loaded.language, QStringLiteral("de"));
   EXPECT_EQ(loaded.autosaveMinutes, 5);
+  EXPECT_EQ(loaded.displayUnit, QStringLiteral("cm"));
 
   QSettings settings;
   settings.setValue(QStringLiteral("view/markerSizePercent"), std::numeric_limits<double>::quiet_NaN());
   settings.setValue(QStringLiteral("view/trailFrames"), -7);
   settings.setValue(QStringLiteral("view/upAxis"), 9);
   settings.setValue(QStringLiteral("autosaveMinutes"), 100000);
+  settings.setValue(QStringLiteral("view/displayUnit"), QStringLiteral("furlong"));
   settings.sync();
   const Preferences clamped = Preferences::load();
   EXPECT_DOUBLE_EQ(clamped.markerSizePercent, Preferences{}.markerSizePercent);
   EXPECT_EQ(clamped.trailFrames, 0);
   EXPECT_EQ(clamped.upAxis, 2);
   EXPECT_EQ(clamped.autosaveMinutes, 60);
+  EXPECT_EQ(clamped.displayUnit, QStringLiteral("mm"));
   QSettings().clear();
+}
+
+TEST(DisplayUnits, LengthsConvertBetweenTheTakeAndTheDisplayUnit)
+{
+  EXPECT_EQ(ui::formatLength(1234.5, LengthUnit::Millimetre, LengthUnit::Centimetre), QStringLiteral("123.45"));
+  EXPECT_EQ(ui::formatLength(1.2345, LengthUnit::Metre, LengthUnit::Millimetre), QStringLiteral("1234.5"));
+  EXPECT_EQ(ui::formatLength(12.0, LengthUnit::Millimetre, LengthUnit::Metre), QStringLiteral("0.0120"));
+  EXPECT_EQ(ui::unitLabel(LengthUnit::Centimetre), QStringLiteral("cm"));
 }
 
 TEST(Preferences, TheDialogShowsAndReturnsThePreferences)

@@ -249,9 +249,12 @@ TEST_F(StudioWindow, DraggingASampleOnTheCurvesEditsOneCoordinateUndoably)
   window->selectLabels({QStringLiteral("section7-1")});
   ui::CurveView* curves = window->curveView();
   curves->setVisibleRange(500, 540);
-  curves->repaint();
+  // The dock may not be exposed yet right after the window shows: paint until it has drawn.
+  ASSERT_TRUE(QTest::qWaitFor([&] {
+    curves->repaint();
+    return curves->pointOf(marker, 520, 2).has_value();
+  }, 3000));
   const auto point = curves->pointOf(marker, 520, 2);
-  ASSERT_TRUE(point.has_value());
   const QPoint start = point->toPoint();
   QTest::mousePress(curves, Qt::LeftButton, Qt::NoModifier, start);
   QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(0, -20)), curves->mapToGlobal(QPointF(start)),

@@ -7,6 +7,8 @@
 #include <QSettings>
 #include <QSpinBox>
 
+#include "mocap/length_unit.h"
+
 #include <algorithm>
 
 namespace mocap::ui {
@@ -26,6 +28,7 @@ Preferences Preferences::load()
   p.upAxis = settings.value(QStringLiteral("view/upAxis"), p.upAxis).toInt();
   p.language = settings.value(QStringLiteral("language")).toString();
   p.autosaveMinutes = settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt();
+  p.displayUnit = settings.value(QStringLiteral("view/displayUnit"), p.displayUnit).toString();
   return p.clamped();
 }
 
@@ -38,6 +41,7 @@ void Preferences::save() const
   if (!language.isEmpty())
     settings.setValue(QStringLiteral("language"), language);
   settings.setValue(QStringLiteral("autosaveMinutes"), autosaveMinutes);
+  settings.setValue(QStringLiteral("view/displayUnit"), displayUnit);
 }
 
 Preferences Preferences::clamped() const
@@ -49,6 +53,8 @@ Preferences Preferences::clamped() const
   p.trailFrames = std::clamp(p.trailFrames, 0, kMaxTrailFrames);
   p.upAxis = p.upAxis == 1 ? 1 : 2;
   p.autosaveMinutes = std::clamp(p.autosaveMinutes, 1, kMaxAutosaveMinutes);
+  if (!parseLengthUnit(p.displayUnit.toStdString()))
+    p.displayUnit = Preferences{}.displayUnit;
   return p;
 }
 
@@ -76,6 +82,12 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, const QStri
   m_upAxis->addItem(tr("Z up"), 2);
   m_upAxis->setCurrentIndex(preferences.upAxis == 1 ? 0 : 1);
   form->addRow(tr("Up axis:"), m_upAxis);
+  m_unit = new QComboBox(this);
+  for (const char* unit : {"mm", "cm", "m"})
+    m_unit->addItem(QString::fromLatin1(unit), QString::fromLatin1(unit));
+  m_unit->setCurrentIndex(std::max(0, m_unit->findData(preferences.displayUnit)));
+  m_unit->setToolTip(tr("Unit of the curve labels and read-outs; the take keeps its own units"));
+  form->addRow(tr("Display units:"), m_unit);
   m_language = new QComboBox(this);
   for (int i = 0; i < languageCodes.size() && i < languageNames.size(); ++i)
     m_language->addItem(languageNames[i], languageCodes[i]);
@@ -102,6 +114,7 @@ Preferences PreferencesDialog::preferences() const
   p.upAxis = m_upAxis->currentData().toInt();
   p.language = m_language->currentData().toString();
   p.autosaveMinutes = m_autosave->value();
+  p.displayUnit = m_unit->currentData().toString();
   return p.clamped();
 }
 

@@ -18,6 +18,7 @@ struct Preferences
   int upAxis = 2;                  ///< 1 = Y up, 2 = Z up
   QString language;                ///< code, e.g. "de"; empty: the system's
   int autosaveMinutes = 1;         ///< interval of the recovery copy
+  QString displayUnit = QStringLiteral("mm");  ///< "mm", "cm" or "m" for read-outs
 
   [[nodiscard]] static Preferences load();
   void save() const;
@@ -43,6 +44,7 @@ private:
   QComboBox* m_upAxis = nullptr;
   QComboBox* m_language = nullptr;
   QSpinBox* m_autosave = nullptr;
+  QComboBox* m_unit = nullptr;
 };
 
 } // namespace mocap::ui

@@ -2,6 +2,7 @@
 
 #include "commands/apply_patches_command.h"
 #include "document/take_document.h"
+#include "views/display_units.h"
 #include "views/sample_colors.h"
 
 #include "mocap/gaps.h"
@@ -41,6 +42,12 @@ CurveView::CurveView(TakeDocument& document, QWidget* parent) : QWidget(parent),
   connect(&document, &TakeDocument::flagsChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::markersChanged, this, qOverload<>(&CurveView::update));
   showAll();
+}
+
+void CurveView::setDisplayUnit(LengthUnit unit)
+{
+  m_displayUnit = unit;
+  update();
 }
 
 void CurveView::showAll()
@@ -137,15 +144,18 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
       }
   }
   painter.setPen(QColor(150, 150, 150));
-  painter.drawText(QRectF(0, strip.top(), kLeftMargin - 6, 14), Qt::AlignRight, kAxisNames[axis]);
+  painter.drawText(QRectF(0, strip.top(), kLeftMargin - 6, 14), Qt::AlignRight,
+                   QStringLiteral("%1 (%2)").arg(QLatin1String(kAxisNames[axis]), unitLabel(m_displayUnit)));
   if (!std::isfinite(lo))
     return;
   if (hi - lo < 1e-9) {
     lo -= 0.5;
     hi += 0.5;
   }
-  painter.drawText(QRectF(0, strip.top() + 14, kLeftMargin - 6, 14), Qt::AlignRight, QString::number(hi, 'f', 1));
-  painter.drawText(QRectF(0, strip.bottom() - 14, kLeftMargin - 6, 14), Qt::AlignRight, QString::number(lo, 'f', 1));
+  painter.drawText(QRectF(0, strip.top() + 14, kLeftMargin - 6, 14), Qt::AlignRight,
+                   formatLength(hi, take.units(), m_displayUnit));
+  painter.drawText(QRectF(0, strip.bottom() - 14, kLeftMargin - 6, 14), Qt::AlignRight,
+                   formatLength(lo, take.units(), m_displayUnit));
   auto yOf = [&](double v) { return strip.bottom() - (v - lo) / (hi - lo) * strip.height(); };
   m_scales[static_cast<std::size_t>(axis)] = {strip, lo, hi, true};
 

@@ -2,6 +2,7 @@
 
 #include <QWidget>
 
+#include "mocap/length_unit.h"
 #include "mocap/sample_patch.h"
 
 #include <Eigen/Core>
@@ -27,6 +28,8 @@ class CurveView final : public QWidget
 public:
   explicit CurveView(TakeDocument& document, QWidget* parent = nullptr);
 
+  /// Unit of the value labels (the take keeps its own units).
+  void setDisplayUnit(LengthUnit unit);
   /// Visible frame range [first, last].
   void setVisibleRange(double first, double last);
   [[nodiscard]] double firstVisible() const { return m_first; }
@@ -83,6 +86,7 @@ private:
   Eigen::Index m_rangeAnchor = -1;
   double m_panFirst = 0.0;
   mutable std::array<StripScale, 3> m_scales{};
+  LengthUnit m_displayUnit = LengthUnit::Millimetre;
   std::optional<Drag> m_drag;
 };
 

@@ -1,6 +1,7 @@
 #include "views/marker_view_3d.h"
 
 #include "document/take_document.h"
+#include "views/display_units.h"
 #include "views/sample_colors.h"
 
 #include "mocap/marker_links.h"
@@ -116,11 +117,11 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
     const Take& take = m_document.take();
     const Eigen::Vector3d p = take.position(m_document.currentFrame(), marker);
     QToolTip::showText(m_viewport->mapToGlobal(position),
-                       tr("%1\n%2, %3, %4")
-                           .arg(QString::fromStdString(take.label(marker)))
-                           .arg(p.x(), 0, 'f', 1)
-                           .arg(p.y(), 0, 'f', 1)
-                           .arg(p.z(), 0, 'f', 1),
+                       tr("%1\n%2, %3, %4 %5")
+                           .arg(QString::fromStdString(take.label(marker)),
+                                formatLength(p.x(), take.units(), m_displayUnit),
+                                formatLength(p.y(), take.units(), m_displayUnit),
+                                formatLength(p.z(), take.units(), m_displayUnit), unitLabel(m_displayUnit)),
                        m_viewport);
   });
 

@@ -49,6 +49,8 @@ public:
   [[nodiscard]] int trailFrames() const { return m_trailFrames; }
   /// Sphere radius as a fraction of the take's size.
   void setMarkerScale(double fraction);
+  /// Unit of the hover read-out (the take keeps its own units).
+  void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
   /// Labelling mode: a click on a drawn marker emits labelPointClicked instead of selecting it.
   void setLabellingMode(bool on) { m_labellingMode = on; }
   [[nodiscard]] bool labellingMode() const { return m_labellingMode; }
@@ -118,6 +120,7 @@ private:
   std::vector<std::pair<Eigen::Index, Eigen::Index>> m_links;
   bool m_linksVisible = false;
   bool m_labellingMode = false;
+  LengthUnit m_displayUnit = LengthUnit::Millimetre;
   std::optional<HeadMotion> m_headMotion;
 };
 
