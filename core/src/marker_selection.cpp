@@ -290,6 +290,39 @@ private:
   std::unordered_map<std::string, double> m_values;
 };
 
+// Exchange: swap a selected unit for an unselected one of the same width while that lowers the
+// objective (first improvement, units in order, at most two passes), undoing forward steps taken
+// too early or improving a set found another way. `current` is the objective of `selected`.
+void exchangeUnits(ObjectiveCache& objective, const MarkerSymmetry& symmetry, std::vector<bool>& selected,
+                   double current)
+{
+  const auto& units = symmetry.units();
+  const auto width = [&](std::size_t u) { return units[u].size(); };
+  for (int pass = 0; pass < 2; ++pass) {
+    bool improved = false;
+    for (std::size_t out = 0; out < units.size(); ++out) {
+      if (!selected[out])
+        continue;
+      for (std::size_t in = 0; in < units.size() && selected[out]; ++in) {
+        if (selected[in] || width(in) != width(out))
+          continue;
+        selected[out] = false;
+        selected[in] = true;
+        const double value = objective(selected);
+        if (value < current - 1e-9 * std::abs(current)) {
+          current = value;
+          improved = true;
+        } else {
+          selected[in] = false;
+          selected[out] = true;
+        }
+      }
+    }
+    if (!improved)
+      break;
+  }
+}
+
 std::optional<std::vector<Eigen::Index>> greedyForSize(ObjectiveCache& objective,
                                                        const MarkerSymmetry& symmetry, Eigen::Index size)
 {
@@ -336,31 +369,7 @@ std::optional<std::vector<Eigen::Index>> greedyForSize(ObjectiveCache& objective
     current = bestValue;
   }
 
-  // Exchange: swap a selected unit for an unselected one of the same width while that lowers the
-  // objective (first improvement, units in order), undoing forward steps taken too early.
-  for (int pass = 0; pass < 2; ++pass) {
-    bool improved = false;
-    for (std::size_t out = 0; out < units.size(); ++out) {
-      if (!selected[out])
-        continue;
-      for (std::size_t in = 0; in < units.size() && selected[out]; ++in) {
-        if (selected[in] || width(in) != width(out))
-          continue;
-        selected[out] = false;
-        selected[in] = true;
-        const double value = objective(selected);
-        if (value < current - 1e-9 * std::abs(current)) {
-          current = value;
-          improved = true;
-        } else {
-          selected[in] = false;
-          selected[out] = true;
-        }
-      }
-    }
-    if (!improved)
-      break;
-  }
+  exchangeUnits(objective, symmetry, selected, current);
   return markersOfUnits(symmetry, selected);
 }
 
@@ -385,16 +394,33 @@ std::optional<std::vector<Eigen::Index>> selectGreedy(const SubsetErrors& errors
 std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetErrors& errors,
                                                                    const MarkerSymmetry& symmetry,
                                                                    const std::vector<Eigen::Index>& sizes,
-                                                                   const RunControl& control)
+                                                                   const RunControl& control,
+                                                                   const std::map<Eigen::Index, std::vector<Eigen::Index>>& starts)
 {
   for (const Eigen::Index size : sizes)
     checkGreedySize(errors, symmetry, size);
   ObjectiveCache objective(errors, symmetry);
+  const auto& units = symmetry.units();
+  const auto selectionOf = [&](const std::vector<Eigen::Index>& markers) {
+    std::vector<bool> selected(units.size(), false);
+    for (const Eigen::Index m : markers)
+      selected[static_cast<std::size_t>(symmetry.unitOf(m))] = true;
+    return selected;
+  };
   std::vector<std::optional<std::vector<Eigen::Index>>> result(sizes.size());
   std::atomic<std::size_t> done{0};
   ProgressReporter reporter(control);
   const auto body = [&](std::size_t i) {
     result[i] = greedyForSize(objective, symmetry, sizes[i]);
+    // A given start (another method's set of this size) improved by exchange replaces the greedy
+    // set when it scores better: the search then never ends worse than that method on the objective.
+    const auto start = starts.find(sizes[i]);
+    if (start != starts.end() && static_cast<Eigen::Index>(start->second.size()) == sizes[i]) {
+      std::vector<bool> selected = selectionOf(start->second);
+      exchangeUnits(objective, symmetry, selected, objective(selected));
+      if (!result[i] || objective(selected) < objective(selectionOf(*result[i])))
+        result[i] = markersOfUnits(symmetry, selected);
+    }
     done.fetch_add(1, std::memory_order_relaxed);
   };
   const auto tick = [&] {
@@ -406,16 +432,9 @@ std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetE
   // Sizes searched independently can come out worse than a smaller size plus one unit. In
   // ascending order, a size takes the set one smaller plus a single unit, or two smaller plus a
   // pair, whenever that scores better.
-  const auto& units = symmetry.units();
   std::map<Eigen::Index, std::size_t> indexOfSize;
   for (std::size_t i = 0; i < sizes.size(); ++i)
     indexOfSize.emplace(sizes[i], i);
-  const auto selectionOf = [&](const std::vector<Eigen::Index>& markers) {
-    std::vector<bool> selected(units.size(), false);
-    for (const Eigen::Index m : markers)
-      selected[static_cast<std::size_t>(symmetry.unitOf(m))] = true;
-    return selected;
-  };
   for (const auto& [size, index] : indexOfSize) {
     std::optional<std::vector<bool>> best;
     double bestValue = std::numeric_limits<double>::infinity();
@@ -619,7 +638,10 @@ LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& sy
       otherSizes.push_back(size);
   }
   if (runOthers) {
-    const auto greedy = selectGreedy(errors, symmetry, otherSizes, stage(pfaEnd, greedyEnd));
+    std::map<Eigen::Index, std::vector<Eigen::Index>> pfaStarts;
+    for (const auto& [size, layout] : pfaBySize)
+      pfaStarts.emplace(size, layout.markers);
+    const auto greedy = selectGreedy(errors, symmetry, otherSizes, stage(pfaEnd, greedyEnd), pfaStarts);
     if (greedy.size() != otherSizes.size()) {
       plan.cancelled = true;
       plan.sizes.clear();

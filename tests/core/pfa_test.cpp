@@ -15,6 +15,7 @@
 #include <functional>
 #include <cmath>
 #include <random>
+#include <map>
 #include <set>
 
 namespace mocap {
@@ -266,6 +267,28 @@ TEST(MarkerSelection, EverySelectionHoldsBothMarkersOfEachPair)
   }
   // With no single markers left, an odd size cannot be symmetric.
   EXPECT_FALSE(selectRandom(MarkerSymmetry(2, {{0, 1}}), 1, 0));
+}
+
+TEST(MarkerSelection, GreedyStartedFromAnotherSetNeverEndsWorseThanIt)
+{
+  const MirroredFace face;
+  const LayoutFrames frames = collectLayoutFrames({face.take}, {});
+  const MarkerSymmetry symmetry(13, {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {8, 9}});
+  const SubsetErrors errors = errorsFor(frames, 1e-3);
+  std::vector<Eigen::Index> sizes;
+  std::map<Eigen::Index, std::vector<Eigen::Index>> starts;
+  for (Eigen::Index size = 2; size < 13; ++size) {
+    sizes.push_back(size);
+    starts.emplace(size, *selectRandom(symmetry, size, static_cast<std::uint64_t>(size)));
+  }
+  const auto started = selectGreedy(errors, symmetry, sizes, {}, starts);
+  ASSERT_EQ(started.size(), sizes.size());
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    ASSERT_TRUE(started[i]);
+    const double value = errors.trainingObjective(*started[i]);
+    EXPECT_LE(value, errors.trainingObjective(starts.at(sizes[i])) + 1e-12) << sizes[i];
+    EXPECT_EQ(symmetry.symmetricClosure(*started[i]), *started[i]);
+  }
 }
 
 TEST(MarkerSelection, SameResultOnAnyThreadCountAndCancellation)

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -103,10 +104,13 @@ selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry, Eigen::
 /// sharing the objective values of the forward steps the sizes have in common; then, in ascending
 /// size, a set is replaced by the set one smaller plus a single unit (or two smaller plus a pair)
 /// when that scores better, so no size is worse on the objective than a smaller one allows.
-/// Returns an empty vector when cancelled. Throws as selectGreedy.
+/// `starts` (by size; e.g. the PFA sets) are improved by the same exchange passes and replace the
+/// greedy set of their size when they end better, so the result never scores worse on the
+/// objective than a start. Returns an empty vector when cancelled. Throws as selectGreedy.
 [[nodiscard]] std::vector<std::optional<std::vector<Eigen::Index>>>
 selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry,
-             const std::vector<Eigen::Index>& sizes, const RunControl& control = {});
+             const std::vector<Eigen::Index>& sizes, const RunControl& control = {},
+             const std::map<Eigen::Index, std::vector<Eigen::Index>>& starts = {});
 
 /// A uniformly shuffled symmetric set of exactly `size` markers (units added in random order
 /// while they fit), the baseline both methods must beat; nullopt when none exists. O(#markers).

@@ -28,10 +28,11 @@ struct SubsetErrorOptions
   /// Training frames (evenly spaced) whose weights trainingObjective() solves for.
   Eigen::Index objectiveFrames = 128;
   /// Weight of the blendshape term in trainingObjective() against the reconstruction term (each
-  /// already divided by its no-marker value). Below 1 because the selection is to optimise the
-  /// reconstruction first and only keep the paper's measure from being traded away; 0.3 was
-  /// chosen on the AnimFace and Facial-Sing takes (1.0 gave up reconstruction at mid sizes).
-  double blendshapeWeight = 0.3;
+  /// already divided by its no-marker value): both measures count alike. On the AnimFace and
+  /// Facial-Sing takes, with greedy search also started from the PFA sets, 1.0 left 8 sizes where
+  /// greedy was worse than PFA on a test measure, against 12 for 0.3 (3.0: no better, and slower
+  /// searches with 512 objective frames did not help either).
+  double blendshapeWeight = 1.0;
 };
 
 /// See the comment above SubsetErrorOptions. Immutable after construction: threads may share one.
