@@ -13,6 +13,7 @@
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
 #include "panels/gap_fill_step.h"
+#include "panels/head_stabilisation_step.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
@@ -42,6 +43,7 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include "mocap/head_stabilization.h"
 #include "mocap/length_unit.h"
 #include "mocap/marker_edits.h"
 #include "mocap/marker_set.h"
@@ -131,6 +133,8 @@ void MainWindow::createDocks()
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
   m_cleaning->addStep(new ui::GapFillStep(*m_document, m_cleaning));
   m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
+  // Last: its preview moves every marker, not something to compute on every open.
+  m_cleaning->addStep(new ui::HeadStabilisationStep(*m_document, m_cleaning));
   auto* historyDock = new QDockWidget(tr("History"), this);
   historyDock->setObjectName(QStringLiteral("historyDock"));
   auto* history = new QUndoView(m_document->undoStack(), historyDock);
@@ -312,11 +316,8 @@ void MainWindow::chooseStabilisation()
     for (Eigen::Index m : m_document->selection())
       labels << QString::fromStdString(take.label(m));
   } else {
-    for (const std::string& label : take.labels()) {
-      const QString name = QString::fromStdString(label).toLower();
-      if (name.startsWith(QStringLiteral("root")) || name.startsWith(QStringLiteral("head")))
-        labels << QString::fromStdString(label);
-    }
+    for (const Eigen::Index m : guessHeadReferenceMarkers(take))
+      labels << QString::fromStdString(take.label(m));
   }
   bool ok = false;
   const QString text =

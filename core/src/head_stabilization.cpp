@@ -4,8 +4,10 @@
 #include "mocap/kabsch.h"
 
 #include <algorithm>
+#include <cctype>
 #include <set>
 #include <string>
+#include <string_view>
 
 namespace mocap {
 
@@ -157,6 +159,47 @@ void removeHeadMotion(Take& take, const HeadMotion& motion)
 void restoreHeadMotion(Take& take, const HeadMotion& motion)
 {
   transformTake(take, motion, false);
+}
+
+std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take)
+{
+  const auto startsWith = [](const std::string& label, std::string_view prefix) {
+    if (label.size() < prefix.size())
+      return false;
+    for (std::size_t i = 0; i < prefix.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(label[i])) != prefix[i])
+        return false;
+    return true;
+  };
+  std::vector<Eigen::Index> markers;
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    if (startsWith(take.label(m), "root") || startsWith(take.label(m), "head"))
+      markers.push_back(m);
+  return markers;
+}
+
+std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMotion& motion)
+{
+  Take stabilised = take;
+  removeHeadMotion(stabilised, motion);
+  std::vector<Eigen::Index> frames(static_cast<std::size_t>(take.frameCount()));
+  for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+    frames[static_cast<std::size_t>(f)] = f;
+  std::vector<SamplePatch> patches;
+  patches.reserve(static_cast<std::size_t>(take.markerCount()));
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    SamplePatch patch;
+    patch.marker = m;
+    patch.frames = frames;
+    patch.positions = stabilised.trajectory(m);
+    patch.valid = take.valid().col(m);
+    patch.residuals = take.residuals().col(m);
+    patch.states.reserve(frames.size());
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      patch.states.push_back(take.state(f, m));
+    patches.push_back(std::move(patch));
+  }
+  return patches;
 }
 
 } // namespace mocap

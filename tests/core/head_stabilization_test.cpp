@@ -70,6 +70,33 @@ TEST(HeadStabilization, RemovesRigidHeadMotionAndRestoresItExactly)
   EXPECT_TRUE((take.valid() == original.valid()).all());
 }
 
+TEST(HeadStabilization, PatchesMoveTheSamplesAsRemoveHeadMotionDoesAndKeepTheirValidity)
+{
+  Take take = movingHead();
+  take.valid()(7, 4) = false;
+  take.setState(9, 4, SampleState::Filled);
+  const HeadMotion motion = estimateHeadMotion(take, {0, 1, 2, 3});
+  Take expected = take;
+  removeHeadMotion(expected, motion);
+  Take patched = take;
+  const std::vector<SamplePatch> undo = applyPatches(patched, headMotionRemovalPatches(take, motion));
+  for (Eigen::Index m = 0; m < 5; ++m)
+    for (Eigen::Index f = 0; f < 50; ++f)
+      ASSERT_EQ(patched.position(f, m), expected.position(f, m)) << m << " " << f;
+  EXPECT_TRUE((patched.valid() == take.valid()).all());
+  EXPECT_EQ(patched.state(9, 4), SampleState::Filled);
+  applyPatches(patched, undo);
+  for (Eigen::Index m = 0; m < 5; ++m)
+    EXPECT_TRUE(patched.trajectory(m) == take.trajectory(m)) << "undo restores bit for bit";
+}
+
+TEST(HeadStabilization, HeadMarkersAreGuessedFromTheirLabels)
+{
+  Take take({"Root-1", "nose", "HEAD_L", "header", "rootless", "chin"}, 1, 100.0);
+  EXPECT_EQ(guessHeadReferenceMarkers(take), (std::vector<Eigen::Index>{0, 2, 3, 4}));
+  EXPECT_TRUE(guessHeadReferenceMarkers(Take({"a", "b"}, 1, 100.0)).empty());
+}
+
 TEST(HeadStabilization, FramesWithTooFewReferenceMarkersAreInterpolated)
 {
   Take take = movingHead();

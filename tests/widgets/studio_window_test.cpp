@@ -9,6 +9,7 @@
 #include "main_window.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "panels/head_stabilisation_step.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
 #include "views/timeline_widget.h"
@@ -299,6 +300,33 @@ TEST_F(StudioWindow, HeadStabilisedViewHoldsTheHeadMarkersStillWithoutTouchingTh
   EXPECT_EQ(view->headReference().size(), 6u) << "a refused reference leaves the view as it was";
   ASSERT_EQ(view->setHeadReference({}), QString());
   EXPECT_EQ(view->displayPosition(500, root), original.position(500, root));
+}
+
+TEST_F(StudioWindow, StabiliseHeadStepMovesTheTakeIntoTheHeadFrameUndoably)
+{
+  TakeDocument& doc = window->document();
+  const Take original = doc.take();
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  auto* step = panel->step<ui::HeadStabilisationStep>();
+  ASSERT_NE(step, nullptr);
+  panel->setCurrentStep(step);
+  panel->waitForPreview();
+  EXPECT_EQ(doc.take().position(500, 0), original.position(500, 0)) << "a preview never touches the take";
+  ASSERT_GT(panel->apply(), 0) << panel->lastResult().summary.toStdString();
+  // The reference markers (guessed from their root-N labels) now hold still.
+  const Eigen::Index root = *doc.take().markerIndex("root-1");
+  double spread = 0.0;
+  for (Eigen::Index f = 0; f < doc.take().frameCount(); f += 50)
+    spread = std::max(spread, (doc.take().position(f, root) - doc.take().position(0, root)).norm());
+  EXPECT_LT(spread, 3.0);
+  EXPECT_TRUE((doc.take().valid() == original.valid()).all());
+  doc.undoStack()->undo();
+  for (Eigen::Index m = 0; m < original.markerCount(); ++m)
+    ASSERT_TRUE(doc.take().trajectory(m) == original.trajectory(m)) << "undo restores bit for bit";
+  step->setReferenceLabels(QStringLiteral("root-1,no-such-marker,root-3"));
+  panel->waitForPreview();
+  EXPECT_TRUE(panel->lastResult().summary.contains(QStringLiteral("no-such-marker")));
+  EXPECT_TRUE(panel->lastResult().patches.empty());
 }
 
 TEST_F(StudioWindow, RubberBandSelectsTheMarkersInsideIt)

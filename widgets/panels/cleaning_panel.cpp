@@ -81,6 +81,11 @@ void CleaningPanel::addStep(CleaningStep* step)
   connect(step, &CleaningStep::changed, this, &CleaningPanel::schedule);
 }
 
+void CleaningPanel::setCurrentStep(CleaningStep* step)
+{
+  m_tabs->setCurrentWidget(step);
+}
+
 CleaningStep* CleaningPanel::currentStep() const
 {
   return qobject_cast<CleaningStep*>(m_tabs->currentWidget());

@@ -32,6 +32,14 @@ public:
 
   void addStep(CleaningStep* step);
   [[nodiscard]] CleaningStep* currentStep() const;
+  /// Shows `step` (one added before), which then previews.
+  void setCurrentStep(CleaningStep* step);
+  /// The added step of type T, or nullptr.
+  template <typename T>
+  [[nodiscard]] T* step() const
+  {
+    return findChild<T*>();
+  }
   /// Recomputes the preview of the current step now.
   void refresh();
   /// Pushes the current step's result (computing it first when the preview is stale).

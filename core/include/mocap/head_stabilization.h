@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mocap/sample_patch.h"
 #include "mocap/take.h"
 
 #include <Eigen/Geometry>
@@ -44,5 +45,15 @@ void removeHeadMotion(Take& take, const HeadMotion& motion);
 /// Throws InvalidArgument unless motion has one pose per frame. Not a paper equation.
 /// O(#frames · #markers).
 void restoreHeadMotion(Take& take, const HeadMotion& motion);
+
+/// The markers whose labels start with "root" or "head" (any case): the usual names of
+/// head-mounted reference markers, a default for the user to confirm. O(#markers).
+[[nodiscard]] std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take);
+
+/// removeHeadMotion as patches (one per marker, every frame): the studio previews and undoes
+/// stabilisation like any other edit. Validity, residuals and states are kept: the samples move,
+/// they are not re-measured. Throws InvalidArgument unless motion has one pose per frame.
+/// O(#frames · #markers).
+[[nodiscard]] std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMotion& motion);
 
 } // namespace mocap
