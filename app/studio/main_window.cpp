@@ -18,6 +18,7 @@
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
+#include "views/sample_colors.h"
 #include "views/timeline_widget.h"
 
 #include <QAction>
@@ -267,6 +268,11 @@ void MainWindow::applyPreferences(const ui::Preferences& preferences)
   m_autosave->setInterval(preferences.autosaveMinutes * 60 * 1000);
   const LengthUnit unit = parseLengthUnit(preferences.displayUnit.toStdString()).value_or(LengthUnit::Millimetre);
   m_curves->setDisplayUnit(unit);
+  if (!(preferences.colors == ui::colorScheme())) {
+    ui::setColorScheme(preferences.colors);
+    m_view3d->refreshColors();
+    m_curves->update();
+  }
   m_view3d->setDisplayUnit(unit);
   m_yUp->setChecked(preferences.upAxis == 1);
   m_zUp->setChecked(preferences.upAxis == 2);

@@ -2,6 +2,7 @@
 #include "dialogs/preferences_dialog.h"
 #include "views/display_units.h"
 
+#include <QPushButton>
 #include <QSettings>
 
 #include <gtest/gtest.h>
@@ -54,6 +55,34 @@ TEST(DisplayUnits, LengthsConvertBetweenTheTakeAndTheDisplayUnit)
   EXPECT_EQ(ui::formatLength(1.2345, LengthUnit::Metre, LengthUnit::Millimetre), QStringLiteral("1234.5"));
   EXPECT_EQ(ui::formatLength(12.0, LengthUnit::Millimetre, LengthUnit::Metre), QStringLiteral("0.0120"));
   EXPECT_EQ(ui::unitLabel(LengthUnit::Centimetre), QStringLiteral("cm"));
+}
+
+TEST(Preferences, ColoursAreRememberedAndUnreadableOnesFallBackToTheDefaults)
+{
+  QSettings().clear();
+  Preferences p;
+  p.colors.filled = QColor(1, 2, 3);
+  p.colors.background = QColor(200, 10, 10);
+  p.save();
+  EXPECT_TRUE(Preferences::load().colors == p.colors);
+  QSettings().setValue(QStringLiteral("view/colors/edited"), QStringLiteral("not-a-colour"));
+  const Preferences loaded = Preferences::load();
+  EXPECT_EQ(loaded.colors.edited, ui::ColorScheme{}.edited);
+  EXPECT_EQ(loaded.colors.filled, QColor(1, 2, 3));
+  QSettings().clear();
+
+  ui::PreferencesDialog dialog(p, {QStringLiteral("en")}, {QStringLiteral("English")});
+  const auto* button = dialog.findChild<QPushButton*>(QStringLiteral("color-filled"));
+  ASSERT_NE(button, nullptr);
+  EXPECT_EQ(button->text(), QStringLiteral("#010203"));
+  EXPECT_TRUE(dialog.preferences().colors == p.colors);
+  dialog.setColors(ui::ColorScheme{});
+  EXPECT_TRUE(dialog.preferences().colors == ui::ColorScheme{});
+
+  ui::setColorScheme(p.colors);
+  EXPECT_EQ(ui::stateColor(SampleState::Filled), QColor(1, 2, 3));
+  ui::setColorScheme(ui::ColorScheme{});
+  EXPECT_EQ(ui::stateColor(SampleState::Filled), ui::ColorScheme{}.filled);
 }
 
 TEST(Preferences, TheDialogShowsAndReturnsThePreferences)

@@ -12,6 +12,7 @@
 #include "panels/head_stabilisation_step.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
+#include "views/sample_colors.h"
 #include "views/timeline_widget.h"
 #include "views/vtk_viewport.h"
 
@@ -554,6 +555,25 @@ double meanDifference(const QImage& a, const QImage& b)
       sum += std::abs(int(p[i]) - int(q[i]));
   }
   return sum / (x.width() * x.height() * 3.0);
+}
+
+TEST_F(StudioWindow, ChangedColoursReachTheViewport)
+{
+  ui::VtkViewport* viewport = window->markerView()->viewport();
+  ASSERT_TRUE(viewport->usable()) << viewport->failureReason().toStdString();
+  const ui::ColorScheme defaults;
+  ui::ColorScheme red;
+  red.background = QColor(220, 20, 20);
+  ui::setColorScheme(red);
+  window->markerView()->refreshColors();
+  QTest::qWait(200);
+  const QImage image = viewport->grabFramebuffer();
+  ui::setColorScheme(defaults);
+  window->markerView()->refreshColors();
+  ASSERT_FALSE(image.isNull());
+  const QColor corner = image.pixelColor(2, image.height() - 3);  // bottom: the chosen colour itself
+  EXPECT_GT(corner.red(), 180);
+  EXPECT_LT(corner.green(), 60);
 }
 
 TEST_F(StudioWindow, ViewportRendersTheMarkersLikeTheBaseline)

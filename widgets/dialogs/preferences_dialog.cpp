@@ -1,9 +1,11 @@
 #include "dialogs/preferences_dialog.h"
 
+#include <QColorDialog>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 
@@ -17,6 +19,12 @@ namespace {
 constexpr double kMinMarkerPercent = 0.1, kMaxMarkerPercent = 10.0;
 constexpr int kMaxTrailFrames = 1000;
 constexpr int kMaxAutosaveMinutes = 60;
+
+// The settings key of each colour, in the order the dialog lists them.
+const std::pair<const char*, QColor ColorScheme::*> kColorKeys[] = {
+    {"original", &ColorScheme::original}, {"filled", &ColorScheme::filled},
+    {"smoothed", &ColorScheme::smoothed}, {"edited", &ColorScheme::edited},
+    {"selection", &ColorScheme::selection}, {"background", &ColorScheme::background}};
 } // namespace
 
 Preferences Preferences::load()
@@ -29,6 +37,9 @@ Preferences Preferences::load()
   p.language = settings.value(QStringLiteral("language")).toString();
   p.autosaveMinutes = settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt();
   p.displayUnit = settings.value(QStringLiteral("view/displayUnit"), p.displayUnit).toString();
+  for (const auto& [key, member] : kColorKeys)
+    p.colors.*member = QColor(settings.value(QStringLiteral("view/colors/") + QLatin1String(key),
+                                             (p.colors.*member).name()).toString());
   return p.clamped();
 }
 
@@ -42,6 +53,8 @@ void Preferences::save() const
     settings.setValue(QStringLiteral("language"), language);
   settings.setValue(QStringLiteral("autosaveMinutes"), autosaveMinutes);
   settings.setValue(QStringLiteral("view/displayUnit"), displayUnit);
+  for (const auto& [key, member] : kColorKeys)
+    settings.setValue(QStringLiteral("view/colors/") + QLatin1String(key), (colors.*member).name());
 }
 
 Preferences Preferences::clamped() const
@@ -55,6 +68,9 @@ Preferences Preferences::clamped() const
   p.autosaveMinutes = std::clamp(p.autosaveMinutes, 1, kMaxAutosaveMinutes);
   if (!parseLengthUnit(p.displayUnit.toStdString()))
     p.displayUnit = Preferences{}.displayUnit;
+  for (const auto& [key, member] : kColorKeys)
+    if (!(p.colors.*member).isValid())  // a hand-edited name Qt cannot read
+      p.colors.*member = ColorScheme{}.*member;
   return p;
 }
 
@@ -100,6 +116,17 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, const QStri
   m_autosave->setValue(preferences.autosaveMinutes);
   m_autosave->setToolTip(tr("How often unsaved edits are copied to a recovery file"));
   form->addRow(tr("Autosave every:"), m_autosave);
+  m_colors = preferences.colors;
+  addColorButton(form, QStringLiteral("original"), tr("Captured samples:"), &ColorScheme::original);
+  addColorButton(form, QStringLiteral("filled"), tr("Filled samples:"), &ColorScheme::filled);
+  addColorButton(form, QStringLiteral("smoothed"), tr("Smoothed samples:"), &ColorScheme::smoothed);
+  addColorButton(form, QStringLiteral("edited"), tr("Edited samples:"), &ColorScheme::edited);
+  addColorButton(form, QStringLiteral("selection"), tr("Selection:"), &ColorScheme::selection);
+  addColorButton(form, QStringLiteral("background"), tr("3D background:"), &ColorScheme::background);
+  auto* defaults = new QPushButton(tr("Default Colours"), this);
+  connect(defaults, &QPushButton::clicked, this, [this] { setColors(ColorScheme{}); });
+  form->addRow(QString(), defaults);
+  updateColorButtons();
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -115,7 +142,41 @@ Preferences PreferencesDialog::preferences() const
   p.language = m_language->currentData().toString();
   p.autosaveMinutes = m_autosave->value();
   p.displayUnit = m_unit->currentData().toString();
+  p.colors = m_colors;
   return p.clamped();
+}
+
+void PreferencesDialog::addColorButton(QFormLayout* form, const QString& name, const QString& text,
+                                       QColor ColorScheme::*member)
+{
+  auto* button = new QPushButton(this);
+  button->setObjectName(QStringLiteral("color-") + name);
+  connect(button, &QPushButton::clicked, this, [this, text, member] {
+    const QColor chosen = QColorDialog::getColor(m_colors.*member, this, text);
+    if (chosen.isValid()) {
+      m_colors.*member = chosen;
+      updateColorButtons();
+    }
+  });
+  form->addRow(text, button);
+  m_colorButtons.emplace_back(button, member);
+}
+
+void PreferencesDialog::setColors(const ColorScheme& colors)
+{
+  m_colors = colors;
+  updateColorButtons();
+}
+
+void PreferencesDialog::updateColorButtons()
+{
+  for (const auto& [button, member] : m_colorButtons) {
+    const QColor color = m_colors.*member;
+    button->setText(color.name());
+    button->setStyleSheet(QStringLiteral("background-color: %1; color: %2")
+                              .arg(color.name(), color.lightnessF() > 0.5f ? QStringLiteral("black")
+                                                                          : QStringLiteral("white")));
+  }
 }
 
 } // namespace mocap::ui

@@ -1,10 +1,17 @@
 #pragma once
 
+#include "views/sample_colors.h"
+
 #include <QDialog>
 #include <QString>
 #include <QStringList>
 
+#include <utility>
+#include <vector>
+
 class QComboBox;
+class QFormLayout;
+class QPushButton;
 class QDoubleSpinBox;
 class QSpinBox;
 
@@ -19,6 +26,7 @@ struct Preferences
   QString language;                ///< code, e.g. "de"; empty: the system's
   int autosaveMinutes = 1;         ///< interval of the recovery copy
   QString displayUnit = QStringLiteral("mm");  ///< "mm", "cm" or "m" for read-outs
+  ColorScheme colors;                          ///< sample states, selection, 3D background
 
   [[nodiscard]] static Preferences load();
   void save() const;
@@ -37,8 +45,17 @@ public:
                     const QStringList& languageNames, QWidget* parent = nullptr);
 
   [[nodiscard]] Preferences preferences() const;
+  /// The colour buttons (object names "color-original", "color-filled", "color-smoothed",
+  /// "color-edited", "color-selection", "color-background"); clicking one opens a colour dialog.
+  [[nodiscard]] ColorScheme colors() const { return m_colors; }
+  void setColors(const ColorScheme& colors);
 
 private:
+  void addColorButton(QFormLayout* form, const QString& name, const QString& text, QColor ColorScheme::*member);
+  void updateColorButtons();
+
+  ColorScheme m_colors;
+  std::vector<std::pair<QPushButton*, QColor ColorScheme::*>> m_colorButtons;
   QDoubleSpinBox* m_markerSize = nullptr;
   QSpinBox* m_trail = nullptr;
   QComboBox* m_upAxis = nullptr;

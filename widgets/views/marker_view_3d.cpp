@@ -230,6 +230,13 @@ void MarkerView3d::setMarkerScale(double fraction)
   rebuildScene();
 }
 
+void MarkerView3d::refreshColors()
+{
+  m_viewport->setBackground(colorScheme().background);
+  updateFrame();
+  updateTrails();
+}
+
 void MarkerView3d::setUpAxis(int axis)
 {
   m_upAxis = axis == 1 ? 1 : 2;

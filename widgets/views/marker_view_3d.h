@@ -62,6 +62,8 @@ public:
   void setUpAxis(int axis);
   [[nodiscard]] int upAxis() const { return m_upAxis; }
   void resetCamera();
+  /// Redraws with the current colorScheme() (sample_colors.h), background included.
+  void refreshColors();
   /// Head-stabilised view: draws every marker relative to the head pose estimated from these
   /// reference markers (head_stabilization.h), so only facial motion remains; empty = lab frame.
   /// A view setting: the take is not changed. Returns an error message (the view is then

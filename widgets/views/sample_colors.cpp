@@ -2,20 +2,39 @@
 
 namespace mocap::ui {
 
+namespace {
+ColorScheme& currentScheme()
+{
+  static ColorScheme scheme;
+  return scheme;
+}
+} // namespace
+
+const ColorScheme& colorScheme()
+{
+  return currentScheme();
+}
+
+void setColorScheme(const ColorScheme& scheme)
+{
+  currentScheme() = scheme;
+}
+
 QColor stateColor(SampleState state)
 {
+  const ColorScheme& scheme = colorScheme();
   switch (state) {
-  case SampleState::Original: return {176, 196, 222};
-  case SampleState::Filled: return {255, 153, 51};
-  case SampleState::Smoothed: return {102, 204, 119};
-  case SampleState::Edited: return {221, 102, 221};
+  case SampleState::Original: return scheme.original;
+  case SampleState::Filled: return scheme.filled;
+  case SampleState::Smoothed: return scheme.smoothed;
+  case SampleState::Edited: return scheme.edited;
   }
-  return {176, 196, 222};
+  return scheme.original;
 }
 
 QColor selectionColor()
 {
-  return {255, 230, 60};
+  return colorScheme().selection;
 }
 
 } // namespace mocap::ui

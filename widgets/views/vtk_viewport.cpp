@@ -1,5 +1,7 @@
 #include "views/vtk_viewport.h"
 
+#include "views/sample_colors.h"
+
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -16,6 +18,7 @@
 #include <vtkOpenGLState.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mocap::ui {
@@ -50,9 +53,18 @@ VtkViewport::VtkViewport(QWidget* parent) : QOpenGLWidget(parent)
   for (unsigned long id : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
                            vtkCommand::WindowFrameEvent})
     m_observers.push_back(m_window->AddObserver(id, this, &VtkViewport::onWindowEvent));
-  m_renderer->SetBackground(0.12, 0.13, 0.15);
-  m_renderer->SetBackground2(0.26, 0.28, 0.32);
+  setBackground(colorScheme().background);
   m_renderer->GradientBackgroundOn();
+}
+
+void VtkViewport::setBackground(const QColor& color)
+{
+  const double r = static_cast<double>(color.redF()), g = static_cast<double>(color.greenF()),
+               b = static_cast<double>(color.blueF());
+  const auto lighter = [](double channel) { return std::min(1.0, channel + 0.14); };
+  m_renderer->SetBackground(r, g, b);
+  m_renderer->SetBackground2(lighter(r), lighter(g), lighter(b));
+  requestRender();
 }
 
 VtkViewport::~VtkViewport()

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QColor>
 #include <QOpenGLWidget>
 #include <QPoint>
 #include <QRect>
@@ -44,6 +45,8 @@ public:
 
   /// Asks for a VTK render at the next paint.
   void requestRender();
+  /// Background: `color` at the bottom in a gradient to a lighter shade at the top.
+  void setBackground(const QColor& color);
   /// Fits the camera to the visible props.
   void resetCamera();
 
