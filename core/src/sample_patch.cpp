@@ -93,4 +93,22 @@ std::vector<SamplePatch> applyPatches(Take& take, std::vector<SamplePatch> patch
   return undo;
 }
 
+SamplePatch patchWithin(const SamplePatch& patch, Eigen::Index first, Eigen::Index last)
+{
+  std::vector<Eigen::Index> rows;
+  for (std::size_t i = 0; i < patch.frames.size(); ++i)
+    if (patch.frames[i] >= first && patch.frames[i] <= last)
+      rows.push_back(static_cast<Eigen::Index>(i));
+  SamplePatch part;
+  part.marker = patch.marker;
+  part.positions = patch.positions(rows, Eigen::all);
+  part.valid = patch.valid(rows);
+  part.residuals = patch.residuals(rows);
+  for (const Eigen::Index row : rows) {
+    part.frames.push_back(patch.frames[static_cast<std::size_t>(row)]);
+    part.states.push_back(patch.states[static_cast<std::size_t>(row)]);
+  }
+  return part;
+}
+
 } // namespace mocap

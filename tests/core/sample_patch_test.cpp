@@ -76,5 +76,22 @@ TEST(SamplePatch, MisfitPatchesAreRejectedWithoutChanges)
   EXPECT_FALSE(take.valid().any());
 }
 
+TEST(SamplePatch, PatchWithinKeepsOnlyTheFramesOfTheRange)
+{
+  Eigen::Matrix<double, Eigen::Dynamic, 3> positions(4, 3);
+  positions << 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4;
+  const SamplePatch patch = makePatch(2, {3, 5, 7, 9}, positions, SampleState::Filled);
+  const SamplePatch part = patchWithin(patch, 4, 7);
+  EXPECT_EQ(part.marker, 2);
+  EXPECT_EQ(part.frames, (std::vector<Eigen::Index>{5, 7}));
+  EXPECT_EQ(part.positions.row(0), Eigen::RowVector3d(2, 2, 2));
+  EXPECT_EQ(part.positions.row(1), Eigen::RowVector3d(3, 3, 3));
+  EXPECT_EQ(part.valid.size(), 2);
+  EXPECT_EQ(part.residuals.size(), 2);
+  EXPECT_EQ(part.states.size(), 2u);
+  EXPECT_TRUE(patchWithin(patch, 10, 20).empty());
+  EXPECT_TRUE(patchWithin(patch, 5, 4).empty());
+}
+
 } // namespace
 } // namespace mocap

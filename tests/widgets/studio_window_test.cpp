@@ -9,6 +9,7 @@
 #include "main_window.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "panels/gap_fill_step.h"
 #include "panels/head_stabilisation_step.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
@@ -29,6 +30,7 @@
 #include <QListWidget>
 #include <QMouseEvent>
 #include <QSettings>
+#include <QCheckBox>
 #include <QTableView>
 #include <QToolTip>
 #include <QTest>
@@ -134,6 +136,35 @@ TEST_F(StudioWindow, FillChangesOnlyTheGapAndUndoRestoresBitForBit)
   EXPECT_FALSE(window->isWindowModified());
   doc.undoStack()->redo();
   EXPECT_TRUE(doc.take().valid().col(marker).segment(1105, 60).all());
+}
+
+TEST_F(StudioWindow, FillingOnlyTheSelectedRangeLeavesTheRestOfTheGap)
+{
+  TakeDocument& doc = window->document();
+  const Take before = doc.take();
+  const Eigen::Index marker = *before.markerIndex("section4-2");  // a gap over frames 1105–1164
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  auto* step = panel->step<ui::GapFillStep>();
+  ASSERT_NE(step, nullptr);
+  panel->setCurrentStep(step);
+  auto* rangeOnly = panel->findChild<QCheckBox*>(QStringLiteral("rangeOnly"));
+  ASSERT_NE(rangeOnly, nullptr);
+  rangeOnly->setChecked(true);
+  doc.setRange(1100, 1130);
+  panel->waitForPreview();
+  ASSERT_GT(panel->apply(), 0) << panel->lastResult().summary.toStdString();
+  const Take& after = doc.take();
+  EXPECT_TRUE(after.valid().col(marker).segment(1105, 26).all());
+  EXPECT_FALSE(after.valid().col(marker).segment(1131, 34).any()) << "frames outside the range stay a gap";
+  for (Eigen::Index m = 0; m < before.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < before.frameCount(); ++f) {
+      if (f < 1100 || f > 1130) {
+        ASSERT_EQ(after.isValid(f, m), before.isValid(f, m)) << m << " " << f;
+      }
+    }
+  doc.clearRange();
+  panel->waitForPreview();
+  EXPECT_TRUE(panel->lastResult().patches.empty()) << "no range selected: nothing to change";
 }
 
 TEST_F(StudioWindow, SaveAndReopenKeepTheEdit)

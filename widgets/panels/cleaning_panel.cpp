@@ -27,8 +27,12 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   m_live = new QCheckBox(tr("Live preview"), this);
   m_live->setChecked(true);
   m_selectedOnly = new QCheckBox(tr("Selected markers only"), this);
+  m_rangeOnly = new QCheckBox(tr("Selected frame range only"), this);
+  m_rangeOnly->setObjectName(QStringLiteral("rangeOnly"));
+  m_rangeOnly->setToolTip(tr("Change only the frames selected on the curves (Shift+drag)"));
   layout->addWidget(m_live);
   layout->addWidget(m_selectedOnly);
+  layout->addWidget(m_rangeOnly);
   m_progress = new QProgressBar(this);
   m_progress->setRange(0, 0);  // busy indicator: core steps report no partial progress
   m_progress->setVisible(false);
@@ -60,6 +64,11 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
       m_document.clearPreview();
   });
   connect(m_selectedOnly, &QCheckBox::toggled, this, &CleaningPanel::schedule);
+  connect(m_rangeOnly, &QCheckBox::toggled, this, &CleaningPanel::schedule);
+  connect(&document, &TakeDocument::rangeChanged, this, [this] {
+    if (m_rangeOnly->isChecked())
+      schedule();
+  });
   connect(m_tabs, &QTabWidget::currentChanged, this, &CleaningPanel::schedule);
   connect(&document, &TakeDocument::takeReset, this, &CleaningPanel::schedule);
   connect(&document, &TakeDocument::samplesChanged, this, &CleaningPanel::schedule);
@@ -184,12 +193,17 @@ void CleaningPanel::waitForPreview()
 
 std::vector<SamplePatch> CleaningPanel::onlySelected(std::vector<SamplePatch> patches) const
 {
-  if (!m_selectedOnly->isChecked())
-    return patches;
+  if (m_rangeOnly->isChecked()) {
+    // No range selected: nothing to change rather than everything.
+    for (SamplePatch& patch : patches)
+      patch = patchWithin(patch, m_document.rangeFirst(), m_document.rangeLast());
+  }
   const auto& selection = m_document.selection();
+  const bool markersOnly = m_selectedOnly->isChecked();
   patches.erase(std::remove_if(patches.begin(), patches.end(),
                                [&](const SamplePatch& p) {
-                                 return !std::binary_search(selection.begin(), selection.end(), p.marker);
+                                 return p.empty() || (markersOnly && !std::binary_search(selection.begin(),
+                                                                                         selection.end(), p.marker));
                                }),
                 patches.end());
   return patches;

@@ -59,12 +59,14 @@ private:
   void start();
   void onFinished();
   void cancel();
+  /// The patches restricted to the selected markers and frame range, when those options are on.
   [[nodiscard]] std::vector<SamplePatch> onlySelected(std::vector<SamplePatch> patches) const;
 
   TakeDocument& m_document;
   QTabWidget* m_tabs = nullptr;
   QCheckBox* m_live = nullptr;
   QCheckBox* m_selectedOnly = nullptr;
+  QCheckBox* m_rangeOnly = nullptr;
   QPushButton* m_apply = nullptr;
   QPushButton* m_cancel = nullptr;
   QProgressBar* m_progress = nullptr;

@@ -33,6 +33,9 @@ struct SamplePatch
 /// InvalidArgument for a marker or range outside the take. O(last − first).
 [[nodiscard]] SamplePatch deleteSamples(const Take& take, Eigen::Index marker, Eigen::Index first, Eigen::Index last);
 
+/// The part of `patch` on frames [first, last] (possibly empty). O(patch size).
+[[nodiscard]] SamplePatch patchWithin(const SamplePatch& patch, Eigen::Index first, Eigen::Index last);
+
 /// Puts `patch` into `take` and returns the samples it replaced, so applying the returned patch
 /// undoes the edit bit for bit. Throws InvalidArgument (and changes nothing) when the patch does
 /// not fit the take. O(patch size).
