@@ -3,6 +3,7 @@
 #include "cli_error.h"
 
 #include "mocap/number_text.h"
+#include "mocap/take_io.h"
 
 #include <cmath>
 #include <cstdio>
@@ -126,6 +127,16 @@ void Arguments::expectPositionals(std::size_t count, const std::string& what) co
 {
   if (m_positionals.size() != count)
     throw UsageError("expected " + what + ", got " + std::to_string(m_positionals.size()) + " argument(s)");
+}
+
+std::pair<std::string, std::string> Arguments::inputAndOutput() const
+{
+  expectPositionals(1, "one input file (and -o OUT)");
+  const auto output = value("-o") ? value("-o") : value("--output");
+  if (!output)
+    throw UsageError("missing -o OUT");
+  (void)formatFromPath(*output);  // throws for an extension that names no format
+  return {m_positionals[0], *output};
 }
 
 } // namespace mocap::cli

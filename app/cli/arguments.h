@@ -4,6 +4,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mocap::cli {
@@ -26,6 +27,9 @@ public:
   [[nodiscard]] const std::vector<std::string>& positionals() const { return m_positionals; }
   /// Throws UsageError unless there are exactly `count` positionals, naming them in `what`.
   void expectPositionals(std::size_t count, const std::string& what) const;
+  /// The one input file and `-o`/`--output` of an IN -o OUT command, whose format OUT's extension
+  /// must name; UsageError otherwise.
+  [[nodiscard]] std::pair<std::string, std::string> inputAndOutput() const;
 
 private:
   std::vector<std::string> m_positionals;

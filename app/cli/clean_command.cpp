@@ -137,12 +137,7 @@ int runClean(const std::vector<std::string>& args)
                             {"-o", "--output", "--spikes", "--spike-factor", "--spike-threshold", "--fill", "--max-gap",
                              "--neighbours", "--smooth", "--order", "--knot-spacing", "--cutoff", "--stabilize",
                              "--report"});
-  arguments.expectPositionals(1, "one input file (and -o OUT)");
-  const std::string input = arguments.positionals()[0];
-  const auto output = arguments.value("-o") ? arguments.value("-o") : arguments.value("--output");
-  if (!output)
-    throw UsageError("missing -o OUT");
-  (void)formatFromPath(*output);
+  const auto [input, output] = arguments.inputAndOutput();
   CleanOptions options;
   options.spikes = spikeOptions(arguments);
   options.fill = fillOptions(arguments);
@@ -156,15 +151,15 @@ int runClean(const std::vector<std::string>& args)
   for (const auto& w : warnings)
     std::cerr << input << ": warning: " << w << '\n';
   const CleanReport report = cleanTake(take, options);
-  if (formatFromPath(*output) == TakeFormat::Bvh && report.headMotion && !options.keepStabilized) {
+  if (formatFromPath(output) == TakeFormat::Bvh && report.headMotion && !options.keepStabilized) {
     // BVH carries the head motion in its root joint; the markers go in head space.
     removeHeadMotion(take, *report.headMotion);
-    writeBvh(take, *output, BvhOptions{report.headMotion->poses});
+    writeBvh(take, output, BvhOptions{report.headMotion->poses});
   } else {
-    writeTake(take, *output);
+    writeTake(take, output);
   }
   if (const auto reportFile = arguments.value("--report"))
-    writeFileAtomically(*reportFile, reportJson(input, *output, take, options, report));
+    writeFileAtomically(*reportFile, reportJson(input, output, take, options, report));
   return kExitOk;
 }
 

@@ -44,12 +44,7 @@ std::string reportJson(const std::string& input, const std::string& output, cons
 int runFixSwaps(const std::vector<std::string>& args)
 {
   const Arguments arguments(args, {"--json"}, {"-o", "--output", "--report", "--jump-factor"});
-  arguments.expectPositionals(1, "one input file (and -o OUT)");
-  const std::string input = arguments.positionals()[0];
-  const auto output = arguments.value("-o") ? arguments.value("-o") : arguments.value("--output");
-  if (!output)
-    throw UsageError("missing -o OUT");
-  (void)formatFromPath(*output);
+  const auto [input, output] = arguments.inputAndOutput();
   SwapOptions options;
   if (const auto factor = arguments.number("--jump-factor", 2.0, 1000.0))
     options.jumpFactor = *factor;
@@ -58,14 +53,14 @@ int runFixSwaps(const std::vector<std::string>& args)
   for (const auto& w : warnings)
     std::cerr << input << ": warning: " << w << '\n';
   const std::vector<LabelSwap> swaps = repairSwaps(take, options);
-  writeTake(take, *output);
-  const std::string report = reportJson(input, *output, take, swaps);
+  writeTake(take, output);
+  const std::string report = reportJson(input, output, take, swaps);
   if (const auto reportFile = arguments.value("--report"))
     writeFileAtomically(*reportFile, report);
   if (arguments.has("--json")) {
     std::cout << report;
   } else {
-    std::cout << *output << ": " << swaps.size() << " label swaps repaired\n";
+    std::cout << output << ": " << swaps.size() << " label swaps repaired\n";
     for (const LabelSwap& swap : swaps)
       std::cout << "  frame " << take.firstFrame() + swap.frame << ": " << take.label(swap.first) << " <-> "
                 << take.label(swap.second) << '\n';

@@ -57,12 +57,7 @@ int runTrack(const std::vector<std::string>& args)
 {
   const Arguments arguments(args, {"--json", "--keep-fragments"},
                             {"-o", "--output", "--template", "--max-speed", "--rate", "--save-marker-set"});
-  arguments.expectPositionals(1, "one input file (and -o OUT)");
-  const std::string input = arguments.positionals()[0];
-  const auto output = arguments.value("-o") ? arguments.value("-o") : arguments.value("--output");
-  if (!output)
-    throw UsageError("missing -o OUT");
-  (void)formatFromPath(*output);
+  const auto [input, output] = arguments.inputAndOutput();
   TrackOptions options;
   const double maxSpeedMm = arguments.number("--max-speed", 1e-6, 1e6).value_or(0.0);
   options.retrack = !arguments.has("--keep-fragments");
@@ -85,13 +80,13 @@ int runTrack(const std::vector<std::string>& args)
     options.tracker.maxSpeed = maxSpeedMm / millimetresPer(take.units());
     result = trackTake(take, set ? &*set : nullptr, options, &report);
   }
-  writeTake(result, *output);
+  writeTake(result, output);
   if (const auto markerSetFile = arguments.value("--save-marker-set"))
     writeMarkerSet(markerSetFromTake(result), *markerSetFile);
   if (arguments.has("--json")) {
-    std::cout << reportJson(input, *output, result, report);
+    std::cout << reportJson(input, output, result, report);
   } else {
-    std::cout << *output << ": " << report.labelledFragments << " of " << report.fragments
+    std::cout << output << ": " << report.labelledFragments << " of " << report.fragments
               << " fragments labelled (" << report.labelledSamples << " samples), " << report.unlabelledFragments
               << " left unlabelled (" << report.unlabelledSamples << " samples)\n";
   }
