@@ -190,13 +190,15 @@ TEST(ExportDialog, CancellingMidExportLeavesNoPartialCache)
   dialog.setFormat(AnimationFormat::ObjPlusPc2);
   dialog.setOutputPath(QString::fromStdString(fx.dir.file("anim.pc2").string()));
   QSignalSpy finished(&dialog, &ExportDialog::exportFinished);
+  dialog.show();
   ASSERT_TRUE(dialog.startExport());
   EXPECT_TRUE(dialog.isRunning());
   EXPECT_FALSE(dialog.startExport());  // one export at a time
   while (calls < 3)
     QCoreApplication::processEvents();
-  dialog.cancelExport();
+  dialog.reject();  // Escape or Cancel while running: stops the export, keeps the dialog
   dialog.waitForFinished();
+  EXPECT_TRUE(dialog.isVisible());
   ASSERT_EQ(finished.count(), 1);
   EXPECT_FALSE(finished.at(0).at(0).toBool());
   EXPECT_LT(calls.load(), 30);  // it stopped early

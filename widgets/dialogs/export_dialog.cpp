@@ -132,12 +132,7 @@ void ExportDialog::buildLayout()
   connect(m_format, qOverload<int>(&QComboBox::currentIndexChanged), this, &ExportDialog::onFormatChanged);
   connect(m_browse, &QPushButton::clicked, this, &ExportDialog::browse);
   connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
-  connect(m_cancel, &QPushButton::clicked, this, [this] {
-    if (isRunning())
-      cancelExport();
-    else
-      reject();
-  });
+  connect(m_cancel, &QPushButton::clicked, this, &ExportDialog::reject);
   setMeshSource({}, {}, {});  // disables the mesh formats until a caller provides a mesh
   resize(560, 220);
 }
@@ -310,6 +305,14 @@ void ExportDialog::cancelExport()
     return;
   m_progress->cancel = true;
   showStatus(tr("Cancelling…"), false);
+}
+
+void ExportDialog::reject()
+{
+  if (isRunning())
+    cancelExport();
+  else
+    QDialog::reject();
 }
 
 bool ExportDialog::isRunning() const

@@ -56,6 +56,9 @@ public:
   /// The last message shown under the progress bar (an error, "cancelled", or what was written).
   [[nodiscard]] QString statusText() const;
 
+  /// Escape, Cancel and the close button stop a running export instead of closing the dialog.
+  void reject() override;
+
 signals:
   /// An export ended: `succeeded` is false when it failed or was cancelled.
   void exportFinished(bool succeeded);
