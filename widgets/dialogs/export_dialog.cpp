@@ -97,7 +97,9 @@ void ExportDialog::buildLayout()
   m_browse = new QPushButton(tr("&Browse…"), this);
   pathRow->addWidget(m_path, 1);
   pathRow->addWidget(m_browse);
-  form->addRow(tr("&Output:"), pathRow);
+  auto* outputLabel = new QLabel(tr("&Output:"), this);  // a row of a layout gets no buddy by itself
+  outputLabel->setBuddy(m_path);
+  form->addRow(outputLabel, pathRow);
 
   auto* rangeRow = new QHBoxLayout;
   m_first = new QSpinBox(this);
@@ -106,7 +108,9 @@ void ExportDialog::buildLayout()
   rangeRow->addWidget(new QLabel(tr("to"), this));
   rangeRow->addWidget(m_last);
   rangeRow->addStretch();
-  form->addRow(tr("F&rames:"), rangeRow);
+  auto* framesLabel = new QLabel(tr("F&rames:"), this);
+  framesLabel->setBuddy(m_first);
+  form->addRow(framesLabel, rangeRow);
   layout->addLayout(form);
 
   m_progressBar = new QProgressBar(this);
@@ -156,8 +160,8 @@ void ExportDialog::restoreSettings()
   const QString base = takeFile.completeBaseName().isEmpty() ? QStringLiteral("take") : takeFile.completeBaseName();
   m_path->setText(QDir(folder).filePath(base));
   const int remembered = settings.value(kFormatKey, 0).toInt();
-  m_rememberedFormat = remembered >= 0 && remembered <= 2 ? static_cast<AnimationFormat>(remembered)
-                                                          : AnimationFormat::Bvh;
+  const bool known = remembered >= 0 && remembered <= static_cast<int>(AnimationFormat::ObjPlusPc2);
+  m_rememberedFormat = known ? static_cast<AnimationFormat>(remembered) : AnimationFormat::Bvh;
   setFormat(m_rememberedFormat);
   onFormatChanged();  // the extension, even when the format did not change
 }
