@@ -5,12 +5,11 @@
 
 #include "mocap/deformation_evaluation.h"
 #include "mocap/error.h"
+#include "mocap/file_io.h"
 #include "mocap/json_writer.h"
 #include "mocap/laplacian_deformer.h"
 #include "mocap/mesh_io.h"
-#include "mocap/obj_io.h"
-#include "mocap/pc2_io.h"
-#include "mocap/ply_io.h"
+#include "mocap/mesh_sequence_writer.h"
 #include "mocap/rbf_deformer.h"
 #include "mocap/take_io.h"
 
@@ -105,56 +104,6 @@ std::pair<Eigen::Index, Eigen::Index> frameRange(const Arguments& arguments, con
   return {static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(end)};
 }
 
-// Where each deformed frame goes: one PC2 stream (plus the rest mesh as OBJ beside it), or one
-// OBJ (or PLY, with the rest mesh as NAME_neutral.obj) per frame in a folder.
-class FrameSink
-{
-public:
-  FrameSink(const std::filesystem::path& out, const Mesh& mesh, const std::string& name, bool ply, float startFrame)
-      : m_out(out), m_mesh(mesh), m_name(name), m_ply(ply)
-  {
-    if (lowerExtension(out) == "pc2") {
-      m_cache.emplace(out, mesh.vertexCount(), startFrame, 1.0f);
-      return;
-    }
-    std::filesystem::create_directories(out);
-    if (ply)
-      writeObj(out / (name + "_neutral.obj"), mesh);
-  }
-
-  void add(const MeshVertices& vertices)
-  {
-    ++m_count;
-    if (m_cache) {
-      m_cache->addFrame(vertices);
-      return;
-    }
-    char number[32];
-    std::snprintf(number, sizeof number, "_%04lld", static_cast<long long>(m_count));
-    if (m_ply)
-      writePly(m_out / (m_name + number + ".ply"), m_mesh, vertices);
-    else
-      writeObj(m_out / (m_name + number + ".obj"), m_mesh, vertices);
-  }
-
-  // The OBJ beside a cache is written last, so a failed run leaves neither file.
-  void finish()
-  {
-    if (!m_cache)
-      return;
-    m_cache->finish();
-    writeObj(std::filesystem::path(m_out).replace_extension(".obj"), m_mesh);
-  }
-
-private:
-  std::filesystem::path m_out;
-  const Mesh& m_mesh;
-  std::string m_name;
-  bool m_ply;
-  std::optional<Pc2Writer> m_cache;
-  long long m_count = 0;
-};
-
 } // namespace
 
 int runDeform(const std::vector<std::string>& args)
@@ -214,8 +163,11 @@ int runDeform(const std::vector<std::string>& args)
   const double setupSeconds = secondsSince(setupStart);
 
   const auto [begin, end] = frameRange(arguments, take);
-  FrameSink sink(out, mesh, std::filesystem::path(meshPath).stem().string(), arguments.has("--ply"),
-                 static_cast<float>(take.firstFrame() + begin));
+  const MeshSequenceFormat format = lowerExtension(out) == "pc2" ? MeshSequenceFormat::ObjPlusPc2
+                                     : arguments.has("--ply")    ? MeshSequenceFormat::PlySequence
+                                                                 : MeshSequenceFormat::ObjSequence;
+  MeshSequenceWriter sink(out, mesh, format, std::filesystem::path(meshPath).stem().string(),
+                          static_cast<float>(take.firstFrame() + begin));
   std::vector<double> frameSeconds;
   Eigen::Index framesMissingControls = 0;
   PointSet displacements;

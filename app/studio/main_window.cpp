@@ -6,6 +6,7 @@
 #include "commands/insert_marker_command.h"
 #include "commands/remove_markers_command.h"
 #include "commands/replace_take_command.h"
+#include "dialogs/export_dialog.h"
 #include "dialogs/swap_review_dialog.h"
 #include "dialogs/preferences_dialog.h"
 #include "document/autosave.h"
@@ -158,6 +159,10 @@ void MainWindow::createActions()
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
   file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
   file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
+  file->addAction(tr("Export Ani&mation…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this, [this] {
+    ui::ExportDialog dialog(*m_document, this);  // mesh formats need setMeshSource (a loaded face mesh)
+    dialog.exec();
+  });
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 

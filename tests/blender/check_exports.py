@@ -1,0 +1,266 @@
+"""Opens Mocap Studio's exports with Blender's own importers and checks what Blender sees.
+
+    blender -b --factory-startup --python-exit-code 1 --python check_exports.py -- \
+        TAKE.bvh FRAME.obj CACHE.pc2 [SAMPLE]
+
+TAKE.bvh goes through the BVH importer: one bone per joint, one key per frame, and the posed
+marker bones sit where the BVH channels put them. FRAME.obj (one file of an OBJ sequence) goes
+through the OBJ importer with the vertices of the file. CACHE.pc2's rest mesh (CACHE.obj) gets a
+Mesh Cache modifier on the cache; stepping the scene frames must give the cache's vertices.
+SAMPLE (optional) is the cache sample FRAME.obj was written from, so the two exports agree.
+Prints "PASS: ..." and exits 0, or "FAIL: ..." and exits 1.
+"""
+
+# Compatibility shims for Debian's Blender 3.4 under Python 3.11 / numpy 1.24. They come first,
+# before any importer runs: the BVH importer opens its file with mode 'rU' (the 'U' flag is gone
+# in Python 3.11), and the glTF add-on, loaded with the default add-ons, uses numpy.bool (removed in
+# numpy 1.24).
+import builtins
+
+_builtin_open = builtins.open
+
+
+def _open_without_universal_newlines(file, mode="r", *args, **kwargs):
+    if isinstance(mode, str) and "U" in mode:
+        mode = mode.replace("U", "") or "r"
+    return _builtin_open(file, mode, *args, **kwargs)
+
+
+builtins.open = _open_without_universal_newlines
+
+try:
+    import numpy
+except ImportError:  # no numpy (python3-numpy is only recommended): nothing to patch
+    numpy = None
+if numpy is not None and not hasattr(numpy, "bool"):
+    numpy.bool = bool
+
+import math  # noqa: E402
+import os  # noqa: E402
+import struct  # noqa: E402
+import sys  # noqa: E402
+
+import bpy  # noqa: E402
+from mathutils import Matrix, Vector  # noqa: E402
+
+
+class CheckFailed(Exception):
+    pass
+
+
+def require(condition, message):
+    if not condition:
+        raise CheckFailed(message)
+
+
+def tolerance(points):
+    """Absolute tolerance for coordinates: float32 rounding relative to the data's extent."""
+    extent = max((abs(c) for p in points for c in p), default=1.0)
+    return 1e-5 * max(extent, 1.0)
+
+
+def close(a, b, tol):
+    return all(abs(x - y) <= tol for x, y in zip(a, b))
+
+
+# --- the files as written ---------------------------------------------------------------------
+
+def read_pc2(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    magic, version, points, start, rate, samples = struct.unpack_from("<12siiffi", data, 0)
+    require(magic == b"POINTCACHE2\0" and version == 1, f"{path}: not a PC2 version 1 file")
+    require(len(data) == 32 + 12 * points * samples, f"{path}: size does not match its header")
+    floats = struct.unpack_from(f"<{3 * points * samples}f", data, 32)
+    return [[floats[3 * (s * points + i):3 * (s * points + i) + 3] for i in range(points)] for s in range(samples)]
+
+
+def read_obj_vertices(path):
+    with open(path) as f:
+        return [tuple(float(t) for t in line.split()[1:4]) for line in f if line.startswith("v ")]
+
+
+class Bvh:
+    """Joints (name, OFFSET, channel names, parent index) and motion rows of a BVH file."""
+
+    def __init__(self, path):
+        with open(path) as f:
+            tokens = f.read().split()
+        nodes, stack, i = [], [], 0  # nodes include End Sites, which have no channels
+        while tokens[i] != "MOTION":
+            t = tokens[i]
+            if t in ("ROOT", "JOINT", "End"):
+                nodes.append({"name": tokens[i + 1], "parent": stack[-1] if stack else None, "end": t == "End",
+                              "channels": [], "offset": (0.0, 0.0, 0.0)})
+                i += 2
+            elif t == "{":
+                stack.append(len(nodes) - 1)
+                i += 1
+            elif t == "}":
+                stack.pop()
+                i += 1
+            elif t == "OFFSET":
+                nodes[-1]["offset"] = tuple(float(v) for v in tokens[i + 1:i + 4])
+                i += 4
+            elif t == "CHANNELS":
+                n = int(tokens[i + 1])
+                nodes[-1]["channels"] = tokens[i + 2:i + 2 + n]
+                i += 2 + n
+            else:
+                i += 1
+        joint_of = {}
+        self.joints, start = [], 0
+        for n, node in enumerate(nodes):
+            if node["end"]:
+                continue
+            joint_of[n] = len(self.joints)
+            node["parent"] = joint_of[node["parent"]] if node["parent"] is not None else None
+            node["start"] = start
+            start += len(node["channels"])
+            self.joints.append(node)
+        count = int(tokens[i + 2])
+        i += 6  # MOTION Frames: N Frame Time: T
+        self.frames = [[float(t) for t in tokens[i + f * start:i + (f + 1) * start]] for f in range(count)]
+
+    def local_matrix(self, joint, frame):
+        """The joint's transform at `frame`: its position channels (or OFFSET), then its rotations
+        in channel order, as Blender's importer applies them."""
+        row = self.frames[frame][joint["start"]:joint["start"] + len(joint["channels"])]
+        values = dict(zip(joint["channels"], row))
+        position = Vector(joint["offset"])
+        for axis, name in enumerate(("Xposition", "Yposition", "Zposition")):
+            if name in values:
+                position[axis] = values[name]
+        m = Matrix.Translation(position)
+        for name in joint["channels"]:
+            if name.endswith("rotation"):
+                m = m @ Matrix.Rotation(math.radians(values[name]), 4, name[0])
+        return m
+
+    def world_position(self, index, frame):
+        m, j = Matrix.Identity(4), index
+        while j is not None:
+            m = self.local_matrix(self.joints[j], frame) @ m
+            j = self.joints[j]["parent"]
+        return m.translation
+
+
+# --- the checks -------------------------------------------------------------------------------
+
+def imported_object(before):
+    new = [o for o in bpy.context.scene.objects if o.name not in before]
+    require(len(new) >= 1, "the importer created no object")
+    return new
+
+
+def check_bvh(path):
+    bvh = Bvh(path)
+    before = {o.name for o in bpy.context.scene.objects}
+    # forward Y, up Z: Blender's own axes, so the file's coordinates are kept as they are.
+    bpy.ops.import_anim.bvh(filepath=path, axis_forward="Y", axis_up="Z", frame_start=1, use_fps_scale=False)
+    armatures = [o for o in imported_object(before) if o.type == "ARMATURE"]
+    require(len(armatures) == 1, "the BVH import made no armature")
+    arm = armatures[0]
+    require(len(arm.data.bones) == len(bvh.joints),
+            f"{len(arm.data.bones)} bones for {len(bvh.joints)} BVH joints")
+    fcurve = arm.animation_data.action.fcurves[0]
+    require(len(fcurve.keyframe_points) == len(bvh.frames),
+            f"{len(fcurve.keyframe_points)} keys for {len(bvh.frames)} BVH frames")
+    scene = bpy.context.scene
+    frames = sorted({0, len(bvh.frames) // 2, len(bvh.frames) - 1})
+    markers = list(range(1, len(bvh.joints)))[:: max(1, len(bvh.joints) // 5)]
+    expected = {(f, m): bvh.world_position(m, f) for f in frames for m in markers}
+    tol = 1e-4 * max(1.0, max(abs(c) for p in expected.values() for c in p))
+    moved = False
+    for f in frames:
+        scene.frame_set(1 + f)
+        for m in markers:
+            got = arm.matrix_world @ arm.pose.bones[bvh.joints[m]["name"]].head
+            require(close(got, expected[(f, m)], tol),
+                    f"BVH frame {f}, {bvh.joints[m]['name']}: Blender has {tuple(got)}, the file {tuple(expected[(f, m)])}")
+            moved |= not close(expected[(f, m)], expected[(frames[0], m)], tol)
+    require(moved, "the BVH markers do not move over the checked frames")
+    return f"BVH {len(bvh.joints)} joints x {len(bvh.frames)} frames"
+
+
+def import_obj(path):
+    before = {o.name for o in bpy.context.scene.objects}
+    if hasattr(bpy.ops.wm, "obj_import"):  # the C++ importer (Blender 3.3 and later)
+        bpy.ops.wm.obj_import(filepath=path, forward_axis="Y", up_axis="Z")
+    else:
+        bpy.ops.import_scene.obj(filepath=path, axis_forward="Y", axis_up="Z", split_mode="OFF")
+    meshes = [o for o in imported_object(before) if o.type == "MESH"]
+    require(len(meshes) == 1, f"{path}: the OBJ import made {len(meshes)} meshes")
+    return meshes[0]
+
+
+def world_vertices(ob, mesh=None):
+    mesh = mesh or ob.data
+    return [tuple(ob.matrix_world @ v.co) for v in mesh.vertices]
+
+
+def check_obj(path):
+    ob = import_obj(path)
+    written = read_obj_vertices(path)
+    got = world_vertices(ob)
+    require(len(got) == len(written), f"{path}: Blender has {len(got)} vertices, the file {len(written)}")
+    tol = tolerance(written)
+    bad = [i for i, (g, w) in enumerate(zip(got, written)) if not close(g, w, tol)]
+    require(not bad, f"{path}: {len(bad)} vertices differ, first #{bad[:1]}")
+    return ob, f"OBJ {len(got)} vertices, {len(ob.data.polygons)} faces"
+
+
+def check_pc2(path, sequence_frame=None, sample_of_frame=None):
+    cache = read_pc2(path)
+    ob, _ = check_obj(os.path.splitext(path)[0] + ".obj")
+    modifier = ob.modifiers.new("Mocap cache", "MESH_CACHE")
+    modifier.cache_format = "PC2"
+    modifier.filepath = path
+    modifier.frame_start = 1.0  # scene frame 1 shows the first sample
+    scene = bpy.context.scene
+    samples = sorted({0, len(cache) // 2, len(cache) - 1})
+    tol = tolerance(cache[0])
+    vertices = sorted({0, len(cache[0]) // 3, len(cache[0]) - 1})
+    seen = []
+    for s in samples:
+        scene.frame_set(1 + s)
+        evaluated = ob.evaluated_get(bpy.context.evaluated_depsgraph_get())
+        mesh = evaluated.to_mesh()
+        got = [tuple(mesh.vertices[i].co) for i in range(len(mesh.vertices))]
+        evaluated.to_mesh_clear()
+        require(len(got) == len(cache[s]), f"Mesh Cache: {len(got)} vertices, the PC2 {len(cache[s])}")
+        bad = [i for i in range(len(got)) if not close(got[i], cache[s][i], tol)]
+        require(not bad, f"Mesh Cache sample {s}: {len(bad)} vertices differ from the PC2, first #{bad[0] if bad else ''}"
+                f" ({got[bad[0]] if bad else ''} vs {cache[s][bad[0]] if bad else ''})")
+        seen.append([got[i] for i in vertices])
+    require(any(not close(a, b, tol) for a, b in zip(seen[0], seen[-1])),
+            "the Mesh Cache modifier does not move the mesh between the first and last sample")
+    if sequence_frame is not None:
+        sequence = read_obj_vertices(sequence_frame)
+        require(all(close(a, b, 1e-4 * max(1.0, max(abs(c) for c in a))) for a, b in zip(sequence, cache[sample_of_frame])),
+                f"{sequence_frame} differs from PC2 sample {sample_of_frame}")
+    return f"PC2 {len(cache)} samples x {len(cache[0])} points through the Mesh Cache modifier"
+
+
+def main():
+    args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    if len(args) not in (3, 4):
+        raise CheckFailed("usage: blender -b --python check_exports.py -- TAKE.bvh FRAME.obj CACHE.pc2 [SAMPLE]")
+    bvh, frame_obj, pc2 = args[:3]
+    sample = int(args[3]) if len(args) == 4 else None
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    results = [check_bvh(bvh), check_obj(frame_obj)[1], check_pc2(pc2, frame_obj if sample is not None else None, sample)]
+    print(f"PASS: Blender {bpy.app.version_string} opened the exports: " + "; ".join(results))
+
+
+try:
+    main()
+except CheckFailed as e:
+    print(f"FAIL: {e}")
+    sys.exit(1)
+except Exception as e:  # an importer error is a failure too, never a pass
+    import traceback
+
+    traceback.print_exc()
+    print(f"FAIL: {type(e).__name__}: {e}")
+    sys.exit(1)

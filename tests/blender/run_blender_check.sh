@@ -1,0 +1,37 @@
+#!/bin/sh
+# ctest `blender_import`: writes the three animation exports with the built `mocap` CLI (a BVH of
+# the sample take, an OBJ sequence and an OBJ + PC2 cache of the deformed MediaPipe face) and opens
+# them in Blender with check_exports.py. Exits 77 (reported as skipped) when Blender is missing.
+#   run_blender_check.sh MOCAP BLENDER TEST_DATA_DIR SAMPLE_TAKE
+set -eu
+mocap="$1" blender="$2" data="$3" sample="$4"
+if ! command -v "$blender" >/dev/null 2>&1; then
+  echo "SKIPPED: blender not found (Debian package 'blender')"
+  exit 77
+fi
+here="$(cd "$(dirname "$0")" && pwd)"
+out="$(mktemp -d "${TMPDIR:-/tmp}/mocap-blender.XXXXXX")"
+trap 'rm -rf "$out"' EXIT
+mesh="$data/face_mesh/canonical_face_model.obj"
+stabilize=root-1,root-2,root-3,root-4,root-5,root-6
+markers=""
+for section in 1 2 3 4 5 6 7 8 9 10 11 12 13 14; do
+  count=2
+  if [ "$section" -eq 10 ] || [ "$section" -ge 13 ]; then count=3; fi
+  for k in $(seq 1 "$count"); do markers="${markers:+$markers,}section$section-$k"; done
+done
+
+"$mocap" bind --mesh "$mesh" --take "$sample" --stabilize "$stabilize" --markers "$markers" -o "$out/bind.json" >/dev/null
+deform() {
+  "$mocap" deform --mesh "$mesh" --binding "$out/bind.json" --take "$sample" --stabilize "$stabilize" \
+    --frames 1:12 --leave-out 0 "$@" >/dev/null
+}
+deform -o "$out/face.pc2"
+deform -o "$out/sequence"
+"$mocap" convert "$sample" "$out/take.bvh" >/dev/null
+
+# Frame 5 of the sequence is sample 4 of the cache: the two exports must agree.
+status=0
+"$blender" -b --factory-startup --python-exit-code 1 --python "$here/check_exports.py" -- \
+  "$out/take.bvh" "$out/sequence/canonical_face_model_0005.obj" "$out/face.pc2" 4 || status=$?
+exit "$status"

@@ -1,0 +1,56 @@
+#include "dialogs/animation_export_job.h"
+
+#include "mocap/bvh_writer.h"
+#include "mocap/error.h"
+#include "mocap/file_io.h"
+#include "mocap/mesh_sequence_writer.h"
+
+namespace mocap::ui {
+
+namespace {
+
+ExportStatus writeBvhFile(const AnimationExportJob& job, ExportProgress& progress)
+{
+  const std::string text = formatBvh(job.markers);
+  if (progress.cancel)
+    return ExportStatus::Cancelled;
+  writeFileAtomically(job.output, text);
+  progress.done = job.markers.frameCount();
+  return ExportStatus::Done;
+}
+
+ExportStatus writeMeshFrames(const AnimationExportJob& job, ExportProgress& progress)
+{
+  if (!job.source)
+    throw InvalidArgument("no deformed mesh to export: load a face mesh first");
+  const MeshSequenceFormat format =
+      job.format == AnimationFormat::ObjPlusPc2 ? MeshSequenceFormat::ObjPlusPc2 : MeshSequenceFormat::ObjSequence;
+  MeshSequenceWriter writer(job.output, job.mesh, format, job.meshName, job.startFrame);
+  MeshVertices vertices = job.mesh.vertices;
+  for (Eigen::Index f = job.begin; f < job.end; ++f) {
+    if (progress.cancel)
+      return ExportStatus::Cancelled;  // the writer removes what it wrote
+    job.source(f, vertices);
+    writer.add(vertices);
+    ++progress.done;
+  }
+  writer.finish();
+  return ExportStatus::Done;
+}
+
+} // namespace
+
+ExportOutcome runAnimationExport(const AnimationExportJob& job, ExportProgress& progress)
+{
+  ExportOutcome outcome;
+  try {
+    outcome.status =
+        job.format == AnimationFormat::Bvh ? writeBvhFile(job, progress) : writeMeshFrames(job, progress);
+  } catch (const std::exception& e) {  // nothing may throw across the worker boundary
+    outcome.status = ExportStatus::Failed;
+    outcome.error = e.what();
+  }
+  return outcome;
+}
+
+} // namespace mocap::ui

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "mocap/mesh.h"
+#include "mocap/take.h"
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace mocap::ui {
+
+/// Fills `vertices` (#vertices × 3) with the deformed mesh at take frame index `frame` (0-based).
+/// Called on the export's worker thread: it must not touch widgets or data the UI thread changes
+/// meanwhile (capture copies).
+using MeshFrameSource = std::function<void(Eigen::Index frame, MeshVertices& vertices)>;
+
+/// What the Export Animation dialog writes.
+enum class AnimationFormat
+{
+  Bvh,          ///< the markers as a BVH skeleton (bvh_writer.h)
+  ObjSequence,  ///< one OBJ of the deformed mesh per frame, in a folder
+  ObjPlusPc2,   ///< a PC2 point cache and the rest mesh as OBJ beside it
+};
+
+/// One export, holding copies of its data so it can run on a worker thread while the take is edited.
+struct AnimationExportJob
+{
+  AnimationFormat format = AnimationFormat::Bvh;
+  std::filesystem::path output;  ///< the .bvh or .pc2 file, or the OBJ sequence's folder
+  Take markers;                  ///< BVH: the frames to write (e.g. sliceFrames of the take)
+  Mesh mesh;                     ///< mesh formats: the mesh that `source` deforms
+  MeshFrameSource source;
+  std::string meshName = "mesh";  ///< file-name stem of the sequence files
+  Eigen::Index begin = 0;         ///< mesh formats: take frame indices [begin, end) given to `source`
+  Eigen::Index end = 0;
+  float startFrame = 1.0f;  ///< PC2 header: the frame number of `begin`
+
+  [[nodiscard]] Eigen::Index frameCount() const
+  {
+    return format == AnimationFormat::Bvh ? markers.frameCount() : end - begin;
+  }
+};
+
+/// Shared with the UI thread: frames done so far, and the request to stop.
+struct ExportProgress
+{
+  std::atomic<long long> done{0};
+  std::atomic<bool> cancel{false};
+};
+
+enum class ExportStatus
+{
+  Done,
+  Cancelled,
+  Failed,
+};
+
+struct ExportOutcome
+{
+  ExportStatus status = ExportStatus::Done;
+  std::string error;  ///< why it failed (Failed only)
+};
+
+/// Runs `job`, checking `progress.cancel` between frames. A cancelled or failed export leaves no
+/// output behind (MeshSequenceWriter removes what it wrote; the BVH is written atomically at the
+/// end). Never throws: errors come back in the outcome. O(#frames · (source cost + #vertices)) for
+/// the mesh formats, O(#frames · #markers) for BVH.
+[[nodiscard]] ExportOutcome runAnimationExport(const AnimationExportJob& job, ExportProgress& progress);
+
+} // namespace mocap::ui

@@ -1,0 +1,383 @@
+#include "dialogs/export_dialog.h"
+
+#include "document/take_document.h"
+
+#include "mocap/take_slice.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStandardItemModel>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <limits>
+
+namespace mocap::ui {
+
+namespace {
+
+const QString kFolderKey = QStringLiteral("export/folder");
+const QString kFormatKey = QStringLiteral("export/format");
+
+// The output file's extension for `format`; an OBJ sequence is a folder, which has none.
+QString extensionOf(AnimationFormat format)
+{
+  switch (format) {
+  case AnimationFormat::Bvh: return QStringLiteral(".bvh");
+  case AnimationFormat::ObjPlusPc2: return QStringLiteral(".pc2");
+  case AnimationFormat::ObjSequence: break;
+  }
+  return {};
+}
+
+// `path` with the extension `format` needs, keeping its folder and base name.
+QString pathForFormat(const QString& path, AnimationFormat format)
+{
+  const QFileInfo info(path);
+  const QString base = info.suffix().compare(QStringLiteral("bvh"), Qt::CaseInsensitive) == 0 ||
+                               info.suffix().compare(QStringLiteral("pc2"), Qt::CaseInsensitive) == 0
+                           ? info.completeBaseName()
+                           : info.fileName();
+  return QDir(info.path()).filePath(base + extensionOf(format));
+}
+
+bool meshFormat(AnimationFormat format)
+{
+  return format != AnimationFormat::Bvh;
+}
+
+int clampToInt(qint64 value)
+{
+  return static_cast<int>(std::clamp<qint64>(value, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+}
+
+} // namespace
+
+ExportDialog::ExportDialog(const TakeDocument& document, QWidget* parent)
+    : QDialog(parent), m_document(document), m_progress(std::make_shared<ExportProgress>())
+{
+  setWindowTitle(tr("Export Animation"));
+  buildLayout();
+  connect(&m_watcher, &QFutureWatcher<ExportOutcome>::finished, this, &ExportDialog::onFinished);
+  restoreSettings();
+}
+
+ExportDialog::~ExportDialog()
+{
+  m_progress->cancel = true;
+  m_watcher.waitForFinished();  // the job holds its own copies; the cancel makes it quick
+}
+
+void ExportDialog::buildLayout()
+{
+  auto* layout = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  m_format = new QComboBox(this);
+  m_format->addItem(tr("BVH of the markers (.bvh)"), static_cast<int>(AnimationFormat::Bvh));
+  m_format->addItem(tr("OBJ sequence of the deformed mesh (folder)"), static_cast<int>(AnimationFormat::ObjSequence));
+  m_format->addItem(tr("OBJ + PC2 point cache of the deformed mesh (.pc2)"),
+                    static_cast<int>(AnimationFormat::ObjPlusPc2));
+  form->addRow(tr("&Format:"), m_format);
+
+  auto* pathRow = new QHBoxLayout;
+  m_path = new QLineEdit(this);
+  m_browse = new QPushButton(tr("&Browse…"), this);
+  pathRow->addWidget(m_path, 1);
+  pathRow->addWidget(m_browse);
+  auto* outputLabel = new QLabel(tr("&Output:"), this);  // a row of a layout gets no buddy by itself
+  outputLabel->setBuddy(m_path);
+  form->addRow(outputLabel, pathRow);
+
+  auto* rangeRow = new QHBoxLayout;
+  m_first = new QSpinBox(this);
+  m_last = new QSpinBox(this);
+  rangeRow->addWidget(m_first);
+  rangeRow->addWidget(new QLabel(tr("to"), this));
+  rangeRow->addWidget(m_last);
+  rangeRow->addStretch();
+  auto* framesLabel = new QLabel(tr("F&rames:"), this);
+  framesLabel->setBuddy(m_first);
+  form->addRow(framesLabel, rangeRow);
+  layout->addLayout(form);
+
+  m_progressBar = new QProgressBar(this);
+  m_progressBar->setValue(0);
+  layout->addWidget(m_progressBar);
+  m_status = new QLabel(this);
+  m_status->setWordWrap(true);
+  m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(m_status);
+
+  auto* buttons = new QHBoxLayout;
+  m_export = new QPushButton(tr("&Export"), this);
+  m_export->setDefault(true);
+  m_cancel = new QPushButton(tr("Cancel"), this);
+  buttons->addStretch();
+  buttons->addWidget(m_export);
+  buttons->addWidget(m_cancel);
+  layout->addLayout(buttons);
+
+  m_poll = new QTimer(this);
+  m_poll->setInterval(50);
+  connect(m_poll, &QTimer::timeout, this, &ExportDialog::updateProgress);
+  connect(m_format, qOverload<int>(&QComboBox::currentIndexChanged), this, &ExportDialog::onFormatChanged);
+  connect(m_browse, &QPushButton::clicked, this, &ExportDialog::browse);
+  connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
+  connect(m_cancel, &QPushButton::clicked, this, &ExportDialog::reject);
+  setMeshSource({}, {}, {});  // disables the mesh formats until a caller provides a mesh
+  resize(560, 220);
+}
+
+void ExportDialog::restoreSettings()
+{
+  const QSettings settings;
+  const Take& take = m_document.take();
+  const qint64 first = take.firstFrame();
+  const qint64 last = first + std::max<Eigen::Index>(take.frameCount(), 1) - 1;
+  for (QSpinBox* box : {m_first, m_last})
+    box->setRange(clampToInt(first), clampToInt(last));
+  if (m_document.hasRange())
+    setFrameRange(first + m_document.rangeFirst(), first + m_document.rangeLast());
+  else
+    setFrameRange(first, last);
+
+  const QFileInfo takeFile(m_document.filePath());
+  const QString folder =
+      settings.value(kFolderKey, takeFile.filePath().isEmpty() ? QDir::homePath() : takeFile.absolutePath()).toString();
+  const QString base = takeFile.completeBaseName().isEmpty() ? QStringLiteral("take") : takeFile.completeBaseName();
+  m_path->setText(QDir(folder).filePath(base));
+  const int remembered = settings.value(kFormatKey, 0).toInt();
+  const bool known = remembered >= 0 && remembered <= static_cast<int>(AnimationFormat::ObjPlusPc2);
+  m_rememberedFormat = known ? static_cast<AnimationFormat>(remembered) : AnimationFormat::Bvh;
+  setFormat(m_rememberedFormat);
+  onFormatChanged();  // the extension, even when the format did not change
+}
+
+void ExportDialog::setMeshSource(Mesh mesh, MeshFrameSource source, const QString& name)
+{
+  m_mesh = std::move(mesh);
+  m_source = std::move(source);
+  m_meshName = name.isEmpty() ? QStringLiteral("mesh") : name;
+  auto* model = qobject_cast<QStandardItemModel*>(m_format->model());
+  const bool available = static_cast<bool>(m_source) && m_mesh.vertexCount() > 0;
+  for (const AnimationFormat format : {AnimationFormat::ObjSequence, AnimationFormat::ObjPlusPc2}) {
+    QStandardItem* item = model->item(m_format->findData(static_cast<int>(format)));
+    item->setEnabled(available);
+    item->setToolTip(available ? QString() : tr("Load a face mesh first: these formats export the deformed mesh."));
+  }
+  if (!available && meshFormat(format()))
+    setFormat(AnimationFormat::Bvh);
+  else if (available)
+    setFormat(m_rememberedFormat);
+}
+
+AnimationFormat ExportDialog::format() const
+{
+  return static_cast<AnimationFormat>(m_format->currentData().toInt());
+}
+
+void ExportDialog::setFormat(AnimationFormat format)
+{
+  const int index = m_format->findData(static_cast<int>(format));
+  const auto* model = qobject_cast<QStandardItemModel*>(m_format->model());
+  if (index >= 0 && model->item(index)->isEnabled())
+    m_format->setCurrentIndex(index);
+}
+
+QString ExportDialog::outputPath() const
+{
+  return m_path->text();
+}
+
+void ExportDialog::setOutputPath(const QString& path)
+{
+  m_path->setText(path);
+}
+
+void ExportDialog::setFrameRange(qint64 first, qint64 last)
+{
+  m_first->setValue(clampToInt(first));
+  m_last->setValue(clampToInt(last));
+}
+
+void ExportDialog::onFormatChanged()
+{
+  if (!m_path->text().isEmpty())
+    m_path->setText(pathForFormat(m_path->text(), format()));
+}
+
+void ExportDialog::browse()
+{
+  QString path;
+  if (format() == AnimationFormat::ObjSequence)
+    path = QFileDialog::getExistingDirectory(this, tr("Folder for the OBJ sequence"), m_path->text());
+  else if (format() == AnimationFormat::Bvh)
+    path = QFileDialog::getSaveFileName(this, tr("Export BVH"), m_path->text(), tr("BVH (*.bvh)"));
+  else
+    path = QFileDialog::getSaveFileName(this, tr("Export Point Cache"), m_path->text(), tr("PC2 point cache (*.pc2)"));
+  if (!path.isEmpty())
+    m_path->setText(format() == AnimationFormat::ObjSequence ? path : pathForFormat(path, format()));
+}
+
+QString ExportDialog::checkSettings() const
+{
+  if (!m_document.hasTake())
+    return tr("Open a take first.");
+  if (m_path->text().trimmed().isEmpty())
+    return tr("Choose where to export.");
+  if (meshFormat(format()) && !m_source)
+    return tr("Load a face mesh first: this format exports the deformed mesh.");
+  if (m_first->value() > m_last->value())
+    return tr("The first frame (%1) is after the last (%2).").arg(m_first->value()).arg(m_last->value());
+  const QFileInfo output(m_path->text());
+  if (!QFileInfo(output.absolutePath()).isDir())
+    return tr("The folder %1 does not exist.").arg(QDir::toNativeSeparators(output.absolutePath()));
+  if (format() != AnimationFormat::ObjSequence && output.isDir())
+    return tr("%1 is a folder; choose a file name.").arg(QDir::toNativeSeparators(output.filePath()));
+  return {};
+}
+
+AnimationExportJob ExportDialog::makeJob() const
+{
+  const Take& take = m_document.take();
+  AnimationExportJob job;
+  job.format = format();
+  job.output = m_path->text().trimmed().toStdString();
+  job.begin = m_first->value() - take.firstFrame();
+  job.end = m_last->value() - take.firstFrame() + 1;
+  job.startFrame = static_cast<float>(m_first->value());
+  if (job.format == AnimationFormat::Bvh) {
+    job.markers = sliceFrames(take, job.begin, job.end);
+  } else {
+    job.mesh = m_mesh;
+    job.source = m_source;
+    job.meshName = m_meshName.toStdString();
+  }
+  return job;
+}
+
+bool ExportDialog::startExport()
+{
+  if (isRunning())
+    return false;
+  if (const QString problem = checkSettings(); !problem.isEmpty()) {
+    showStatus(problem, true);
+    return false;
+  }
+  AnimationExportJob job;
+  try {
+    job = makeJob();
+  } catch (const std::exception& e) {  // e.g. the take changed under the range
+    showStatus(QString::fromStdString(e.what()), true);
+    return false;
+  }
+  QSettings settings;
+  const QFileInfo output(m_path->text().trimmed());
+  settings.setValue(kFolderKey, output.absolutePath());
+  settings.setValue(kFormatKey, static_cast<int>(job.format));
+  m_rememberedFormat = job.format;
+
+  m_total = job.frameCount();
+  m_runningOutput = QDir::toNativeSeparators(output.absoluteFilePath());
+  m_progress = std::make_shared<ExportProgress>();
+  m_progressBar->setRange(0, static_cast<int>(std::max<long long>(m_total, 1)));
+  m_progressBar->setValue(0);
+  showStatus(tr("Exporting %n frame(s)…", nullptr, static_cast<int>(m_total)), false);
+  setRunning(true);
+  m_watcher.setFuture(QtConcurrent::run([job = std::move(job), progress = m_progress] {
+    return runAnimationExport(job, *progress);
+  }));
+  return true;
+}
+
+void ExportDialog::cancelExport()
+{
+  if (!isRunning())
+    return;
+  m_progress->cancel = true;
+  showStatus(tr("Cancelling…"), false);
+}
+
+void ExportDialog::reject()
+{
+  if (isRunning())
+    cancelExport();
+  else
+    QDialog::reject();
+}
+
+bool ExportDialog::isRunning() const
+{
+  return m_watcher.isRunning();
+}
+
+void ExportDialog::waitForFinished()
+{
+  while (m_poll->isActive() || isRunning()) {
+    m_watcher.waitForFinished();
+    QCoreApplication::processEvents();
+  }
+}
+
+QString ExportDialog::statusText() const
+{
+  return m_status->text();
+}
+
+void ExportDialog::updateProgress()
+{
+  m_progressBar->setValue(static_cast<int>(std::min<long long>(m_progress->done, m_total)));
+}
+
+void ExportDialog::onFinished()
+{
+  updateProgress();
+  setRunning(false);
+  const ExportOutcome outcome = m_watcher.result();
+  switch (outcome.status) {
+  case ExportStatus::Done:
+    showStatus(tr("Exported %n frame(s) to %1.", nullptr, static_cast<int>(m_total)).arg(m_runningOutput), false);
+    break;
+  case ExportStatus::Cancelled:
+    m_progressBar->setValue(0);
+    showStatus(tr("Export cancelled; nothing was written."), false);
+    break;
+  case ExportStatus::Failed:
+    m_progressBar->setValue(0);
+    showStatus(tr("Export failed: %1").arg(QString::fromStdString(outcome.error)), true);
+    break;
+  }
+  emit exportFinished(outcome.status == ExportStatus::Done);
+}
+
+void ExportDialog::setRunning(bool running)
+{
+  for (QWidget* input : std::initializer_list<QWidget*>{m_format, m_path, m_browse, m_first, m_last, m_export})
+    input->setEnabled(!running);
+  m_cancel->setText(running ? tr("Cancel") : tr("Close"));
+  if (running)
+    m_poll->start();
+  else
+    m_poll->stop();
+}
+
+void ExportDialog::showStatus(const QString& text, bool error)
+{
+  m_status->setText(text);
+  m_status->setStyleSheet(error ? QStringLiteral("color: #c0392b;") : QString());
+}
+
+} // namespace mocap::ui

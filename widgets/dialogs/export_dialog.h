@@ -1,0 +1,101 @@
+#pragma once
+
+#include "dialogs/animation_export_job.h"
+
+#include <QDialog>
+#include <QFutureWatcher>
+
+#include <memory>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTimer;
+
+namespace mocap::ui {
+
+class TakeDocument;
+
+/// File ▸ Export Animation: the markers as BVH, or the deformed face mesh as an OBJ sequence or an
+/// OBJ + PC2 point cache, over a frame range. The export runs on a worker thread with a progress
+/// bar and Cancel; a cancelled or failed export leaves no file. The last folder and format are
+/// remembered (QSettings "export/folder", "export/format"). The mesh formats need a source of
+/// deformed frames (setMeshSource); without one they are disabled.
+class ExportDialog final : public QDialog
+{
+  Q_OBJECT
+
+public:
+  explicit ExportDialog(const TakeDocument& document, QWidget* parent = nullptr);
+  /// Cancels a running export and waits for it to stop.
+  ~ExportDialog() override;
+
+  /// The deformed mesh for the mesh formats: `mesh` and its vertices per take frame, which
+  /// `source` computes on the worker thread. `name` is the stem of the sequence files.
+  void setMeshSource(Mesh mesh, MeshFrameSource source, const QString& name);
+
+  [[nodiscard]] AnimationFormat format() const;
+  /// Selects `format` (ignored while it is disabled) and gives the output path its extension.
+  void setFormat(AnimationFormat format);
+  [[nodiscard]] QString outputPath() const;
+  void setOutputPath(const QString& path);
+  /// Frame numbers as the take counts them (from Take::firstFrame()), both included.
+  void setFrameRange(qint64 first, qint64 last);
+
+  /// Checks the settings and starts the export on a worker thread (the Export button). Returns
+  /// false, with the reason in the dialog, when they cannot be used.
+  bool startExport();
+  /// Asks a running export to stop; it removes what it wrote (the Cancel button while running).
+  void cancelExport();
+  [[nodiscard]] bool isRunning() const;
+  /// Processes events until the running export has finished. For tests.
+  void waitForFinished();
+  /// The last message shown under the progress bar (an error, "cancelled", or what was written).
+  [[nodiscard]] QString statusText() const;
+
+  /// Escape, Cancel and the close button stop a running export instead of closing the dialog.
+  void reject() override;
+
+signals:
+  /// An export ended: `succeeded` is false when it failed or was cancelled.
+  void exportFinished(bool succeeded);
+
+private:
+  void buildLayout();
+  void restoreSettings();
+  void browse();
+  void onFormatChanged();
+  void onFinished();
+  void updateProgress();
+  void setRunning(bool running);
+  void showStatus(const QString& text, bool error);
+  [[nodiscard]] QString checkSettings() const;
+  [[nodiscard]] AnimationExportJob makeJob() const;
+
+  const TakeDocument& m_document;
+  Mesh m_mesh;
+  MeshFrameSource m_source;
+  QString m_meshName;
+  AnimationFormat m_rememberedFormat = AnimationFormat::Bvh;
+
+  QComboBox* m_format = nullptr;
+  QLineEdit* m_path = nullptr;
+  QPushButton* m_browse = nullptr;
+  QSpinBox* m_first = nullptr;
+  QSpinBox* m_last = nullptr;
+  QProgressBar* m_progressBar = nullptr;
+  QLabel* m_status = nullptr;
+  QPushButton* m_export = nullptr;
+  QPushButton* m_cancel = nullptr;
+  QTimer* m_poll = nullptr;
+
+  std::shared_ptr<ExportProgress> m_progress;
+  QFutureWatcher<ExportOutcome> m_watcher;
+  long long m_total = 0;
+  QString m_runningOutput;
+};
+
+} // namespace mocap::ui
