@@ -491,10 +491,7 @@ int runPfa(const std::vector<std::string>& args)
   if (const auto patterns = arguments.value("--markers")) {
     planned = matching(allLabels, *patterns, "--markers");
   } else {
-    for (const std::string& label : allLabels)
-      if (std::find(frameOptions.stabilizeLabels.begin(), frameOptions.stabilizeLabels.end(), label) ==
-          frameOptions.stabilizeLabels.end())
-        planned.push_back(label);
+    planned = defaultPlannedLabels(takes.front(), frameOptions.stabilizeLabels);
   }
   if (const auto patterns = arguments.value("--exclude")) {
     const std::vector<std::string> excluded = matching(allLabels, *patterns, "--exclude");

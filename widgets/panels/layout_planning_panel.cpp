@@ -73,11 +73,8 @@ std::shared_ptr<LayoutPlanResult> planLayout(Take openTake, const LayoutPlanPara
     LayoutFramesOptions frameOptions;
     frameOptions.stabilizeLabels = toStd(parameters.stabilizeLabels);
     result->referenceLabels = frameOptions.stabilizeLabels;
-    // Planned: every labelled marker of the open take but the reference and excluded ones.
-    const std::vector<std::string> left = toStd(parameters.stabilizeLabels + parameters.excludeLabels);
-    for (const std::string& label : takes.front().labels())
-      if (!isUnlabelledLabel(label) && std::find(left.begin(), left.end(), label) == left.end())
-        frameOptions.markers.push_back(label);
+    frameOptions.markers =
+        defaultPlannedLabels(takes.front(), toStd(parameters.stabilizeLabels + parameters.excludeLabels));
     result->frames = collectLayoutFrames(takes, frameOptions);
     if (parameters.pairsFile.isEmpty()) {
       result->symmetry = detectLayoutPairs(result->frames).symmetry;
