@@ -237,6 +237,14 @@ TEST_F(LayoutPlanning, RefusesBadInputWithAMessage)
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("take.c3d"))) << panel->statusText().toStdString();
 }
 
+TEST_F(LayoutPlanning, ScrollsRatherThanForcingTheWindowTaller)
+{
+  window->resize(1280, 800);  // the --screenshot size
+  QTest::qWait(50);
+  EXPECT_EQ(window->height(), 800);
+  EXPECT_LE(panel->minimumSizeHint().height(), 300);
+}
+
 TEST_F(LayoutPlanning, RemembersItsParameters)
 {
   ui::LayoutPlanParameters p = quick();
