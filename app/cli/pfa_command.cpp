@@ -6,6 +6,8 @@
 #include "mocap/error.h"
 #include "mocap/file_io.h"
 #include "mocap/json_writer.h"
+#include "mocap/layout_symmetry.h"
+#include "mocap/marker_edits.h"
 #include "mocap/marker_selection.h"
 #include "mocap/number_text.h"
 #include "mocap/take_io.h"
@@ -151,24 +153,6 @@ std::vector<std::string> labelsOf(const LayoutFrames& frames, const std::vector<
   for (const Eigen::Index m : markers)
     labels.push_back(frames.labels[static_cast<std::size_t>(m)]);
   return labels;
-}
-
-// A take holding only `labels` of `source` (all frames, original positions and states).
-Take subsetTake(const Take& source, const std::vector<std::string>& labels)
-{
-  Take take(labels, source.frameCount(), source.frameRate());
-  take.setFirstFrame(source.firstFrame());
-  take.setUnits(source.units());
-  for (Eigen::Index j = 0; j < take.markerCount(); ++j) {
-    const Eigen::Index m = *source.markerIndex(labels[static_cast<std::size_t>(j)]);
-    take.trajectory(j) = source.trajectory(m);
-    take.valid().col(j) = source.valid().col(m);
-    take.residuals().col(j) = source.residuals().col(m);
-    take.cameraMasks().col(j) = source.cameraMasks().col(m);
-    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
-      take.setState(f, j, source.state(f, m));
-  }
-  return take;
 }
 
 struct Report
@@ -507,10 +491,7 @@ int runPfa(const std::vector<std::string>& args)
   if (const auto patterns = arguments.value("--markers")) {
     planned = matching(allLabels, *patterns, "--markers");
   } else {
-    for (const std::string& label : allLabels)
-      if (std::find(frameOptions.stabilizeLabels.begin(), frameOptions.stabilizeLabels.end(), label) ==
-          frameOptions.stabilizeLabels.end())
-        planned.push_back(label);
+    planned = defaultPlannedLabels(takes.front(), frameOptions.stabilizeLabels);
   }
   if (const auto patterns = arguments.value("--exclude")) {
     const std::vector<std::string> excluded = matching(allLabels, *patterns, "--exclude");
@@ -533,15 +514,7 @@ int runPfa(const std::vector<std::string>& args)
     symmetry = readMarkerPairs(*pairsFile, frames.labels);
     pairSource = "file " + *pairsFile;
   } else {
-    std::vector<Eigen::Index> candidates;
-    for (const Eigen::Index r : frames.training)
-      if (std::find(options.keyFrames.begin(), options.keyFrames.end(), r) == options.keyFrames.end())
-        candidates.push_back(r);
-    const Eigen::Index neutral = findNeutralFrame(frames.frames, candidates);
-    Eigen::MatrixX3d positions(frames.markerCount(), 3);
-    for (Eigen::Index m = 0; m < frames.markerCount(); ++m)
-      positions.row(m) = frames.frames.row(neutral).segment<3>(3 * m);
-    detection = detectMarkerPairs(positions, frames.labels);
+    detection = detectLayoutPairs(frames, options.keyFrames);
     symmetry = detection->symmetry;
     pairSource = "detected on the neutral frame: labels, then mirror matching";
   }

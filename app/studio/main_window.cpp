@@ -15,6 +15,7 @@
 #include "panels/cleaning_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/head_stabilisation_step.h"
+#include "panels/layout_planning_panel.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
@@ -149,6 +150,18 @@ void MainWindow::createDocks()
   cleaningDock->setObjectName(QStringLiteral("cleaningDock"));
   cleaningDock->setWidget(m_cleaning);
   addDockWidget(Qt::RightDockWidgetArea, cleaningDock);
+
+  // Marker layout planning (issue 7): its selected layout is highlighted in the 3D view.
+  m_layoutPlanning = new ui::LayoutPlanningPanel(*m_document, this);
+  auto* layoutDock = new QDockWidget(tr("Layout planning"), this);
+  layoutDock->setObjectName(QStringLiteral("layoutPlanningDock"));
+  layoutDock->setWidget(m_layoutPlanning);
+  addDockWidget(Qt::RightDockWidgetArea, layoutDock);
+  tabifyDockWidget(cleaningDock, layoutDock);
+  cleaningDock->raise();
+  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, m_view3d, &ui::MarkerView3d::setLayoutHighlight);
+  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
+          &ui::MarkerView3d::clearLayoutHighlight);
 }
 
 void MainWindow::createActions()

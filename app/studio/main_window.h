@@ -18,6 +18,7 @@ class Autosave;
 struct Preferences;
 class CleaningPanel;
 class CurveView;
+class LayoutPlanningPanel;
 class MarkerTableModel;
 class MarkerView3d;
 class TakeDocument;
@@ -46,6 +47,7 @@ public:
   [[nodiscard]] ui::CurveView* curveView() const { return m_curves; }
   [[nodiscard]] ui::TimelineWidget* timeline() const { return m_timeline; }
   [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
+  [[nodiscard]] ui::LayoutPlanningPanel* layoutPlanningPanel() const { return m_layoutPlanning; }
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether
@@ -92,6 +94,7 @@ private:
   ui::CurveView* m_curves = nullptr;
   ui::TimelineWidget* m_timeline = nullptr;
   ui::CleaningPanel* m_cleaning = nullptr;
+  ui::LayoutPlanningPanel* m_layoutPlanning = nullptr;
   ui::MarkerTableModel* m_tableModel = nullptr;
   QSortFilterProxyModel* m_proxy = nullptr;
   QTableView* m_table = nullptr;

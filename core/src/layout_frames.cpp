@@ -3,6 +3,7 @@
 #include "mocap/error.h"
 #include "mocap/head_stabilization.h"
 #include "mocap/kabsch.h"
+#include "mocap/marker_set.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,15 @@ std::vector<Eigen::Index> indicesOf(const Take& take, const std::vector<std::str
 
 } // namespace
 
+std::vector<std::string> defaultPlannedLabels(const Take& take, const std::vector<std::string>& excluded)
+{
+  std::vector<std::string> labels;
+  for (const std::string& label : take.labels())
+    if (!isUnlabelledLabel(label) && std::find(excluded.begin(), excluded.end(), label) == excluded.end())
+      labels.push_back(label);
+  return labels;
+}
+
 LayoutFrames collectLayoutFrames(const std::vector<Take>& takes, const LayoutFramesOptions& options)
 {
   if (takes.empty())
@@ -46,13 +56,8 @@ LayoutFrames collectLayoutFrames(const std::vector<Take>& takes, const LayoutFra
   if (!(options.blockSeconds > 0.0) || !std::isfinite(options.blockSeconds) || options.holdoutEvery < 2)
     throw InvalidArgument("layout planning: blockSeconds must be positive and holdoutEvery at least 2");
   LayoutFrames result;
-  result.labels = options.markers;
-  if (result.labels.empty()) {
-    const std::set<std::string> references(options.stabilizeLabels.begin(), options.stabilizeLabels.end());
-    for (const std::string& label : takes.front().labels())
-      if (references.count(label) == 0)
-        result.labels.push_back(label);
-  }
+  result.labels = options.markers.empty() ? defaultPlannedLabels(takes.front(), options.stabilizeLabels)
+                                          : options.markers;
   for (const std::string& label : result.labels)
     if (std::find(options.stabilizeLabels.begin(), options.stabilizeLabels.end(), label) !=
         options.stabilizeLabels.end())

@@ -104,4 +104,28 @@ std::vector<SamplePatch> swapMarkersOverRange(const Take& take, Eigen::Index a, 
   return patches;
 }
 
+Take subsetTake(const Take& source, const std::vector<std::string>& labels)
+{
+  if (labels.empty())
+    throw InvalidArgument("a marker subset needs at least one label");
+  const std::vector<Eigen::Index> markers = markerIndices(source, labels);
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (std::find(labels.begin(), labels.begin() + static_cast<std::ptrdiff_t>(i), labels[i]) !=
+        labels.begin() + static_cast<std::ptrdiff_t>(i))
+      throw InvalidArgument("marker '" + labels[i] + "' is named twice in the subset");
+  Take take(labels, source.frameCount(), source.frameRate());
+  take.setFirstFrame(source.firstFrame());
+  take.setUnits(source.units());
+  for (Eigen::Index j = 0; j < take.markerCount(); ++j) {
+    const Eigen::Index m = markers[static_cast<std::size_t>(j)];
+    take.trajectory(j) = source.trajectory(m);
+    take.valid().col(j) = source.valid().col(m);
+    take.residuals().col(j) = source.residuals().col(m);
+    take.cameraMasks().col(j) = source.cameraMasks().col(m);
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      take.setState(f, j, source.state(f, m));
+  }
+  return take;
+}
+
 } // namespace mocap

@@ -178,3 +178,46 @@ TEST(MarkerLinks, NearestNeighboursOnAGridSkipAStrayMarker)
 
 } // namespace
 } // namespace mocap
+
+namespace mocap {
+namespace {
+
+TEST(SubsetTake, KeepsTheNamedMarkersInOrderWithEverySample)
+{
+  Take source = readC3d(test::sampleTake());
+  source.setState(42, *source.markerIndex("section4-2"), SampleState::Filled);
+  source.cameraMasks()(7, *source.markerIndex("root-3")) = 0x5a;
+  const std::vector<std::string> labels = {"section4-2", "root-3", "section1-1"};
+  const Take subset = subsetTake(source, labels);
+  ASSERT_EQ(subset.labels(), labels);
+  EXPECT_EQ(subset.frameCount(), source.frameCount());
+  EXPECT_EQ(subset.frameRate(), source.frameRate());
+  EXPECT_EQ(subset.firstFrame(), source.firstFrame());
+  EXPECT_EQ(subset.units(), source.units());
+  for (Eigen::Index j = 0; j < subset.markerCount(); ++j) {
+    const Eigen::Index m = *source.markerIndex(labels[static_cast<std::size_t>(j)]);
+    EXPECT_TRUE((subset.valid().col(j) == source.valid().col(m)).all()) << labels[static_cast<std::size_t>(j)];
+    EXPECT_TRUE((subset.residuals().col(j) == source.residuals().col(m)).all());
+    EXPECT_TRUE((subset.cameraMasks().col(j) == source.cameraMasks().col(m)).all());
+    EXPECT_TRUE((subset.states().col(j) == source.states().col(m)).all());
+    for (Eigen::Index f = 0; f < source.frameCount(); ++f) {
+      if (source.isValid(f, m)) {
+        ASSERT_EQ(subset.position(f, j), source.position(f, m)) << f;
+      }
+    }
+  }
+  EXPECT_EQ(subset.state(42, 0), SampleState::Filled);
+  EXPECT_EQ(subset.cameraMasks()(7, 1), 0x5a);
+}
+
+TEST(SubsetTake, RejectsNoLabelsAnUnknownLabelOrARepeatedOne)
+{
+  const Take source({"a", "b", "c"}, 4, 100.0);
+  EXPECT_THROW((void)subsetTake(source, {}), InvalidArgument);
+  EXPECT_THROW((void)subsetTake(source, {"a", "z"}), InvalidArgument);
+  EXPECT_THROW((void)subsetTake(source, {"b", "a", "b"}), InvalidArgument);
+  EXPECT_EQ(subsetTake(source, {"c", "a"}).labels(), (std::vector<std::string>{"c", "a"}));
+}
+
+} // namespace
+} // namespace mocap

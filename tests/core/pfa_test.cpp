@@ -412,5 +412,21 @@ TEST(MarkerSelection, OnNoseMoCapGreedyBeatsPfaAndPfaBeatsRandom)
   EXPECT_GT(plan.recommendedSize, 0);
 }
 
+TEST(LayoutFrames, PlansEveryLabelledMarkerButTheExcludedOnesByDefault)
+{
+  const Take take = readTake(test::sampleTake());
+  const std::vector<std::string> reference = {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"};
+  const std::vector<std::string> planned = defaultPlannedLabels(take, reference);
+  // 38 markers: 6 head references, the unlabelled point Unlabeled1 and 31 face markers.
+  ASSERT_EQ(planned.size(), 31u);
+  for (const std::string& label : planned)
+    EXPECT_EQ(label.rfind("section", 0), 0u) << label;
+  EXPECT_EQ(defaultPlannedLabels(take, {}).size(), 37u);
+  // collectLayoutFrames plans the same markers when none are named.
+  LayoutFramesOptions options;
+  options.stabilizeLabels = reference;
+  EXPECT_EQ(collectLayoutFrames({take}, options).labels, planned);
+}
+
 } // namespace
 } // namespace mocap

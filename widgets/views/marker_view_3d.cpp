@@ -43,6 +43,13 @@ bool isSelected(const std::vector<Eigen::Index>& selection, Eigen::Index marker)
   return std::binary_search(selection.begin(), selection.end(), marker);
 }
 
+// Kept and dropped markers of a planned layout: far apart in hue and brightness, and unlike
+// every sample-state colour, so the layout reads at a glance.
+QColor layoutColor(bool kept)
+{
+  return kept ? QColor(60, 230, 90) : QColor(95, 95, 100);
+}
+
 /// Mean and spread of all valid samples, for camera placement and marker size.
 struct Extent
 {
@@ -180,6 +187,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   });
 
   connect(&document, &TakeDocument::takeReset, this, [this] {
+    m_layoutKept.clear();
     m_headReference.clear();  // a new take
     m_headMotion.reset();
     m_links.clear();
@@ -192,6 +200,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markersChanged, this, [this] {
+    m_layoutKept.clear();
     m_headReference.clear();  // indices shifted
     m_headMotion.reset();
     m_links.clear();
@@ -329,6 +338,7 @@ void MarkerView3d::updateFrame()
       m_points->InsertNextPoint(p.data());
       // Unlabelled points (fragments waiting for a label) stand apart from every labelled state.
       const QColor color = isSelected(selection, m)                ? selectionColor()
+                           : !m_layoutKept.empty()              ? layoutColor(m_layoutKept[static_cast<std::size_t>(m)])
                            : isUnlabelledLabel(take.label(m)) ? QColor(200, 130, 255)
                                                               : stateColor(take.state(frame, m));
       const unsigned char rgb[3] = {static_cast<unsigned char>(color.red()), static_cast<unsigned char>(color.green()),
@@ -504,6 +514,19 @@ std::optional<QPointF> MarkerView3d::screenPosition(Eigen::Index marker) const
   if (it == m_drawnMarkers.end())
     return std::nullopt;
   return projected(static_cast<vtkIdType>(it - m_drawnMarkers.begin()));
+}
+
+void MarkerView3d::setLayoutHighlight(std::vector<bool> kept)
+{
+  if (static_cast<Eigen::Index>(kept.size()) != m_document.take().markerCount())
+    kept.clear();  // a flag per marker or none: anything else belongs to another take
+  m_layoutKept = std::move(kept);
+  updateFrame();
+}
+
+void MarkerView3d::clearLayoutHighlight()
+{
+  setLayoutHighlight({});
 }
 
 void MarkerView3d::onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers)

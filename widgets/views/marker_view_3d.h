@@ -78,6 +78,13 @@ public:
   [[nodiscard]] std::vector<Eigen::Index> markersIn(const QRect& rectangle) const;
   /// Where drawn marker `marker` appears in the widget; nullopt when it is not drawn.
   [[nodiscard]] std::optional<QPointF> screenPosition(Eigen::Index marker) const;
+  /// A planned marker layout over the take: while set, markers are drawn kept (bright green) or
+  /// dropped (dim grey) instead of by sample state; selection still shows. One flag per marker;
+  /// dropped when markers are added, removed or another take is opened.
+  void setLayoutHighlight(std::vector<bool> kept);
+  void clearLayoutHighlight();
+  /// The highlight shown, empty when none.
+  [[nodiscard]] const std::vector<bool>& layoutHighlight() const { return m_layoutKept; }
 
 signals:
   void labelPointClicked(Eigen::Index marker);
@@ -124,6 +131,7 @@ private:
   bool m_labellingMode = false;
   LengthUnit m_displayUnit = LengthUnit::Millimetre;
   std::optional<HeadMotion> m_headMotion;
+  std::vector<bool> m_layoutKept;  // empty: no layout highlight
 };
 
 } // namespace mocap::ui

@@ -13,7 +13,7 @@ namespace mocap {
 
 struct LayoutFramesOptions
 {
-  /// Labels of the markers to plan a layout for; empty: every marker except the reference markers.
+  /// Labels of the markers to plan a layout for; empty: defaultPlannedLabels(first take, stabilizeLabels).
   std::vector<std::string> markers;
   /// Head-mounted reference markers: when given, each take's head motion is removed with them
   /// (head_stabilization.h) before anything else, and they are never planned over.
@@ -44,6 +44,13 @@ struct LayoutFrames
   /// O(log #frames).
   [[nodiscard]] Eigen::Index rowOf(std::size_t take, Eigen::Index frame) const;
 };
+
+/// The markers a layout is planned over unless told otherwise: every marker of `take` in take order
+/// except `excluded` (e.g. the head reference markers) and unlabelled points (isUnlabelledLabel:
+/// fragments the tracker could not name, valid in too few frames to plan with).
+/// O(#markers · #excluded).
+[[nodiscard]] std::vector<std::string> defaultPlannedLabels(const Take& take,
+                                                            const std::vector<std::string>& excluded);
 
 /// Gathers LayoutFrames from takes sharing the planned markers (matched by label; other markers
 /// may differ). Per take: copy, convert to mm, remove head motion when reference markers are given,

@@ -33,4 +33,11 @@ namespace mocap {
 /// an index outside the take or from == to. O(#frames).
 [[nodiscard]] SamplePatch validSamplesPatch(const Take& take, Eigen::Index from, Eigen::Index to);
 
+/// A take holding only the markers `labels` of `source`, in that order, with every frame and
+/// each sample's position, validity, residual, camera mask and state: a capture reduced to a
+/// planned marker layout. Frame rate, first frame and units are kept; analog data, events and
+/// C3D parameters are not (they describe the full capture). Throws InvalidArgument for no
+/// labels, a label `source` does not have or a label given twice. O(#frames · #labels).
+[[nodiscard]] Take subsetTake(const Take& source, const std::vector<std::string>& labels);
+
 } // namespace mocap

@@ -1,0 +1,270 @@
+// The layout planning dock end to end under Xvfb: plan the sample with few restarts, read the
+// plot, click a marker count and check the 3D highlight, cancel, export, and refuse bad input.
+#include "../core/test_support.h"
+
+#include "document/take_document.h"
+#include "main_window.h"
+#include "panels/layout_planning_panel.h"
+#include "views/layout_error_plot.h"
+#include "views/marker_view_3d.h"
+
+#include "mocap/file_io.h"
+#include "mocap/marker_set_io.h"
+#include "mocap/take_io.h"
+
+#include <QDockWidget>
+#include <QSettings>
+#include <QTableWidget>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mocap {
+namespace {
+
+using studio::MainWindow;
+using ui::LayoutErrorPlot;
+using ui::LayoutPlanningPanel;
+
+const QStringList kReference = {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"};
+
+class LayoutPlanning : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    QSettings().clear();
+    window = std::make_unique<MainWindow>();
+    window->resize(1280, 900);
+    window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window->findChild<QDockWidget*>(QStringLiteral("layoutPlanningDock"))->raise();  // tabbed behind Cleaning
+    panel = window->layoutPlanningPanel();
+    ASSERT_NE(panel, nullptr);
+  }
+
+  /// Few restarts and a small k range: a few seconds, yet several marker counts.
+  static ui::LayoutPlanParameters quick()
+  {
+    ui::LayoutPlanParameters p;
+    p.restarts = 5;
+    p.minK = 3;
+    p.maxK = 12;
+    p.seed = 7;
+    p.stabilizeLabels = kReference;
+    return p;
+  }
+
+  /// Runs quick() to the end (call through ASSERT_NO_FATAL_FAILURE).
+  void runQuickPlan()
+  {
+    panel->setParameters(quick());
+    ASSERT_EQ(panel->run(), QString());
+    EXPECT_TRUE(panel->busy() || panel->result() == nullptr);
+    panel->waitForRun();
+    ASSERT_FALSE(panel->busy());
+    ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
+  }
+
+  /// The take's labels the 3D view draws as kept.
+  std::vector<std::string> highlightedLabels() const
+  {
+    const std::vector<bool>& kept = window->markerView()->layoutHighlight();
+    std::vector<std::string> labels;
+    for (std::size_t m = 0; m < kept.size(); ++m)
+      if (kept[m])
+        labels.push_back(window->document().take().label(static_cast<Eigen::Index>(m)));
+    std::sort(labels.begin(), labels.end());
+    return labels;
+  }
+
+  static std::vector<std::string> sorted(std::vector<std::string> labels)
+  {
+    std::sort(labels.begin(), labels.end());
+    return labels;
+  }
+
+  std::unique_ptr<MainWindow> window;
+  LayoutPlanningPanel* panel = nullptr;
+};
+
+TEST_F(LayoutPlanning, PlansTheSampleAndHighlightsTheClickedSize)
+{
+  ASSERT_NO_FATAL_FAILURE(runQuickPlan());
+  const LayoutPlan& plan = panel->result()->plan;
+  // Neither the reference markers nor the unlabelled point (Unlabeled1) are planned.
+  EXPECT_EQ(panel->result()->frames.markerCount(), 31);
+  LayoutErrorPlot* plot = panel->plot();
+  for (const auto measure : {LayoutErrorPlot::Measure::ReconstructionRmse, LayoutErrorPlot::Measure::BlendshapeMse}) {
+    EXPECT_GE(plot->points(measure, LayoutErrorPlot::Curve::Pfa).size(), 3u);
+    EXPECT_GE(plot->points(measure, LayoutErrorPlot::Curve::Greedy).size(), 3u);
+    EXPECT_GE(plot->points(measure, LayoutErrorPlot::Curve::Random).size(), 3u);
+  }
+  ASSERT_GT(plot->recommendedSize(), 0);
+  EXPECT_EQ(plot->recommendedSize(), plan.recommendedSize);
+  EXPECT_EQ(plot->selectedSize(), plan.recommendedSize);
+  // Fewer markers reconstruct worse: the first PFA point is drawn higher (smaller y) than the last.
+  const auto rmse = plot->points(LayoutErrorPlot::Measure::ReconstructionRmse, LayoutErrorPlot::Curve::Pfa);
+  EXPECT_LT(rmse.front().y(), rmse.back().y());
+  EXPECT_GT(rmse.front().x(), 0.0);
+  EXPECT_LT(rmse.back().x(), plot->width());
+
+  // The recommended layout is highlighted straight away.
+  EXPECT_EQ(highlightedLabels(), sorted(panel->selectedLabels()));
+  EXPECT_EQ(static_cast<Eigen::Index>(panel->selectedLabels().size()), plan.recommendedSize);
+
+  // Click another size on the plot.
+  const auto& sizes = plot->selectableSizes();
+  ASSERT_GE(sizes.size(), 2u);
+  const Eigen::Index target = sizes.front() != plot->selectedSize() ? sizes.front() : sizes.back();
+  QTest::mouseClick(plot, Qt::LeftButton, {}, QPoint(static_cast<int>(std::lround(plot->xOf(target))), plot->height() / 2));
+  ASSERT_EQ(plot->selectedSize(), target);
+  const ScoredLayout* layout = plan.size(target)->layout(plan.method);
+  ASSERT_NE(layout, nullptr);
+  std::vector<std::string> expected;
+  for (const Eigen::Index m : layout->markers)
+    expected.push_back(panel->result()->frames.labels[static_cast<std::size_t>(m)]);
+  EXPECT_EQ(highlightedLabels(), sorted(expected));
+  EXPECT_EQ(static_cast<Eigen::Index>(expected.size()), target);
+  EXPECT_EQ(window->markerView()->layoutHighlight().size(), 38u);
+  // The table lists the layout's markers with their pair frequency.
+  auto* table = panel->findChild<QTableWidget*>();
+  ASSERT_NE(table, nullptr);
+  ASSERT_EQ(table->rowCount(), static_cast<int>(target));
+  EXPECT_EQ(table->item(0, 0)->text().toStdString(), expected.front());
+  EXPECT_TRUE(table->item(0, 2)->text().endsWith(QStringLiteral("%"))) << table->item(0, 2)->text().toStdString();
+
+  // ←/→ step through the sizes when the plot has the focus, not through frames.
+  plot->setFocus();
+  const Eigen::Index frame = window->document().currentFrame();
+  const auto at = std::find(sizes.begin(), sizes.end(), target) - sizes.begin();
+  const Eigen::Index neighbour = at == 0 ? sizes[1] : sizes[static_cast<std::size_t>(at - 1)];
+  QTest::keyClick(plot, at == 0 ? Qt::Key_Right : Qt::Key_Left);
+  EXPECT_EQ(plot->selectedSize(), neighbour);
+  EXPECT_EQ(static_cast<Eigen::Index>(highlightedLabels().size()), neighbour);
+  EXPECT_EQ(window->document().currentFrame(), frame);
+
+  // Another take ends the highlight.
+  window->document().setTake(Take({"a", "b"}, 5, 100.0));
+  EXPECT_TRUE(window->markerView()->layoutHighlight().empty());
+}
+
+TEST_F(LayoutPlanning, CancelStopsTheRunAndLeavesThePanelIdle)
+{
+  ui::LayoutPlanParameters slow = quick();
+  slow.restarts = 1000;
+  slow.minK = 0;
+  slow.maxK = 0;
+  panel->setParameters(slow);
+  ASSERT_EQ(panel->run(), QString());
+  ASSERT_TRUE(panel->busy());
+  EXPECT_NE(panel->run(), QString());  // one run at a time
+  QTest::qWait(200);
+  panel->cancel();
+  panel->waitForRun();
+  EXPECT_FALSE(panel->busy());
+  EXPECT_EQ(panel->result(), nullptr);
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("Cancel"))) << panel->statusText().toStdString();
+  EXPECT_TRUE(window->markerView()->layoutHighlight().empty());
+  // Idle again: a new run starts.
+  panel->setParameters(quick());
+  EXPECT_EQ(panel->run(), QString());
+  panel->waitForRun();
+  EXPECT_NE(panel->result(), nullptr);
+}
+
+TEST_F(LayoutPlanning, ExportsTheSelectedLayout)
+{
+  ASSERT_NO_FATAL_FAILURE(runQuickPlan());
+  const std::vector<std::string> labels = panel->selectedLabels();
+  ASSERT_FALSE(labels.empty());
+  test::TempDir dir;
+  const QString list = QString::fromStdString(dir.file("layout.txt").string());
+  ASSERT_EQ(panel->exportLabelList(list), QString());
+  std::istringstream text(readFileBytes(dir.file("layout.txt")));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(text, line);)
+    lines.push_back(line);
+  EXPECT_EQ(lines, labels);
+
+  // The take and the marker set keep the head reference markers a reduced capture still needs.
+  std::vector<std::string> capture = labels;
+  for (const QString& label : kReference)
+    capture.push_back(label.toStdString());
+  ASSERT_EQ(panel->exportTake(QString::fromStdString(dir.file("reduced.c3d").string())), QString());
+  const Take reduced = readTake(dir.file("reduced.c3d"));
+  EXPECT_EQ(reduced.labels(), capture);
+  EXPECT_EQ(reduced.frameCount(), window->document().take().frameCount());
+  ASSERT_EQ(panel->exportMarkerSet(QString::fromStdString(dir.file("reduced.json").string())), QString());
+  const MarkerSet set = readMarkerSet(dir.file("reduced.json"));
+  EXPECT_EQ(sorted(set.labels), sorted(capture));
+  // Every pair in the file is a pair the plan kept together.
+  const MarkerSymmetry& symmetry = panel->result()->symmetry;
+  const auto& planned = panel->result()->frames.labels;
+  for (const auto& [a, b] : set.pairs) {
+    const auto ia = std::find(planned.begin(), planned.end(), set.labels[static_cast<std::size_t>(a)]) - planned.begin();
+    const auto ib = std::find(planned.begin(), planned.end(), set.labels[static_cast<std::size_t>(b)]) - planned.begin();
+    EXPECT_EQ(symmetry.mirror(ia), ib);
+  }
+
+  // A folder that does not exist is an error message, and nothing is written.
+  EXPECT_NE(panel->exportLabelList(QString::fromStdString(dir.file("missing/layout.txt").string())), QString());
+}
+
+TEST_F(LayoutPlanning, RefusesBadInputWithAMessage)
+{
+  ui::LayoutPlanParameters p = quick();
+  p.minK = 9;
+  p.maxK = 3;
+  panel->setParameters(p);
+  EXPECT_NE(panel->run(), QString());
+  EXPECT_FALSE(panel->busy());
+  p = quick();
+  p.stabilizeLabels = {QStringLiteral("no-such-marker")};
+  panel->setParameters(p);
+  EXPECT_TRUE(panel->run().contains(QStringLiteral("no-such-marker")));
+  p = quick();
+  p.extraTakes = {QStringLiteral("/no/such/take.c3d")};
+  panel->setParameters(p);
+  ASSERT_EQ(panel->run(), QString());  // read on the worker: the failure arrives as the result
+  panel->waitForRun();
+  EXPECT_EQ(panel->result(), nullptr);
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("take.c3d"))) << panel->statusText().toStdString();
+}
+
+TEST_F(LayoutPlanning, ScrollsRatherThanForcingTheWindowTaller)
+{
+  window->resize(1280, 800);  // the --screenshot size
+  QTest::qWait(50);
+  EXPECT_EQ(window->height(), 800);
+  EXPECT_LE(panel->minimumSizeHint().height(), 300);
+}
+
+TEST_F(LayoutPlanning, RemembersItsParameters)
+{
+  ui::LayoutPlanParameters p = quick();
+  p.method = SelectionMethod::Greedy;
+  p.variance = 0.95;
+  p.minK = 3;
+  p.maxK = 4;
+  panel->setParameters(p);
+  ASSERT_EQ(panel->run(), QString());
+  panel->waitForRun();
+  LayoutPlanningPanel fresh(window->document());
+  const ui::LayoutPlanParameters remembered = fresh.parameters();
+  EXPECT_EQ(remembered.method, SelectionMethod::Greedy);
+  EXPECT_DOUBLE_EQ(remembered.variance, 0.95);
+  EXPECT_EQ(remembered.restarts, 5);
+  EXPECT_EQ(remembered.minK, 3);
+  EXPECT_EQ(remembered.maxK, 4);
+  EXPECT_EQ(remembered.seed, 7);
+  EXPECT_EQ(remembered.stabilizeLabels, kReference);
+}
+
+} // namespace
+} // namespace mocap

@@ -1,0 +1,603 @@
+#include "panels/layout_planning_panel.h"
+
+#include "document/take_document.h"
+#include "views/layout_error_plot.h"
+
+#include "mocap/file_io.h"
+#include "mocap/layout_symmetry.h"
+#include "mocap/marker_edits.h"
+#include "mocap/marker_set.h"
+#include "mocap/marker_set_io.h"
+#include "mocap/take_io.h"
+
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mocap::ui {
+
+namespace {
+
+const QString kGroup = QStringLiteral("layoutPlanning/");
+
+std::vector<std::string> toStd(const QStringList& list)
+{
+  std::vector<std::string> result;
+  for (const QString& s : list)
+    result.push_back(s.toStdString());
+  return result;
+}
+
+QStringList splitLabels(const QString& text)
+{
+  QStringList labels;
+  for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
+    if (const QString label = part.trimmed(); !label.isEmpty())
+      labels << label;
+  return labels;
+}
+
+// The worker: the open take (a copy) and the extra take files, planned as `mocap pfa` plans them.
+// Never throws: a failure is the result's error.
+std::shared_ptr<LayoutPlanResult> planLayout(Take openTake, const LayoutPlanParameters& parameters,
+                                             const std::shared_ptr<std::atomic<bool>>& cancel,
+                                             const std::shared_ptr<std::atomic<int>>& progress)
+{
+  auto result = std::make_shared<LayoutPlanResult>();
+  try {
+    std::vector<Take> takes;
+    takes.push_back(std::move(openTake));
+    for (const QString& path : parameters.extraTakes)
+      takes.push_back(readTake(path.toStdString()));
+    LayoutFramesOptions frameOptions;
+    frameOptions.stabilizeLabels = toStd(parameters.stabilizeLabels);
+    result->referenceLabels = frameOptions.stabilizeLabels;
+    frameOptions.markers =
+        defaultPlannedLabels(takes.front(), toStd(parameters.stabilizeLabels + parameters.excludeLabels));
+    result->frames = collectLayoutFrames(takes, frameOptions);
+    if (parameters.pairsFile.isEmpty()) {
+      result->symmetry = detectLayoutPairs(result->frames).symmetry;
+      result->pairSource = QCoreApplication::translate("mocap::ui::LayoutPlanningPanel", "detected");
+    } else {
+      result->symmetry = readMarkerPairs(parameters.pairsFile.toStdString(), result->frames.labels);
+      result->pairSource = QFileInfo(parameters.pairsFile).fileName();
+    }
+    LayoutPlanOptions options;
+    options.method = parameters.method;
+    options.pfa.varianceFraction = parameters.variance;
+    options.pfa.restarts = parameters.restarts;
+    options.pfa.minK = parameters.minK;
+    options.pfa.maxK = parameters.maxK;
+    options.pfa.seed = static_cast<std::uint64_t>(parameters.seed);
+    RunControl control;
+    control.cancel = cancel.get();
+    control.progress = [progress](double fraction) {
+      progress->store(static_cast<int>(std::lround(1000.0 * std::clamp(fraction, 0.0, 1.0))));
+    };
+    result->plan = planMarkerLayout(result->frames, result->symmetry, options, control);
+  } catch (const std::exception& e) {  // nothing may throw across the event loop
+    result->error = QString::fromStdString(e.what());
+  }
+  return result;
+}
+
+} // namespace
+
+LayoutPlanningPanel::LayoutPlanningPanel(TakeDocument& document, QWidget* parent)
+    : QWidget(parent), m_document(document)
+{
+  buildForm();
+  readSettings();
+  m_progressTimer = new QTimer(this);
+  m_progressTimer->setInterval(100);
+  connect(m_progressTimer, &QTimer::timeout, this, [this] {
+    if (m_progressValue)
+      m_progress->setValue(m_progressValue->load());
+  });
+  connect(&m_watcher, &QFutureWatcher<std::shared_ptr<LayoutPlanResult>>::finished, this,
+          &LayoutPlanningPanel::onFinished);
+  connect(m_plot, &LayoutErrorPlot::sizeSelected, this, &LayoutPlanningPanel::showSelectedSize);
+  // The highlight maps labels onto the open take; another take (or other markers) ends it.
+  connect(&document, &TakeDocument::takeReset, this, &LayoutPlanningPanel::highlightCleared);
+  connect(&document, &TakeDocument::markersChanged, this, &LayoutPlanningPanel::showSelectedSize);
+  connect(&document, &TakeDocument::markerRenamed, this, &LayoutPlanningPanel::showSelectedSize);
+  setIdle(true);
+}
+
+LayoutPlanningPanel::~LayoutPlanningPanel()
+{
+  if (m_cancelFlag)
+    m_cancelFlag->store(true);
+  m_watcher.waitForFinished();
+}
+
+void LayoutPlanningPanel::buildForm()
+{
+  // Everything scrolls, so the dock never forces the window taller than its own minimum.
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  auto* content = new QWidget(scroll);
+  scroll->setWidget(content);
+  outer->addWidget(scroll);
+  auto* layout = new QVBoxLayout(content);
+  auto* form = new QFormLayout;
+  form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+
+  m_takes = new QListWidget(this);
+  m_takes->setToolTip(tr("Take files planned together with the open take (they must have its markers)"));
+  m_takes->setMaximumHeight(56);
+  m_addTake = new QPushButton(tr("Add…"), this);
+  m_removeTake = new QPushButton(tr("Remove"), this);
+  auto* takeButtons = new QVBoxLayout;
+  takeButtons->addWidget(m_addTake);
+  takeButtons->addWidget(m_removeTake);
+  takeButtons->addStretch();
+  auto* takeRow = new QHBoxLayout;
+  takeRow->addWidget(m_takes, 1);
+  takeRow->addLayout(takeButtons);
+  form->addRow(tr("More takes:"), takeRow);
+  connect(m_addTake, &QPushButton::clicked, this, [this] {
+    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Add takes"), QFileInfo(m_document.filePath()).absolutePath(),
+                                                            tr("Motion capture (*.c3d *.trc);;All files (*)"));
+    for (const QString& path : paths)
+      if (m_takes->findItems(path, Qt::MatchExactly).isEmpty())
+        m_takes->addItem(path);
+  });
+  connect(m_removeTake, &QPushButton::clicked, this, [this] { qDeleteAll(m_takes->selectedItems()); });
+  m_takes->setSelectionMode(QAbstractItemView::ExtendedSelection);
+
+  m_method = new QComboBox(this);
+  m_method->addItem(tr("PFA (principal feature analysis)"), static_cast<int>(SelectionMethod::Pfa));
+  m_method->addItem(tr("Greedy (least reconstruction error)"), static_cast<int>(SelectionMethod::Greedy));
+  form->addRow(tr("Method:"), m_method);
+
+  m_variance = new QDoubleSpinBox(this);
+  m_variance->setRange(0.5, 1.0);
+  m_variance->setDecimals(3);
+  m_variance->setSingleStep(0.01);
+  m_variance->setToolTip(tr("Share of the motion's variance the PCA keeps (the paper: 0.98)"));
+  form->addRow(tr("Variance kept:"), m_variance);
+
+  m_restarts = new QSpinBox(this);
+  m_restarts->setRange(1, 100000);
+  m_restarts->setToolTip(tr("k-means restarts per cluster count (the paper: 1000; fewer run faster)"));
+  form->addRow(tr("Restarts:"), m_restarts);
+
+  m_minK = new QSpinBox(this);
+  m_maxK = new QSpinBox(this);
+  for (QSpinBox* k : {m_minK, m_maxK}) {
+    k->setRange(0, 10000);
+    k->setSpecialValueText(tr("all"));
+  }
+  auto* kRow = new QHBoxLayout;
+  kRow->addWidget(m_minK, 1);
+  kRow->addWidget(new QLabel(tr("to"), this));
+  kRow->addWidget(m_maxK, 1);
+  form->addRow(tr("Clusters k:"), kRow);
+
+  m_seed = new QSpinBox(this);
+  m_seed->setRange(0, 2147483647);
+  form->addRow(tr("Seed:"), m_seed);
+
+  m_pairs = new QLineEdit(this);
+  m_pairs->setPlaceholderText(tr("detected automatically"));
+  m_pairs->setToolTip(tr("Mirror pairs: a text file (two labels a line) or a marker-set file (.json)"));
+  auto* browsePairs = new QPushButton(tr("…"), this);
+  browsePairs->setToolTip(tr("Choose a pairs file"));
+  auto* pairsRow = new QHBoxLayout;
+  pairsRow->addWidget(m_pairs, 1);
+  pairsRow->addWidget(browsePairs);
+  form->addRow(tr("Pairs file:"), pairsRow);
+  connect(browsePairs, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Pairs file"), m_pairs->text(),
+                                                      tr("Pairs (*.txt *.json);;All files (*)"));
+    if (!path.isEmpty())
+      m_pairs->setText(path);
+  });
+
+  m_stabilize = new QLineEdit(this);
+  m_stabilize->setPlaceholderText(tr("e.g. root-1, root-2, root-3"));
+  m_stabilize->setToolTip(tr("Head reference markers, comma-separated: head motion is removed with them "
+                             "and they are not planned over"));
+  form->addRow(tr("Reference markers:"), m_stabilize);
+
+  m_exclude = new QLineEdit(this);
+  m_exclude->setPlaceholderText(tr("none"));
+  m_exclude->setToolTip(tr("Markers left out of the plan, comma-separated (unlabelled points always are)"));
+  form->addRow(tr("Leave out:"), m_exclude);
+  layout->addLayout(form);
+
+  auto* runRow = new QHBoxLayout;
+  m_run = new QPushButton(tr("Run"), this);
+  m_run->setDefault(true);
+  m_cancel = new QPushButton(tr("Cancel"), this);
+  m_progress = new QProgressBar(this);
+  m_progress->setRange(0, 1000);
+  m_progress->setTextVisible(false);
+  runRow->addWidget(m_run);
+  runRow->addWidget(m_cancel);
+  runRow->addWidget(m_progress, 1);
+  layout->addLayout(runRow);
+  connect(m_run, &QPushButton::clicked, this, [this] { run(); });
+  connect(m_cancel, &QPushButton::clicked, this, &LayoutPlanningPanel::cancel);
+
+  m_status = new QLabel(this);
+  m_status->setWordWrap(true);
+  m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(m_status);
+
+  auto* splitter = new QSplitter(Qt::Vertical, this);
+  m_plot = new LayoutErrorPlot(splitter);
+  m_markers = new QTableWidget(0, 3, splitter);
+  m_markers->setHorizontalHeaderLabels({tr("Marker"), tr("Mirror"), tr("Pair frequency")});
+  m_markers->horizontalHeader()->setStretchLastSection(true);
+  m_markers->verticalHeader()->hide();
+  m_markers->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_markers->setToolTip(tr("The selected layout's markers; the frequency is the share of k-means restarts "
+                           "that chose the marker's pair (PFA only)"));
+  splitter->addWidget(m_plot);
+  splitter->addWidget(m_markers);
+  splitter->setStretchFactor(0, 3);
+  splitter->setStretchFactor(1, 2);
+  layout->addWidget(splitter, 1);
+
+  auto* exportRow = new QHBoxLayout;
+  m_exportLabels = new QPushButton(tr("Export Labels…"), this);
+  m_exportSet = new QPushButton(tr("Export Marker Set…"), this);
+  m_exportTake = new QPushButton(tr("Export Take…"), this);
+  exportRow->addWidget(m_exportLabels);
+  exportRow->addWidget(m_exportSet);
+  exportRow->addWidget(m_exportTake);
+  layout->addLayout(exportRow);
+  connect(m_exportLabels, &QPushButton::clicked, this, [this] {
+    exportWithDialog(tr("Export marker labels"), tr("Label list (*.txt)"), &LayoutPlanningPanel::exportLabelList);
+  });
+  connect(m_exportSet, &QPushButton::clicked, this, [this] {
+    exportWithDialog(tr("Export marker set"), tr("Marker set (*.json)"), &LayoutPlanningPanel::exportMarkerSet);
+  });
+  connect(m_exportTake, &QPushButton::clicked, this, [this] {
+    exportWithDialog(tr("Export reduced take"), tr("C3D (*.c3d);;TRC (*.trc)"), &LayoutPlanningPanel::exportTake);
+  });
+}
+
+LayoutPlanParameters LayoutPlanningPanel::parameters() const
+{
+  LayoutPlanParameters p;
+  for (int i = 0; i < m_takes->count(); ++i)
+    p.extraTakes << m_takes->item(i)->text();
+  p.method = static_cast<SelectionMethod>(m_method->currentData().toInt());
+  p.variance = m_variance->value();
+  p.restarts = m_restarts->value();
+  p.minK = m_minK->value();
+  p.maxK = m_maxK->value();
+  p.seed = m_seed->value();
+  p.pairsFile = m_pairs->text().trimmed();
+  p.stabilizeLabels = splitLabels(m_stabilize->text());
+  p.excludeLabels = splitLabels(m_exclude->text());
+  return p;
+}
+
+void LayoutPlanningPanel::setParameters(const LayoutPlanParameters& p)
+{
+  m_takes->clear();
+  m_takes->addItems(p.extraTakes);
+  m_method->setCurrentIndex(std::max(0, m_method->findData(static_cast<int>(p.method))));
+  m_variance->setValue(p.variance);
+  m_restarts->setValue(p.restarts);
+  m_minK->setValue(p.minK);
+  m_maxK->setValue(p.maxK);
+  m_seed->setValue(p.seed);
+  m_pairs->setText(p.pairsFile);
+  m_stabilize->setText(p.stabilizeLabels.join(QStringLiteral(", ")));
+  m_exclude->setText(p.excludeLabels.join(QStringLiteral(", ")));
+}
+
+void LayoutPlanningPanel::readSettings()
+{
+  const QSettings settings;
+  LayoutPlanParameters p;  // the defaults
+  p.method = parseSelectionMethod(settings.value(kGroup + QStringLiteral("method")).toString().toStdString())
+                 .value_or(p.method);
+  p.variance = settings.value(kGroup + QStringLiteral("variance"), p.variance).toDouble();
+  p.restarts = settings.value(kGroup + QStringLiteral("restarts"), p.restarts).toInt();
+  p.minK = settings.value(kGroup + QStringLiteral("minK"), p.minK).toInt();
+  p.maxK = settings.value(kGroup + QStringLiteral("maxK"), p.maxK).toInt();
+  p.seed = settings.value(kGroup + QStringLiteral("seed"), p.seed).toInt();
+  p.pairsFile = settings.value(kGroup + QStringLiteral("pairsFile")).toString();
+  p.stabilizeLabels = settings.value(kGroup + QStringLiteral("stabilize")).toStringList();
+  p.excludeLabels = settings.value(kGroup + QStringLiteral("exclude")).toStringList();
+  p.extraTakes = settings.value(kGroup + QStringLiteral("extraTakes")).toStringList();
+  setParameters(p);
+}
+
+void LayoutPlanningPanel::writeSettings() const
+{
+  QSettings settings;
+  const LayoutPlanParameters p = parameters();
+  const std::string_view method = selectionMethodName(p.method);
+  settings.setValue(kGroup + QStringLiteral("method"),
+                    QString::fromUtf8(method.data(), static_cast<qsizetype>(method.size())));
+  settings.setValue(kGroup + QStringLiteral("variance"), p.variance);
+  settings.setValue(kGroup + QStringLiteral("restarts"), p.restarts);
+  settings.setValue(kGroup + QStringLiteral("minK"), p.minK);
+  settings.setValue(kGroup + QStringLiteral("maxK"), p.maxK);
+  settings.setValue(kGroup + QStringLiteral("seed"), p.seed);
+  settings.setValue(kGroup + QStringLiteral("pairsFile"), p.pairsFile);
+  settings.setValue(kGroup + QStringLiteral("stabilize"), p.stabilizeLabels);
+  settings.setValue(kGroup + QStringLiteral("exclude"), p.excludeLabels);
+  settings.setValue(kGroup + QStringLiteral("extraTakes"), p.extraTakes);
+}
+
+QString LayoutPlanningPanel::run()
+{
+  if (busy())
+    return tr("A plan is already running.");
+  const LayoutPlanParameters p = parameters();
+  QString problem;
+  if (!m_document.hasTake())
+    problem = tr("Open a take first.");
+  else if (p.minK > 0 && p.maxK > 0 && p.minK > p.maxK)
+    problem = tr("The smallest cluster count (%1) is larger than the largest (%2).").arg(p.minK).arg(p.maxK);
+  else if (!p.pairsFile.isEmpty() && !QFileInfo(p.pairsFile).isFile())
+    problem = tr("The pairs file %1 does not exist.").arg(p.pairsFile);
+  for (const QString& label : p.stabilizeLabels + p.excludeLabels)
+    if (problem.isEmpty() && !m_document.take().markerIndex(label.toStdString()))
+      problem = tr("The open take has no marker '%1'.").arg(label);
+  if (!problem.isEmpty()) {
+    showError(problem);
+    return problem;
+  }
+  writeSettings();
+  m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
+  m_progressValue = std::make_shared<std::atomic<int>>(0);
+  m_progress->setValue(0);
+  m_status->setStyleSheet({});
+  m_status->setToolTip({});
+  m_status->setText(tr("Planning…"));
+  setIdle(false);
+  m_progressTimer->start();
+  m_watcher.setFuture(QtConcurrent::run(planLayout, m_document.take(), p, m_cancelFlag, m_progressValue));
+  return {};
+}
+
+void LayoutPlanningPanel::cancel()
+{
+  if (!busy())
+    return;
+  m_cancelFlag->store(true);
+  m_cancel->setEnabled(false);
+  m_status->setText(tr("Cancelling…"));
+}
+
+bool LayoutPlanningPanel::busy() const
+{
+  return m_watcher.isRunning();
+}
+
+void LayoutPlanningPanel::waitForRun()
+{
+  while (busy() || !m_idle) {
+    m_watcher.waitForFinished();
+    QCoreApplication::processEvents();
+  }
+}
+
+void LayoutPlanningPanel::setIdle(bool idle)
+{
+  m_idle = idle;
+  m_run->setEnabled(idle);
+  m_cancel->setEnabled(!idle);
+  m_progress->setVisible(!idle);
+  const bool exportable = idle && !selectedLabels().empty();
+  m_exportLabels->setEnabled(exportable);
+  m_exportSet->setEnabled(exportable);
+  m_exportTake->setEnabled(exportable);
+  for (QWidget* w : std::initializer_list<QWidget*>{m_takes, m_addTake, m_removeTake, m_method, m_variance,
+                                                    m_restarts, m_minK, m_maxK, m_seed, m_pairs, m_stabilize,
+                                                    m_exclude})
+    w->setEnabled(idle);
+}
+
+void LayoutPlanningPanel::showError(const QString& message)
+{
+  m_status->setStyleSheet(QStringLiteral("color: #c0392b;"));
+  m_status->setText(message);
+}
+
+QString LayoutPlanningPanel::statusText() const
+{
+  return m_status->text();
+}
+
+void LayoutPlanningPanel::onFinished()
+{
+  m_progressTimer->stop();
+  std::shared_ptr<LayoutPlanResult> result = m_watcher.result();
+  if (!result->error.isEmpty()) {
+    showError(tr("Planning failed: %1").arg(result->error));
+  } else if (result->plan.cancelled) {
+    m_status->setText(tr("Cancelled; the previous result is kept."));
+  } else {
+    m_result = std::move(result);
+    const LayoutPlan& plan = m_result->plan;
+    const LayoutFrames& frames = m_result->frames;
+    m_status->setText(tr("%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.")
+                          .arg(frames.markerCount())
+                          .arg(static_cast<qlonglong>(frames.frames.rows()))
+                          .arg(m_result->symmetry.pairs().size())
+                          .arg(m_result->pairSource)
+                          .arg(static_cast<qlonglong>(plan.pcaComponents))
+                          .arg(static_cast<qlonglong>(plan.recommendedSize)));
+    m_status->setToolTip(tr("%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; "
+                            "recommended by the %3")
+                             .arg(static_cast<qlonglong>(frames.droppedFrames))
+                             .arg(100.0 * plan.explainedVariance, 0, 'f', 1)
+                             .arg(QString::fromStdString(plan.recommendationRule)));
+    m_plot->setPlan(plan);
+    showSelectedSize();
+  }
+  setIdle(true);
+}
+
+const ScoredLayout* LayoutPlanningPanel::selectedLayout() const
+{
+  if (!m_result)
+    return nullptr;
+  const LayoutSize* entry = m_result->plan.size(m_plot->selectedSize());
+  return entry ? entry->layout(m_result->plan.method) : nullptr;
+}
+
+std::vector<std::string> LayoutPlanningPanel::selectedLabels() const
+{
+  std::vector<std::string> labels;
+  if (const ScoredLayout* layout = selectedLayout())
+    for (const Eigen::Index m : layout->markers)
+      labels.push_back(m_result->frames.labels[static_cast<std::size_t>(m)]);
+  return labels;
+}
+
+void LayoutPlanningPanel::showSelectedSize()
+{
+  m_markers->setRowCount(0);
+  const ScoredLayout* layout = selectedLayout();
+  if (!layout) {
+    emit highlightCleared();
+    setIdle(m_idle);
+    return;
+  }
+  const LayoutFrames& frames = m_result->frames;
+  const MarkerSymmetry& symmetry = m_result->symmetry;
+  for (const Eigen::Index m : layout->markers) {
+    const int row = m_markers->rowCount();
+    m_markers->insertRow(row);
+    const Eigen::Index mirror = symmetry.mirror(m);
+    m_markers->setItem(row, 0, new QTableWidgetItem(QString::fromStdString(frames.labels[static_cast<std::size_t>(m)])));
+    m_markers->setItem(row, 1,
+                       new QTableWidgetItem(mirror == m ? QString()
+                                                        : QString::fromStdString(frames.labels[static_cast<std::size_t>(mirror)])));
+    const auto unit = static_cast<std::size_t>(symmetry.unitOf(m));
+    m_markers->setItem(row, 2,
+                       new QTableWidgetItem(unit < layout->unitFrequency.size()
+                                                ? QStringLiteral("%1 %").arg(100.0 * layout->unitFrequency[unit], 0, 'f', 1)
+                                                : tr("—")));
+  }
+  m_markers->resizeColumnsToContents();
+
+  // Kept flags by label, so the highlight fits the open take even when it is not the first planned.
+  const Take& take = m_document.take();
+  std::vector<bool> kept(static_cast<std::size_t>(take.markerCount()), false);
+  for (const std::string& label : selectedLabels())
+    if (const auto m = take.markerIndex(label))
+      kept[static_cast<std::size_t>(*m)] = true;
+  emit highlightChanged(kept);
+  setIdle(m_idle);  // the export buttons follow the selection
+}
+
+std::vector<std::string> LayoutPlanningPanel::captureLabels() const
+{
+  std::vector<std::string> labels = selectedLabels();
+  if (!labels.empty())
+    labels.insert(labels.end(), m_result->referenceLabels.begin(), m_result->referenceLabels.end());
+  return labels;
+}
+
+QString LayoutPlanningPanel::exportLabelList(const QString& path) const
+{
+  const std::vector<std::string> labels = selectedLabels();
+  if (labels.empty())
+    return tr("There is no layout to export: run the plan and pick a marker count.");
+  std::string text;
+  for (const std::string& label : labels)
+    text += label + "\n";
+  try {
+    writeFileAtomically(path.toStdString(), text);
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+QString LayoutPlanningPanel::exportMarkerSet(const QString& path) const
+{
+  const std::vector<std::string> labels = captureLabels();
+  if (labels.empty())
+    return tr("There is no layout to export: run the plan and pick a marker count.");
+  try {
+    MarkerSet set = markerSetFromTake(subsetTake(m_document.take(), labels));
+    // The pairs the plan kept together, rather than ones detected again on the template.
+    set.pairs.clear();
+    const auto indexOf = [&](const std::string& label) -> Eigen::Index {
+      const auto it = std::find(set.labels.begin(), set.labels.end(), label);
+      return it == set.labels.end() ? -1 : static_cast<Eigen::Index>(it - set.labels.begin());
+    };
+    for (const auto& [a, b] : m_result->symmetry.pairs()) {
+      const Eigen::Index i = indexOf(m_result->frames.labels[static_cast<std::size_t>(a)]);
+      const Eigen::Index j = indexOf(m_result->frames.labels[static_cast<std::size_t>(b)]);
+      if (i >= 0 && j >= 0)
+        set.pairs.emplace_back(i, j);
+    }
+    writeMarkerSet(set, path.toStdString());
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+QString LayoutPlanningPanel::exportTake(const QString& path) const
+{
+  const std::vector<std::string> labels = captureLabels();
+  if (labels.empty())
+    return tr("There is no layout to export: run the plan and pick a marker count.");
+  try {
+    writeTake(subsetTake(m_document.take(), labels), path.toStdString());
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+void LayoutPlanningPanel::exportWithDialog(const QString& title, const QString& filter,
+                                           QString (LayoutPlanningPanel::*write)(const QString&) const)
+{
+  QSettings settings;
+  const QString folder = settings.value(kGroup + QStringLiteral("exportFolder"),
+                                        QFileInfo(m_document.filePath()).absolutePath())
+                             .toString();
+  // The dialog asks before replacing an existing file.
+  const QString path = QFileDialog::getSaveFileName(this, title, folder, filter);
+  if (path.isEmpty())
+    return;
+  settings.setValue(kGroup + QStringLiteral("exportFolder"), QFileInfo(path).absolutePath());
+  const QString error = (this->*write)(path);
+  if (!error.isEmpty())
+    QMessageBox::warning(this, title, tr("Could not write %1:\n%2").arg(path, error));
+  else
+    m_status->setText(tr("Wrote %1").arg(path));
+}
+
+} // namespace mocap::ui

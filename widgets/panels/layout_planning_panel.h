@@ -1,0 +1,149 @@
+#pragma once
+
+#include "mocap/layout_frames.h"
+#include "mocap/marker_pairs.h"
+#include "mocap/marker_selection.h"
+
+#include <QFutureWatcher>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+class QTimer;
+
+namespace mocap::ui {
+
+class LayoutErrorPlot;
+class TakeDocument;
+
+/// What the layout planning panel runs with (remembered in QSettings).
+struct LayoutPlanParameters
+{
+  QStringList extraTakes;  ///< take files planned together with the open take
+  SelectionMethod method = SelectionMethod::Pfa;
+  double variance = 0.98;  ///< PCA variance kept
+  int restarts = 1000;     ///< k-means restarts per k
+  int minK = 0;            ///< 0 with maxK 0: every useful k
+  int maxK = 0;
+  int seed = 1;
+  QString pairsFile;       ///< empty: pairs detected automatically
+  QStringList stabilizeLabels;  ///< head reference markers; also left out of the plan
+  QStringList excludeLabels;    ///< markers left out of the plan (unlabelled points always are)
+};
+
+/// A finished (or failed) planning run: everything the panel shows and exports.
+struct LayoutPlanResult
+{
+  LayoutFrames frames;
+  MarkerSymmetry symmetry;
+  LayoutPlan plan;
+  std::vector<std::string> referenceLabels;  ///< head reference markers the plan was made with
+  QString pairSource;  ///< where the pairs came from, in words
+  QString error;       ///< non-empty when the run failed
+};
+
+/// The marker layout planning dock (Wellein et al. 2007 via marker_selection.h): the open take
+/// plus optional take files, method and parameters; Run plans on a worker thread with progress and
+/// Cancel; the error-vs-marker-count plot; the selected size's markers with their pair frequencies,
+/// sent to the 3D view as a kept/dropped highlight; export of the reduced label list, marker-set
+/// file and take. Planning reads a copy of the take, so editing meanwhile is safe.
+class LayoutPlanningPanel final : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit LayoutPlanningPanel(TakeDocument& document, QWidget* parent = nullptr);
+  ~LayoutPlanningPanel() override;
+
+  [[nodiscard]] LayoutPlanParameters parameters() const;
+  void setParameters(const LayoutPlanParameters& parameters);
+
+  /// Starts a run with the current parameters; returns an error message (shown too) when it
+  /// cannot start, else an empty string.
+  QString run();
+  /// Asks a running plan to stop; the panel goes idle when the worker returns.
+  void cancel();
+  [[nodiscard]] bool busy() const;
+  /// Blocks (processing events) until the running plan has finished. For tests.
+  void waitForRun();
+
+  /// The last successful plan, or nullptr.
+  [[nodiscard]] const LayoutPlanResult* result() const { return m_result.get(); }
+  [[nodiscard]] LayoutErrorPlot* plot() const { return m_plot; }
+  [[nodiscard]] QString statusText() const;
+  /// The planned markers of the selected size (the plan's method), in plan order; empty if none.
+  [[nodiscard]] std::vector<std::string> selectedLabels() const;
+
+  /// Exports of the selected layout; each returns an error message or an empty string and writes
+  /// atomically. The take and marker set also hold the head reference markers, which a capture
+  /// with the reduced layout still needs; the label list holds the planned markers only.
+  QString exportLabelList(const QString& path) const;
+  QString exportMarkerSet(const QString& path) const;
+  QString exportTake(const QString& path) const;
+
+signals:
+  /// One flag per marker of the open take: kept by the selected layout or not.
+  void highlightChanged(const std::vector<bool>& kept);
+  /// No layout to show any more (a new take, a failed or new run).
+  void highlightCleared();
+
+private:
+  void buildForm();
+  void readSettings();
+  void writeSettings() const;
+  void onFinished();
+  void showSelectedSize();
+  void setIdle(bool idle);
+  void showError(const QString& message);
+  void exportWithDialog(const QString& title, const QString& filter,
+                        QString (LayoutPlanningPanel::*write)(const QString&) const);
+  [[nodiscard]] std::vector<std::string> captureLabels() const;
+  [[nodiscard]] const ScoredLayout* selectedLayout() const;
+
+  TakeDocument& m_document;
+  QListWidget* m_takes = nullptr;
+  QPushButton* m_addTake = nullptr;
+  QPushButton* m_removeTake = nullptr;
+  QComboBox* m_method = nullptr;
+  QDoubleSpinBox* m_variance = nullptr;
+  QSpinBox* m_restarts = nullptr;
+  QSpinBox* m_minK = nullptr;
+  QSpinBox* m_maxK = nullptr;
+  QSpinBox* m_seed = nullptr;
+  QLineEdit* m_pairs = nullptr;
+  QLineEdit* m_stabilize = nullptr;
+  QLineEdit* m_exclude = nullptr;
+  QPushButton* m_run = nullptr;
+  QPushButton* m_cancel = nullptr;
+  QProgressBar* m_progress = nullptr;
+  QLabel* m_status = nullptr;
+  LayoutErrorPlot* m_plot = nullptr;
+  QTableWidget* m_markers = nullptr;
+  QPushButton* m_exportLabels = nullptr;
+  QPushButton* m_exportSet = nullptr;
+  QPushButton* m_exportTake = nullptr;
+  QTimer* m_progressTimer = nullptr;
+
+  QFutureWatcher<std::shared_ptr<LayoutPlanResult>> m_watcher;
+  std::shared_ptr<LayoutPlanResult> m_result;
+  // Shared with the worker: its cancel flag and progress in ‰ (read by a timer on this thread).
+  std::shared_ptr<std::atomic<bool>> m_cancelFlag;
+  std::shared_ptr<std::atomic<int>> m_progressValue;
+  bool m_idle = true;  // false from Run until the result is shown
+};
+
+} // namespace mocap::ui
