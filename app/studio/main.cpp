@@ -36,7 +36,7 @@ void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
   });
 }
 
-/// Steps through every frame with the selection's trails drawn, painting synchronously, and
+/// Steps through every frame with the selection's trails drawn, painting what changed, and
 /// prints frame-time statistics as JSON (the playback budget at 100 Hz is 10 ms), with the time
 /// the file took to open (read, table statistics, views).
 int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen::Index maxFrames)
@@ -54,7 +54,8 @@ int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen
     QElapsedTimer clock;
     clock.start();
     document.setCurrentFrame(f);
-    window.repaint();  // synchronous paint of every view, the 3D render included
+    // What playback does: the views that changed ask for an update, and the event loop paints
+    // them (the 3D render included) before the next frame.
     QApplication::processEvents();
     times.push_back(static_cast<double>(clock.nsecsElapsed()) * 1e-6);
   }
