@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include "mocap/error.h"
+#include "mocap/head_reference.h"
 #include "mocap/head_stabilization.h"
 #include "mocap/take_io.h"
 
@@ -135,6 +136,19 @@ TEST(HeadStabilization, BadInputIsRejected)
   wrong.poses.pop_back();
   EXPECT_THROW(removeHeadMotion(take, wrong), InvalidArgument);
   EXPECT_THROW(restoreHeadMotion(take, wrong), InvalidArgument);
+}
+
+} // namespace
+} // namespace mocap
+
+namespace mocap {
+namespace {
+
+TEST(HeadReference, GuessesRootAndHeadLabelsInTakeOrder)
+{
+  const Take take({"section1-1", "Root-2", "HEAD_front", "forehead", "root-1"}, 2, 100.0);
+  EXPECT_EQ(guessHeadReferenceLabels(take), (std::vector<std::string>{"Root-2", "HEAD_front", "root-1"}));
+  EXPECT_TRUE(guessHeadReferenceLabels(Take({"a", "b"}, 1, 100.0)).empty());
 }
 
 } // namespace
