@@ -12,6 +12,7 @@
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
@@ -42,6 +43,7 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include "mocap/head_reference.h"
 #include "mocap/length_unit.h"
 #include "mocap/marker_edits.h"
 #include "mocap/marker_set.h"
@@ -143,6 +145,24 @@ void MainWindow::createDocks()
   cleaningDock->setObjectName(QStringLiteral("cleaningDock"));
   cleaningDock->setWidget(m_cleaning);
   addDockWidget(Qt::RightDockWidgetArea, cleaningDock);
+
+  m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
+  m_faceMeshDock = new QDockWidget(tr("Face Mesh"), this);
+  m_faceMeshDock->setObjectName(QStringLiteral("faceMeshDock"));
+  m_faceMeshDock->setWidget(m_faceMesh);
+  addDockWidget(Qt::RightDockWidgetArea, m_faceMeshDock);
+  tabifyDockWidget(cleaningDock, m_faceMeshDock);
+  m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
+}
+
+QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& bindingPath)
+{
+  QString error = m_faceMesh->loadMesh(meshPath);
+  if (error.isEmpty() && !bindingPath.isEmpty())
+    error = m_faceMesh->loadBinding(bindingPath);
+  m_faceMeshDock->show();
+  m_faceMeshDock->raise();
+  return error;
 }
 
 void MainWindow::createActions()
@@ -312,11 +332,8 @@ void MainWindow::chooseStabilisation()
     for (Eigen::Index m : m_document->selection())
       labels << QString::fromStdString(take.label(m));
   } else {
-    for (const std::string& label : take.labels()) {
-      const QString name = QString::fromStdString(label).toLower();
-      if (name.startsWith(QStringLiteral("root")) || name.startsWith(QStringLiteral("head")))
-        labels << QString::fromStdString(label);
-    }
+    for (const std::string& label : guessHeadReferenceLabels(take))
+      labels << QString::fromStdString(label);
   }
   bool ok = false;
   const QString text =
