@@ -81,9 +81,11 @@ TEST(FaceRig, BoundVerticesFollowTheRetargetedMarkersAndAShiftMovesTheWholeMesh)
   const Eigen::Vector3d expected = meshToTake().rotation.transpose() * lift * 0.1;
   const Eigen::Vector3d moved = (out.row(r.vertices[3]) - face().vertices.row(r.vertices[3])).transpose();
   EXPECT_LT((moved - expected).norm(), 1e-5) << moved.transpose();
-  for (std::size_t i = 0; i < r.vertices.size(); ++i)
-    if (i != 3)  // an RBF interpolates: the other controls stay put
+  for (std::size_t i = 0; i < r.vertices.size(); ++i) {
+    if (i != 3) {  // an RBF interpolates: the other controls stay put
       EXPECT_LT((out.row(r.vertices[i]) - face().vertices.row(r.vertices[i])).norm(), 1e-5) << i;
+    }
+  }
 
   ASSERT_TRUE(rig.deform(r.take, 2, out));  // the affine term reproduces a translation everywhere
   const Eigen::RowVector3d step = (meshToTake().rotation.transpose() * shift * 0.1).transpose();
@@ -125,7 +127,7 @@ TEST(FaceRig, ClearErrorsForLabelsNotInTheTakeBadOptionsAndFramesOutside)
   coincident.markers[1].point = coincident.markers[0].point;
   EXPECT_THROW(FaceRig(face(), coincident, r.take), InvalidArgument);
   FaceRigOptions neutral;
-  neutral.neutralFrame = 3;  // marker 3 is missing there
+  neutral.neutralFrame = r.take.firstFrame() + 3;  // marker 3 is missing there (take numbering)
   EXPECT_THROW(FaceRig(face(), r.binding, r.take, neutral), InvalidArgument);
   MeshBinding otherMesh = r.binding;
   otherMesh.meshVertices = 26719;
