@@ -192,13 +192,52 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   ASSERT_NE(scene().rig(), nullptr);  // set up again with the new binding
   panel->undoStack()->undo();
   EXPECT_EQ(bindingOf("section7-1").vertices, was.vertices);
-  panel->undoStack()->redo();
-  EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
   // Without picking, the same click only changes the view's selection.
   panel->setPicking(false);
-  panel->undoStack()->undo();
+  document().setSelection({marker});
   QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, where);
   EXPECT_EQ(bindingOf("section7-1").vertices, was.vertices);
+  EXPECT_EQ(panel->undoStack()->index(), 0);
+  panel->undoStack()->redo();
+  EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
+  // Saved and read back, the edited binding is the same (and starts a new history).
+  test::TempDir dir;
+  const QString saved = QString::fromStdString(dir.file("edited.binding.json").string());
+  ASSERT_EQ(panel->saveBinding(saved), QString());
+  ASSERT_EQ(panel->loadBinding(saved), QString());
+  EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
+  EXPECT_EQ(scene().binding().markers.size(), original.markers.size());
+  EXPECT_EQ(panel->undoStack()->count(), 0);
+}
+
+TEST_F(FaceMeshPanelTest, TheMeshStaysOnTheMarkersInTheHeadStabilisedView)
+{
+  ui::MarkerView3d* view = window->markerView();
+  std::vector<Eigen::Index> reference;
+  for (const char* label : {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"})
+    reference.push_back(*document().take().markerIndex(label));
+  ASSERT_EQ(view->setHeadReference(reference), QString());
+  document().setCurrentFrame(kStart + 500);
+  const FaceRig& rig = *scene().rig();
+  const Eigen::Index frame = kStart + 500;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < rig.markers().size(); ++k) {
+    const Eigen::Index m = rig.markers()[k];
+    if (!document().take().isValid(frame, m))
+      continue;
+    const Eigen::Vector3d drawn = scene().layer().placement() * rig.points()[k].on(scene().layer().vertices());
+    worst = std::max(worst, (drawn - view->displayPosition(frame, m)).norm());
+  }
+  EXPECT_LT(worst, 12.0);  // mm: the binding's residuals, not the head's motion
+  const Eigen::Index first = rig.markers()[0];
+  ASSERT_GT((view->displayPosition(frame, first) - document().take().position(frame, first)).norm(), 2.0 * worst)
+      << "the head should have moved, or this checks nothing";
+  // The stabilised frame differs from the lab frame by the head pose, so the placement changed.
+  ASSERT_EQ(view->setHeadReference({}), QString());
+  document().setCurrentFrame(frame + 1);
+  document().setCurrentFrame(frame);
+  const Eigen::Vector3d lab = scene().layer().placement() * rig.points()[0].on(scene().layer().vertices());
+  EXPECT_LT((lab - view->displayPosition(frame, rig.markers()[0])).norm(), 12.0);
 }
 
 TEST_F(FaceMeshPanelTest, BadFilesGiveClearErrorsAndKeepTheMesh)

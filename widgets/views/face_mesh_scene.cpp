@@ -164,6 +164,8 @@ void FaceMeshScene::restabilize()
   m_stabilized.reset();
   m_headMotion.reset();
   m_stabilizationError.clear();
+  m_viewReference.clear();  // the view's head pose is estimated again too (an edit may move it)
+  m_viewMotion.reset();
   if (m_stabilization.empty() || !m_document.hasTake())
     return;
   try {
