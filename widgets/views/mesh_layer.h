@@ -8,6 +8,7 @@
 #include <QPoint>
 
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 
 class vtkActor;
 class vtkCellArray;
@@ -29,7 +30,8 @@ namespace mocap::ui {
 class MeshLayer
 {
 public:
-  /// Adds the (hidden until setMesh) actor to `renderer`; the destructor removes it.
+  /// Adds the (hidden until setMesh) actor to `renderer`; the destructor removes it (the layer
+  /// keeps a reference to the renderer, so the two may be destroyed in either order).
   explicit MeshLayer(vtkRenderer* renderer);
   ~MeshLayer();
   MeshLayer(const MeshLayer&) = delete;
@@ -60,7 +62,7 @@ public:
   [[nodiscard]] Eigen::Index vertexAt(const QPoint& pixel) const;
 
 private:
-  vtkRenderer* m_renderer;
+  vtkSmartPointer<vtkRenderer> m_renderer;  // held: the view may go first when a window closes
   vtkNew<vtkPoints> m_points;
   vtkNew<vtkCellArray> m_polygons;
   vtkNew<vtkPolyData> m_data;
