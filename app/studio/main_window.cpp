@@ -162,6 +162,7 @@ QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& binding
     error = m_faceMesh->loadBinding(bindingPath);
   m_faceMeshDock->show();
   m_faceMeshDock->raise();
+  m_view3d->resetCamera();  // frame the mesh with the markers
   return error;
 }
 
