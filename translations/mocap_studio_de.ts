@@ -21,6 +21,19 @@
     </message>
 </context>
 <context>
+    <name>HeadStabilisationStep</name>
+    <message>
+        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="+96"/>
+        <source>There is no marker &apos;%1&apos;.</source>
+        <translation type="unfinished">Es gibt keinen Marker „%1“.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>head pose measured in %1 of %2 frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>RemoveMarkersCommand</name>
     <message>
         <location filename="../widgets/commands/remove_markers_command.cpp" line="+19"/>
@@ -63,7 +76,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+66"/>
+        <location filename="../app/studio/main_window.cpp" line="+71"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -88,7 +101,7 @@
         <translation>Kurven</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
@@ -103,7 +116,12 @@
         <translation>Bereinigung</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>Layout planning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -133,7 +151,12 @@
         <translation>&amp;Exportieren…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>Export Ani&amp;mation…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -209,18 +232,18 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+77"/>
+        <location line="+82"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-77"/>
-        <location line="+77"/>
+        <location line="-82"/>
+        <location line="+82"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-75"/>
         <source>&amp;Head-Stabilised View…</source>
         <translation>&amp;Kopfstabilisierte Ansicht…</translation>
     </message>
@@ -245,12 +268,12 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+61"/>
         <source>3D view in the lab frame</source>
         <translation>3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
         <location line="+9"/>
         <location line="+7"/>
         <source>Head-Stabilised View</source>
@@ -560,7 +583,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-625"/>
+        <location line="-645"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -586,7 +609,17 @@
         <translation>Nur ausgewählte Marker</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+1"/>
+        <source>Selected frame range only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Change only the frames selected on the curves (Shift+drag)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -596,7 +629,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+94"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -614,7 +647,7 @@
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+48"/>
         <source>Nothing to apply</source>
         <translation>Nichts anzuwenden</translation>
     </message>
@@ -630,6 +663,161 @@
         <location line="+203"/>
         <source>Move %1 %2 at frame %3</source>
         <translation>%1 %2 in Bild %3 verschieben</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ExportDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+72"/>
+        <source>Export Animation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>BVH of the markers (.bvh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OBJ sequence of the deformed mesh (folder)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OBJ + PC2 point cache of the deformed mesh (.pc2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Format:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Output:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;rames:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&amp;Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+243"/>
+        <source>Cancel</source>
+        <translation type="unfinished">Abbrechen</translation>
+    </message>
+    <message>
+        <location line="-191"/>
+        <source>Load a face mesh first: these formats export the deformed mesh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Folder for the OBJ sequence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export BVH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>BVH (*.bvh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export Point Cache</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PC2 point cache (*.pc2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Open a take first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose where to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load a face mesh first: this format exports the deformed mesh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The first frame (%1) is after the last (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The folder %1 does not exist.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is a folder; choose a file name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+49"/>
+        <source>Exporting %n frame(s)…</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Cancelling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+41"/>
+        <source>Exported %n frame(s) to %1.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export cancelled; nothing was written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -711,6 +899,403 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::HeadStabilisationStep</name>
+    <message>
+        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="-78"/>
+        <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use Selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference markers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>First complete frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frame whose head pose becomes the stabilised pose</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reference frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Stabilise head</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LayoutErrorPlot</name>
+    <message>
+        <location filename="../widgets/views/layout_error_plot.cpp" line="+65"/>
+        <source>Click a marker count (or use ←/→) to show its layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+104"/>
+        <source>Run the plan to see the error for each marker count.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>markers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>PFA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Greedy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Random (mean)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Recommended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>Marker reconstruction RMSE (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blend-weight MSE</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LayoutPlanningPanel</name>
+    <message>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
+        <source>detected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Take files planned together with the open take (they must have its markers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>More takes:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add takes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motion capture (*.c3d *.trc);;All files (*)</source>
+        <translation type="unfinished">Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>PFA (principal feature analysis)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Greedy (least reconstruction error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Share of the motion&apos;s variance the PCA keeps (the paper: 0.98)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Variance kept:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>k-means restarts per cluster count (the paper: 1000; fewer run faster)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Restarts:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clusters k:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Seed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>detected automatically</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mirror pairs: a text file (two labels a line) or a marker-set file (.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose a pairs file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pairs file:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pairs file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pairs (*.txt *.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>e.g. root-1, root-2, root-3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference markers:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave out:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel</source>
+        <translation type="unfinished">Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Marker</source>
+        <translation type="unfinished">Marker</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Mirror</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Pair frequency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The selected layout&apos;s markers; the frequency is the share of k-means restarts that chose the marker&apos;s pair (PFA only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Export Labels…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export Marker Set…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export Take…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export marker labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Label list (*.txt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export marker set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Marker set (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export reduced take</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>C3D (*.c3d);;TRC (*.trc)</source>
+        <translation type="unfinished">C3D (*.c3d);;TRC (*.trc)</translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <source>A plan is already running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open a take first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The smallest cluster count (%1) is larger than the largest (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The pairs file %1 does not exist.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The open take has no marker &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Planning…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Cancelling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Planning failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancelled; the previous result is kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <location line="+16"/>
+        <location line="+26"/>
+        <source>There is no layout to export: run the plan and pick a marker count.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Could not write %1:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
         <location filename="../widgets/models/marker_table_model.cpp" line="+79"/>
@@ -741,7 +1326,7 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+120"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+127"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -751,7 +1336,7 @@
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+65"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+81"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
@@ -829,6 +1414,41 @@
         <location line="+1"/>
         <source>Autosave every:</source>
         <translation>Automatisch sichern alle:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Captured samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Filled samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smoothed samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edited samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Selection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>3D background:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Default Colours</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1025,7 +1645,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+130"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+142"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>

@@ -19,6 +19,19 @@
     </message>
 </context>
 <context>
+    <name>HeadStabilisationStep</name>
+    <message>
+        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="+96"/>
+        <source>There is no marker &apos;%1&apos;.</source>
+        <translation type="unfinished">没有标记点“%1”。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>head pose measured in %1 of %2 frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>RemoveMarkersCommand</name>
     <message>
         <location filename="../widgets/commands/remove_markers_command.cpp" line="+19"/>
@@ -60,7 +73,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+66"/>
+        <location filename="../app/studio/main_window.cpp" line="+71"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -85,7 +98,7 @@
         <translation>曲线</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>History</source>
         <translation>历史记录</translation>
     </message>
@@ -100,7 +113,12 @@
         <translation>清理</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>Layout planning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -130,7 +148,12 @@
         <translation>导出(&amp;E)…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>Export Ani&amp;mation…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -206,18 +229,18 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+77"/>
+        <location line="+82"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-77"/>
-        <location line="+77"/>
+        <location line="-82"/>
+        <location line="+82"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-75"/>
         <source>&amp;Head-Stabilised View…</source>
         <translation>头部稳定视图(&amp;H)…</translation>
     </message>
@@ -242,12 +265,12 @@
         <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+61"/>
         <source>3D view in the lab frame</source>
         <translation>三维视图使用实验室坐标系</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
         <location line="+9"/>
         <location line="+7"/>
         <source>Head-Stabilised View</source>
@@ -555,7 +578,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-625"/>
+        <location line="-645"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -581,7 +604,17 @@
         <translation>仅限所选标记点</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+1"/>
+        <source>Selected frame range only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Change only the frames selected on the curves (Shift+drag)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -591,7 +624,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+94"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -608,7 +641,7 @@
         <translation>已取消</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+48"/>
         <source>Nothing to apply</source>
         <translation>没有可应用的更改</translation>
     </message>
@@ -624,6 +657,159 @@
         <location line="+203"/>
         <source>Move %1 %2 at frame %3</source>
         <translation>移动 %1 的 %2（第 %3 帧）</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ExportDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+72"/>
+        <source>Export Animation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>BVH of the markers (.bvh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OBJ sequence of the deformed mesh (folder)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OBJ + PC2 point cache of the deformed mesh (.pc2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Format:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Output:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;rames:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&amp;Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+243"/>
+        <source>Cancel</source>
+        <translation type="unfinished">取消</translation>
+    </message>
+    <message>
+        <location line="-191"/>
+        <source>Load a face mesh first: these formats export the deformed mesh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Folder for the OBJ sequence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export BVH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>BVH (*.bvh)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export Point Cache</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PC2 point cache (*.pc2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Open a take first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose where to export.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load a face mesh first: this format exports the deformed mesh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The first frame (%1) is after the last (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The folder %1 does not exist.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is a folder; choose a file name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+49"/>
+        <source>Exporting %n frame(s)…</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Cancelling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+41"/>
+        <source>Exported %n frame(s) to %1.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export cancelled; nothing was written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -705,6 +891,403 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::HeadStabilisationStep</name>
+    <message>
+        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="-78"/>
+        <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use Selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference markers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>First complete frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frame whose head pose becomes the stabilised pose</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reference frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Stabilise head</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LayoutErrorPlot</name>
+    <message>
+        <location filename="../widgets/views/layout_error_plot.cpp" line="+65"/>
+        <source>Click a marker count (or use ←/→) to show its layout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+104"/>
+        <source>Run the plan to see the error for each marker count.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>markers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>PFA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Greedy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Random (mean)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Recommended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>Marker reconstruction RMSE (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blend-weight MSE</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LayoutPlanningPanel</name>
+    <message>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
+        <source>detected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Take files planned together with the open take (they must have its markers)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>More takes:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add takes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motion capture (*.c3d *.trc);;All files (*)</source>
+        <translation type="unfinished">动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>PFA (principal feature analysis)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Greedy (least reconstruction error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Share of the motion&apos;s variance the PCA keeps (the paper: 0.98)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Variance kept:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>k-means restarts per cluster count (the paper: 1000; fewer run faster)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Restarts:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clusters k:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Seed:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>detected automatically</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mirror pairs: a text file (two labels a line) or a marker-set file (.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose a pairs file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pairs file:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pairs file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pairs (*.txt *.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>e.g. root-1, root-2, root-3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference markers:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Leave out:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancel</source>
+        <translation type="unfinished">取消</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Marker</source>
+        <translation type="unfinished">标记点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Mirror</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Pair frequency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The selected layout&apos;s markers; the frequency is the share of k-means restarts that chose the marker&apos;s pair (PFA only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Export Labels…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export Marker Set…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export Take…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export marker labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Label list (*.txt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export marker set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Marker set (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export reduced take</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>C3D (*.c3d);;TRC (*.trc)</source>
+        <translation type="unfinished">C3D (*.c3d);;TRC (*.trc)</translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <source>A plan is already running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Open a take first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The smallest cluster count (%1) is larger than the largest (%2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The pairs file %1 does not exist.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The open take has no marker &apos;%1&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Planning…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Cancelling…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Planning failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancelled; the previous result is kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <location line="+16"/>
+        <location line="+26"/>
+        <source>There is no layout to export: run the plan and pick a marker count.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Could not write %1:
+%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
         <location filename="../widgets/models/marker_table_model.cpp" line="+79"/>
@@ -735,7 +1318,7 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+120"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+127"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -745,7 +1328,7 @@
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+65"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+81"/>
         <source>Preferences</source>
         <translation>首选项</translation>
     </message>
@@ -823,6 +1406,41 @@
         <location line="+1"/>
         <source>Autosave every:</source>
         <translation>自动保存间隔：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Captured samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Filled samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smoothed samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edited samples:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Selection:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>3D background:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Default Colours</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1018,7 +1636,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+130"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+142"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>

@@ -6,6 +6,7 @@
 #include "mocap/deformation_evaluation.h"
 #include "mocap/error.h"
 #include "mocap/file_io.h"
+#include "mocap/face_rig.h"
 #include "mocap/json_writer.h"
 #include "mocap/laplacian_deformer.h"
 #include "mocap/mesh_io.h"
@@ -45,21 +46,14 @@ std::string required(const Arguments& arguments, const std::string& option)
   return *value;
 }
 
-struct DeformSettings
+FaceRigOptions parseSettings(const Arguments& arguments)
 {
-  bool laplacian = false;
-  RbfOptions rbf;
-  LaplacianOptions lap;
-  int rotations = 0;
-};
-
-DeformSettings parseSettings(const Arguments& arguments)
-{
-  DeformSettings settings;
+  FaceRigOptions settings;
   const std::string method = arguments.value("--method").value_or("rbf");
-  if (method != "rbf" && method != "laplacian")
+  const auto parsedMethod = parseDeformMethod(method);
+  if (!parsedMethod)
     throw UsageError("--method must be rbf or laplacian, not '" + method + "'");
-  settings.laplacian = method == "laplacian";
+  settings.method = *parsedMethod;
   if (const auto kernel = arguments.value("--kernel")) {
     const auto parsed = parseRbfKernel(*kernel);
     if (!parsed)
@@ -79,13 +73,20 @@ DeformSettings parseSettings(const Arguments& arguments)
     const auto parsed = parseLaplacianWeights(*weights);
     if (!parsed)
       throw UsageError("--weights must be uniform, cotangent or mean-value, not '" + *weights + "'");
-    settings.lap.weights = *parsed;
+    settings.laplacian.weights = *parsed;
   }
   if (const auto w = arguments.number("--constraint-weight", 1e-6, 1e6))
-    settings.lap.constraintWeight = *w;
+    settings.laplacian.constraintWeight = *w;
   settings.rotations = static_cast<int>(arguments.integer("--rotations", 0, 100).value_or(0));
-  if (settings.rotations > 0 && !settings.laplacian)
+  if (settings.rotations > 0 && settings.method != DeformMethod::Laplacian)
     throw UsageError("--rotations needs --method laplacian");
+  if (const auto text = arguments.value("--scale")) {
+    const auto parsed = parseRetargetScale(*text);
+    if (!parsed)
+      throw UsageError("--scale must be uniform or per-axis, not '" + *text + "'");
+    settings.scale = *parsed;
+  }
+  settings.neutralFrame = arguments.integer("--neutral", -(1LL << 40), 1LL << 40);
   return settings;
 }
 
@@ -117,19 +118,11 @@ int runDeform(const std::vector<std::string>& args)
   const std::string bindingPath = required(arguments, "--binding");
   const std::string takePath = required(arguments, "--take");
   const std::filesystem::path out = required(arguments, "-o");
-  const DeformSettings settings = parseSettings(arguments);
-  RetargetScale scale = RetargetScale::Uniform;
-  if (const auto text = arguments.value("--scale")) {
-    const auto parsed = parseRetargetScale(*text);
-    if (!parsed)
-      throw UsageError("--scale must be uniform or per-axis, not '" + *text + "'");
-    scale = *parsed;
-  }
+  const FaceRigOptions settings = parseSettings(arguments);
   LeaveOutOptions leaveOut;
   leaveOut.fraction = arguments.number("--leave-out", 0.0, 0.9).value_or(0.2);
   leaveOut.seed = static_cast<std::uint64_t>(arguments.integer("--seed", 0, 1LL << 62).value_or(1));
   leaveOut.rotations = settings.rotations;
-  const auto neutralNumber = arguments.integer("--neutral", -(1LL << 40), 1LL << 40);
 
   const Mesh mesh = readMesh(meshPath);
   std::vector<std::string> warnings;
@@ -138,29 +131,12 @@ int runDeform(const std::vector<std::string>& args)
     std::cerr << takePath << ": warning: " << w << '\n';
   if (const auto labels = arguments.value("--stabilize"))
     (void)stabilizeTake(take, splitList(*labels, "--stabilize"));
-  const MeshBinding binding = readBinding(bindingPath, mesh.vertexCount());
-  std::vector<std::string> labels;
-  std::vector<MeshPoint> points;
-  for (const MarkerBinding& marker : binding.markers) {
-    labels.push_back(marker.label);
-    points.push_back(marker.point);
-  }
-  const std::vector<Eigen::Index> markers = markerIndices(take, labels);
-  const Eigen::Index neutral = chooseNeutralFrame(take, markers, neutralNumber);
-  const PointSet bound = boundPositions(mesh.vertices, points);
-  if (!settings.laplacian)
-    checkDistinctControls(bound, 1e-9 * mesh.size(), labels);
-  const Retarget retarget = fitRetarget(markerPositions(take, neutral, markers), bound, scale);
-  const std::vector<Triangle> triangles = settings.laplacian ? mesh.triangles() : std::vector<Triangle>{};
-  const DeformerFactory factory = [&](const std::vector<MeshPoint>& controls) -> std::unique_ptr<MeshDeformer> {
-    if (settings.laplacian)
-      return std::make_unique<LaplacianDeformer>(mesh.vertices, triangles, controls, settings.lap);
-    return std::make_unique<RbfDeformer>(mesh.vertices, boundPositions(mesh.vertices, controls), settings.rbf);
-  };
-
-  const Clock::time_point setupStart = Clock::now();
-  const std::unique_ptr<MeshDeformer> deformer = factory(points);
-  const double setupSeconds = secondsSince(setupStart);
+  FaceRig rig(mesh, readBinding(bindingPath, mesh.vertexCount()), take, settings);
+  const bool laplacian = settings.method == DeformMethod::Laplacian;
+  const std::vector<Eigen::Index>& markers = rig.markers();
+  const Eigen::Index neutral = rig.neutralFrame();
+  const Retarget& retarget = rig.retarget();
+  const double setupSeconds = rig.setupSeconds();
 
   const auto [begin, end] = frameRange(arguments, take);
   const MeshSequenceFormat format = lowerExtension(out) == "pc2" ? MeshSequenceFormat::ObjPlusPc2
@@ -170,21 +146,17 @@ int runDeform(const std::vector<std::string>& args)
                           static_cast<float>(take.firstFrame() + begin));
   std::vector<double> frameSeconds;
   Eigen::Index framesMissingControls = 0;
-  PointSet displacements;
-  std::vector<bool> present;
   MeshVertices deformed;
   for (Eigen::Index f = begin; f < end; ++f) {
-    controlDisplacements(take, markers, neutral, retarget, f, displacements, present);
-    framesMissingControls += std::all_of(present.begin(), present.end(), [](bool p) { return p; }) ? 0 : 1;
     const Clock::time_point start = Clock::now();
-    deformFrame(*deformer, displacements, present, settings.rotations, deformed);
+    framesMissingControls += rig.deform(take, f, deformed) ? 0 : 1;
     frameSeconds.push_back(secondsSince(start));
     sink.add(deformed);
   }
   sink.finish();
   std::optional<LeaveOutResult> quality;
   if (leaveOut.fraction > 0.0)
-    quality = evaluateLeaveOut(take, markers, points, neutral, retarget, mesh.vertices, factory, leaveOut);
+    quality = evaluateLeaveOut(take, markers, rig.points(), neutral, retarget, mesh.vertices, rig.factory(), leaveOut);
 
   std::vector<double> sorted = frameSeconds;
   std::sort(sorted.begin(), sorted.end());
@@ -192,7 +164,7 @@ int runDeform(const std::vector<std::string>& args)
   for (const double s : sorted)
     mean += s / static_cast<double>(sorted.size());
   const double p95 = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(sorted.size())))];
-  const std::string variant = settings.laplacian ? std::string(laplacianWeightsName(settings.lap.weights))
+  const std::string variant = laplacian ? std::string(laplacianWeightsName(settings.laplacian.weights))
                                                  : std::string(rbfKernelName(settings.rbf.kernel));
   if (arguments.has("--json")) {
     JsonWriter json;
@@ -206,10 +178,10 @@ int runDeform(const std::vector<std::string>& args)
       json.key("leave_out_error_mm").value(quality->meanError);
     else
       json.key("leave_out_error_mm").null();
-    json.key("method").value(settings.laplacian ? "laplacian" : "rbf");
-    json.key(settings.laplacian ? "weights" : "kernel").value(variant);
-    if (settings.laplacian) {
-      json.key("constraint_weight").value(settings.lap.constraintWeight);
+    json.key("method").value(deformMethodName(settings.method));
+    json.key(laplacian ? "weights" : "kernel").value(variant);
+    if (laplacian) {
+      json.key("constraint_weight").value(settings.laplacian.constraintWeight);
       json.key("rotations").value(settings.rotations);
     } else {
       json.key("radius").value(settings.rbf.radius);
@@ -218,7 +190,7 @@ int runDeform(const std::vector<std::string>& args)
     }
     json.key("controls").value(static_cast<std::int64_t>(markers.size()));
     json.key("neutral_frame").value(static_cast<std::int64_t>(take.firstFrame() + neutral));
-    json.key("scale").value(retargetScaleName(scale));
+    json.key("scale").value(retargetScaleName(settings.scale));
     json.key("scale_factors").beginArray();
     for (int a = 0; a < 3; ++a)
       json.value(retarget.axisScale(a));
@@ -230,7 +202,7 @@ int runDeform(const std::vector<std::string>& args)
       json.key("seed").value(static_cast<std::int64_t>(leaveOut.seed));
       json.key("hidden").beginArray();
       for (const Eigen::Index h : quality->hidden)
-        json.value(labels[static_cast<std::size_t>(h)]);
+        json.value(rig.labels()[static_cast<std::size_t>(h)]);
       json.endArray();
       json.key("samples").value(static_cast<std::int64_t>(quality->samples));
       json.key("rms_mm").value(quality->rmsError);
@@ -243,7 +215,7 @@ int runDeform(const std::vector<std::string>& args)
     std::cout << json.str() << '\n';
   } else {
     std::cout << "deformed " << frameSeconds.size() << " frames of a " << mesh.vertexCount() << "-vertex mesh with "
-              << markers.size() << " controls (" << (settings.laplacian ? "laplacian, " : "rbf, ") << variant
+              << markers.size() << " controls (" << (laplacian ? "laplacian, " : "rbf, ") << variant
               << ")\nset-up " << fixedNumber(setupSeconds, 3) << " s; per frame " << fixedNumber(1e3 * mean, 3)
               << " ms mean, " << fixedNumber(1e3 * p95, 3) << " ms p95\n";
     if (quality)

@@ -4,6 +4,8 @@
 #include "main_window.h"
 
 #include "document/take_document.h"
+#include "panels/face_mesh_panel.h"
+#include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
 
@@ -48,6 +50,9 @@ int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen
   const Eigen::Index frames = std::min(document.take().frameCount(), maxFrames);
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(frames));
+  const mocap::ui::FaceMeshScene& mesh = window.faceMeshPanel()->scene();
+  double deformSum = 0.0;
+  Eigen::Index deformCount = 0;
   QElapsedTimer total;
   total.start();
   for (Eigen::Index f = 0; f < frames; ++f) {
@@ -58,6 +63,10 @@ int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen
     // them (the 3D render included) before the next frame.
     QApplication::processEvents();
     times.push_back(static_cast<double>(clock.nsecsElapsed()) * 1e-6);
+    if (mesh.lastDeformMs() >= 0.0) {
+      deformSum += mesh.lastDeformMs();
+      ++deformCount;
+    }
   }
   const double seconds = static_cast<double>(total.nsecsElapsed()) * 1e-9;
   std::vector<double> sorted = times;
@@ -72,7 +81,10 @@ int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen
   std::cout << "{\"open_seconds\": " << openSeconds << ", \"frames\": " << frames << ", \"seconds\": " << seconds << ", \"mean_ms\": " << mean
             << ", \"median_ms\": " << percentile(0.5) << ", \"p95_ms\": " << percentile(0.95)
             << ", \"max_ms\": " << (sorted.empty() ? 0.0 : sorted.back())
-            << ", \"take_rate_hz\": " << document.take().frameRate() << "}\n";
+            << ", \"take_rate_hz\": " << document.take().frameRate();
+  if (deformCount > 0)  // with --mesh: the face rig's deform alone, per frame
+    std::cout << ", \"mesh_deform_ms_mean\": " << deformSum / static_cast<double>(deformCount);
+  std::cout << "}\n";
   return 0;
 }
 
@@ -105,7 +117,12 @@ int main(int argc, char** argv)
   const QCommandLineOption profileFrames(QStringLiteral("profile-frames"),
                                          QStringLiteral("With --profile, step through only the first N frames."),
                                          QStringLiteral("N"));
-  parser.addOptions({screenshot, frame, select, profile, profileFrames});
+  const QCommandLineOption mesh(QStringLiteral("mesh"), QStringLiteral("Drive a face mesh (.obj, .ply) with the take."),
+                                QStringLiteral("FILE"));
+  const QCommandLineOption binding(QStringLiteral("binding"),
+                                   QStringLiteral("With --mesh, the marker binding (.json) to use."),
+                                   QStringLiteral("FILE"));
+  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding});
   parser.process(app);
 
   mocap::studio::MainWindow window;
@@ -118,6 +135,14 @@ int main(int argc, char** argv)
     if (!error.isEmpty() && parser.isSet(screenshot)) {
       std::cerr << error.toStdString() << '\n';
       return 1;
+    }
+  }
+  if (parser.isSet(mesh)) {
+    const QString error = window.loadFaceMesh(parser.value(mesh), parser.value(binding));
+    if (!error.isEmpty()) {
+      std::cerr << "mocap-studio: " << error.toStdString() << '\n';
+      if (parser.isSet(screenshot))
+        return 1;
     }
   }
   if (parser.isSet(select))

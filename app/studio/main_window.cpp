@@ -13,6 +13,7 @@
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/head_stabilisation_step.h"
 #include "panels/layout_planning_panel.h"
@@ -162,6 +163,24 @@ void MainWindow::createDocks()
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, m_view3d, &ui::MarkerView3d::setLayoutHighlight);
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
           &ui::MarkerView3d::clearLayoutHighlight);
+  m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
+  m_faceMeshDock = new QDockWidget(tr("Face Mesh"), this);
+  m_faceMeshDock->setObjectName(QStringLiteral("faceMeshDock"));
+  m_faceMeshDock->setWidget(m_faceMesh);
+  addDockWidget(Qt::RightDockWidgetArea, m_faceMeshDock);
+  tabifyDockWidget(cleaningDock, m_faceMeshDock);
+  m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
+}
+
+QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& bindingPath)
+{
+  QString error = m_faceMesh->loadMesh(meshPath);
+  if (error.isEmpty() && !bindingPath.isEmpty())
+    error = m_faceMesh->loadBinding(bindingPath);
+  m_faceMeshDock->show();
+  m_faceMeshDock->raise();
+  m_view3d->resetCamera();  // frame the mesh with the markers
+  return error;
 }
 
 void MainWindow::createActions()

@@ -8,6 +8,7 @@
 #include <functional>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QSortFilterProxyModel;
@@ -17,6 +18,7 @@ namespace mocap::ui {
 class Autosave;
 struct Preferences;
 class CleaningPanel;
+class FaceMeshPanel;
 class CurveView;
 class LayoutPlanningPanel;
 class MarkerTableModel;
@@ -48,6 +50,10 @@ public:
   [[nodiscard]] ui::TimelineWidget* timeline() const { return m_timeline; }
   [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
   [[nodiscard]] ui::LayoutPlanningPanel* layoutPlanningPanel() const { return m_layoutPlanning; }
+  [[nodiscard]] ui::FaceMeshPanel* faceMeshPanel() const { return m_faceMesh; }
+  /// Loads a face mesh (and its binding when given) into the Face Mesh dock and shows it.
+  /// Returns the error message, empty on success.
+  QString loadFaceMesh(const QString& meshPath, const QString& bindingPath = {});
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether
@@ -95,6 +101,8 @@ private:
   ui::TimelineWidget* m_timeline = nullptr;
   ui::CleaningPanel* m_cleaning = nullptr;
   ui::LayoutPlanningPanel* m_layoutPlanning = nullptr;
+  ui::FaceMeshPanel* m_faceMesh = nullptr;
+  QDockWidget* m_faceMeshDock = nullptr;
   ui::MarkerTableModel* m_tableModel = nullptr;
   QSortFilterProxyModel* m_proxy = nullptr;
   QTableView* m_table = nullptr;

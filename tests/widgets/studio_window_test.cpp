@@ -1,5 +1,6 @@
 // The studio end to end under Xvfb: open, select, edit with undo/redo, save, render, errors.
 #include "../core/test_support.h"
+#include "image_difference.h"
 
 #include "commands/apply_patches_command.h"
 #include "commands/insert_marker_command.h"
@@ -572,22 +573,6 @@ TEST(StudioLanguage, GermanAndChineseAreBuiltInAndComplete)
   EXPECT_EQ(QCoreApplication::translate("mocap::studio::MainWindow", "&File"), QStringLiteral("&File"));
 }
 
-/// Mean absolute difference per channel, 0–255.
-double meanDifference(const QImage& a, const QImage& b)
-{
-  const QImage x = a.convertToFormat(QImage::Format_RGB888), y = b.convertToFormat(QImage::Format_RGB888);
-  if (x.size() != y.size())
-    return 255.0;
-  double sum = 0.0;
-  for (int row = 0; row < x.height(); ++row) {
-    const uchar* p = x.constScanLine(row);
-    const uchar* q = y.constScanLine(row);
-    for (int i = 0; i < x.width() * 3; ++i)
-      sum += std::abs(int(p[i]) - int(q[i]));
-  }
-  return sum / (x.width() * x.height() * 3.0);
-}
-
 TEST_F(StudioWindow, ChangedColoursReachTheViewport)
 {
   ui::VtkViewport* viewport = window->markerView()->viewport();
@@ -634,7 +619,7 @@ TEST_F(StudioWindow, ViewportRendersTheMarkersLikeTheBaseline)
   image.save(actual);
   const QImage expected(baseline);
   ASSERT_FALSE(expected.isNull()) << "missing baseline; the rendered image is at " << actual.toStdString();
-  EXPECT_LT(meanDifference(image, expected), 3.0) << "see " << actual.toStdString();
+  EXPECT_LT(test::meanDifference(image, expected), 3.0) << "see " << actual.toStdString();
 }
 
 } // namespace

@@ -101,6 +101,23 @@ void VtkViewport::resetCamera()
   requestRender();
 }
 
+QPointF VtkViewport::widgetPosition(const Eigen::Vector3d& world) const
+{
+  m_renderer->SetWorldPoint(world.x(), world.y(), world.z(), 1.0);
+  m_renderer->WorldToDisplay();
+  double display[3];
+  m_renderer->GetDisplayPoint(display);
+  const double ratio = devicePixelRatioF();
+  return {display[0] / ratio, height() - display[1] / ratio};  // VTK display y grows upwards
+}
+
+QPoint VtkViewport::displayPixel(QPoint position) const
+{
+  const double ratio = devicePixelRatioF();
+  return {static_cast<int>(std::lround(position.x() * ratio)),
+          static_cast<int>(std::lround((height() - position.y()) * ratio))};
+}
+
 void VtkViewport::fail(const QString& reason)
 {
   m_usable = false;

@@ -2,11 +2,14 @@
 
 #include <QColor>
 #include <QOpenGLWidget>
+#include <QPointF>
 #include <QPoint>
 #include <QRect>
 #include <QString>
 
 #include <vtkNew.h>
+
+#include <Eigen/Core>
 
 class QRubberBand;
 
@@ -49,6 +52,10 @@ public:
   void setBackground(const QColor& color);
   /// Fits the camera to the visible props.
   void resetCamera();
+  /// Where the scene point `world` appears, in widget (logical) coordinates.
+  [[nodiscard]] QPointF widgetPosition(const Eigen::Vector3d& world) const;
+  /// A widget position as VTK display coordinates (device pixels, y up), e.g. for pickers.
+  [[nodiscard]] QPoint displayPixel(QPoint position) const;
 
 signals:
   /// A press-release without dragging, in widget (logical) coordinates.

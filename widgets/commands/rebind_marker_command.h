@@ -1,0 +1,32 @@
+#pragma once
+
+#include "mocap/mesh_binding.h"
+
+#include <QUndoCommand>
+
+#include <optional>
+#include <string>
+
+namespace mocap::ui {
+
+class FaceMeshScene;
+
+/// Binds one marker to another mesh point (or unbinds it); undo puts the old binding back (the
+/// binding is swapped each time, FaceMeshScene::rebind).
+class RebindMarkerCommand final : public QUndoCommand
+{
+public:
+  RebindMarkerCommand(FaceMeshScene& scene, std::string label, std::optional<MarkerBinding> binding);
+
+  void redo() override { swap(); }
+  void undo() override { swap(); }
+
+private:
+  void swap();
+
+  FaceMeshScene& m_scene;
+  std::string m_label;
+  std::optional<MarkerBinding> m_binding;
+};
+
+} // namespace mocap::ui

@@ -1,0 +1,553 @@
+#include "panels/face_mesh_panel.h"
+
+#include "commands/rebind_marker_command.h"
+#include "document/take_document.h"
+#include "views/face_mesh_scene.h"
+#include "views/marker_view_3d.h"
+#include "views/mesh_layer.h"
+#include "views/vtk_viewport.h"
+
+#include "mocap/file_io.h"
+#include "mocap/head_stabilization.h"
+#include "mocap/marker_set.h"
+#include "mocap/mesh_io.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QSettings>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mocap::ui {
+
+namespace {
+
+const QString kGroup = QStringLiteral("faceMesh/");
+constexpr int kClickSlop = 4;      // pixels a press may move and still count as a click
+constexpr int kMarkerRadius = 6;   // pixels around another marker that select it instead
+
+QString settingKey(const char* name)
+{
+  return kGroup + QLatin1String(name);
+}
+
+QString lastFolder()
+{
+  return QSettings().value(settingKey("folder")).toString();
+}
+
+void rememberFolder(const QString& path)
+{
+  QSettings().setValue(settingKey("folder"), QFileInfo(path).absolutePath());
+}
+
+QStringList toQStrings(const std::vector<std::string>& labels)
+{
+  QStringList list;
+  for (const std::string& label : labels)
+    list << QString::fromStdString(label);
+  return list;
+}
+
+QString nameText(std::string_view name)
+{
+  return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+std::vector<std::string> splitLabels(const QString& text)
+{
+  std::vector<std::string> labels;
+  for (const QString& label : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
+    if (!label.trimmed().isEmpty())
+      labels.push_back(label.trimmed().toStdString());
+  return labels;
+}
+
+} // namespace
+
+FaceMeshPanel::FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent)
+    : QWidget(parent), m_document(document), m_view(view), m_scene(new FaceMeshScene(document, view, this)),
+      m_undo(new QUndoStack(this))
+{
+  buildUi();
+  readSettings();
+  connect(m_scene, &FaceMeshScene::bindingChanged, this, &FaceMeshPanel::updateBindingSummary);
+  connect(m_scene, &FaceMeshScene::rigChanged, this, &FaceMeshPanel::updateRigStatus);
+  connect(m_scene, &FaceMeshScene::deformed, this, [this] { m_timing->setText(timingText()); });
+  connect(&document, &TakeDocument::takeReset, this, &FaceMeshPanel::onTakeReset);
+  connect(&document, &TakeDocument::selectionChanged, this, &FaceMeshPanel::onSelectionChanged);
+  view.viewport()->installEventFilter(this);  // vertex clicks, before the view selects markers
+  onTakeReset();
+}
+
+FaceMeshPanel::~FaceMeshPanel() = default;
+
+void FaceMeshPanel::buildUi()
+{
+  auto* layout = new QVBoxLayout(this);
+
+  auto* meshBox = new QGroupBox(tr("Mesh and binding"), this);
+  auto* meshLayout = new QVBoxLayout(meshBox);
+  m_meshLabel = new QLabel(tr("No mesh"), meshBox);
+  m_meshLabel->setWordWrap(true);
+  meshLayout->addWidget(m_meshLabel);
+  auto* files = new QHBoxLayout;
+  auto* loadMeshButton = new QPushButton(tr("Load Mesh…"), meshBox);
+  loadMeshButton->setToolTip(tr("A face mesh as OBJ or PLY"));
+  connect(loadMeshButton, &QPushButton::clicked, this, &FaceMeshPanel::loadMeshDialog);
+  auto* loadBindingButton = new QPushButton(tr("Load Binding…"), meshBox);
+  connect(loadBindingButton, &QPushButton::clicked, this, &FaceMeshPanel::loadBindingDialog);
+  auto* saveBindingButton = new QPushButton(tr("Save Binding…"), meshBox);
+  connect(saveBindingButton, &QPushButton::clicked, this, &FaceMeshPanel::saveBindingDialog);
+  files->addWidget(loadMeshButton);
+  files->addWidget(loadBindingButton);
+  files->addWidget(saveBindingButton);
+  meshLayout->addLayout(files);
+  m_bindingLabel = new QLabel(meshBox);
+  m_bindingLabel->setWordWrap(true);
+  meshLayout->addWidget(m_bindingLabel);
+  auto* edit = new QHBoxLayout;
+  auto* autoBindButton = new QPushButton(tr("Auto-Bind"), meshBox);
+  autoBindButton->setToolTip(tr("Align the neutral frame to the mesh and bind each marker to its nearest surface "
+                                "point (the selected markers when three or more are selected)"));
+  connect(autoBindButton, &QPushButton::clicked, this, [this] { (void)autoBind(); });
+  m_pick = new QToolButton(meshBox);
+  m_pick->setText(tr("Pick Vertex"));
+  m_pick->setCheckable(true);
+  m_pick->setToolTip(tr("Select a marker, then click the mesh vertex it sits on"));
+  connect(m_pick, &QToolButton::toggled, this, [this](bool on) {
+    m_status->setText(on ? tr("Select a marker, then click its vertex on the mesh") : QString());
+  });
+  auto* undo = new QToolButton(meshBox);
+  undo->setDefaultAction(m_undo->createUndoAction(this, tr("Undo")));
+  auto* redo = new QToolButton(meshBox);
+  redo->setDefaultAction(m_undo->createRedoAction(this, tr("Redo")));
+  edit->addWidget(autoBindButton);
+  edit->addWidget(m_pick);
+  edit->addWidget(undo);
+  edit->addWidget(redo);
+  edit->addStretch();
+  meshLayout->addLayout(edit);
+  layout->addWidget(meshBox);
+
+  auto* rigBox = new QGroupBox(tr("Deformation"), this);
+  auto* form = new QFormLayout(rigBox);
+  m_stabilization = new QLineEdit(rigBox);
+  m_stabilization->setToolTip(tr("Head-mounted reference markers (comma separated) whose motion is removed before "
+                                 "binding and deforming; empty: none"));
+  connect(m_stabilization, &QLineEdit::editingFinished, this, &FaceMeshPanel::applyStabilization);
+  form->addRow(tr("Head markers:"), m_stabilization);
+  m_neutral = new QSpinBox(rigBox);
+  m_neutral->setToolTip(tr("The frame whose marker positions are the rest mesh"));
+  connect(m_neutral, &QSpinBox::valueChanged, this, &FaceMeshPanel::applyOptions);
+  form->addRow(tr("Neutral frame:"), m_neutral);
+  m_method = new QComboBox(rigBox);
+  m_method->setObjectName(QStringLiteral("method"));
+  m_method->addItem(tr("RBF"), static_cast<int>(DeformMethod::Rbf));
+  m_method->addItem(tr("Laplacian"), static_cast<int>(DeformMethod::Laplacian));
+  form->addRow(tr("Method:"), m_method);
+
+  m_methodPages = new QStackedWidget(rigBox);
+  auto* rbfPage = new QWidget(m_methodPages);
+  auto* rbfForm = new QFormLayout(rbfPage);
+  rbfForm->setContentsMargins(0, 0, 0, 0);
+  m_kernel = new QComboBox(rbfPage);
+  for (const RbfKernel kernel : {RbfKernel::Exp, RbfKernel::Gaussian, RbfKernel::Biharmonic, RbfKernel::ThinPlate})
+    m_kernel->addItem(nameText(rbfKernelName(kernel)), static_cast<int>(kernel));
+  rbfForm->addRow(tr("Kernel:"), m_kernel);
+  m_radius = new QDoubleSpinBox(rbfPage);
+  m_radius->setRange(0.001, 1e6);
+  m_radius->setDecimals(3);
+  m_radius->setValue(RbfOptions{}.radius);
+  m_radius->setToolTip(tr("Kernel radius c, in mesh units"));
+  rbfForm->addRow(tr("Radius:"), m_radius);
+  m_regions = new QCheckBox(tr("Top, middle and bottom regions"), rbfPage);
+  rbfForm->addRow(m_regions);
+  auto* lapPage = new QWidget(m_methodPages);
+  auto* lapForm = new QFormLayout(lapPage);
+  lapForm->setContentsMargins(0, 0, 0, 0);
+  m_weights = new QComboBox(lapPage);
+  for (const LaplacianWeights w : {LaplacianWeights::Uniform, LaplacianWeights::Cotangent, LaplacianWeights::MeanValue})
+    m_weights->addItem(nameText(laplacianWeightsName(w)), static_cast<int>(w));
+  m_weights->setCurrentIndex(2);
+  lapForm->addRow(tr("Weights:"), m_weights);
+  m_constraintWeight = new QDoubleSpinBox(lapPage);
+  m_constraintWeight->setRange(0.001, 1e4);
+  m_constraintWeight->setDecimals(3);
+  m_constraintWeight->setValue(LaplacianOptions{}.constraintWeight);
+  lapForm->addRow(tr("Constraint weight:"), m_constraintWeight);
+  m_rotations = new QSpinBox(lapPage);
+  m_rotations->setRange(0, 10);
+  m_rotations->setToolTip(tr("Rotation-aware iterations per frame (0: linear)"));
+  lapForm->addRow(tr("Rotations:"), m_rotations);
+  m_methodPages->addWidget(rbfPage);
+  m_methodPages->addWidget(lapPage);
+  form->addRow(m_methodPages);
+  m_compare = new QCheckBox(tr("Compare RBF and Laplacian side by side"), rigBox);
+  form->addRow(m_compare);
+  for (QComboBox* combo : {m_method, m_kernel, m_weights})
+    connect(combo, &QComboBox::currentIndexChanged, this, &FaceMeshPanel::applyOptions);
+  for (QDoubleSpinBox* spin : {m_radius, m_constraintWeight})
+    connect(spin, &QDoubleSpinBox::valueChanged, this, &FaceMeshPanel::applyOptions);
+  connect(m_rotations, &QSpinBox::valueChanged, this, &FaceMeshPanel::applyOptions);
+  for (QCheckBox* box : {m_regions, m_compare})
+    connect(box, &QCheckBox::toggled, this, &FaceMeshPanel::applyOptions);
+  layout->addWidget(rigBox);
+
+  auto* lookBox = new QGroupBox(tr("Display"), this);
+  auto* look = new QFormLayout(lookBox);
+  m_edges = new QCheckBox(tr("Edges"), lookBox);
+  connect(m_edges, &QCheckBox::toggled, this, [this](bool on) {
+    m_scene->layer().setEdgesVisible(on);
+    m_scene->compareLayer().setEdgesVisible(on);
+    m_view.viewport()->requestRender();
+    writeSettings();
+  });
+  look->addRow(m_edges);
+  m_opacity = new QSlider(Qt::Horizontal, lookBox);
+  m_opacity->setRange(10, 100);
+  m_opacity->setValue(60);
+  connect(m_opacity, &QSlider::valueChanged, this, [this](int percent) {
+    m_scene->layer().setOpacity(percent / 100.0);
+    m_scene->compareLayer().setOpacity(percent / 100.0);
+    m_view.viewport()->requestRender();
+    writeSettings();
+  });
+  look->addRow(tr("Opacity:"), m_opacity);
+  layout->addWidget(lookBox);
+
+  m_timing = new QLabel(this);
+  layout->addWidget(m_timing);
+  m_status = new QLabel(this);
+  m_status->setWordWrap(true);
+  m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(m_status);
+  layout->addStretch();
+  updateBindingSummary();
+}
+
+void FaceMeshPanel::readSettings()
+{
+  m_loadingSettings = true;
+  QSettings settings;
+  m_method->setCurrentIndex(std::max(0, m_method->findData(settings.value(settingKey("method"), 0).toInt())));
+  m_kernel->setCurrentIndex(std::max(0, m_kernel->findData(settings.value(settingKey("kernel"), 0).toInt())));
+  m_radius->setValue(settings.value(settingKey("radius"), RbfOptions{}.radius).toDouble());
+  m_regions->setChecked(settings.value(settingKey("regions"), false).toBool());
+  m_weights->setCurrentIndex(std::max(
+      0, m_weights->findData(settings.value(settingKey("weights"), static_cast<int>(LaplacianWeights::MeanValue)).toInt())));
+  m_constraintWeight->setValue(
+      settings.value(settingKey("constraintWeight"), LaplacianOptions{}.constraintWeight).toDouble());
+  m_rotations->setValue(settings.value(settingKey("rotations"), 0).toInt());
+  m_compare->setChecked(settings.value(settingKey("compare"), false).toBool());
+  m_edges->setChecked(settings.value(settingKey("edges"), false).toBool());
+  m_opacity->setValue(settings.value(settingKey("opacity"), 60).toInt());
+  m_methodPages->setCurrentIndex(std::max(0, m_method->currentIndex()));
+  m_loadingSettings = false;
+  m_scene->setOptions(optionsFromUi());
+  m_scene->setCompare(m_compare->isChecked());
+}
+
+void FaceMeshPanel::writeSettings() const
+{
+  if (m_loadingSettings)
+    return;
+  QSettings settings;
+  settings.setValue(settingKey("method"), m_method->currentData());
+  settings.setValue(settingKey("kernel"), m_kernel->currentData());
+  settings.setValue(settingKey("radius"), m_radius->value());
+  settings.setValue(settingKey("regions"), m_regions->isChecked());
+  settings.setValue(settingKey("weights"), m_weights->currentData());
+  settings.setValue(settingKey("constraintWeight"), m_constraintWeight->value());
+  settings.setValue(settingKey("rotations"), m_rotations->value());
+  settings.setValue(settingKey("compare"), m_compare->isChecked());
+  settings.setValue(settingKey("edges"), m_edges->isChecked());
+  settings.setValue(settingKey("opacity"), m_opacity->value());
+}
+
+FaceRigOptions FaceMeshPanel::optionsFromUi() const
+{
+  FaceRigOptions options;
+  options.method = static_cast<DeformMethod>(m_method->currentData().toInt());
+  options.rbf.kernel = static_cast<RbfKernel>(m_kernel->currentData().toInt());
+  options.rbf.radius = m_radius->value();
+  options.rbf.regions = m_regions->isChecked();
+  options.laplacian.weights = static_cast<LaplacianWeights>(m_weights->currentData().toInt());
+  options.laplacian.constraintWeight = m_constraintWeight->value();
+  options.rotations = m_rotations->value();
+  if (m_neutral->value() != m_neutral->minimum())
+    options.neutralFrame = m_neutral->value();
+  return options;
+}
+
+void FaceMeshPanel::applyOptions()
+{
+  if (m_loadingSettings)
+    return;
+  m_methodPages->setCurrentIndex(std::max(0, m_method->currentIndex()));
+  const bool compare = m_compare->isChecked();
+  if (compare != m_scene->compare())
+    m_scene->setCompare(compare);
+  m_scene->setOptions(optionsFromUi());
+  writeSettings();
+}
+
+void FaceMeshPanel::applyStabilization()
+{
+  const std::vector<std::string> labels = splitLabels(m_stabilization->text());
+  if (labels != m_scene->stabilization())
+    m_scene->setStabilization(labels);
+}
+
+void FaceMeshPanel::onTakeReset()
+{
+  const Take& take = m_document.take();
+  // The neutral frame spin box: its minimum (one before the first frame) reads "auto".
+  const QSignalBlocker blocker(m_neutral);
+  const auto first = static_cast<int>(take.firstFrame());
+  m_neutral->setRange(first - 1, first + static_cast<int>(std::max<Eigen::Index>(take.frameCount(), 1)) - 1);
+  m_neutral->setSpecialValueText(tr("first complete"));
+  m_neutral->setValue(first - 1);
+  QStringList reference;
+  for (const Eigen::Index m : guessHeadReferenceMarkers(take))
+    reference << QString::fromStdString(take.label(m));
+  m_stabilization->setText(reference.join(QLatin1Char(',')));
+  m_pendingLabel.clear();
+  m_undo->clear();  // binding edits were for the old take's markers
+  m_scene->setOptions(optionsFromUi());
+  applyStabilization();
+}
+
+QString FaceMeshPanel::loadMesh(const QString& path)
+{
+  Mesh mesh;
+  try {
+    mesh = readMesh(path.toStdString());
+  } catch (const std::exception& e) {
+    showError(tr("Cannot read the mesh %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())));
+    return m_status->text();
+  }
+  m_meshLabel->setText(tr("%1: %n vertices", nullptr, static_cast<int>(mesh.vertexCount())).arg(QFileInfo(path).fileName()));
+  m_undo->clear();
+  m_scene->setMesh(std::move(mesh));
+  updateRigStatus();
+  return {};
+}
+
+QString FaceMeshPanel::loadBinding(const QString& path)
+{
+  if (!m_scene->hasMesh()) {
+    showError(tr("Load the mesh the binding is for first."));
+    return m_status->text();
+  }
+  MeshBinding binding;
+  try {
+    binding = readBinding(path.toStdString(), m_scene->mesh().vertexCount());
+  } catch (const std::exception& e) {
+    showError(tr("Cannot read the binding %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())));
+    return m_status->text();
+  }
+  m_undo->clear();
+  m_scene->setBinding(std::move(binding));
+  updateRigStatus();
+  return m_scene->error();
+}
+
+QString FaceMeshPanel::saveBinding(const QString& path)
+{
+  try {
+    writeFileAtomically(path.toStdString(), bindingJson(m_scene->binding()));
+  } catch (const std::exception& e) {
+    showError(tr("Cannot save the binding: %1").arg(QString::fromStdString(e.what())));
+    return m_status->text();
+  }
+  m_undo->setClean();
+  m_status->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
+  return {};
+}
+
+QString FaceMeshPanel::autoBind()
+{
+  const Take& take = m_document.take();
+  std::vector<std::string> labels;
+  if (m_document.selection().size() >= 3) {
+    for (const Eigen::Index m : m_document.selection())
+      labels.push_back(take.label(m));
+  } else if (!take.empty()) {
+    const std::vector<std::string> reference = splitLabels(m_stabilization->text());
+    const Eigen::Index frame = mostCompleteFrame(take);
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+      const std::string& label = take.label(m);
+      if (take.isValid(frame, m) && !isUnlabelledLabel(label) &&
+          std::find(reference.begin(), reference.end(), label) == reference.end())
+        labels.push_back(label);
+    }
+  }
+  applyStabilization();
+  const QString error = m_scene->autoBindMarkers(labels);
+  if (!error.isEmpty()) {
+    showError(tr("Auto-bind: %1").arg(error));
+    return m_status->text();
+  }
+  m_undo->clear();  // the whole binding was replaced
+  updateRigStatus();
+  return m_scene->error();
+}
+
+void FaceMeshPanel::setPicking(bool on)
+{
+  m_pick->setChecked(on);
+}
+
+bool FaceMeshPanel::picking() const
+{
+  return m_pick->isChecked();
+}
+
+void FaceMeshPanel::onSelectionChanged()
+{
+  const auto& selection = m_document.selection();
+  m_pendingLabel = selection.size() == 1 ? m_document.take().label(selection.front()) : std::string();
+  if (picking())
+    m_status->setText(m_pendingLabel.empty()
+                          ? tr("Select a marker, then click its vertex on the mesh")
+                          : tr("Click the vertex for %1").arg(QString::fromStdString(m_pendingLabel)));
+}
+
+bool FaceMeshPanel::eventFilter(QObject* watched, QEvent* event)
+{
+  if (!picking() || (event->type() != QEvent::MouseButtonPress && event->type() != QEvent::MouseButtonRelease))
+    return QWidget::eventFilter(watched, event);
+  const auto* mouse = static_cast<QMouseEvent*>(event);
+  const QPoint position = mouse->position().toPoint();
+  if (mouse->button() != Qt::LeftButton || mouse->modifiers() != Qt::NoModifier)
+    return false;
+  if (event->type() == QEvent::MouseButtonPress) {
+    m_pressPosition = position;
+    return false;
+  }
+  // A click (not an orbit drag) binds the pending marker; it never reaches the view's selection.
+  if ((position - m_pressPosition).manhattanLength() > kClickSlop)
+    return false;
+  return pickVertex(position);
+}
+
+bool FaceMeshPanel::pickVertex(QPoint position)
+{
+  const auto marker = m_document.take().markerIndex(m_pendingLabel);
+  if (m_pendingLabel.empty() || !marker)
+    return false;
+  // Markers sit on the skin, so a click on one also hits the mesh: another marker is a new pick.
+  const Eigen::Index other = m_view.markerAt(position, kMarkerRadius);
+  if (other >= 0 && other != *marker)
+    return false;
+  const Eigen::Index vertex = m_scene->vertexAt(position);
+  if (vertex < 0)
+    return false;
+  m_undo->push(new RebindMarkerCommand(*m_scene, m_pendingLabel,
+                                       MarkerBinding{m_pendingLabel, MeshPoint::atVertex(vertex),
+                                                     std::numeric_limits<double>::quiet_NaN()}));
+  m_status->setText(tr("%1 bound to vertex %2").arg(QString::fromStdString(m_pendingLabel)).arg(vertex));
+  return true;
+}
+
+QString FaceMeshPanel::timingText() const
+{
+  if (m_scene->lastDeformMs() < 0.0)
+    return {};
+  const auto name = [](const FaceRig* rig) {
+    return rig && rig->options().method == DeformMethod::Laplacian ? tr("Laplacian") : tr("RBF");
+  };
+  QString text = tr("Deform per frame: %1 %2 ms")
+                     .arg(name(m_scene->rig()))
+                     .arg(m_scene->lastDeformMs(), 0, 'f', 3);
+  if (m_scene->lastCompareMs() >= 0.0)
+    text += tr(", %1 %2 ms").arg(name(m_scene->compareRig())).arg(m_scene->lastCompareMs(), 0, 'f', 3);
+  return text;
+}
+
+void FaceMeshPanel::updateBindingSummary()
+{
+  const MeshBinding& binding = m_scene->binding();
+  double sum = 0.0;
+  int known = 0;
+  for (const MarkerBinding& marker : binding.markers)
+    if (std::isfinite(marker.residual)) {
+      sum += marker.residual;
+      ++known;
+    }
+  QString text = tr("%n marker(s) bound", nullptr, static_cast<int>(binding.markers.size()));
+  if (known > 0)
+    text += tr("; mean residual %1 mm").arg(sum / known, 0, 'f', 2);
+  m_bindingLabel->setText(text);
+}
+
+void FaceMeshPanel::updateRigStatus()
+{
+  if (!m_scene->error().isEmpty()) {
+    showError(m_scene->error());
+    return;
+  }
+  m_status->setStyleSheet(QString());
+  if (const FaceRig* rig = m_scene->rig())
+    m_status->setText(tr("Neutral frame %1; set-up %2 ms")
+                          .arg(static_cast<qlonglong>(m_document.take().firstFrame() + rig->neutralFrame()))
+                          .arg(1e3 * rig->setupSeconds(), 0, 'f', 1));
+  m_timing->setText(timingText());
+}
+
+void FaceMeshPanel::showError(const QString& message)
+{
+  m_status->setStyleSheet(QStringLiteral("color: #d04040;"));
+  m_status->setText(message);
+}
+
+void FaceMeshPanel::loadMeshDialog()
+{
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load face mesh"), lastFolder(),
+                                                    tr("Meshes (*.obj *.ply);;All files (*)"));
+  if (path.isEmpty())
+    return;
+  rememberFolder(path);
+  (void)loadMesh(path);
+}
+
+void FaceMeshPanel::loadBindingDialog()
+{
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load marker binding"), lastFolder(),
+                                                    tr("Bindings (*.json);;All files (*)"));
+  if (path.isEmpty())
+    return;
+  rememberFolder(path);
+  (void)loadBinding(path);
+}
+
+void FaceMeshPanel::saveBindingDialog()
+{
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save marker binding"), lastFolder(),
+                                                    tr("Bindings (*.json)"));
+  if (path.isEmpty())
+    return;
+  rememberFolder(path);
+  (void)saveBinding(path);
+}
+
+} // namespace mocap::ui

@@ -1,0 +1,111 @@
+#pragma once
+
+#include "mocap/face_rig.h"
+
+#include <QPoint>
+#include <QString>
+#include <QWidget>
+
+#include <string>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QSlider;
+class QSpinBox;
+class QStackedWidget;
+class QToolButton;
+class QUndoStack;
+
+namespace mocap::ui {
+
+class FaceMeshScene;
+class MarkerView3d;
+class TakeDocument;
+
+/// The Face mesh dock: load a mesh (OBJ/PLY) and a marker binding (JSON), bind automatically or
+/// edit the binding by picking (select a marker, then click the mesh vertex it belongs to; each
+/// edit undoable on the panel's own stack, since the binding is not part of the take), choose
+/// RBF (kernel, radius, regions) or Laplacian (weights, constraint weight, rotations) deformation
+/// or both side by side, and read the per-frame deform time. The mesh itself lives in
+/// FaceMeshScene. Settings are remembered (QSettings, "faceMesh/…").
+class FaceMeshPanel final : public QWidget
+{
+  Q_OBJECT
+
+public:
+  FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent = nullptr);
+  ~FaceMeshPanel() override;
+
+  [[nodiscard]] FaceMeshScene& scene() const { return *m_scene; }
+  [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }
+
+  /// Each returns an error message (also shown in the panel) or "".
+  QString loadMesh(const QString& path);
+  QString loadBinding(const QString& path);
+  QString saveBinding(const QString& path);
+  /// Binds the selected markers (three or more) or else every labelled marker that is not a
+  /// head reference and is present in the most complete frame.
+  QString autoBind();
+
+  /// Picking mode: with one marker selected, a click on the mesh binds it to the vertex under the
+  /// cursor (a click on another marker selects that one instead).
+  void setPicking(bool on);
+  [[nodiscard]] bool picking() const;
+  /// The marker a vertex click binds (the one selected alone), or "".
+  [[nodiscard]] const std::string& pendingLabel() const { return m_pendingLabel; }
+  /// The per-frame deform time shown, e.g. "RBF 0.012 ms".
+  [[nodiscard]] QString timingText() const;
+
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+  /// Binds the pending marker to the vertex under `position`; false when nothing was bound.
+  bool pickVertex(QPoint position);
+  void buildUi();
+  void readSettings();
+  void writeSettings() const;
+  void applyOptions();
+  [[nodiscard]] FaceRigOptions optionsFromUi() const;
+  void applyStabilization();
+  void onTakeReset();
+  void onSelectionChanged();
+  void updateBindingSummary();
+  void updateRigStatus();
+  void showError(const QString& message);
+  void loadMeshDialog();
+  void loadBindingDialog();
+  void saveBindingDialog();
+
+  TakeDocument& m_document;
+  MarkerView3d& m_view;
+  FaceMeshScene* m_scene = nullptr;
+  QUndoStack* m_undo = nullptr;
+  std::string m_pendingLabel;
+  QPoint m_pressPosition;
+  bool m_loadingSettings = false;
+
+  QLabel* m_meshLabel = nullptr;
+  QLabel* m_bindingLabel = nullptr;
+  QToolButton* m_pick = nullptr;
+  QLineEdit* m_stabilization = nullptr;
+  QSpinBox* m_neutral = nullptr;
+  QComboBox* m_method = nullptr;
+  QStackedWidget* m_methodPages = nullptr;
+  QComboBox* m_kernel = nullptr;
+  QDoubleSpinBox* m_radius = nullptr;
+  QCheckBox* m_regions = nullptr;
+  QComboBox* m_weights = nullptr;
+  QDoubleSpinBox* m_constraintWeight = nullptr;
+  QSpinBox* m_rotations = nullptr;
+  QCheckBox* m_compare = nullptr;
+  QCheckBox* m_edges = nullptr;
+  QSlider* m_opacity = nullptr;
+  QLabel* m_timing = nullptr;
+  QLabel* m_status = nullptr;
+};
+
+} // namespace mocap::ui
