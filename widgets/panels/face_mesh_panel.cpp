@@ -59,14 +59,6 @@ void rememberFolder(const QString& path)
   QSettings().setValue(settingKey("folder"), QFileInfo(path).absolutePath());
 }
 
-QStringList toQStrings(const std::vector<std::string>& labels)
-{
-  QStringList list;
-  for (const std::string& label : labels)
-    list << QString::fromStdString(label);
-  return list;
-}
-
 QString nameText(std::string_view name)
 {
   return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
