@@ -25,12 +25,30 @@
     <message>
         <location filename="../widgets/panels/head_stabilisation_step.cpp" line="+96"/>
         <source>There is no marker &apos;%1&apos;.</source>
-        <translation type="unfinished">Es gibt keinen Marker „%1“.</translation>
+        <translation>Es gibt keinen Marker „%1“.</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>head pose measured in %1 of %2 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopfhaltung in %1 von %2 Bildern gemessen</translation>
+    </message>
+</context>
+<context>
+    <name>RebindMarkerCommand</name>
+    <message>
+        <location filename="../widgets/commands/rebind_marker_command.cpp" line="+14"/>
+        <source>Unbind %1</source>
+        <translation>Bindung von %1 lösen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bind %1 to vertex %2</source>
+        <translation>%1 an Scheitelpunkt %2 binden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bind %1 to the surface</source>
+        <translation>%1 an die Oberfläche binden</translation>
     </message>
 </context>
 <context>
@@ -76,7 +94,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+71"/>
+        <location filename="../app/studio/main_window.cpp" line="+76"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -118,10 +136,25 @@
     <message>
         <location line="+7"/>
         <source>Layout planning</source>
-        <translation type="unfinished"></translation>
+        <translation>Layoutplanung</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
+        <source>Face Mesh</source>
+        <translation>Gesichtsnetz</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Export Animation</source>
+        <translation>Animation exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The face mesh cannot be exported: %1</source>
+        <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -153,10 +186,10 @@
     <message>
         <location line="+1"/>
         <source>Export Ani&amp;mation…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ani&amp;mation exportieren…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -583,7 +616,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-645"/>
+        <location line="-682"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -611,12 +644,12 @@
     <message>
         <location line="+1"/>
         <source>Selected frame range only</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur ausgewählter Bildbereich</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Change only the frames selected on the curves (Shift+drag)</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur die in den Kurven ausgewählten Bilder ändern (Umschalt+Ziehen)</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -670,154 +703,454 @@
     <message>
         <location filename="../widgets/dialogs/export_dialog.cpp" line="+72"/>
         <source>Export Animation</source>
-        <translation type="unfinished"></translation>
+        <translation>Animation exportieren</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>BVH of the markers (.bvh)</source>
-        <translation type="unfinished"></translation>
+        <translation>BVH der Marker (.bvh)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>OBJ sequence of the deformed mesh (folder)</source>
-        <translation type="unfinished"></translation>
+        <translation>OBJ-Sequenz des verformten Netzes (Ordner)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>OBJ + PC2 point cache of the deformed mesh (.pc2)</source>
-        <translation type="unfinished"></translation>
+        <translation>OBJ + PC2-Punktcache des verformten Netzes (.pc2)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Format:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Format:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>&amp;Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Durchsuchen…</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Output:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ausgabe:</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>to</source>
-        <translation type="unfinished"></translation>
+        <translation>bis</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>F&amp;rames:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bilder:</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>&amp;Export</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Exportieren</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+243"/>
         <source>Cancel</source>
-        <translation type="unfinished">Abbrechen</translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <location line="-191"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
-        <translation type="unfinished"></translation>
+        <translation>Laden Sie zuerst ein Gesichtsnetz: Diese Formate exportieren das verformte Netz.</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>Folder for the OBJ sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordner für die OBJ-Sequenz</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export BVH</source>
-        <translation type="unfinished"></translation>
+        <translation>BVH exportieren</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>BVH (*.bvh)</source>
-        <translation type="unfinished"></translation>
+        <translation>BVH (*.bvh)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export Point Cache</source>
-        <translation type="unfinished"></translation>
+        <translation>Punktcache exportieren</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>PC2 point cache (*.pc2)</source>
-        <translation type="unfinished"></translation>
+        <translation>PC2-Punktcache (*.pc2)</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Open a take first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen Sie zuerst eine Aufnahme.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Choose where to export.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wählen Sie das Exportziel.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Load a face mesh first: this format exports the deformed mesh.</source>
-        <translation type="unfinished"></translation>
+        <translation>Laden Sie zuerst ein Gesichtsnetz: Dieses Format exportiert das verformte Netz.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The first frame (%1) is after the last (%2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Das erste Bild (%1) liegt nach dem letzten (%2).</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The folder %1 does not exist.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Ordner %1 existiert nicht.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 is a folder; choose a file name.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen.</translation>
     </message>
     <message numerus="yes">
         <location line="+49"/>
         <source>Exporting %n frame(s)…</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Bild wird exportiert…</numerusform>
+            <numerusform>%n Bilder werden exportiert…</numerusform>
         </translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
+        <translation>Wird abgebrochen…</translation>
     </message>
     <message numerus="yes">
         <location line="+41"/>
         <source>Exported %n frame(s) to %1.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Bild nach %1 exportiert.</numerusform>
+            <numerusform>%n Bilder nach %1 exportiert.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export cancelled; nothing was written.</source>
-        <translation type="unfinished"></translation>
+        <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>Schließen</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::FaceMeshPanel</name>
+    <message>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+99"/>
+        <source>Mesh and binding</source>
+        <translation>Netz und Bindung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No mesh</source>
+        <translation>Kein Netz</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Load Mesh…</source>
+        <translation>Netz laden…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A face mesh as OBJ or PLY</source>
+        <translation>Ein Gesichtsnetz als OBJ oder PLY</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load Binding…</source>
+        <translation>Bindung laden…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save Binding…</source>
+        <translation>Bindung speichern…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Auto-Bind</source>
+        <translation>Automatisch binden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Align the neutral frame to the mesh and bind each marker to its nearest surface point (the selected markers when three or more are selected)</source>
+        <translation>Das Neutralbild am Netz ausrichten und jeden Marker an seinen nächstgelegenen Oberflächenpunkt binden (nur die ausgewählten Marker, wenn drei oder mehr ausgewählt sind)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pick Vertex</source>
+        <translation>Scheitelpunkt wählen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Select a marker, then click the mesh vertex it sits on</source>
+        <translation>Wählen Sie einen Marker aus und klicken Sie dann auf den Scheitelpunkt des Netzes, auf dem er sitzt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+294"/>
+        <source>Select a marker, then click its vertex on the mesh</source>
+        <translation>Wählen Sie einen Marker aus und klicken Sie dann auf seinen Scheitelpunkt im Netz</translation>
+    </message>
+    <message>
+        <location line="-291"/>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Deformation</source>
+        <translation>Verformung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Head-mounted reference markers (comma separated) whose motion is removed before binding and deforming; empty: none</source>
+        <translation>Am Kopf befestigte Referenzmarker (durch Kommas getrennt), deren Bewegung vor dem Binden und Verformen entfernt wird; leer: keine</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Head markers:</source>
+        <translation>Kopfmarker:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The frame whose marker positions are the rest mesh</source>
+        <translation>Das Bild, dessen Markerpositionen das Ruhenetz bilden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Neutral frame:</source>
+        <translation>Neutralbild:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+313"/>
+        <source>RBF</source>
+        <translation>RBF</translation>
+    </message>
+    <message>
+        <location line="-312"/>
+        <location line="+312"/>
+        <source>Laplacian</source>
+        <translation>Laplace</translation>
+    </message>
+    <message>
+        <location line="-311"/>
+        <source>Method:</source>
+        <translation>Methode:</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Kernel:</source>
+        <translation>Kern:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Kernel radius c, in mesh units</source>
+        <translation>Kernradius c, in Netzeinheiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Radius:</source>
+        <translation>Radius:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Top, middle and bottom regions</source>
+        <translation>Oberer, mittlerer und unterer Bereich</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Weights:</source>
+        <translation>Gewichte:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Constraint weight:</source>
+        <translation>Gewicht der Nebenbedingungen:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rotation-aware iterations per frame (0: linear)</source>
+        <translation>Rotationsberücksichtigende Iterationen pro Bild (0: linear)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotations:</source>
+        <translation>Rotationen:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Compare RBF and Laplacian side by side</source>
+        <translation>RBF und Laplace nebeneinander vergleichen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Display</source>
+        <translation>Anzeige</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Edges</source>
+        <translation>Kanten</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Opacity:</source>
+        <translation>Deckkraft:</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>first complete</source>
+        <translation>erstes vollständiges</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Cannot read the mesh %1: %2</source>
+        <translation>Das Netz %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1: %n vertices</source>
+        <translation>
+            <numerusform>%1: %n Scheitelpunkt</numerusform>
+            <numerusform>%1: %n Scheitelpunkte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Load the mesh the binding is for first.</source>
+        <translation>Laden Sie zuerst das Netz, zu dem die Bindung gehört.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot read the binding %1: %2</source>
+        <translation>Die Bindung %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot save the binding: %1</source>
+        <translation>Die Bindung kann nicht gespeichert werden: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Auto-bind: %1</source>
+        <translation>Automatische Bindung: %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Click the vertex for %1</source>
+        <translation>Klicken Sie auf den Scheitelpunkt für %1</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1 bound to vertex %2</source>
+        <translation>%1 an Scheitelpunkt %2 gebunden</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Deform per frame: %1 %2 ms</source>
+        <translation>Verformung pro Bild: %1 %2 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, %1 %2 ms</source>
+        <translation>, %1 %2 ms</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>%n marker(s) bound</source>
+        <translation>
+            <numerusform>%n Marker gebunden</numerusform>
+            <numerusform>%n Marker gebunden</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; mean residual %1 mm</source>
+        <translation>; mittleres Residuum %1 mm</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Neutral frame %1; set-up %2 ms</source>
+        <translation>Neutralbild %1; Vorbereitung %2 ms</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Load face mesh</source>
+        <translation>Gesichtsnetz laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Meshes (*.obj *.ply);;All files (*)</source>
+        <translation>Netze (*.obj *.ply);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load marker binding</source>
+        <translation>Markerbindung laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings (*.json);;All files (*)</source>
+        <translation>Bindungen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save marker binding</source>
+        <translation>Markerbindung speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings (*.json)</source>
+        <translation>Bindungen (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::FaceMeshScene</name>
+    <message>
+        <location filename="../widgets/views/face_mesh_scene.cpp" line="+124"/>
+        <source>Load a mesh first.</source>
+        <translation>Laden Sie zuerst ein Netz.</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Head stabilisation: %1</source>
+        <translation>Kopfstabilisierung: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No marker is bound to the mesh: auto-bind, load a binding or pick vertices.</source>
+        <translation>Kein Marker ist an das Netz gebunden: Binden Sie automatisch, laden Sie eine Bindung oder wählen Sie Scheitelpunkte.</translation>
     </message>
 </context>
 <context>
@@ -903,37 +1236,37 @@
     <message>
         <location filename="../widgets/panels/head_stabilisation_step.cpp" line="-78"/>
         <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
-        <translation type="unfinished"></translation>
+        <translation>Am Kopf befestigte Marker (mindestens drei, durch Kommas getrennt), die sich nur mit dem Kopf bewegen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Use Selection</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswahl verwenden</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reference markers</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenzmarker</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>First complete frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Erstes vollständiges Bild</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frame whose head pose becomes the stabilised pose</source>
-        <translation type="unfinished"></translation>
+        <translation>Bild, dessen Kopfhaltung zur stabilisierten Haltung wird</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reference frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenzbild</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Stabilise head</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopf stabilisieren</translation>
     </message>
 </context>
 <context>
@@ -941,47 +1274,47 @@
     <message>
         <location filename="../widgets/views/layout_error_plot.cpp" line="+65"/>
         <source>Click a marker count (or use ←/→) to show its layout</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicken Sie auf eine Markeranzahl (oder verwenden Sie ←/→), um ihr Layout anzuzeigen</translation>
     </message>
     <message>
         <location line="+104"/>
         <source>Run the plan to see the error for each marker count.</source>
-        <translation type="unfinished"></translation>
+        <translation>Führen Sie die Planung aus, um den Fehler für jede Markeranzahl zu sehen.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>markers</source>
-        <translation type="unfinished"></translation>
+        <translation>Marker</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>PFA</source>
-        <translation type="unfinished"></translation>
+        <translation>PFA</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Greedy</source>
-        <translation type="unfinished"></translation>
+        <translation>Greedy</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Random (mean)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zufällig (Mittelwert)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Recommended</source>
-        <translation type="unfinished"></translation>
+        <translation>Empfohlen</translation>
     </message>
     <message>
         <location line="+63"/>
         <source>Marker reconstruction RMSE (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>RMSE der Markerrekonstruktion (mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Blend-weight MSE</source>
-        <translation type="unfinished"></translation>
+        <translation>MSE der Blend-Gewichte</translation>
     </message>
 </context>
 <context>
@@ -989,310 +1322,311 @@
     <message>
         <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
         <source>detected</source>
-        <translation type="unfinished"></translation>
+        <translation>erkannt</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahmedateien, die zusammen mit der geöffneten Aufnahme geplant werden (sie müssen deren Marker enthalten)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add…</source>
-        <translation type="unfinished"></translation>
+        <translation>Hinzufügen…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Entfernen</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>More takes:</source>
-        <translation type="unfinished"></translation>
+        <translation>Weitere Aufnahmen:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add takes</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahmen hinzufügen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
-        <translation type="unfinished">Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
+        <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>PFA (principal feature analysis)</source>
-        <translation type="unfinished"></translation>
+        <translation>PFA (Hauptmerkmalsanalyse)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Greedy (least reconstruction error)</source>
-        <translation type="unfinished"></translation>
+        <translation>Greedy (kleinster Rekonstruktionsfehler)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Method:</source>
-        <translation type="unfinished"></translation>
+        <translation>Methode:</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Share of the motion&apos;s variance the PCA keeps (the paper: 0.98)</source>
-        <translation type="unfinished"></translation>
+        <translation>Anteil der Bewegungsvarianz, den die PCA behält (im Paper: 0,98)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Variance kept:</source>
-        <translation type="unfinished"></translation>
+        <translation>Erhaltene Varianz:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>k-means restarts per cluster count (the paper: 1000; fewer run faster)</source>
-        <translation type="unfinished"></translation>
+        <translation>k-Means-Neustarts je Clusteranzahl (im Paper: 1000; weniger laufen schneller)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Restarts:</source>
-        <translation type="unfinished"></translation>
+        <translation>Neustarts:</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>all</source>
-        <translation type="unfinished"></translation>
+        <translation>alle</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>to</source>
-        <translation type="unfinished"></translation>
+        <translation>bis</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clusters k:</source>
-        <translation type="unfinished"></translation>
+        <translation>Cluster k:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Seed:</source>
-        <translation type="unfinished"></translation>
+        <translation>Startwert:</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>detected automatically</source>
-        <translation type="unfinished"></translation>
+        <translation>automatisch erkannt</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Mirror pairs: a text file (two labels a line) or a marker-set file (.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Spiegelpaare: eine Textdatei (zwei Namen pro Zeile) oder eine Markersatz-Datei (.json)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>…</source>
-        <translation type="unfinished"></translation>
+        <translation>…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Choose a pairs file</source>
-        <translation type="unfinished"></translation>
+        <translation>Paardatei wählen</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Pairs file:</source>
-        <translation type="unfinished"></translation>
+        <translation>Paardatei:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pairs file</source>
-        <translation type="unfinished"></translation>
+        <translation>Paardatei</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Pairs (*.txt *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Paare (*.txt *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>e.g. root-1, root-2, root-3</source>
-        <translation type="unfinished"></translation>
+        <translation>z. B. root-1, root-2, root-3</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopf-Referenzmarker, durch Kommas getrennt: Mit ihnen wird die Kopfbewegung entfernt, und sie werden nicht mit eingeplant</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reference markers:</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenzmarker:</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>keine</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
-        <translation type="unfinished"></translation>
+        <translation>Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte sind es immer)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Leave out:</source>
-        <translation type="unfinished"></translation>
+        <translation>Auslassen:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausführen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cancel</source>
-        <translation type="unfinished">Abbrechen</translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Marker</source>
-        <translation type="unfinished">Marker</translation>
+        <translation>Marker</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Mirror</source>
-        <translation type="unfinished"></translation>
+        <translation>Spiegelpartner</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Pair frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>Paarhäufigkeit</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The selected layout&apos;s markers; the frequency is the share of k-means restarts that chose the marker&apos;s pair (PFA only)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Marker des gewählten Layouts; die Häufigkeit ist der Anteil der k-Means-Neustarts, die das Paar des Markers gewählt haben (nur PFA)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Export Labels…</source>
-        <translation type="unfinished"></translation>
+        <translation>Namen exportieren…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export Marker Set…</source>
-        <translation type="unfinished"></translation>
+        <translation>Markersatz exportieren…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export Take…</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahme exportieren…</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Export marker labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Markernamen exportieren</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Label list (*.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Namensliste (*.txt)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export marker set</source>
-        <translation type="unfinished"></translation>
+        <translation>Markersatz exportieren</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Marker set (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Markersatz (*.json)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export reduced take</source>
-        <translation type="unfinished"></translation>
+        <translation>Reduzierte Aufnahme exportieren</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>C3D (*.c3d);;TRC (*.trc)</source>
-        <translation type="unfinished">C3D (*.c3d);;TRC (*.trc)</translation>
+        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
         <location line="+75"/>
         <source>A plan is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Planung läuft bereits.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Open a take first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen Sie zuerst eine Aufnahme.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The smallest cluster count (%1) is larger than the largest (%2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Die kleinste Clusteranzahl (%1) ist größer als die größte (%2).</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The pairs file %1 does not exist.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Paardatei %1 existiert nicht.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The open take has no marker &apos;%1&apos;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die geöffnete Aufnahme hat keinen Marker „%1“.</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Planning…</source>
-        <translation type="unfinished"></translation>
+        <translation>Planung läuft…</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
+        <translation>Wird abgebrochen…</translation>
     </message>
     <message>
         <location line="+48"/>
         <source>Planning failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Planung fehlgeschlagen: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cancelled; the previous result is kept.</source>
-        <translation type="unfinished"></translation>
+        <translation>Abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Marker, %2 Bilder, %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
     <message>
         <location line="+51"/>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <location line="+26"/>
         <location line="+16"/>
         <location line="+26"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>
-        <translation type="unfinished"></translation>
+        <translation>Es gibt kein Layout zum Exportieren: Führen Sie die Planung aus und wählen Sie eine Markeranzahl.</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>Could not write %1:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht geschrieben werden:
+%2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Wrote %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 geschrieben</translation>
     </message>
 </context>
 <context>
@@ -1418,37 +1752,37 @@
     <message>
         <location line="+2"/>
         <source>Captured samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>Erfasste Abtastwerte:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Filled samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>Gefüllte Abtastwerte:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Smoothed samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>Geglättete Abtastwerte:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edited samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>Bearbeitete Abtastwerte:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Selection:</source>
-        <translation type="unfinished"></translation>
+        <translation>Auswahl:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>3D background:</source>
-        <translation type="unfinished"></translation>
+        <translation>3D-Hintergrund:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Default Colours</source>
-        <translation type="unfinished"></translation>
+        <translation>Standardfarben</translation>
     </message>
 </context>
 <context>
@@ -1645,7 +1979,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+142"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+159"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>

@@ -23,12 +23,30 @@
     <message>
         <location filename="../widgets/panels/head_stabilisation_step.cpp" line="+96"/>
         <source>There is no marker &apos;%1&apos;.</source>
-        <translation type="unfinished">没有标记点“%1”。</translation>
+        <translation>没有标记点“%1”。</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>head pose measured in %1 of %2 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>在 %2 帧中的 %1 帧测得头部姿态</translation>
+    </message>
+</context>
+<context>
+    <name>RebindMarkerCommand</name>
+    <message>
+        <location filename="../widgets/commands/rebind_marker_command.cpp" line="+14"/>
+        <source>Unbind %1</source>
+        <translation>解除 %1 的绑定</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bind %1 to vertex %2</source>
+        <translation>将 %1 绑定到顶点 %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bind %1 to the surface</source>
+        <translation>将 %1 绑定到表面</translation>
     </message>
 </context>
 <context>
@@ -73,7 +91,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+71"/>
+        <location filename="../app/studio/main_window.cpp" line="+76"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -115,10 +133,25 @@
     <message>
         <location line="+7"/>
         <source>Layout planning</source>
-        <translation type="unfinished"></translation>
+        <translation>布局规划</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
+        <source>Face Mesh</source>
+        <translation>面部网格</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Export Animation</source>
+        <translation>导出动画</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The face mesh cannot be exported: %1</source>
+        <translation>无法导出面部网格：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -150,10 +183,10 @@
     <message>
         <location line="+1"/>
         <source>Export Ani&amp;mation…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出动画(&amp;M)…</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -578,7 +611,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-645"/>
+        <location line="-682"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -606,12 +639,12 @@
     <message>
         <location line="+1"/>
         <source>Selected frame range only</source>
-        <translation type="unfinished"></translation>
+        <translation>仅所选帧范围</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Change only the frames selected on the curves (Shift+drag)</source>
-        <translation type="unfinished"></translation>
+        <translation>仅更改在曲线上选中的帧（Shift+拖动）</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -664,152 +697,450 @@
     <message>
         <location filename="../widgets/dialogs/export_dialog.cpp" line="+72"/>
         <source>Export Animation</source>
-        <translation type="unfinished"></translation>
+        <translation>导出动画</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>BVH of the markers (.bvh)</source>
-        <translation type="unfinished"></translation>
+        <translation>标记点的 BVH（.bvh）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>OBJ sequence of the deformed mesh (folder)</source>
-        <translation type="unfinished"></translation>
+        <translation>变形网格的 OBJ 序列（文件夹）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>OBJ + PC2 point cache of the deformed mesh (.pc2)</source>
-        <translation type="unfinished"></translation>
+        <translation>变形网格的 OBJ + PC2 点缓存（.pc2）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Format:</source>
-        <translation type="unfinished"></translation>
+        <translation>格式(&amp;F)：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>&amp;Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览(&amp;B)…</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Output:</source>
-        <translation type="unfinished"></translation>
+        <translation>输出(&amp;O)：</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>to</source>
-        <translation type="unfinished"></translation>
+        <translation>至</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>F&amp;rames:</source>
-        <translation type="unfinished"></translation>
+        <translation>帧(&amp;R)：</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>&amp;Export</source>
-        <translation type="unfinished"></translation>
+        <translation>导出(&amp;E)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+243"/>
         <source>Cancel</source>
-        <translation type="unfinished">取消</translation>
+        <translation>取消</translation>
     </message>
     <message>
         <location line="-191"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
-        <translation type="unfinished"></translation>
+        <translation>请先加载面部网格：这些格式导出的是变形后的网格。</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>Folder for the OBJ sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>OBJ 序列的文件夹</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export BVH</source>
-        <translation type="unfinished"></translation>
+        <translation>导出 BVH</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>BVH (*.bvh)</source>
-        <translation type="unfinished"></translation>
+        <translation>BVH (*.bvh)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export Point Cache</source>
-        <translation type="unfinished"></translation>
+        <translation>导出点缓存</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>PC2 point cache (*.pc2)</source>
-        <translation type="unfinished"></translation>
+        <translation>PC2 点缓存 (*.pc2)</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Open a take first.</source>
-        <translation type="unfinished"></translation>
+        <translation>请先打开拍摄数据。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Choose where to export.</source>
-        <translation type="unfinished"></translation>
+        <translation>请选择导出位置。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Load a face mesh first: this format exports the deformed mesh.</source>
-        <translation type="unfinished"></translation>
+        <translation>请先加载面部网格：此格式导出的是变形后的网格。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The first frame (%1) is after the last (%2).</source>
-        <translation type="unfinished"></translation>
+        <translation>起始帧（%1）位于结束帧（%2）之后。</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The folder %1 does not exist.</source>
-        <translation type="unfinished"></translation>
+        <translation>文件夹 %1 不存在。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 is a folder; choose a file name.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是文件夹，请选择文件名。</translation>
     </message>
     <message numerus="yes">
         <location line="+49"/>
         <source>Exporting %n frame(s)…</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>正在导出 %n 帧…</numerusform>
         </translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在取消…</translation>
     </message>
     <message numerus="yes">
         <location line="+41"/>
         <source>Exported %n frame(s) to %1.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已将 %n 帧导出到 %1。</numerusform>
         </translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export cancelled; nothing was written.</source>
-        <translation type="unfinished"></translation>
+        <translation>导出已取消，未写入任何内容。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>导出失败：%1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::FaceMeshPanel</name>
+    <message>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+99"/>
+        <source>Mesh and binding</source>
+        <translation>网格与绑定</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No mesh</source>
+        <translation>无网格</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Load Mesh…</source>
+        <translation>加载网格…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A face mesh as OBJ or PLY</source>
+        <translation>OBJ 或 PLY 格式的面部网格</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load Binding…</source>
+        <translation>加载绑定…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save Binding…</source>
+        <translation>保存绑定…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Auto-Bind</source>
+        <translation>自动绑定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Align the neutral frame to the mesh and bind each marker to its nearest surface point (the selected markers when three or more are selected)</source>
+        <translation>将中性帧对齐到网格，并将每个标记点绑定到离它最近的表面点（选中三个或更多标记点时仅处理所选标记点）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Pick Vertex</source>
+        <translation>拾取顶点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Select a marker, then click the mesh vertex it sits on</source>
+        <translation>选择一个标记点，然后点击它所在的网格顶点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+294"/>
+        <source>Select a marker, then click its vertex on the mesh</source>
+        <translation>选择一个标记点，然后在网格上点击其对应的顶点</translation>
+    </message>
+    <message>
+        <location line="-291"/>
+        <source>Undo</source>
+        <translation>撤销</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Redo</source>
+        <translation>重做</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Deformation</source>
+        <translation>变形</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Head-mounted reference markers (comma separated) whose motion is removed before binding and deforming; empty: none</source>
+        <translation>头戴参考标记点（以逗号分隔），在绑定和变形之前去除其运动；留空：无</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Head markers:</source>
+        <translation>头部标记点：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The frame whose marker positions are the rest mesh</source>
+        <translation>以该帧的标记点位置作为静止网格</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Neutral frame:</source>
+        <translation>中性帧：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+313"/>
+        <source>RBF</source>
+        <translation>RBF</translation>
+    </message>
+    <message>
+        <location line="-312"/>
+        <location line="+312"/>
+        <source>Laplacian</source>
+        <translation>拉普拉斯</translation>
+    </message>
+    <message>
+        <location line="-311"/>
+        <source>Method:</source>
+        <translation>方法：</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Kernel:</source>
+        <translation>核函数：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Kernel radius c, in mesh units</source>
+        <translation>核函数半径 c，以网格单位计</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Radius:</source>
+        <translation>半径：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Top, middle and bottom regions</source>
+        <translation>上、中、下区域</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Weights:</source>
+        <translation>权重：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Constraint weight:</source>
+        <translation>约束权重：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rotation-aware iterations per frame (0: linear)</source>
+        <translation>每帧的旋转感知迭代次数（0：线性）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rotations:</source>
+        <translation>旋转迭代：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Compare RBF and Laplacian side by side</source>
+        <translation>并排比较 RBF 与拉普拉斯</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Display</source>
+        <translation>显示</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Edges</source>
+        <translation>边线</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Opacity:</source>
+        <translation>不透明度：</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>first complete</source>
+        <translation>第一个完整帧</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Cannot read the mesh %1: %2</source>
+        <translation>无法读取网格 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%1: %n vertices</source>
+        <translation>
+            <numerusform>%1：%n 个顶点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Load the mesh the binding is for first.</source>
+        <translation>请先加载该绑定所对应的网格。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot read the binding %1: %2</source>
+        <translation>无法读取绑定 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot save the binding: %1</source>
+        <translation>无法保存绑定：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Auto-bind: %1</source>
+        <translation>自动绑定：%1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Click the vertex for %1</source>
+        <translation>请点击 %1 对应的顶点</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1 bound to vertex %2</source>
+        <translation>%1 已绑定到顶点 %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Deform per frame: %1 %2 ms</source>
+        <translation>每帧变形：%1 %2 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, %1 %2 ms</source>
+        <translation>，%1 %2 ms</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+14"/>
+        <source>%n marker(s) bound</source>
+        <translation>
+            <numerusform>已绑定 %n 个标记点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; mean residual %1 mm</source>
+        <translation>；平均残差 %1 mm</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Neutral frame %1; set-up %2 ms</source>
+        <translation>中性帧 %1；预处理 %2 ms</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Load face mesh</source>
+        <translation>加载面部网格</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Meshes (*.obj *.ply);;All files (*)</source>
+        <translation>网格 (*.obj *.ply);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load marker binding</source>
+        <translation>加载标记点绑定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings (*.json);;All files (*)</source>
+        <translation>绑定 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save marker binding</source>
+        <translation>保存标记点绑定</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings (*.json)</source>
+        <translation>绑定 (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::FaceMeshScene</name>
+    <message>
+        <location filename="../widgets/views/face_mesh_scene.cpp" line="+124"/>
+        <source>Load a mesh first.</source>
+        <translation>请先加载网格。</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Head stabilisation: %1</source>
+        <translation>头部稳定：%1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No marker is bound to the mesh: auto-bind, load a binding or pick vertices.</source>
+        <translation>没有标记点绑定到网格：请自动绑定、加载绑定或拾取顶点。</translation>
     </message>
 </context>
 <context>
@@ -895,37 +1226,37 @@
     <message>
         <location filename="../widgets/panels/head_stabilisation_step.cpp" line="-78"/>
         <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
-        <translation type="unfinished"></translation>
+        <translation>仅随头部运动的头戴标记点（至少三个，以逗号分隔）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Use Selection</source>
-        <translation type="unfinished"></translation>
+        <translation>使用所选</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reference markers</source>
-        <translation type="unfinished"></translation>
+        <translation>参考标记点</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>First complete frame</source>
-        <translation type="unfinished"></translation>
+        <translation>第一个完整帧</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frame whose head pose becomes the stabilised pose</source>
-        <translation type="unfinished"></translation>
+        <translation>以该帧的头部姿态作为稳定后的姿态</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reference frame</source>
-        <translation type="unfinished"></translation>
+        <translation>参考帧</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Stabilise head</source>
-        <translation type="unfinished"></translation>
+        <translation>稳定头部</translation>
     </message>
 </context>
 <context>
@@ -933,47 +1264,47 @@
     <message>
         <location filename="../widgets/views/layout_error_plot.cpp" line="+65"/>
         <source>Click a marker count (or use ←/→) to show its layout</source>
-        <translation type="unfinished"></translation>
+        <translation>点击某个标记点数量（或使用 ←/→）以显示其布局</translation>
     </message>
     <message>
         <location line="+104"/>
         <source>Run the plan to see the error for each marker count.</source>
-        <translation type="unfinished"></translation>
+        <translation>运行规划以查看每个标记点数量的误差。</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>markers</source>
-        <translation type="unfinished"></translation>
+        <translation>标记点数</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>PFA</source>
-        <translation type="unfinished"></translation>
+        <translation>PFA</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Greedy</source>
-        <translation type="unfinished"></translation>
+        <translation>贪心</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Random (mean)</source>
-        <translation type="unfinished"></translation>
+        <translation>随机（均值）</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Recommended</source>
-        <translation type="unfinished"></translation>
+        <translation>推荐</translation>
     </message>
     <message>
         <location line="+63"/>
         <source>Marker reconstruction RMSE (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>标记点重建 RMSE (mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Blend-weight MSE</source>
-        <translation type="unfinished"></translation>
+        <translation>混合权重 MSE</translation>
     </message>
 </context>
 <context>
@@ -981,310 +1312,311 @@
     <message>
         <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
         <source>detected</source>
-        <translation type="unfinished"></translation>
+        <translation>自动检测</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
-        <translation type="unfinished"></translation>
+        <translation>与已打开的拍摄数据一起规划的拍摄数据文件（必须包含其标记点）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add…</source>
-        <translation type="unfinished"></translation>
+        <translation>添加…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>移除</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>More takes:</source>
-        <translation type="unfinished"></translation>
+        <translation>更多拍摄数据：</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add takes</source>
-        <translation type="unfinished"></translation>
+        <translation>添加拍摄数据</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
-        <translation type="unfinished">动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
+        <translation>动作捕捉 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>PFA (principal feature analysis)</source>
-        <translation type="unfinished"></translation>
+        <translation>PFA（主特征分析）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Greedy (least reconstruction error)</source>
-        <translation type="unfinished"></translation>
+        <translation>贪心（最小重建误差）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Method:</source>
-        <translation type="unfinished"></translation>
+        <translation>方法：</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Share of the motion&apos;s variance the PCA keeps (the paper: 0.98)</source>
-        <translation type="unfinished"></translation>
+        <translation>PCA 保留的运动方差比例（论文：0.98）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Variance kept:</source>
-        <translation type="unfinished"></translation>
+        <translation>保留方差：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>k-means restarts per cluster count (the paper: 1000; fewer run faster)</source>
-        <translation type="unfinished"></translation>
+        <translation>每个聚类数的 k-means 重启次数（论文：1000；次数越少运行越快）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Restarts:</source>
-        <translation type="unfinished"></translation>
+        <translation>重启次数：</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>to</source>
-        <translation type="unfinished"></translation>
+        <translation>至</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clusters k:</source>
-        <translation type="unfinished"></translation>
+        <translation>聚类数 k：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Seed:</source>
-        <translation type="unfinished"></translation>
+        <translation>随机种子：</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>detected automatically</source>
-        <translation type="unfinished"></translation>
+        <translation>自动检测</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Mirror pairs: a text file (two labels a line) or a marker-set file (.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>镜像对：文本文件（每行两个名称）或标记点集文件（.json）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>…</source>
-        <translation type="unfinished"></translation>
+        <translation>…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Choose a pairs file</source>
-        <translation type="unfinished"></translation>
+        <translation>选择配对文件</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Pairs file:</source>
-        <translation type="unfinished"></translation>
+        <translation>配对文件：</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pairs file</source>
-        <translation type="unfinished"></translation>
+        <translation>配对文件</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Pairs (*.txt *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>配对 (*.txt *.json);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>e.g. root-1, root-2, root-3</source>
-        <translation type="unfinished"></translation>
+        <translation>例如 root-1, root-2, root-3</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
-        <translation type="unfinished"></translation>
+        <translation>头部参考标记点，以逗号分隔：用于去除头部运动，且不参与规划</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reference markers:</source>
-        <translation type="unfinished"></translation>
+        <translation>参考标记点：</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>无</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
-        <translation type="unfinished"></translation>
+        <translation>不参与规划的标记点，以逗号分隔（未标注的点始终不参与）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Leave out:</source>
-        <translation type="unfinished"></translation>
+        <translation>排除：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cancel</source>
-        <translation type="unfinished">取消</translation>
+        <translation>取消</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Marker</source>
-        <translation type="unfinished">标记点</translation>
+        <translation>标记点</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Mirror</source>
-        <translation type="unfinished"></translation>
+        <translation>镜像</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Pair frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>配对频率</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The selected layout&apos;s markers; the frequency is the share of k-means restarts that chose the marker&apos;s pair (PFA only)</source>
-        <translation type="unfinished"></translation>
+        <translation>所选布局的标记点；频率是选中该标记点所在配对的 k-means 重启次数所占比例（仅 PFA）</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Export Labels…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出名称…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export Marker Set…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出标记点集…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export Take…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出拍摄数据…</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Export marker labels</source>
-        <translation type="unfinished"></translation>
+        <translation>导出标记点名称</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Label list (*.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>名称列表 (*.txt)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export marker set</source>
-        <translation type="unfinished"></translation>
+        <translation>导出标记点集</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Marker set (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>标记点集 (*.json)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export reduced take</source>
-        <translation type="unfinished"></translation>
+        <translation>导出精简的拍摄数据</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>C3D (*.c3d);;TRC (*.trc)</source>
-        <translation type="unfinished">C3D (*.c3d);;TRC (*.trc)</translation>
+        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
         <location line="+75"/>
         <source>A plan is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>已有规划正在运行。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Open a take first.</source>
-        <translation type="unfinished"></translation>
+        <translation>请先打开拍摄数据。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The smallest cluster count (%1) is larger than the largest (%2).</source>
-        <translation type="unfinished"></translation>
+        <translation>最小聚类数（%1）大于最大聚类数（%2）。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The pairs file %1 does not exist.</source>
-        <translation type="unfinished"></translation>
+        <translation>配对文件 %1 不存在。</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The open take has no marker &apos;%1&apos;.</source>
-        <translation type="unfinished"></translation>
+        <translation>已打开的拍摄数据中没有标记点“%1”。</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Planning…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在规划…</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在取消…</translation>
     </message>
     <message>
         <location line="+48"/>
         <source>Planning failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>规划失败：%1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cancelled; the previous result is kept.</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消，保留先前的结果。</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个标记点，%2 帧，%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
-        <translation type="unfinished"></translation>
+        <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
     </message>
     <message>
         <location line="+51"/>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <location line="+26"/>
         <location line="+16"/>
         <location line="+26"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可导出的布局：请运行规划并选择标记点数量。</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>Could not write %1:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1：
+%2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Wrote %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已写入 %1</translation>
     </message>
 </context>
 <context>
@@ -1410,37 +1742,37 @@
     <message>
         <location line="+2"/>
         <source>Captured samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>采集的采样点：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Filled samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>填充的采样点：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Smoothed samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>平滑的采样点：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edited samples:</source>
-        <translation type="unfinished"></translation>
+        <translation>编辑过的采样点：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Selection:</source>
-        <translation type="unfinished"></translation>
+        <translation>选中项：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>3D background:</source>
-        <translation type="unfinished"></translation>
+        <translation>三维背景：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Default Colours</source>
-        <translation type="unfinished"></translation>
+        <translation>默认颜色</translation>
     </message>
 </context>
 <context>
@@ -1636,7 +1968,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+142"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+159"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>

@@ -20,6 +20,7 @@
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
+#include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
@@ -47,6 +48,9 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include <memory>
+
+#include "mocap/face_rig.h"
 #include "mocap/head_stabilization.h"
 #include "mocap/length_unit.h"
 #include "mocap/marker_edits.h"
@@ -183,6 +187,27 @@ QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& binding
   return error;
 }
 
+void MainWindow::exportAnimation()
+{
+  ui::ExportDialog dialog(*m_document, this);
+  const ui::FaceMeshScene& scene = m_faceMesh->scene();
+  if (scene.rig()) {
+    // The export runs on a worker thread: it gets its own rig and copy of the take, since the
+    // panel's rig follows every edit and option change.
+    try {
+      auto take = std::make_shared<const Take>(scene.rigTake());
+      auto rig = std::make_shared<FaceRig>(scene.mesh(), scene.binding(), *take, scene.options());
+      dialog.setMeshSource(
+          scene.mesh(), [take, rig](Eigen::Index frame, MeshVertices& out) { (void)rig->deform(*take, frame, out); },
+          QStringLiteral("face"));
+    } catch (const std::exception& e) {
+      QMessageBox::warning(this, tr("Export Animation"),
+                           tr("The face mesh cannot be exported: %1").arg(QString::fromStdString(e.what())));
+    }
+  }
+  dialog.exec();
+}
+
 void MainWindow::createActions()
 {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -191,10 +216,8 @@ void MainWindow::createActions()
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
   file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
   file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
-  file->addAction(tr("Export Ani&mation…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this, [this] {
-    ui::ExportDialog dialog(*m_document, this);  // mesh formats need setMeshSource (a loaded face mesh)
-    dialog.exec();
-  });
+  file->addAction(tr("Export Ani&mation…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this,
+                  &MainWindow::exportAnimation);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 

@@ -73,6 +73,9 @@ private:
   bool save();
   bool saveAs();
   void exportDialog();
+  /// File ▸ Export Animation: BVH of the markers, and the face mesh deformed by the take when
+  /// one is loaded.
+  void exportAnimation();
   void deleteRange();
   void createMarkerMenu();
   void createLabelMenu();

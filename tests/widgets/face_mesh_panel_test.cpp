@@ -3,6 +3,7 @@
 #include "../core/test_support.h"
 #include "image_difference.h"
 
+#include "dialogs/export_dialog.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "panels/face_mesh_panel.h"
@@ -11,11 +12,15 @@
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
 
+#include "mocap/face_rig.h"
 #include "mocap/file_io.h"
+#include "mocap/pc2_io.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QSettings>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <gtest/gtest.h>
@@ -286,6 +291,40 @@ TEST_F(FaceMeshPanelTest, RendersTheMeshOverTheMarkersLikeTheBaseline)
   const QImage expected(QStringLiteral(MOCAP_BASELINE_DIR "/FaceMeshView.png"));
   ASSERT_FALSE(expected.isNull()) << "missing baseline; the rendered image is at " << actual.toStdString();
   EXPECT_LT(test::meanDifference(image, expected), 3.0) << "see " << actual.toStdString();
+}
+
+TEST_F(FaceMeshPanelTest, ExportAnimationWritesTheDeformedMeshOfTheLoadedFace)
+{
+  QAction* action = nullptr;
+  for (QAction* candidate : window->findChildren<QAction*>())
+    if (candidate->text() == QStringLiteral("Export Ani&mation…"))
+      action = candidate;
+  ASSERT_NE(action, nullptr);
+  test::TempDir dir;
+  const std::filesystem::path cache = dir.file("face.pc2");
+  const Eigen::Index first = document().take().firstFrame() + kStart;
+  bool exported = false;
+  QTimer::singleShot(0, [&] {  // inside the dialog's exec()
+    auto* dialog = qobject_cast<ui::ExportDialog*>(QApplication::activeModalWidget());
+    if (!dialog)
+      return;
+    dialog->setFormat(ui::AnimationFormat::ObjPlusPc2);
+    dialog->setOutputPath(QString::fromStdString(cache.string()));
+    dialog->setFrameRange(first, first + 9);
+    exported = dialog->format() == ui::AnimationFormat::ObjPlusPc2 && dialog->startExport();
+    dialog->waitForFinished();
+    dialog->close();
+  });
+  action->trigger();
+  ASSERT_TRUE(exported) << "the mesh formats are offered once a face mesh is loaded";
+  const PointCache written = readPc2(cache);
+  ASSERT_EQ(written.samples.size(), 10u);
+  // The same rig, set up independently, gives the cached vertices (float precision).
+  FaceRig rig(scene().mesh(), scene().binding(), scene().rigTake(), scene().options());
+  MeshVertices expected;
+  (void)rig.deform(scene().rigTake(), kStart + 5, expected);
+  EXPECT_LT((written.samples[5].cast<double>() - expected).cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_GT((written.samples[9] - written.samples[0]).cwiseAbs().maxCoeff(), 0.01f) << "the face moves";
 }
 
 } // namespace
