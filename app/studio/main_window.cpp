@@ -40,6 +40,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
@@ -170,7 +171,12 @@ void MainWindow::createDocks()
   m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
   m_faceMeshDock = new QDockWidget(tr("Face Mesh"), this);
   m_faceMeshDock->setObjectName(QStringLiteral("faceMeshDock"));
-  m_faceMeshDock->setWidget(m_faceMesh);
+  // Scrolls rather than making the window taller than the screen (e.g. 1280×800).
+  auto* faceMeshScroll = new QScrollArea(m_faceMeshDock);
+  faceMeshScroll->setWidgetResizable(true);
+  faceMeshScroll->setFrameShape(QFrame::NoFrame);
+  faceMeshScroll->setWidget(m_faceMesh);
+  m_faceMeshDock->setWidget(faceMeshScroll);
   addDockWidget(Qt::RightDockWidgetArea, m_faceMeshDock);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
