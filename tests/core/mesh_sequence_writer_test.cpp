@@ -34,14 +34,6 @@ MeshVertices frameOf(const Mesh& mesh, int f)
   return v;
 }
 
-std::size_t entries(const fs::path& folder)
-{
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder))
-    ++n;
-  return n;
-}
-
 TEST(MeshSequenceWriter, PointCacheHoldsEveryFrameAndTheRestObjBesideIt)
 {
   test::TempDir dir;
@@ -63,7 +55,7 @@ TEST(MeshSequenceWriter, PointCacheHoldsEveryFrameAndTheRestObjBesideIt)
   EXPECT_EQ(MeshSequenceWriter::restObjPath(cache), dir.file("anim.obj"));
   const Mesh rest = readObj(dir.file("anim.obj"));
   EXPECT_EQ(rest.vertices, mesh.vertices);
-  EXPECT_EQ(entries(dir.path()), 2u);
+  EXPECT_EQ(test::entryCount(dir.path()), 2u);
 }
 
 TEST(MeshSequenceWriter, ObjAndPlySequencesNumberTheirFramesFromOne)
@@ -85,9 +77,9 @@ TEST(MeshSequenceWriter, ObjAndPlySequencesNumberTheirFramesFromOne)
     EXPECT_EQ(readObj(dir.file("objs/face" + number + ".obj")).vertices, frameOf(mesh, f));
     EXPECT_EQ(readPly(dir.file("plys/face" + number + ".ply")).vertices, frameOf(mesh, f));
   }
-  EXPECT_EQ(entries(dir.file("objs")), 3u);
+  EXPECT_EQ(test::entryCount(dir.file("objs")), 3u);
   EXPECT_EQ(readObj(dir.file("plys/face_neutral.obj")).vertices, mesh.vertices);
-  EXPECT_EQ(entries(dir.file("plys")), 4u);
+  EXPECT_EQ(test::entryCount(dir.file("plys")), 4u);
 }
 
 TEST(MeshSequenceWriter, AnUnfinishedCacheLeavesNoFileAtAll)
@@ -99,7 +91,7 @@ TEST(MeshSequenceWriter, AnUnfinishedCacheLeavesNoFileAtAll)
     writer.add(frameOf(mesh, 1));
     writer.add(frameOf(mesh, 2));
   }  // cancelled: destroyed without finish()
-  EXPECT_EQ(entries(dir.path()), 0u);  // no cache, no OBJ, no temporary file
+  EXPECT_EQ(test::entryCount(dir.path()), 0u);  // no cache, no OBJ, no temporary file
 }
 
 TEST(MeshSequenceWriter, AnUnfinishedSequenceRemovesItsFramesButNothingElse)
@@ -122,7 +114,7 @@ TEST(MeshSequenceWriter, AnUnfinishedSequenceRemovesItsFramesButNothingElse)
   }
   EXPECT_TRUE(fs::exists(dir.file("keep.txt")));
   EXPECT_TRUE(fs::exists(dir.file("new")));  // a folder it did not create stays
-  EXPECT_EQ(entries(dir.path()), 2u);
+  EXPECT_EQ(test::entryCount(dir.path()), 2u);
 }
 
 TEST(MeshSequenceWriter, AFolderThatCannotBeCreatedIsAClearError)

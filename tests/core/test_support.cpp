@@ -31,4 +31,12 @@ TempDir::~TempDir()
   std::filesystem::remove_all(m_path, ec);
 }
 
+std::size_t entryCount(const std::filesystem::path& folder)
+{
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder))
+    ++n;
+  return n;
+}
+
 } // namespace mocap::test

@@ -27,4 +27,7 @@ private:
   std::filesystem::path m_path;
 };
 
+/// How many entries (files and folders) `folder` holds directly.
+[[nodiscard]] std::size_t entryCount(const std::filesystem::path& folder);
+
 } // namespace mocap::test

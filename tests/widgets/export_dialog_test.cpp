@@ -77,14 +77,6 @@ struct Fixture
   ui::TakeDocument document;
 };
 
-std::size_t entries(const fs::path& folder)
-{
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder))
-    ++n;
-  return n;
-}
-
 TEST(ExportDialog, PointCacheHoldsTheSourceFramesOfTheRange)
 {
   Fixture fx;
@@ -122,7 +114,7 @@ TEST(ExportDialog, ObjSequenceWritesOneFilePerFrame)
   dialog.setFrameRange(101, 103);
   ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
   dialog.waitForFinished();
-  EXPECT_EQ(entries(fx.dir.file("frames")), 3u);
+  EXPECT_EQ(test::entryCount(fx.dir.file("frames")), 3u);
   EXPECT_EQ(readObj(fx.dir.file("frames/tri_0003.obj")).vertices, movedTriangle(2));
 }
 
@@ -203,7 +195,7 @@ TEST(ExportDialog, CancellingMidExportLeavesNoPartialCache)
   EXPECT_FALSE(finished.at(0).at(0).toBool());
   EXPECT_LT(calls.load(), 30);  // it stopped early
   EXPECT_TRUE(dialog.statusText().contains(QStringLiteral("cancelled"))) << dialog.statusText().toStdString();
-  EXPECT_EQ(entries(fx.dir.path()), 0u);  // no cache, no OBJ, no temporary file
+  EXPECT_EQ(test::entryCount(fx.dir.path()), 0u);  // no cache, no OBJ, no temporary file
 }
 
 TEST(ExportDialog, MeshFormatsWaitForAMeshAndBadPathsAreExplained)
