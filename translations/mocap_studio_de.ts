@@ -94,7 +94,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+76"/>
+        <location filename="../app/studio/main_window.cpp" line="+77"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -144,7 +144,7 @@
         <translation>Gesichtsnetz</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+38"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -616,7 +616,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-682"/>
+        <location line="-687"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1670,7 +1670,7 @@
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+81"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+82"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
@@ -1773,6 +1773,11 @@
         <location line="+1"/>
         <source>Selection:</source>
         <translation>Auswahl:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bad points:</source>
+        <translation>Fehlerhafte Punkte:</translation>
     </message>
     <message>
         <location line="+1"/>

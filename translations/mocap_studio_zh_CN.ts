@@ -91,7 +91,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+76"/>
+        <location filename="../app/studio/main_window.cpp" line="+77"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -141,7 +141,7 @@
         <translation>面部网格</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+38"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -611,7 +611,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-682"/>
+        <location line="-687"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1660,7 +1660,7 @@
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+81"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+82"/>
         <source>Preferences</source>
         <translation>首选项</translation>
     </message>
@@ -1763,6 +1763,11 @@
         <location line="+1"/>
         <source>Selection:</source>
         <translation>选中项：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bad points:</source>
+        <translation>坏点：</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -592,6 +592,28 @@ TEST_F(StudioWindow, ChangedColoursReachTheViewport)
   EXPECT_LT(corner.green(), 60);
 }
 
+TEST_F(StudioWindow, AFlaggedBadPointIsDrawnInTheFlagColour)
+{
+  ui::VtkViewport* viewport = window->markerView()->viewport();
+  ASSERT_TRUE(viewport->usable()) << viewport->failureReason().toStdString();
+  TakeDocument& doc = window->document();
+  const Eigen::Index marker = *doc.take().markerIndex("section8-1");
+  const Eigen::Vector3d truth = doc.take().position(1500, marker);
+  doc.undoStack()->push(new ui::ApplyPatchesCommand(
+      doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleState::Edited)},
+      QStringLiteral("spike")));
+  window->cleaningPanel()->waitForPreview();
+  doc.setCurrentFrame(1500);
+  QTest::qWait(200);
+  const auto where = window->markerView()->screenPosition(marker);
+  ASSERT_TRUE(where);
+  const QImage image = viewport->grabFramebuffer();
+  const qreal ratio = image.devicePixelRatio();
+  const QColor drawn = image.pixelColor(int(where->x() * ratio), int(where->y() * ratio));
+  EXPECT_GT(drawn.red(), drawn.green() + 80) << drawn.name().toStdString();
+  EXPECT_GT(drawn.red(), drawn.blue() + 80) << drawn.name().toStdString();
+}
+
 TEST_F(StudioWindow, ViewportRendersTheMarkersLikeTheBaseline)
 {
   ui::VtkViewport* viewport = window->markerView()->viewport();

@@ -24,7 +24,8 @@ constexpr int kMaxAutosaveMinutes = 60;
 const std::pair<const char*, QColor ColorScheme::*> kColorKeys[] = {
     {"original", &ColorScheme::original}, {"filled", &ColorScheme::filled},
     {"smoothed", &ColorScheme::smoothed}, {"edited", &ColorScheme::edited},
-    {"selection", &ColorScheme::selection}, {"background", &ColorScheme::background}};
+    {"selection", &ColorScheme::selection}, {"flagged", &ColorScheme::flagged},
+    {"background", &ColorScheme::background}};
 } // namespace
 
 Preferences Preferences::load()
@@ -122,6 +123,7 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, const QStri
   addColorButton(form, QStringLiteral("smoothed"), tr("Smoothed samples:"), &ColorScheme::smoothed);
   addColorButton(form, QStringLiteral("edited"), tr("Edited samples:"), &ColorScheme::edited);
   addColorButton(form, QStringLiteral("selection"), tr("Selection:"), &ColorScheme::selection);
+  addColorButton(form, QStringLiteral("flagged"), tr("Bad points:"), &ColorScheme::flagged);
   addColorButton(form, QStringLiteral("background"), tr("3D background:"), &ColorScheme::background);
   auto* defaults = new QPushButton(tr("Default Colours"), this);
   connect(defaults, &QPushButton::clicked, this, [this] { setColors(ColorScheme{}); });

@@ -46,7 +46,7 @@ public:
 
   [[nodiscard]] Preferences preferences() const;
   /// The colour buttons (object names "color-original", "color-filled", "color-smoothed",
-  /// "color-edited", "color-selection", "color-background"); clicking one opens a colour dialog.
+  /// "color-edited", "color-selection", "color-flagged", "color-background"); clicking one opens a colour dialog.
   [[nodiscard]] ColorScheme colors() const { return m_colors; }
   void setColors(const ColorScheme& colors);
 

@@ -221,7 +221,7 @@ void CurveView::paintOverlay(QPainter& painter, const QRectF& strip, int axis, d
   }
   // Flags for review: red rings on the flagged samples.
   painter.setBrush(Qt::NoBrush);
-  painter.setPen(QPen(QColor(255, 70, 70), 1.5));
+  painter.setPen(QPen(colorScheme().flagged, 1.5));
   const Take& take = m_document.take();
   for (const auto& [marker, frame] : m_document.flags()) {
     if (!selected(marker) || static_cast<double>(frame) < m_first || static_cast<double>(frame) > m_last)

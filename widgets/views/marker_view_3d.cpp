@@ -217,6 +217,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
       }
   });
   connect(&document, &TakeDocument::visibilityChanged, this, &MarkerView3d::updateFrame);
+  connect(&document, &TakeDocument::flagsChanged, this, &MarkerView3d::updateFrame);
   rebuildScene();
 }
 
@@ -331,6 +332,10 @@ void MarkerView3d::updateFrame()
   m_colors->Reset();
   m_drawnMarkers.clear();
   if (frame < take.frameCount()) {
+    std::vector<bool> flagged(static_cast<std::size_t>(take.markerCount()), false);
+    for (const auto& [marker, flagFrame] : m_document.flags())
+      if (flagFrame == frame && marker < take.markerCount())
+        flagged[static_cast<std::size_t>(marker)] = true;
     for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
       if (!take.isValid(frame, m) || m_document.isHidden(m))
         continue;
@@ -339,6 +344,7 @@ void MarkerView3d::updateFrame()
       // Unlabelled points (fragments waiting for a label) stand apart from every labelled state.
       const QColor color = isSelected(selection, m)                ? selectionColor()
                            : !m_layoutKept.empty()              ? layoutColor(m_layoutKept[static_cast<std::size_t>(m)])
+                           : flagged[static_cast<std::size_t>(m)] ? colorScheme().flagged
                            : isUnlabelledLabel(take.label(m)) ? QColor(200, 130, 255)
                                                               : stateColor(take.state(frame, m));
       const unsigned char rgb[3] = {static_cast<unsigned char>(color.red()), static_cast<unsigned char>(color.green()),

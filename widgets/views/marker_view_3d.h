@@ -31,7 +31,7 @@ class TakeDocument;
 class VtkViewport;
 
 /// The 3D viewport: the current frame's markers as spheres coloured by sample state
-/// (original, filled, smoothed, edited; selected markers highlighted and labelled), trails of
+/// (original, filled, smoothed, edited, flagged as a bad point; selected markers highlighted and labelled), trails of
 /// the selected markers over ±trailFrames frames, and an axes marker in the corner.
 /// Missing samples are not drawn. Click picks the nearest marker, Ctrl+drag a rubber band picks all inside it (Ctrl/Shift adds to the
 /// selection); the camera faces the take's markers from the side they protrude to.

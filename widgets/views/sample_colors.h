@@ -14,12 +14,13 @@ struct ColorScheme
   QColor smoothed{102, 204, 119};
   QColor edited{221, 102, 221};
   QColor selection{255, 230, 60};
+  QColor flagged{255, 70, 70};  ///< bad points under review
   QColor background{31, 33, 38};  ///< the 3D view's (a gradient towards a lighter shade)
 
   friend bool operator==(const ColorScheme& a, const ColorScheme& b)
   {
     return a.original == b.original && a.filled == b.filled && a.smoothed == b.smoothed && a.edited == b.edited &&
-           a.selection == b.selection && a.background == b.background;
+           a.selection == b.selection && a.flagged == b.flagged && a.background == b.background;
   }
 };
 
