@@ -4,6 +4,7 @@
 
 #include "mocap/gaps.h"
 #include "mocap/json_writer.h"
+#include "mocap/provenance.h"
 #include "mocap/take_io.h"
 
 #include <cstdio>
@@ -14,20 +15,25 @@ namespace mocap::cli {
 namespace {
 
 void writeJson(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
-               const std::vector<std::string>& warnings)
+               const std::vector<std::string>& warnings, const std::vector<std::string>& dataLoss)
 {
   JsonWriter json;
   json.beginObject();
   json.key("file").value(file);
   json.key("format").value(formatName(format));
   json.key("marker_count").value(static_cast<std::int64_t>(take.markerCount()));
+  const std::vector<StateCounts> counts = stateCounts(take);
   json.key("markers").beginArray();
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
     const auto validCount = take.valid().col(m).count();
+    const StateCounts& c = counts[static_cast<std::size_t>(m)];
     json.beginObject();
     json.key("label").value(take.label(m));
     json.key("valid_fraction")
         .value(take.frameCount() ? static_cast<double>(validCount) / static_cast<double>(take.frameCount()) : 0.0);
+    json.key("filled").value(static_cast<std::int64_t>(c.filled));
+    json.key("smoothed").value(static_cast<std::int64_t>(c.smoothed));
+    json.key("edited").value(static_cast<std::int64_t>(c.edited));
     json.endObject();
   }
   json.endArray();
@@ -57,12 +63,37 @@ void writeJson(const std::string& file, TakeFormat format, const Take& take, con
     json.endObject();
   }
   json.endArray();
+  json.key("history");
+  writeHistoryJson(json, take.history());
   json.key("warnings").beginArray();
   for (const auto& w : warnings)
     json.value(w);
   json.endArray();
+  json.key("data_loss").beginArray();
+  for (const auto& w : dataLoss)
+    json.value(w);
+  json.endArray();
   json.endObject();
   std::cout << json.str() << '\n';
+}
+
+/// Samples made rather than measured, per marker, and the processing history.
+void writeProvenanceText(const Take& take)
+{
+  const std::vector<StateCounts> counts = stateCounts(take);
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    const StateCounts& c = counts[static_cast<std::size_t>(m)];
+    if (c.filled + c.smoothed + c.edited > 0)
+      std::cout << "  " << take.label(m) << "  filled " << c.filled << "  smoothed " << c.smoothed << "  edited "
+                << c.edited << '\n';
+  }
+  std::cout << "history:         " << take.history().size() << " step(s)\n";
+  for (const ProcessingStep& step : take.history()) {
+    std::cout << "  " << step.time << "  " << step.operation;
+    for (const auto& [name, value] : step.parameters)
+      std::cout << "  " << name << "=" << value;
+    std::cout << "  (" << step.samples << " samples, " << step.tool << ")\n";
+  }
 }
 
 void writeText(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
@@ -86,6 +117,7 @@ void writeText(const std::string& file, TakeFormat format, const Take& take, con
   for (const Gap& gap : gaps)
     std::cout << "  " << take.label(gap.marker) << "  frame " << take.firstFrame() + gap.firstFrame << "  length "
               << gap.length << '\n';
+  writeProvenanceText(take);
 }
 
 } // namespace
@@ -96,11 +128,11 @@ int runInfo(const std::vector<std::string>& args)
   arguments.expectPositionals(1, "one FILE");
   const std::string& file = arguments.positionals()[0];
   const TakeFormat format = formatFromPath(file);
-  std::vector<std::string> warnings;
-  const Take take = readTake(file, &warnings);
+  std::vector<std::string> warnings, dataLoss;
+  const Take take = readTake(file, &warnings, &dataLoss);
   const std::vector<Gap> gaps = findGaps(take);
   if (arguments.has("--json"))
-    writeJson(file, format, take, gaps, warnings);
+    writeJson(file, format, take, gaps, warnings, dataLoss);
   else
     writeText(file, format, take, gaps, warnings);
   return kExitOk;

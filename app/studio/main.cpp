@@ -96,6 +96,7 @@ int main(int argc, char** argv)
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("MocapStudio"));
   QApplication::setApplicationName(QStringLiteral("Mocap Studio"));
+  QApplication::setApplicationVersion(QStringLiteral(MOCAP_VERSION));
   const QString language =
       QSettings().value(QStringLiteral("language"), mocap::studio::defaultLanguage()).toString();
   if (!mocap::studio::installLanguage(app, language))

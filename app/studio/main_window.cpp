@@ -9,6 +9,7 @@
 #include "dialogs/export_dialog.h"
 #include "dialogs/swap_review_dialog.h"
 #include "dialogs/preferences_dialog.h"
+#include "dialogs/read_warnings_dialog.h"
 #include "document/autosave.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
@@ -16,6 +17,7 @@
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/head_stabilisation_step.h"
+#include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
@@ -24,11 +26,13 @@
 #include "views/marker_view_3d.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
+#include "views/wheel_guard.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -40,8 +44,12 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QScreen>
 #include <QScrollArea>
+#include <QTimer>
+#include <QToolButton>
 #include <QSettings>
+#include <QTemporaryFile>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
 #include <QTableView>
@@ -56,6 +64,7 @@
 #include "mocap/length_unit.h"
 #include "mocap/marker_edits.h"
 #include "mocap/marker_set.h"
+#include "mocap/mesh_binding.h"
 #include "mocap/swap_detection.h"
 #include "mocap/take_io.h"
 #include "mocap/take_tracking.h"
@@ -71,6 +80,7 @@ const char* const kOpenFilter =
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui::TakeDocument(this))
 {
   setAcceptDrops(true);
+  ui::WheelGuard::install();
   m_view3d = new ui::MarkerView3d(*m_document, this);
   setCentralWidget(m_view3d);
   m_timeline = new ui::TimelineWidget(*m_document, this);
@@ -83,6 +93,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   createActions();
   m_status = new QLabel(this);
   statusBar()->addPermanentWidget(m_status);
+  m_warningsButton = new QToolButton(this);
+  m_warningsButton->setObjectName(QStringLiteral("readWarningsButton"));
+  m_warningsButton->setAutoRaise(true);
+  m_warningsButton->hide();
+  connect(m_warningsButton, &QToolButton::clicked, this, &MainWindow::openReadWarnings);
+  statusBar()->addPermanentWidget(m_warningsButton);
 
   connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(m_document, &ui::TakeDocument::filePathChanged, this, &MainWindow::updateTitle);
@@ -98,6 +114,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
     statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 10000);
   });
+  m_autosave->setSessionProvider([this] { return recoverySession(); });
   readSettings();
   updateTitle();
 }
@@ -146,9 +163,7 @@ void MainWindow::createDocks()
   m_cleaning->addStep(new ui::HeadStabilisationStep(*m_document, m_cleaning));
   auto* historyDock = new QDockWidget(tr("History"), this);
   historyDock->setObjectName(QStringLiteral("historyDock"));
-  auto* history = new QUndoView(m_document->undoStack(), historyDock);
-  history->setEmptyLabel(tr("<opened take>"));
-  historyDock->setWidget(history);
+  historyDock->setWidget(new ui::HistoryPanel(*m_document, historyDock));
   addDockWidget(Qt::RightDockWidgetArea, historyDock);
   historyDock->hide();  // View ▸ History shows it (clicking an entry undoes or redoes to it)
 
@@ -220,7 +235,7 @@ void MainWindow::createActions()
   file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
   m_recentMenu = file->addMenu(tr("Open &Recent"));
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-  file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+  file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAs);
   file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
   file->addAction(tr("Export Ani&mation…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this,
                   &MainWindow::exportAnimation);
@@ -318,10 +333,12 @@ void MainWindow::createActions()
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   help->addAction(tr("&About Mocap Studio"), this, [this] {
     QMessageBox::about(this, tr("About Mocap Studio"),
-                       tr("<b>Mocap Studio</b><p>Cleaning and using facial optical motion capture.</p>"
-                          "<p>Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next "
-                          "gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, "
-                          "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.</p>"));
+                       tr("<b>Mocap Studio %1</b><p>Cleaning and using facial optical motion capture.</p>")
+                               .arg(QStringLiteral(MOCAP_VERSION)) +
+                           tr("<p>Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next "
+                              "gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, "
+                              "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised "
+                              "view, Ctrl+Shift+S save as.</p>"));
   });
   updateRecentMenu();
 }
@@ -617,12 +634,34 @@ QString MainWindow::openFile(const QString& path, bool quiet)
   m_confirmedOverwrite = false;
   addRecent(path);
   QSettings().setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
-  if (!m_document->loadWarnings().empty())
-    statusBar()->showMessage(tr("%n warning(s) while reading; the first: %1", nullptr,
-                                static_cast<int>(m_document->loadWarnings().size()))
-                                 .arg(QString::fromStdString(m_document->loadWarnings().front())),
-                             10000);
+  showReadWarnings(!quiet && m_document->isIncomplete());
+  updateTitle();
   return {};
+}
+
+void MainWindow::showReadWarnings(bool askToAcknowledge)
+{
+  const auto& warnings = m_document->loadWarnings();
+  m_warningsButton->setVisible(!warnings.empty());
+  m_warningsButton->setText(m_document->isIncomplete()
+                                ? tr("⚠ Incomplete: %n warning(s)", nullptr, static_cast<int>(warnings.size()))
+                                : tr("⚠ %n warning(s)", nullptr, static_cast<int>(warnings.size())));
+  m_warningsButton->setToolTip(tr("Show every warning from reading the file"));
+  if (askToAcknowledge)
+    openReadWarnings();
+}
+
+void MainWindow::openReadWarnings()
+{
+  auto toList = [](const std::vector<std::string>& texts) {
+    QStringList list;
+    for (const std::string& text : texts)
+      list << QString::fromStdString(text);
+    return list;
+  };
+  ui::ReadWarningsDialog dialog(QFileInfo(m_document->filePath()).fileName(), toList(m_document->loadWarnings()),
+                                toList(m_document->dataLossWarnings()), this);
+  dialog.exec();
 }
 
 void MainWindow::openDialog()
@@ -699,7 +738,8 @@ void MainWindow::updateTitle()
 {
   const QString name =
       m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
-  setWindowTitle(tr("%1[*] — Mocap Studio").arg(name));
+  setWindowTitle(m_document->isIncomplete() ? tr("%1 (incomplete)[*] — Mocap Studio").arg(name)
+                                            : tr("%1[*] — Mocap Studio").arg(name));
   setWindowModified(m_document->isModified());
 }
 
@@ -749,6 +789,7 @@ bool MainWindow::offerRecovery()
     }
     m_document->markModified();
     m_confirmedOverwrite = false;
+    restoreSession(file.session);
     // Our own recovery copy first, then the old one goes: the edits are never only in memory.
     if (m_autosave->saveNow().isEmpty())
       ui::Autosave::remove(file);
@@ -756,6 +797,36 @@ bool MainWindow::offerRecovery()
     return true;
   }
   return false;
+}
+
+QVariantMap MainWindow::recoverySession() const
+{
+  QVariantMap session;
+  session.insert(QStringLiteral("windowState"), saveState());
+  const ui::FaceMeshScene& scene = m_faceMesh->scene();
+  if (scene.hasMesh()) {
+    session.insert(QStringLiteral("mesh"), m_faceMesh->meshPath());
+    session.insert(QStringLiteral("binding"), QString::fromStdString(bindingJson(scene.binding())));
+  }
+  return session;
+}
+
+void MainWindow::restoreSession(const QVariantMap& session)
+{
+  restoreState(session.value(QStringLiteral("windowState")).toByteArray());
+  const QString mesh = session.value(QStringLiteral("mesh")).toString();
+  if (mesh.isEmpty())
+    return;
+  QString error = m_faceMesh->loadMesh(mesh);
+  QTemporaryFile binding(QDir::tempPath() + QStringLiteral("/mocap-binding-XXXXXX.json"));
+  if (error.isEmpty() && binding.open()) {
+    binding.write(session.value(QStringLiteral("binding")).toString().toUtf8());
+    binding.close();
+    error = m_faceMesh->loadBinding(binding.fileName());
+  }
+  m_faceMeshDock->show();
+  if (!error.isEmpty())
+    statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error), 10000);
 }
 
 int MainWindow::selectLabels(const QStringList& labels)
@@ -811,10 +882,52 @@ void MainWindow::readSettings()
 {
   QSettings settings;
   m_recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-  restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
+  if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
+    applyFirstRunLayout();
   restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
   updateRecentMenu();
   applyPreferences(ui::Preferences::load());
+  // The layout is saved shortly after every change (dock moved, shown, resized), not only on a
+  // clean quit, so a crash keeps it.
+  m_layoutSaver = new QTimer(this);
+  m_layoutSaver->setSingleShot(true);
+  m_layoutSaver->setInterval(500);
+  connect(m_layoutSaver, &QTimer::timeout, this, &MainWindow::writeSettings);
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+    connect(dock, &QDockWidget::dockLocationChanged, m_layoutSaver, qOverload<>(&QTimer::start));
+    connect(dock, &QDockWidget::visibilityChanged, m_layoutSaver, qOverload<>(&QTimer::start));
+    connect(dock, &QDockWidget::topLevelChanged, m_layoutSaver, qOverload<>(&QTimer::start));
+  }
+}
+
+void MainWindow::applyFirstRunLayout()
+{
+  const QScreen* screen = QGuiApplication::primaryScreen();
+  if (!screen)
+    return;
+  const QRect available = screen->availableGeometry();
+  const QSize size(available.width() * 85 / 100, available.height() * 85 / 100);
+  resize(size);
+  move(available.center() - QPoint(size.width() / 2, size.height() / 2));
+  // Side docks share at most half the width; the 3D view keeps the rest.
+  QList<QDockWidget*> left, right;
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+    if (dockWidgetArea(dock) == Qt::LeftDockWidgetArea)
+      left.append(dock);
+    else if (dockWidgetArea(dock) == Qt::RightDockWidgetArea)
+      right.append(dock);
+  }
+  if (!left.isEmpty())
+    resizeDocks({left.front()}, {size.width() * 18 / 100}, Qt::Horizontal);
+  if (!right.isEmpty())
+    resizeDocks({right.front()}, {size.width() * 28 / 100}, Qt::Horizontal);
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event)
+{
+  QMainWindow::resizeEvent(event);
+  if (m_layoutSaver)
+    m_layoutSaver->start();
 }
 
 void MainWindow::writeSettings() const

@@ -2,6 +2,7 @@
 
 #include <QMainWindow>
 #include <QStringList>
+#include <QVariantMap>
 
 #include <Eigen/Core>
 
@@ -13,6 +14,8 @@ class QLabel;
 class QMenu;
 class QSortFilterProxyModel;
 class QTableView;
+class QTimer;
+class QToolButton;
 
 namespace mocap::ui {
 class Autosave;
@@ -63,6 +66,7 @@ public:
 
 protected:
   void closeEvent(QCloseEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
@@ -89,6 +93,15 @@ private:
   void applyPreferences(const ui::Preferences& preferences);
   void changePreferences(const std::function<void(ui::Preferences&)>& change);
   void chooseStabilisation();
+  /// Lists the reader's warnings in the status bar (a button opening all of them); with
+  /// `askToAcknowledge`, opens the dialog at once (data is missing).
+  void showReadWarnings(bool askToAcknowledge);
+  void openReadWarnings();
+  /// Sizes a first-run window to the screen, with the 3D view at least half its width.
+  void applyFirstRunLayout();
+  /// The face mesh, its binding and the window layout, kept with every autosave.
+  [[nodiscard]] QVariantMap recoverySession() const;
+  void restoreSession(const QVariantMap& session);
   bool confirmDiscard();
   void updateTitle();
   void updateRecentMenu();
@@ -115,6 +128,8 @@ private:
   QAction* m_zUp = nullptr;
   QAction* m_trails = nullptr;
   QLabel* m_status = nullptr;
+  QToolButton* m_warningsButton = nullptr;
+  QTimer* m_layoutSaver = nullptr;  // saves the window layout shortly after every change
   QStringList m_recent;
   bool m_syncingSelection = false;
   bool m_confirmedOverwrite = false;

@@ -181,6 +181,13 @@ void C3dParameterTree::remove(std::string_view groupName, std::string_view param
            ps.end());
 }
 
+void C3dParameterTree::removeGroup(std::string_view groupName)
+{
+  m_groups.erase(std::remove_if(m_groups.begin(), m_groups.end(),
+                                [&](const C3dGroup& g) { return equalsIgnoreCase(g.name, groupName); }),
+                 m_groups.end());
+}
+
 std::optional<double> C3dParameterTree::number(std::string_view groupName, std::string_view parameterName,
                                                std::size_t i) const
 {

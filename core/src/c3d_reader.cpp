@@ -3,6 +3,7 @@
 #include "mocap/c3d_binary.h"
 #include "mocap/error.h"
 #include "mocap/file_io.h"
+#include "mocap/provenance.h"
 #include "mocap/text.h"
 
 #include <algorithm>
@@ -65,8 +66,8 @@ class C3dParser
 {
 public:
   C3dParser(const unsigned char* data, std::size_t size, const std::string& name,
-            std::vector<std::string>* warnings)
-      : m_data(data), m_size(size), m_name(name), m_warnings(warnings)
+            std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
+      : m_data(data), m_size(size), m_name(name), m_warnings(warnings), m_dataLoss(dataLoss)
   {
   }
 
@@ -79,6 +80,7 @@ public:
     decodeData(layout, take);
     readEvents(take);
     take.parameters() = std::move(m_tree);
+    loadProvenance(take, m_warnings);
     return take;
   }
 
@@ -92,6 +94,14 @@ private:
   {
     if (m_warnings)
       m_warnings->push_back(message);
+  }
+
+  /// A warning that means data the file declares is missing from the take.
+  void warnDataLoss(const std::string& message)
+  {
+    warn(message);
+    if (m_dataLoss)
+      m_dataLoss->push_back(message);
   }
 
   /// Throws "<what> truncated" unless bytes [offset, offset + count) are in the file.
@@ -391,7 +401,7 @@ private:
     if (frameBytes > 0) {
       const std::size_t available = (m_size - layout.offset) / frameBytes;
       if (available < frames) {
-        warn("data section holds " + std::to_string(available) + " of " + std::to_string(frames) +
+        warnDataLoss("data section holds " + std::to_string(available) + " of " + std::to_string(frames) +
              " frames; the file is truncated");
         frames = available;
       }
@@ -598,6 +608,7 @@ private:
   std::size_t m_size;
   const std::string& m_name;
   std::vector<std::string>* m_warnings;
+  std::vector<std::string>* m_dataLoss;
   Processor m_processor = Processor::Intel;
   Header m_header;
   std::size_t m_parameterOffset = 0;
@@ -607,15 +618,15 @@ private:
 } // namespace
 
 Take parseC3d(const unsigned char* data, std::size_t size, const std::string& sourceName,
-              std::vector<std::string>* warnings)
+              std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
 {
-  return C3dParser(data, size, sourceName, warnings).parse();
+  return C3dParser(data, size, sourceName, warnings, dataLoss).parse();
 }
 
-Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings)
+Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
 {
   const MappedFile file(path);
-  return parseC3d(file.data(), file.size(), path.string(), warnings);
+  return parseC3d(file.data(), file.size(), path.string(), warnings, dataLoss);
 }
 
 } // namespace mocap

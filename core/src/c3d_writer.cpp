@@ -3,6 +3,7 @@
 #include "mocap/c3d_binary.h"
 #include "mocap/error.h"
 #include "mocap/file_io.h"
+#include "mocap/provenance.h"
 #include "mocap/text.h"
 
 #include <algorithm>
@@ -69,6 +70,7 @@ public:
     updateAnalogGroup();
     updateTrialGroup();
     updateEventGroup();
+    storeProvenance(m_take, m_tree);
     // DATA_START depends on the parameter section's size, which does not depend on its value.
     m_tree.set("POINT", C3dParameter::makeInt16("DATA_START", {0}, true));
     m_dataBlock = 2 + encodeParameters().size() / c3d::kBlockSize;
@@ -324,6 +326,7 @@ private:
     const auto& valid = m_take.valid();
     const auto& residuals = m_take.residuals();
     const auto& cameras = m_take.cameraMasks();
+    const auto& states = m_take.states();
     std::vector<float> frame(frameBytes / 4);
     for (Eigen::Index f = 0; f < frames; ++f) {
       float* p = frame.data();
@@ -337,7 +340,12 @@ private:
         p[0] = static_cast<float>(block[f]);
         p[1] = static_cast<float>(block[f + frames]);
         p[2] = static_cast<float>(block[f + 2 * frames]);
-        const double residual = std::clamp(std::round(residuals(f, m) / m_scale), 0.0, 255.0);
+        // C3D convention: residual 0 marks a computed point, so a filled sample is written with 0
+        // and a measured one never rounds down to 0. Camera bits are kept as read.
+        const double measured = residuals(f, m) / m_scale;
+        const double residual = states(f, m) == static_cast<std::uint8_t>(SampleState::Filled) ? 0.0
+                                : measured > 0.0 ? std::clamp(std::round(measured), 1.0, 255.0)
+                                                 : 0.0;
         p[3] = static_cast<float>((static_cast<unsigned>(cameras(f, m) & 0x7Fu) << 8) | static_cast<unsigned>(residual));
       }
       encodeAnalogFrame(f, p);

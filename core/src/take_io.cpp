@@ -6,6 +6,7 @@
 #include "mocap/csv_writer.h"
 #include "mocap/error.h"
 #include "mocap/file_io.h"
+#include "mocap/provenance.h"
 #include "mocap/trc_io.h"
 
 namespace mocap {
@@ -35,11 +36,46 @@ std::string_view formatName(TakeFormat format)
   return "unknown";
 }
 
-Take readTake(const std::filesystem::path& path, std::vector<std::string>* warnings)
+namespace {
+
+/// Puts the sidecar's provenance into a TRC take; an unreadable sidecar is a warning, not a
+/// failure to open the take.
+void readSidecar(Take& take, const std::filesystem::path& path, std::vector<std::string>* warnings)
+{
+  const std::filesystem::path sidecar = provenanceSidecarPath(path);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(sidecar, error))
+    return;
+  try {
+    applyProvenanceJson(take, readFileBytes(sidecar), sidecar.string(), warnings);
+  } catch (const Error& e) {
+    if (warnings)
+      warnings->push_back(std::string("provenance sidecar ignored: ") + e.what());
+  }
+}
+
+void writeSidecar(const Take& take, const std::filesystem::path& path)
+{
+  const std::filesystem::path sidecar = provenanceSidecarPath(path);
+  if (hasProvenance(take)) {
+    writeFileAtomically(sidecar, provenanceJson(take));
+  } else {
+    std::error_code ignored;
+    std::filesystem::remove(sidecar, ignored);
+  }
+}
+
+} // namespace
+
+Take readTake(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
 {
   switch (formatFromPath(path)) {
-  case TakeFormat::C3d: return readC3d(path, warnings);
-  case TakeFormat::Trc: return readTrc(path, warnings);
+  case TakeFormat::C3d: return readC3d(path, warnings, dataLoss);
+  case TakeFormat::Trc: {
+    Take take = readTrc(path, warnings, dataLoss);
+    readSidecar(take, path, warnings);
+    return take;
+  }
   case TakeFormat::Csv:
   case TakeFormat::Bvh: break;
   }
@@ -51,8 +87,8 @@ void writeTake(const Take& take, const std::filesystem::path& path)
 {
   switch (formatFromPath(path)) {
   case TakeFormat::C3d: writeC3d(take, path); return;
-  case TakeFormat::Trc: writeTrc(take, path); return;
-  case TakeFormat::Csv: writeCsv(take, path); return;
+  case TakeFormat::Trc: writeTrc(take, path); writeSidecar(take, path); return;
+  case TakeFormat::Csv: writeCsv(take, path); writeSidecar(take, path); return;
   case TakeFormat::Bvh: writeBvh(take, path); return;
   }
 }

@@ -168,8 +168,9 @@ class TrcParser
 {
 public:
   // O(1).
-  TrcParser(std::string_view text, const std::string& sourceName, std::vector<std::string>* warnings)
-      : m_text(text), m_source(sourceName), m_warnings(warnings)
+  TrcParser(std::string_view text, const std::string& sourceName, std::vector<std::string>* warnings,
+            std::vector<std::string>* dataLoss)
+      : m_text(text), m_source(sourceName), m_warnings(warnings), m_dataLoss(dataLoss)
   {
   }
 
@@ -213,6 +214,9 @@ public:
     if (markers > 0 && rows > (m_text.size() + kSampleAllowance) / markers)
       fail(3, std::to_string(rows) + " rows of " + std::to_string(markers) +
                   " markers are too many for a file of " + std::to_string(m_text.size()) + " bytes");
+    if (m_numFrames && static_cast<std::size_t>(*m_numFrames) > rows && m_dataLoss)
+      m_dataLoss->push_back("NumFrames is " + std::to_string(*m_numFrames) + " but the file has only " +
+                            std::to_string(rows) + " data rows: the file is truncated");
     if (m_numFrames && static_cast<std::size_t>(*m_numFrames) != rows)
       warn("NumFrames is " + std::to_string(*m_numFrames) + " but the file has " + std::to_string(rows) +
            " data rows; read " + std::to_string(rows) + " frames");
@@ -415,6 +419,7 @@ private:
   std::string_view m_text;
   const std::string& m_source;
   std::vector<std::string>* m_warnings;
+  std::vector<std::string>* m_dataLoss;
   double m_rate = 0.0;
   std::size_t m_numMarkers = 0;
   std::optional<std::int64_t> m_numFrames;
@@ -438,14 +443,15 @@ std::string cellText(std::string_view text)
 
 } // namespace
 
-Take readTrc(const std::filesystem::path& path, std::vector<std::string>* warnings)
+Take readTrc(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
 {
-  return parseTrc(readFileBytes(path), path.string(), warnings);
+  return parseTrc(readFileBytes(path), path.string(), warnings, dataLoss);
 }
 
-Take parseTrc(std::string_view text, const std::string& sourceName, std::vector<std::string>* warnings)
+Take parseTrc(std::string_view text, const std::string& sourceName, std::vector<std::string>* warnings,
+              std::vector<std::string>* dataLoss)
 {
-  return TrcParser(text, sourceName, warnings).parse();
+  return TrcParser(text, sourceName, warnings, dataLoss).parse();
 }
 
 std::string formatTrc(const Take& take, std::string_view fileName)

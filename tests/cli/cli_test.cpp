@@ -79,6 +79,37 @@ TEST(Cli, InfoTextSaysValidFraction)
   EXPECT_NE(run.out.find("valid samples:   96."), std::string::npos) << run.out;
 }
 
+TEST(Cli, InfoJsonReportsProvenanceAndDataLoss)
+{
+  test::TempDir dir;
+  Take take = readTake(test::sampleTake());
+  const Eigen::Index marker = *take.markerIndex("section3-1");
+  for (Eigen::Index f = 10; f < 14; ++f)
+    take.setState(f, marker, SampleState::Smoothed);
+  ProcessingStep step;
+  step.operation = "smooth";
+  step.parameters = {{"method", "gcvspl"}};
+  step.time = "2026-12-01T20:00:00Z";
+  step.tool = "test";
+  take.history().push_back(step);
+  writeTake(take, dir.file("processed.c3d"));
+  const CommandResult run = runMocap("info " + q(dir.file("processed.c3d")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("\"label\": \"section3-1\",\n      \"valid_fraction\""), std::string::npos);
+  EXPECT_NE(run.out.find("\"smoothed\": 4"), std::string::npos) << run.out.substr(0, 3000);
+  EXPECT_NE(run.out.find("\"operation\": \"smooth\""), std::string::npos);
+  EXPECT_NE(run.out.find("\"method\": \"gcvspl\""), std::string::npos);
+  EXPECT_NE(run.out.find("\"data_loss\": []"), std::string::npos);
+
+  const std::string bytes = readFileBytes(test::sampleTake());
+  writeFileAtomically(dir.file("cut.c3d"), std::string_view(bytes).substr(0, bytes.size() / 2));
+  const CommandResult cut = runMocap("info " + q(dir.file("cut.c3d")) + " --json", dir);
+  ASSERT_EQ(cut.exitCode, 0) << cut.err;
+  const auto lossAt = cut.out.find("\"data_loss\": [");
+  ASSERT_NE(lossAt, std::string::npos);
+  EXPECT_NE(cut.out.find("truncated", lossAt), std::string::npos) << cut.out.substr(lossAt);
+}
+
 TEST(Cli, CorruptFileGivesExitOneAndOneClearLine)
 {
   test::TempDir dir;

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <random>
 
 namespace mocap {
@@ -50,8 +52,9 @@ TEST(C3dCorruption, TruncatedDataSectionKeepsTheCompleteFrames)
   std::vector<std::string> warnings;
   const Take take = parseC3d(reinterpret_cast<const unsigned char*>(cut.data()), cut.size(), "cut.c3d", &warnings);
   EXPECT_EQ(take.frameCount(), 100);
-  ASSERT_FALSE(warnings.empty());
-  EXPECT_NE(warnings.back().find("truncated"), std::string::npos);
+  // Among the warnings (this Vicon file also has residual-0 samples, shown as filled).
+  EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(),
+                          [](const std::string& w) { return w.find("truncated") != std::string::npos; }));
 }
 
 TEST(C3dCorruption, ByteFlippedCopiesNeverCrash)

@@ -8,6 +8,9 @@
 #include <QFileInfo>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "mocap/take_io.h"
 
 #include <algorithm>
 
@@ -40,11 +43,8 @@ Autosave::Autosave(TakeDocument& document, QString folder, QObject* parent)
     : QObject(parent), m_document(document), m_folder(folder.isEmpty() ? defaultFolder() : std::move(folder))
 {
   m_timer.setInterval(kDefaultIntervalMs);
-  connect(&m_timer, &QTimer::timeout, this, [this] {
-    const QString error = saveNow();
-    if (!error.isEmpty())
-      emit failed(error);
-  });
+  connect(&m_timer, &QTimer::timeout, this, &Autosave::saveInBackground);
+  connect(&m_write, &QFutureWatcher<QString>::finished, this, &Autosave::onWriteFinished);
   m_timer.start();
   // Saved, or a different take opened: the recovery copy is stale.
   connect(&document, &TakeDocument::modifiedChanged, this, [this](bool modified) {
@@ -56,6 +56,7 @@ Autosave::Autosave(TakeDocument& document, QString folder, QObject* parent)
 
 Autosave::~Autosave()
 {
+  waitForWrite();
   discard();  // a clean shutdown leaves nothing to recover
 }
 
@@ -74,25 +75,73 @@ QString Autosave::recoveryPath() const
   return m_folder + QStringLiteral("/take-%1.c3d").arg(QCoreApplication::applicationPid());
 }
 
-QString Autosave::saveNow()
+QString Autosave::prepare()
 {
-  if (!m_document.hasTake() || !m_document.isModified())
-    return {};
   if (!QDir().mkpath(m_folder))
     return tr("Cannot create the recovery folder %1").arg(m_folder);
-  const QString path = recoveryPath();
-  const QString error = m_document.save(path, false);
-  if (!error.isEmpty())
-    return error;
-  QSettings description(descriptionPath(path), QSettings::IniFormat);
+  QSettings description(descriptionPath(recoveryPath()), QSettings::IniFormat);
   description.setValue(QStringLiteral("original"), m_document.filePath());
   description.setValue(QStringLiteral("written"), QDateTime::currentDateTime());
+  description.remove(QStringLiteral("session"));
+  if (m_session) {
+    const QVariantMap session = m_session();
+    for (auto it = session.begin(); it != session.end(); ++it)
+      description.setValue(QStringLiteral("session/") + it.key(), it.value());
+  }
   description.sync();
   return {};
 }
 
+QString Autosave::saveNow()
+{
+  waitForWrite();
+  if (!m_document.hasTake() || !m_document.isModified())
+    return {};
+  if (const QString error = prepare(); !error.isEmpty())
+    return error;
+  return m_document.save(recoveryPath(), false);
+}
+
+void Autosave::saveInBackground()
+{
+  if (m_write.isRunning() || !m_document.hasTake() || !m_document.isModified())
+    return;
+  if (const QString error = prepare(); !error.isEmpty()) {
+    emit failed(error);
+    return;
+  }
+  // The copy is the only work on the UI thread (a memory copy of the samples); encoding and the
+  // atomic write happen on the worker.
+  m_write.setFuture(QtConcurrent::run([take = m_document.take(), path = recoveryPath()]() -> QString {
+    try {
+      writeTake(take, path.toStdString());
+      return {};
+    } catch (const std::exception& e) {
+      return QString::fromStdString(e.what());
+    }
+  }));
+}
+
+void Autosave::waitForWrite()
+{
+  if (m_write.isRunning())
+    m_write.waitForFinished();
+}
+
+void Autosave::onWriteFinished()
+{
+  const QString error = m_write.result();
+  if (!error.isEmpty())
+    emit failed(error);
+  else if (m_document.isModified())
+    emit written();
+  else
+    discard();  // saved while the copy was being written: the copy is stale
+}
+
 void Autosave::discard()
 {
+  waitForWrite();
   QFile::remove(recoveryPath());
   QFile::remove(descriptionPath(recoveryPath()));
 }
@@ -111,6 +160,9 @@ std::vector<RecoveryFile> Autosave::leftovers(QString folder)
     const QSettings description(descriptionPath(file.path), QSettings::IniFormat);
     file.originalPath = description.value(QStringLiteral("original")).toString();
     file.written = description.value(QStringLiteral("written"), info.lastModified()).toDateTime();
+    for (const QString& key : description.allKeys())
+      if (key.startsWith(QStringLiteral("session/")))
+        file.session.insert(key.mid(8), description.value(key));
     files.push_back(std::move(file));
   }
   std::sort(files.begin(), files.end(),

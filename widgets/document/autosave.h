@@ -1,10 +1,13 @@
 #pragma once
 
 #include <QDateTime>
+#include <QFutureWatcher>
 #include <QObject>
 #include <QString>
 #include <QTimer>
+#include <QVariantMap>
 
+#include <functional>
 #include <vector>
 
 namespace mocap::ui {
@@ -18,12 +21,16 @@ struct RecoveryFile
   QString path;          ///< the recovery C3D
   QString originalPath;  ///< the file the edits were made to (empty for an untitled take)
   QDateTime written;
+  /// What the session provider gave at the time (face mesh, binding, window layout).
+  QVariantMap session;
 };
 
 /// Writes the open take to a recovery file every `interval` while it has unsaved edits, so a
 /// crash loses at most that much work, and removes the file once the take is saved, replaced or
 /// closed cleanly. Writes are atomic (a crash during autosave leaves the previous recovery file).
 /// One recovery file per process, in `folder` (the per-user application data folder by default).
+/// The timer's writes run on a worker thread on a copy of the take (the C3D keeps sample states
+/// and history); the description beside it also keeps what setSessionProvider() supplies.
 class Autosave final : public QObject
 {
   Q_OBJECT
@@ -38,9 +45,17 @@ public:
   /// The recovery file of this process (may not exist yet).
   [[nodiscard]] QString recoveryPath() const;
 
-  /// Writes the recovery file now if the take has unsaved edits. Returns an error message or an
-  /// empty string.
+  /// Writes the recovery file now if the take has unsaved edits, waiting for it. Returns an
+  /// error message or an empty string.
   QString saveNow();
+  /// Starts writing the recovery file on a worker thread (what the timer does); the UI thread
+  /// only copies the take. A write still running is not started twice. Errors come as failed().
+  void saveInBackground();
+  /// Blocks until a background write has finished. For tests and shutdown.
+  void waitForWrite();
+  /// State besides the take that a recovery must bring back (the face mesh and its binding, the
+  /// window layout): asked on the UI thread at every autosave and stored in the description.
+  void setSessionProvider(std::function<QVariantMap()> provider) { m_session = std::move(provider); }
   /// Removes this process's recovery file (clean close, save).
   void discard();
 
@@ -53,11 +68,19 @@ public:
 signals:
   /// Autosave failed (disk full, folder not writable): the message says why.
   void failed(const QString& message);
+  /// A background write finished successfully.
+  void written();
 
 private:
+  /// Creates the folder and writes the description; returns an error or "".
+  QString prepare();
+  void onWriteFinished();
+
   TakeDocument& m_document;
   QString m_folder;
   QTimer m_timer;
+  std::function<QVariantMap()> m_session;
+  QFutureWatcher<QString> m_write;
 };
 
 } // namespace mocap::ui

@@ -14,11 +14,12 @@ TakeDocument::TakeDocument(QObject* parent) : QObject(parent)
 
 QString TakeDocument::open(const QString& path)
 {
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings, dataLoss;
   try {
-    Take loaded = readTake(path.toStdString(), &warnings);
-    m_loadWarnings = std::move(warnings);
+    Take loaded = readTake(path.toStdString(), &warnings, &dataLoss);
     setTake(std::move(loaded), path);
+    m_loadWarnings = std::move(warnings);
+    m_dataLoss = std::move(dataLoss);
     return {};
   } catch (const std::exception& e) {  // a failed read leaves the open take as it was
     return QString::fromStdString(e.what());
@@ -46,6 +47,8 @@ void TakeDocument::setTake(Take take, const QString& path)
 {
   m_take = std::move(take);
   m_filePath = path;
+  m_loadWarnings.clear();
+  m_dataLoss.clear();
   m_undoStack.clear();
   m_currentFrame = 0;
   m_selection.clear();
@@ -55,9 +58,26 @@ void TakeDocument::setTake(Take take, const QString& path)
   m_flags.clear();
   m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
   emit takeReset();
+  emit historyChanged();
   emit filePathChanged(m_filePath);
   emit currentFrameChanged(m_currentFrame);
   emit selectionChanged();
+}
+
+void TakeDocument::appendHistory(ProcessingStep step)
+{
+  m_take.history().push_back(std::move(step));
+  emit historyChanged();
+}
+
+ProcessingStep TakeDocument::removeLastHistory()
+{
+  if (m_take.history().empty())
+    return {};
+  ProcessingStep step = std::move(m_take.history().back());
+  m_take.history().pop_back();
+  emit historyChanged();
+  return step;
 }
 
 void TakeDocument::setCurrentFrame(Eigen::Index frame)

@@ -27,8 +27,12 @@ public:
   [[nodiscard]] bool hasTake() const { return !m_take.empty(); }
   [[nodiscard]] QUndoStack* undoStack() { return &m_undoStack; }
   [[nodiscard]] bool isModified() const { return !m_undoStack.isClean(); }
-  /// Warnings from the last successful open (tolerated file quirks).
+  /// Warnings from the last successful open (tolerated file quirks), all of them.
   [[nodiscard]] const std::vector<std::string>& loadWarnings() const { return m_loadWarnings; }
+  /// The warnings of the last open that mean data the file declares is missing (truncation).
+  [[nodiscard]] const std::vector<std::string>& dataLossWarnings() const { return m_dataLoss; }
+  /// True when the open take lost data at open: the title says "(incomplete)".
+  [[nodiscard]] bool isIncomplete() const { return !m_dataLoss.empty(); }
 
   /// Reads `path` into a fresh take and replaces the current one only when the read succeeds.
   /// Returns an empty string on success, else the error message (the open take is untouched).
@@ -67,6 +71,12 @@ public:
   void showAllMarkers();
   [[nodiscard]] Eigen::Index hiddenCount() const;
 
+  /// Appends a step to the take's processing history (for commands only); emits historyChanged.
+  void appendHistory(ProcessingStep step);
+  /// Removes the newest history step and returns it (for commands only; the undo of
+  /// appendHistory). Emits historyChanged.
+  ProcessingStep removeLastHistory();
+
   /// Renames a marker and returns the old label (for commands only). Throws
   /// InvalidArgument for an empty or duplicate label.
   std::string renameMarker(Eigen::Index marker, std::string label);
@@ -102,6 +112,8 @@ signals:
   void rangeChanged();
   void previewChanged();
   void flagsChanged();
+  /// The take's processing history changed (a step applied or undone, a take opened).
+  void historyChanged();
 
 private:
   Take m_take;
@@ -110,6 +122,7 @@ private:
   Eigen::Index m_currentFrame = 0;
   std::vector<Eigen::Index> m_selection;
   std::vector<std::string> m_loadWarnings;
+  std::vector<std::string> m_dataLoss;
   std::vector<bool> m_hidden;  // one per marker
   std::vector<SamplePatch> m_preview;
   std::vector<std::pair<Eigen::Index, Eigen::Index>> m_flags;

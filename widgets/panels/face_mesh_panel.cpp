@@ -340,6 +340,7 @@ QString FaceMeshPanel::loadMesh(const QString& path)
   m_meshLabel->setText(tr("%1: %n vertices", nullptr, static_cast<int>(mesh.vertexCount())).arg(QFileInfo(path).fileName()));
   m_undo->clear();
   m_scene->setMesh(std::move(mesh));
+  m_meshPath = QFileInfo(path).absoluteFilePath();
   updateRigStatus();
   return {};
 }

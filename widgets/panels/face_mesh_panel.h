@@ -44,6 +44,8 @@ public:
 
   /// Each returns an error message (also shown in the panel) or "".
   QString loadMesh(const QString& path);
+  /// The file the loaded mesh came from ("" when none is loaded).
+  [[nodiscard]] const QString& meshPath() const { return m_meshPath; }
   QString loadBinding(const QString& path);
   QString saveBinding(const QString& path);
   /// Binds the selected markers (three or more) or else every labelled marker that is not a
@@ -83,6 +85,7 @@ private:
   TakeDocument& m_document;
   MarkerView3d& m_view;
   FaceMeshScene* m_scene = nullptr;
+  QString m_meshPath;
   QUndoStack* m_undo = nullptr;
   std::string m_pendingLabel;
   QPoint m_pressPosition;

@@ -75,6 +75,8 @@ public:
   void set(std::string_view groupName, C3dParameter parameter);
   /// Removes a parameter; does nothing when absent.
   void remove(std::string_view groupName, std::string_view parameterName);
+  /// Removes a group with its parameters; does nothing when absent.
+  void removeGroup(std::string_view groupName);
 
   // Typed look-ups that return nullopt when the parameter is missing or of the wrong kind.
   [[nodiscard]] std::optional<double> number(std::string_view groupName, std::string_view parameterName,

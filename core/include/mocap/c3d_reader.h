@@ -21,10 +21,16 @@ namespace mocap {
 /// Throws IoError when the file cannot be read and FormatError (file and byte offset) when it
 /// is not a C3D file or its header or parameter section is corrupt.
 /// O(file size): one read, one bulk conversion pass, no per-sample objects.
-[[nodiscard]] Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+///
+/// Warnings that mean data the file declares is missing from the take (a truncated data
+/// section) also go to `dataLoss`, so callers can make the user acknowledge them. The project's
+/// PROCESSING group becomes the take's sample states and history (provenance.h).
+[[nodiscard]] Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
+                           std::vector<std::string>* dataLoss = nullptr);
 
 /// The same from bytes in memory; `sourceName` names the data in error messages.
 [[nodiscard]] Take parseC3d(const unsigned char* data, std::size_t size, const std::string& sourceName,
-                            std::vector<std::string>* warnings = nullptr);
+                            std::vector<std::string>* warnings = nullptr,
+                            std::vector<std::string>* dataLoss = nullptr);
 
 } // namespace mocap

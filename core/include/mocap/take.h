@@ -2,6 +2,7 @@
 
 #include "mocap/c3d_parameters.h"
 #include "mocap/length_unit.h"
+#include "mocap/processing_step.h"
 #include "mocap/sample_buffer.h"
 
 #include <Eigen/Core>
@@ -179,6 +180,10 @@ public:
   /// The C3D parameter tree as read (empty for takes from other formats); writers update it.
   [[nodiscard]] C3dParameterTree& parameters() { return m_parameters; }
   [[nodiscard]] const C3dParameterTree& parameters() const { return m_parameters; }
+  /// The processing steps applied to the take, oldest first (provenance.h stores them with the
+  /// per-sample states in C3D files and sidecars).
+  [[nodiscard]] std::vector<ProcessingStep>& history() { return m_history; }
+  [[nodiscard]] const std::vector<ProcessingStep>& history() const { return m_history; }
 
 private:
   void checkIndex(Eigen::Index frame, Eigen::Index marker) const;
@@ -197,6 +202,7 @@ private:
   AnalogData m_analog;
   std::vector<Event> m_events;
   C3dParameterTree m_parameters;
+  std::vector<ProcessingStep> m_history;
 };
 
 /// The indices of `labels` in `take`, in the given order. Throws InvalidArgument naming the first

@@ -18,7 +18,9 @@ namespace mocap {
 
 /// Reads a .trc file; see parseTrc. Throws IoError when the file cannot be read.
 /// O(file size + #frames · #markers).
-[[nodiscard]] Take readTrc(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+/// Fewer data rows than NumFrames (a truncated file) is also reported in `dataLoss`.
+[[nodiscard]] Take readTrc(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
+                           std::vector<std::string>* dataLoss = nullptr);
 
 /// Parses .trc text. Tolerates CRLF, blanks instead of tabs in the header lines, trailing tabs,
 /// short rows (their last markers are missing), "NaN" cells (missing) and fewer rows than NumFrames.
@@ -28,7 +30,8 @@ namespace mocap {
 /// malformed input, including counts the text is too small to hold, so memory stays proportional
 /// to the text size. O(text size + #frames · #markers).
 [[nodiscard]] Take parseTrc(std::string_view text, const std::string& sourceName,
-                            std::vector<std::string>* warnings = nullptr);
+                            std::vector<std::string>* warnings = nullptr,
+                            std::vector<std::string>* dataLoss = nullptr);
 
 /// The take as .trc text with `fileName` on line 1. Numbers use the shortest form that reads back
 /// to the same double, so formatTrc → parseTrc is exact; missing and non-finite samples are empty
