@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -60,6 +61,11 @@ public:
   /// one was recovered.
   bool offerRecovery();
   [[nodiscard]] ui::Autosave* autosave() const { return m_autosave; }
+  /// Marker ▸ Reference Markers…: the one editor of the take's head reference markers; pushes
+  /// one undoable command when the set changed.
+  void editReferenceMarkers();
+  /// Pushes SetReferenceMarkersCommand unless `markers` is the current set. Returns whether it did.
+  bool changeReferenceMarkers(std::vector<Eigen::Index> markers);
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -88,7 +94,10 @@ private:
   void editPreferences();
   void applyPreferences(const ui::Preferences& preferences);
   void changePreferences(const std::function<void(ui::Preferences&)>& change);
-  void chooseStabilisation();
+  /// View ▸ Head-Stabilised View: the 3D view in the head frame of the take's reference markers.
+  void setHeadStabilisedView(bool on);
+  void followReferenceMarkers();
+  void setSelectedAsReferenceMarkers();
   bool confirmDiscard();
   void updateTitle();
   void updateRecentMenu();
@@ -114,6 +123,7 @@ private:
   QAction* m_yUp = nullptr;
   QAction* m_zUp = nullptr;
   QAction* m_trails = nullptr;
+  QAction* m_headStabilisedView = nullptr;
   QLabel* m_status = nullptr;
   QStringList m_recent;
   bool m_syncingSelection = false;
