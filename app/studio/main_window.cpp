@@ -6,7 +6,9 @@
 #include "commands/insert_marker_command.h"
 #include "commands/remove_markers_command.h"
 #include "commands/replace_take_command.h"
+#include "commands/set_reference_markers_command.h"
 #include "dialogs/export_dialog.h"
+#include "dialogs/reference_markers_dialog.h"
 #include "dialogs/swap_review_dialog.h"
 #include "dialogs/preferences_dialog.h"
 #include "dialogs/read_warnings_dialog.h"
@@ -57,6 +59,7 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include <algorithm>
 #include <memory>
 
 #include "mocap/face_rig.h"
@@ -181,9 +184,15 @@ void MainWindow::createDocks()
   tabifyDockWidget(cleaningDock, layoutDock);
   cleaningDock->raise();
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, m_view3d, &ui::MarkerView3d::setLayoutHighlight);
+  // Every panel shows the take's reference markers and sends the user to the one editor.
+  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, this,
+          &MainWindow::editReferenceMarkers);
+  connect(m_cleaning->step<ui::HeadStabilisationStep>(), &ui::HeadStabilisationStep::editReferenceMarkersRequested,
+          this, &MainWindow::editReferenceMarkers);
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
           &ui::MarkerView3d::clearLayoutHighlight);
   m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
+  connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
   m_faceMeshDock = new QDockWidget(tr("Face Mesh"), this);
   m_faceMeshDock->setObjectName(QStringLiteral("faceMeshDock"));
   // Scrolls rather than making the window taller than the screen (e.g. 1280×800).
@@ -307,8 +316,17 @@ void MainWindow::createActions()
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
-  m_viewMenu->addAction(tr("&Head-Stabilised View…"), QKeySequence(Qt::CTRL | Qt::Key_B), this,
-                        &MainWindow::chooseStabilisation);
+  m_headStabilisedView = m_viewMenu->addAction(tr("&Head-Stabilised View"));
+  m_headStabilisedView->setObjectName(QStringLiteral("headStabilisedViewAction"));
+  m_headStabilisedView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+  m_headStabilisedView->setCheckable(true);
+  m_headStabilisedView->setToolTip(tr("Show the markers in the head frame of the reference markers (a view "
+                                      "setting; the take is not changed)"));
+  connect(m_headStabilisedView, &QAction::triggered, this, &MainWindow::setHeadStabilisedView);
+  // The view drops its head pose when markers shift or a take is set: follow the document's set.
+  connect(m_document, &ui::TakeDocument::markersChanged, this, &MainWindow::followReferenceMarkers);
+  connect(m_document, &ui::TakeDocument::referenceMarkersChanged, this, &MainWindow::followReferenceMarkers);
+  connect(m_document, &ui::TakeDocument::takeReset, this, &MainWindow::followReferenceMarkers);
 
   // Transport keys work wherever the focus is (window shortcuts).
   auto addShortcut = [this](const QKeySequence& keys, auto slot) {
@@ -389,46 +407,68 @@ void MainWindow::editPreferences()
   applyPreferences(chosen);
 }
 
-void MainWindow::chooseStabilisation()
+void MainWindow::setHeadStabilisedView(bool on)
 {
-  const Take& take = m_document->take();
-  if (take.empty())
-    return;
-  if (!m_view3d->headReference().empty()) {  // the action toggles back to the lab frame
+  if (!on) {
     m_view3d->setHeadReference({});
+    m_headStabilisedView->setChecked(false);
     statusBar()->showMessage(tr("3D view in the lab frame"), 5000);
     return;
   }
-  // Default: the selection when it can carry a head pose, else markers named like head markers.
-  QStringList labels;
-  if (m_document->selection().size() >= 3) {
-    for (Eigen::Index m : m_document->selection())
-      labels << QString::fromStdString(take.label(m));
-  } else {
-    for (const Eigen::Index m : guessHeadReferenceMarkers(take))
-      labels << QString::fromStdString(take.label(m));
-  }
-  bool ok = false;
-  const QString text =
-      QInputDialog::getText(this, tr("Head-Stabilised View"),
-                            tr("Head-mounted reference markers (at least three, comma separated):"),
-                            QLineEdit::Normal, labels.join(QStringLiteral(",")), &ok);
-  if (!ok)
-    return;
-  std::vector<Eigen::Index> markers;
-  for (const QString& label : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-    const auto index = take.markerIndex(label.trimmed().toStdString());
-    if (!index) {
-      QMessageBox::warning(this, tr("Head-Stabilised View"), tr("There is no marker '%1'.").arg(label.trimmed()));
-      return;
-    }
-    markers.push_back(*index);
-  }
-  const QString error = m_view3d->setHeadReference(std::move(markers));
+  const QString error = m_document->referenceMarkers().size() < 3
+                            ? tr("Choose at least three reference markers first (Marker ▸ Reference Markers…).")
+                            : m_view3d->setHeadReference(m_document->referenceMarkers());
+  m_headStabilisedView->setChecked(error.isEmpty());
   if (!error.isEmpty())
     QMessageBox::warning(this, tr("Head-Stabilised View"), error);
   else
-    statusBar()->showMessage(tr("3D view stabilised on the head (Ctrl+B again for the lab frame)"), 5000);
+    statusBar()->showMessage(tr("3D view stabilised on the reference markers (Ctrl+B again for the lab frame)"), 5000);
+}
+
+void MainWindow::followReferenceMarkers()
+{
+  if (!m_headStabilisedView->isChecked())
+    return;
+  // Runs after the view's own handlers (connected later), which dropped the old indices.
+  const bool usable = m_document->referenceMarkers().size() >= 3 &&
+                      m_view3d->setHeadReference(m_document->referenceMarkers()).isEmpty();
+  if (!usable) {
+    m_view3d->setHeadReference({});
+    m_headStabilisedView->setChecked(false);
+    statusBar()->showMessage(tr("3D view back in the lab frame: the reference markers cannot carry a head pose"),
+                             10000);
+  }
+}
+
+bool MainWindow::changeReferenceMarkers(std::vector<Eigen::Index> markers)
+{
+  std::sort(markers.begin(), markers.end());
+  markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
+  if (markers == m_document->referenceMarkers())
+    return false;  // an edit that changes nothing pushes nothing
+  m_document->undoStack()->push(new ui::SetReferenceMarkersCommand(*m_document, std::move(markers)));
+  return true;
+}
+
+void MainWindow::editReferenceMarkers()
+{
+  if (!m_document->hasTake())
+    return;
+  ui::ReferenceMarkersDialog dialog(*m_document, this);
+  if (dialog.exec() != QDialog::Accepted)
+    return;
+  if (!changeReferenceMarkers(dialog.chosen()))
+    statusBar()->showMessage(tr("Reference markers unchanged"), 5000);
+}
+
+void MainWindow::setSelectedAsReferenceMarkers()
+{
+  if (m_document->selection().size() < 3) {
+    statusBar()->showMessage(tr("Select at least three head-mounted markers first"), 5000);
+    return;
+  }
+  if (!changeReferenceMarkers(m_document->selection()))
+    statusBar()->showMessage(tr("The selected markers already are the reference markers"), 5000);
 }
 
 void MainWindow::createMarkerMenu()
@@ -442,6 +482,13 @@ void MainWindow::createMarkerMenu()
   markers->addAction(tr("&Swap Over Range"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X), this,
                      &MainWindow::swapOverRange)
       ->setToolTip(tr("Exchange the data of the two selected markers over the selected frame range"));
+  markers->addSeparator();
+  QAction* reference = markers->addAction(tr("&Reference Markers…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
+                                          this, &MainWindow::editReferenceMarkers);
+  reference->setObjectName(QStringLiteral("referenceMarkersAction"));
+  reference->setToolTip(tr("The head-mounted markers that head stabilisation, layout planning and the face mesh use"));
+  markers->addAction(tr("Set Selected as Reference &Markers"), this, &MainWindow::setSelectedAsReferenceMarkers)
+      ->setToolTip(tr("Make the selected markers (at least three) the take's reference markers (undoable)"));
   markers->addSeparator();
   markers->addAction(tr("&Hide Selected"), QKeySequence(Qt::Key_H), this,
                      [this] { m_document->setHidden(m_document->selection(), true); });
@@ -487,6 +534,15 @@ void MainWindow::trackAndLabel()
   }
   const auto labelled = static_cast<int>(report.labelledFragments);
   const auto fragments = static_cast<int>(report.fragments);
+  if (labelled == 0) {
+    // Re-tracking alone would only repack the unlabelled points: a change of nothing, so no step.
+    statusBar()->showMessage(report.unlabelledMarkers == 0
+                                 ? tr("Nothing to label: every marker has a label")
+                                 : tr("Nothing to label: none of the %n unlabelled fragment(s) matches a marker",
+                                      nullptr, fragments),
+                             10000);
+    return;
+  }
   m_document->undoStack()->push(new ui::ReplaceTakeCommand(
       *m_document, std::move(tracked), tr("Track and label (%1 of %2 fragments labelled)").arg(labelled).arg(fragments)));
   statusBar()->showMessage(tr("%1 of %2 fragments labelled; %3 samples left unlabelled")
@@ -517,8 +573,10 @@ void MainWindow::reviewSwaps()
   if (dialog.exec() != QDialog::Accepted)
     return;
   const std::vector<LabelSwap> accepted = dialog.acceptedSwaps();
-  if (accepted.empty())
+  if (accepted.empty()) {
+    statusBar()->showMessage(tr("No swap accepted; the take is unchanged"), 5000);
     return;
+  }
   Take repaired = take;
   for (const LabelSwap& swap : accepted)  // in frame order, as found
     exchangeMarkersFrom(repaired, swap.first, swap.second, swap.frame);
@@ -592,6 +650,12 @@ void MainWindow::swapOverRange()
     return;
   }
   const Take& take = m_document->take();
+  const Eigen::Index length = m_document->rangeLast() - m_document->rangeFirst() + 1;
+  if (!take.valid().col(selection[0]).segment(m_document->rangeFirst(), length).any() &&
+      !take.valid().col(selection[1]).segment(m_document->rangeFirst(), length).any()) {
+    statusBar()->showMessage(tr("Nothing to swap: both markers are gaps over the selected range"), 5000);
+    return;
+  }
   auto patches = swapMarkersOverRange(take, selection[0], selection[1], m_document->rangeFirst(),
                                       m_document->rangeLast());
   m_document->undoStack()->push(new ui::ApplyPatchesCommand(
@@ -614,8 +678,10 @@ void MainWindow::deleteRange()
     if (!patch.empty())
       patches.push_back(std::move(patch));
   }
-  if (patches.empty())
+  if (patches.empty()) {
+    statusBar()->showMessage(tr("Nothing to delete: the selected range is already a gap"), 5000);
     return;
+  }
   const Take& take = m_document->take();
   m_document->undoStack()->push(new ui::ApplyPatchesCommand(
       *m_document, std::move(patches),

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -63,6 +64,11 @@ public:
   /// one was recovered.
   bool offerRecovery();
   [[nodiscard]] ui::Autosave* autosave() const { return m_autosave; }
+  /// Marker ▸ Reference Markers…: the one editor of the take's head reference markers; pushes
+  /// one undoable command when the set changed.
+  void editReferenceMarkers();
+  /// Pushes SetReferenceMarkersCommand unless `markers` is the current set. Returns whether it did.
+  bool changeReferenceMarkers(std::vector<Eigen::Index> markers);
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -92,7 +98,6 @@ private:
   void editPreferences();
   void applyPreferences(const ui::Preferences& preferences);
   void changePreferences(const std::function<void(ui::Preferences&)>& change);
-  void chooseStabilisation();
   /// Lists the reader's warnings in the status bar (a button opening all of them); with
   /// `askToAcknowledge`, opens the dialog at once (data is missing).
   void showReadWarnings(bool askToAcknowledge);
@@ -102,6 +107,10 @@ private:
   /// The face mesh, its binding and the window layout, kept with every autosave.
   [[nodiscard]] QVariantMap recoverySession() const;
   void restoreSession(const QVariantMap& session);
+  /// View ▸ Head-Stabilised View: the 3D view in the head frame of the take's reference markers.
+  void setHeadStabilisedView(bool on);
+  void followReferenceMarkers();
+  void setSelectedAsReferenceMarkers();
   bool confirmDiscard();
   void updateTitle();
   void updateRecentMenu();
@@ -127,6 +136,7 @@ private:
   QAction* m_yUp = nullptr;
   QAction* m_zUp = nullptr;
   QAction* m_trails = nullptr;
+  QAction* m_headStabilisedView = nullptr;
   QLabel* m_status = nullptr;
   QToolButton* m_warningsButton = nullptr;
   QTimer* m_layoutSaver = nullptr;  // saves the window layout shortly after every change

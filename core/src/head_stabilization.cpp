@@ -2,9 +2,12 @@
 
 #include "mocap/error.h"
 #include "mocap/kabsch.h"
+#include "mocap/marker_set.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 #include <string_view>
@@ -175,6 +178,76 @@ std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take)
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
     if (startsWith(take.label(m), "root") || startsWith(take.label(m), "head"))
       markers.push_back(m);
+  if (markers.size() >= 3)
+    return markers;
+  return mostRigidCluster(take);
+}
+
+std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options)
+{
+  if (options.tolerance <= 0.0 || options.maxFrames < 2)
+    throw InvalidArgument("rigid cluster: the tolerance must be > 0 and at least two frames sampled");
+  // Candidates: labelled markers valid in at least half the frames (a head marker is seen nearly always).
+  std::vector<Eigen::Index> candidates;
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    if (!isUnlabelledLabel(take.label(m)) && 2 * take.valid().col(m).count() >= take.frameCount() &&
+        take.frameCount() > 0)
+      candidates.push_back(m);
+  const auto n = static_cast<Eigen::Index>(candidates.size());
+  if (n < 3)
+    return {};
+  // Evenly spaced frames: the spread of a distance needs the take's range of motion, not every frame.
+  std::vector<Eigen::Index> frames;
+  const Eigen::Index step = std::max<Eigen::Index>(1, take.frameCount() / options.maxFrames);
+  for (Eigen::Index f = 0; f < take.frameCount(); f += step)
+    frames.push_back(f);
+  // spread(i, j): standard deviation of the distance between candidates i and j over its mean
+  // (a strain: unit-free, and fair to markers far apart, whose distance noise is larger).
+  constexpr double kInfinite = std::numeric_limits<double>::infinity();
+  Eigen::MatrixXd spread = Eigen::MatrixXd::Constant(n, n, kInfinite);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i + 1; j < n; ++j) {
+      const Eigen::Index a = candidates[static_cast<std::size_t>(i)];
+      const Eigen::Index b = candidates[static_cast<std::size_t>(j)];
+      double sum = 0.0, sumSquares = 0.0;
+      Eigen::Index count = 0;
+      for (const Eigen::Index f : frames)
+        if (take.isValid(f, a) && take.isValid(f, b)) {
+          const double d = (take.position(f, a) - take.position(f, b)).norm();
+          if (!std::isfinite(d))
+            continue;
+          sum += d;
+          sumSquares += d * d;
+          ++count;
+        }
+      const double mean = count > 0 ? sum / static_cast<double>(count) : 0.0;
+      if (count < 2 || !(mean > 0.0))
+        continue;
+      spread(i, j) = spread(j, i) =
+          std::sqrt(std::max(0.0, sumSquares / static_cast<double>(count) - mean * mean)) / mean;
+    }
+  // Grow from the most rigid pair, adding the candidate whose worst spread to the cluster is least.
+  Eigen::Index seedI = 0, seedJ = 0;
+  const double best = spread.minCoeff(&seedI, &seedJ);
+  if (!(best <= options.tolerance))
+    return {};
+  std::vector<Eigen::Index> cluster{seedI, seedJ};
+  Eigen::VectorXd worst = spread.col(seedI).cwiseMax(spread.col(seedJ));
+  for (;;) {
+    for (const Eigen::Index c : cluster)
+      worst(c) = kInfinite;
+    Eigen::Index next = 0;
+    if (!(worst.minCoeff(&next) <= options.tolerance))
+      break;
+    cluster.push_back(next);
+    worst = worst.cwiseMax(spread.col(next));
+  }
+  if (cluster.size() < 3)
+    return {};
+  std::vector<Eigen::Index> markers;
+  for (const Eigen::Index c : cluster)
+    markers.push_back(candidates[static_cast<std::size_t>(c)]);
+  std::sort(markers.begin(), markers.end());
   return markers;
 }
 

@@ -5,6 +5,9 @@
 #include "mocap/file_io.h"
 #include "mocap/mesh_sequence_writer.h"
 
+#include <cstdio>
+#include <system_error>
+
 namespace mocap::ui {
 
 namespace {
@@ -39,6 +42,35 @@ ExportStatus writeMeshFrames(const AnimationExportJob& job, ExportProgress& prog
 }
 
 } // namespace
+
+std::vector<std::filesystem::path> filesReplacedBy(const AnimationExportJob& job)
+{
+  std::vector<std::filesystem::path> files;
+  std::error_code error;  // an unreadable path is not "existing": the export reports it
+  const auto keepIfFile = [&](const std::filesystem::path& path) {
+    if (std::filesystem::is_regular_file(path, error))
+      files.push_back(path);
+  };
+  switch (job.format) {
+  case AnimationFormat::Bvh:
+    keepIfFile(job.output);
+    break;
+  case AnimationFormat::ObjPlusPc2:
+    keepIfFile(job.output);
+    keepIfFile(MeshSequenceWriter::restObjPath(job.output));
+    break;
+  case AnimationFormat::ObjSequence:
+    if (!std::filesystem::is_directory(job.output, error))
+      break;
+    for (long long n = 1; n <= job.frameCount(); ++n) {  // the writer's NAME_0001.obj numbering
+      char number[32];
+      std::snprintf(number, sizeof number, "_%04lld.obj", n);
+      keepIfFile(job.output / (job.meshName + number));
+    }
+    break;
+  }
+  return files;
+}
 
 ExportOutcome runAnimationExport(const AnimationExportJob& job, ExportProgress& progress)
 {

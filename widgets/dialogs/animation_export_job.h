@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace mocap::ui {
 
@@ -61,6 +62,11 @@ struct ExportOutcome
   ExportStatus status = ExportStatus::Done;
   std::string error;  ///< why it failed (Failed only)
 };
+
+/// The existing files `job` would replace (the BVH or PC2 file, the rest OBJ beside a cache, the
+/// sequence's NAME_0001.obj… in its folder), so the dialog can ask first. O(#frames) file checks
+/// for an OBJ sequence, else O(1).
+[[nodiscard]] std::vector<std::filesystem::path> filesReplacedBy(const AnimationExportJob& job);
 
 /// Runs `job`, checking `progress.cancel` between frames. A cancelled or failed export leaves no
 /// output behind (MeshSequenceWriter removes what it wrote; the BVH is written atomically at the

@@ -13,11 +13,13 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStandardItemModel>
+#include <QStringList>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
@@ -101,6 +103,11 @@ void ExportDialog::buildLayout()
   outputLabel->setBuddy(m_path);
   form->addRow(outputLabel, pathRow);
 
+  m_range = new QComboBox(this);
+  m_range->setObjectName(QStringLiteral("frameRangeChoice"));
+  auto* rangeLabel = new QLabel(tr("R&ange:"), this);
+  rangeLabel->setBuddy(m_range);
+  form->addRow(rangeLabel, m_range);
   auto* rangeRow = new QHBoxLayout;
   m_first = new QSpinBox(this);
   m_last = new QSpinBox(this);
@@ -134,6 +141,9 @@ void ExportDialog::buildLayout()
   m_poll->setInterval(50);
   connect(m_poll, &QTimer::timeout, this, &ExportDialog::updateProgress);
   connect(m_format, qOverload<int>(&QComboBox::currentIndexChanged), this, &ExportDialog::onFormatChanged);
+  connect(m_range, qOverload<int>(&QComboBox::currentIndexChanged), this, &ExportDialog::onRangeChoiceChanged);
+  connect(m_first, &QSpinBox::valueChanged, this, &ExportDialog::onFramesEdited);
+  connect(m_last, &QSpinBox::valueChanged, this, &ExportDialog::onFramesEdited);
   connect(m_browse, &QPushButton::clicked, this, &ExportDialog::browse);
   connect(m_export, &QPushButton::clicked, this, &ExportDialog::startExport);
   connect(m_cancel, &QPushButton::clicked, this, &ExportDialog::reject);
@@ -149,10 +159,18 @@ void ExportDialog::restoreSettings()
   const qint64 last = first + std::max<Eigen::Index>(take.frameCount(), 1) - 1;
   for (QSpinBox* box : {m_first, m_last})
     box->setRange(clampToInt(first), clampToInt(last));
-  if (m_document.hasRange())
-    setFrameRange(first + m_document.rangeFirst(), first + m_document.rangeLast());
-  else
-    setFrameRange(first, last);
+  // The whole take by default: a range once Shift-dragged on the curves is offered, not assumed.
+  {
+    const QSignalBlocker blocker(m_range);
+    m_range->addItem(tr("Whole take (%1–%2)").arg(first).arg(last), static_cast<int>(RangeChoice::WholeTake));
+    if (m_document.hasRange())
+      m_range->addItem(tr("Selected range (%1–%2)")
+                           .arg(first + m_document.rangeFirst())
+                           .arg(first + m_document.rangeLast()),
+                       static_cast<int>(RangeChoice::SelectedRange));
+    m_range->addItem(tr("Custom"), static_cast<int>(RangeChoice::Custom));
+  }
+  setRangeChoice(RangeChoice::WholeTake);
 
   const QFileInfo takeFile(m_document.filePath());
   const QString folder =
@@ -209,8 +227,91 @@ void ExportDialog::setOutputPath(const QString& path)
 
 void ExportDialog::setFrameRange(qint64 first, qint64 last)
 {
-  m_first->setValue(clampToInt(first));
-  m_last->setValue(clampToInt(last));
+  {
+    const QSignalBlocker blockFirst(m_first);
+    const QSignalBlocker blockLast(m_last);
+    m_first->setValue(clampToInt(first));
+    m_last->setValue(clampToInt(last));
+  }
+  onFramesEdited();
+}
+
+qint64 ExportDialog::firstFrame() const
+{
+  return m_first->value();
+}
+
+qint64 ExportDialog::lastFrame() const
+{
+  return m_last->value();
+}
+
+ExportDialog::RangeChoice ExportDialog::rangeChoice() const
+{
+  return static_cast<RangeChoice>(m_range->currentData().toInt());
+}
+
+void ExportDialog::setRangeChoice(RangeChoice choice)
+{
+  const int index = m_range->findData(static_cast<int>(choice));
+  if (index < 0)
+    return;  // no selected range to offer
+  if (index == m_range->currentIndex())
+    onRangeChoiceChanged();
+  else
+    m_range->setCurrentIndex(index);
+}
+
+void ExportDialog::onRangeChoiceChanged()
+{
+  const Take& take = m_document.take();
+  const qint64 first = take.firstFrame();
+  const QSignalBlocker blockFirst(m_first);
+  const QSignalBlocker blockLast(m_last);
+  switch (rangeChoice()) {
+  case RangeChoice::WholeTake:
+    m_first->setValue(clampToInt(first));
+    m_last->setValue(clampToInt(first + std::max<Eigen::Index>(take.frameCount(), 1) - 1));
+    break;
+  case RangeChoice::SelectedRange:
+    m_first->setValue(clampToInt(first + m_document.rangeFirst()));
+    m_last->setValue(clampToInt(first + m_document.rangeLast()));
+    break;
+  case RangeChoice::Custom:
+    break;  // the frames as they are, for the user to type
+  }
+}
+
+void ExportDialog::onFramesEdited()
+{
+  // Typed frames that are not the chosen range make it a custom one.
+  const Take& take = m_document.take();
+  const qint64 first = take.firstFrame();
+  RangeChoice choice = RangeChoice::Custom;
+  if (m_first->value() == first && m_last->value() == first + std::max<Eigen::Index>(take.frameCount(), 1) - 1)
+    choice = RangeChoice::WholeTake;
+  else if (m_document.hasRange() && m_first->value() == first + m_document.rangeFirst() &&
+           m_last->value() == first + m_document.rangeLast())
+    choice = RangeChoice::SelectedRange;
+  const QSignalBlocker blocker(m_range);
+  m_range->setCurrentIndex(std::max(0, m_range->findData(static_cast<int>(choice))));
+}
+
+bool ExportDialog::confirmReplacing(const AnimationExportJob& job)
+{
+  const std::vector<std::filesystem::path> replaced = filesReplacedBy(job);
+  if (replaced.empty())
+    return true;
+  constexpr std::size_t kListed = 8;
+  QStringList names;
+  for (std::size_t i = 0; i < std::min(replaced.size(), kListed); ++i)
+    names << QDir::toNativeSeparators(QString::fromStdString(replaced[i].string()));
+  QString text = tr("Replace %n existing file(s)?", nullptr, static_cast<int>(replaced.size())) +
+                 QStringLiteral("\n\n") + names.join(QLatin1Char('\n'));
+  if (replaced.size() > kListed)
+    text += QLatin1Char('\n') + tr("… and %n more", nullptr, static_cast<int>(replaced.size() - kListed));
+  return QMessageBox::question(this, tr("Replace Files?"), text, QMessageBox::Yes | QMessageBox::No,
+                               QMessageBox::No) == QMessageBox::Yes;
 }
 
 void ExportDialog::onFormatChanged()
@@ -282,6 +383,10 @@ bool ExportDialog::startExport()
     job = makeJob();
   } catch (const std::exception& e) {  // e.g. the take changed under the range
     showStatus(QString::fromStdString(e.what()), true);
+    return false;
+  }
+  if (!confirmReplacing(job)) {
+    showStatus(tr("Not exported: the existing files are kept."), false);
     return false;
   }
   QSettings settings;
@@ -365,7 +470,7 @@ void ExportDialog::onFinished()
 
 void ExportDialog::setRunning(bool running)
 {
-  for (QWidget* input : std::initializer_list<QWidget*>{m_format, m_path, m_browse, m_first, m_last, m_export})
+  for (QWidget* input : std::initializer_list<QWidget*>{m_format, m_path, m_browse, m_range, m_first, m_last, m_export})
     input->setEnabled(!running);
   m_cancel->setText(running ? tr("Cancel") : tr("Close"));
   if (running)

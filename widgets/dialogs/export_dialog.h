@@ -20,8 +20,10 @@ namespace mocap::ui {
 class TakeDocument;
 
 /// File ▸ Export Animation: the markers as BVH, or the deformed face mesh as an OBJ sequence or an
-/// OBJ + PC2 point cache, over a frame range. The export runs on a worker thread with a progress
-/// bar and Cancel; a cancelled or failed export leaves no file. The last folder and format are
+/// OBJ + PC2 point cache, over a frame range: the whole take unless the user picks the range
+/// selected on the curves or types one. Existing files are replaced only after the user agreed
+/// (a question listing them). The export runs on a worker thread with a progress bar and Cancel;
+/// a cancelled or failed export leaves no file. The last folder and format are
 /// remembered (QSettings "export/folder", "export/format"). The mesh formats need a source of
 /// deformed frames (setMeshSource); without one they are disabled.
 class ExportDialog final : public QDialog
@@ -44,6 +46,18 @@ public:
   void setOutputPath(const QString& path);
   /// Frame numbers as the take counts them (from Take::firstFrame()), both included.
   void setFrameRange(qint64 first, qint64 last);
+  [[nodiscard]] qint64 firstFrame() const;
+  [[nodiscard]] qint64 lastFrame() const;
+  /// What the Range box offers: the whole take (the default), the range selected on the curves
+  /// (only when there is one), or the frames typed in.
+  enum class RangeChoice
+  {
+    WholeTake,
+    SelectedRange,
+    Custom,
+  };
+  [[nodiscard]] RangeChoice rangeChoice() const;
+  void setRangeChoice(RangeChoice choice);
 
   /// Checks the settings and starts the export on a worker thread (the Export button). Returns
   /// false, with the reason in the dialog, when they cannot be used.
@@ -71,6 +85,10 @@ private:
   void onFinished();
   void updateProgress();
   void setRunning(bool running);
+  void onRangeChoiceChanged();
+  void onFramesEdited();
+  /// True when the user agreed to replace what `job` would overwrite (or nothing would be).
+  [[nodiscard]] bool confirmReplacing(const AnimationExportJob& job);
   void showStatus(const QString& text, bool error);
   [[nodiscard]] QString checkSettings() const;
   [[nodiscard]] AnimationExportJob makeJob() const;
@@ -84,6 +102,7 @@ private:
   QComboBox* m_format = nullptr;
   QLineEdit* m_path = nullptr;
   QPushButton* m_browse = nullptr;
+  QComboBox* m_range = nullptr;
   QSpinBox* m_first = nullptr;
   QSpinBox* m_last = nullptr;
   QProgressBar* m_progressBar = nullptr;

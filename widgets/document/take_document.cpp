@@ -1,6 +1,7 @@
 #include "document/take_document.h"
 
 #include "mocap/error.h"
+#include "mocap/head_stabilization.h"
 #include "mocap/take_io.h"
 
 #include <algorithm>
@@ -57,6 +58,7 @@ void TakeDocument::setTake(Take take, const QString& path)
   m_preview.clear();
   m_flags.clear();
   m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
+  guessReferenceMarkers();
   emit takeReset();
   emit historyChanged();
   emit filePathChanged(m_filePath);
@@ -123,6 +125,8 @@ std::string TakeDocument::renameMarker(Eigen::Index marker, std::string label)
   std::string old = m_take.label(marker);
   m_take.setLabel(marker, std::move(label));
   emit markerRenamed(marker);
+  if (isReferenceMarker(marker))
+    emit referenceMarkersChanged();  // the set's labels, as the panels show them, changed
   return old;
 }
 
@@ -177,8 +181,11 @@ MarkerColumn TakeDocument::removeMarker(Eigen::Index marker)
   m_selection = std::move(selection);
   m_preview.clear();  // previews and flags index markers; the panels recompute them
   m_flags.clear();
+  const bool referenceChanged = referenceMarkerRemoved(marker, column.label);
   emit markersChanged();
   emit selectionChanged();
+  if (referenceChanged)
+    emit referenceMarkersChanged();
   return column;
 }
 
@@ -191,13 +198,18 @@ void TakeDocument::insertMarker(Eigen::Index marker, MarkerColumn column)
       ++m;
   m_preview.clear();
   m_flags.clear();
+  const bool referenceChanged = referenceMarkerInserted(marker);
   emit markersChanged();
   emit selectionChanged();
+  if (referenceChanged)
+    emit referenceMarkersChanged();
 }
 
 Take TakeDocument::exchangeTake(Take take)
 {
+  const std::vector<std::string> reference = referenceLabels();
   std::swap(m_take, take);
+  const bool referenceChanged = mapReferenceLabels(reference);
   m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
   m_selection.clear();
   m_preview.clear();
@@ -206,6 +218,8 @@ Take TakeDocument::exchangeTake(Take take)
   emit markersChanged();
   emit selectionChanged();
   emit currentFrameChanged(m_currentFrame);
+  if (referenceChanged)
+    emit referenceMarkersChanged();
   return take;
 }
 
@@ -240,6 +254,99 @@ void TakeDocument::showAllMarkers()
 Eigen::Index TakeDocument::hiddenCount() const
 {
   return static_cast<Eigen::Index>(std::count(m_hidden.begin(), m_hidden.end(), true));
+}
+
+} // namespace mocap::ui
+
+namespace mocap::ui {
+
+// Reference markers: one set per take, kept on the same labels through marker edits.
+
+void TakeDocument::guessReferenceMarkers()
+{
+  m_referenceMarkers = guessHeadReferenceMarkers(m_take);
+  m_removedReferenceLabels.clear();
+}
+
+std::vector<std::string> TakeDocument::referenceLabels() const
+{
+  std::vector<std::string> labels;
+  for (const Eigen::Index m : m_referenceMarkers)
+    labels.push_back(m_take.label(m));
+  return labels;
+}
+
+bool TakeDocument::isReferenceMarker(Eigen::Index marker) const
+{
+  return std::binary_search(m_referenceMarkers.begin(), m_referenceMarkers.end(), marker);
+}
+
+std::vector<Eigen::Index> TakeDocument::setReferenceMarkers(std::vector<Eigen::Index> markers)
+{
+  markers.erase(std::remove_if(markers.begin(), markers.end(),
+                               [this](Eigen::Index m) { return m < 0 || m >= m_take.markerCount(); }),
+                markers.end());
+  std::sort(markers.begin(), markers.end());
+  markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
+  std::swap(markers, m_referenceMarkers);
+  if (markers != m_referenceMarkers)
+    emit referenceMarkersChanged();
+  return markers;
+}
+
+bool TakeDocument::referenceMarkerRemoved(Eigen::Index marker, const std::string& label)
+{
+  bool changed = false;
+  std::vector<Eigen::Index> kept;
+  for (const Eigen::Index m : m_referenceMarkers) {
+    if (m == marker) {
+      changed = true;
+      m_removedReferenceLabels.push_back(label);
+      continue;
+    }
+    kept.push_back(m > marker ? m - 1 : m);
+    changed = changed || m > marker;
+  }
+  m_referenceMarkers = std::move(kept);
+  return changed;
+}
+
+bool TakeDocument::referenceMarkerInserted(Eigen::Index marker)
+{
+  bool changed = false;
+  for (Eigen::Index& m : m_referenceMarkers)
+    if (m >= marker) {
+      ++m;
+      changed = true;
+    }
+  const auto removed =
+      std::find(m_removedReferenceLabels.begin(), m_removedReferenceLabels.end(), m_take.label(marker));
+  if (removed != m_removedReferenceLabels.end()) {
+    m_removedReferenceLabels.erase(removed);
+    m_referenceMarkers.insert(std::upper_bound(m_referenceMarkers.begin(), m_referenceMarkers.end(), marker), marker);
+    changed = true;
+  }
+  return changed;
+}
+
+bool TakeDocument::mapReferenceLabels(const std::vector<std::string>& labels)
+{
+  // Labels the new take lacks are remembered, so exchanging back (undo) finds them again.
+  std::vector<std::string> wanted = labels;
+  wanted.insert(wanted.end(), m_removedReferenceLabels.begin(), m_removedReferenceLabels.end());
+  m_removedReferenceLabels.clear();
+  std::vector<Eigen::Index> markers;
+  for (const std::string& label : wanted) {
+    if (const auto m = m_take.markerIndex(label))
+      markers.push_back(*m);
+    else
+      m_removedReferenceLabels.push_back(label);
+  }
+  std::sort(markers.begin(), markers.end());
+  markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
+  const bool changed = markers != m_referenceMarkers;
+  m_referenceMarkers = std::move(markers);
+  return changed;
 }
 
 } // namespace mocap::ui

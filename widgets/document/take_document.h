@@ -89,6 +89,18 @@ public:
   [[nodiscard]] const std::vector<std::pair<Eigen::Index, Eigen::Index>>& flags() const { return m_flags; }
   void setFlags(std::vector<std::pair<Eigen::Index, Eigen::Index>> flags);
 
+  /// The head-mounted reference markers of the take (indices, ascending): the one set that head
+  /// stabilisation, the head-stabilised view, layout planning and the face mesh use. Guessed
+  /// once when a take is set (guessHeadReferenceMarkers: root*/head* labels, else the most rigid
+  /// cluster); removing, inserting or exchanging markers keeps it on the same labels.
+  [[nodiscard]] const std::vector<Eigen::Index>& referenceMarkers() const { return m_referenceMarkers; }
+  /// The reference markers' labels, in marker order.
+  [[nodiscard]] std::vector<std::string> referenceLabels() const;
+  [[nodiscard]] bool isReferenceMarker(Eigen::Index marker) const;
+  /// Replaces the set (for SetReferenceMarkersCommand only; out-of-range indices are dropped)
+  /// and returns the old one. Emits referenceMarkersChanged when it changed.
+  std::vector<Eigen::Index> setReferenceMarkers(std::vector<Eigen::Index> markers);
+
   /// The frame range selected on the curves, [first, last]; empty when first > last.
   [[nodiscard]] Eigen::Index rangeFirst() const { return m_rangeFirst; }
   [[nodiscard]] Eigen::Index rangeLast() const { return m_rangeLast; }
@@ -114,6 +126,9 @@ signals:
   void flagsChanged();
   /// The take's processing history changed (a step applied or undone, a take opened).
   void historyChanged();
+  /// The reference markers changed: an edit of the set, a marker of it removed, inserted or renamed,
+  /// or indices shifted (emitted after markersChanged).
+  void referenceMarkersChanged();
 
 private:
   Take m_take;
@@ -128,6 +143,17 @@ private:
   std::vector<std::pair<Eigen::Index, Eigen::Index>> m_flags;
   Eigen::Index m_rangeFirst = 0;
   Eigen::Index m_rangeLast = -1;
+
+  // Reference markers (see referenceMarkers()).
+  void guessReferenceMarkers();
+  // Each returns whether the set changed; the caller emits referenceMarkersChanged after markersChanged.
+  bool referenceMarkerRemoved(Eigen::Index marker, const std::string& label);
+  bool referenceMarkerInserted(Eigen::Index marker);
+  bool mapReferenceLabels(const std::vector<std::string>& labels);
+  std::vector<Eigen::Index> m_referenceMarkers;
+  /// Labels of reference markers removed from the take: a marker inserted with one of them (the
+  /// undo of the removal) rejoins the set.
+  std::vector<std::string> m_removedReferenceLabels;
 };
 
 } // namespace mocap::ui

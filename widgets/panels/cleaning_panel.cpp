@@ -193,6 +193,8 @@ void CleaningPanel::waitForPreview()
 
 std::vector<SamplePatch> CleaningPanel::onlySelected(std::vector<SamplePatch> patches) const
 {
+  if (const CleaningStep* step = currentStep(); step && step->wholeTake())
+    return patches;  // all markers, all frames, or nothing
   if (m_rangeOnly->isChecked()) {
     // No range selected: nothing to change rather than everything.
     for (SamplePatch& patch : patches)

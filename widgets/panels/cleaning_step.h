@@ -42,6 +42,9 @@ public:
     (void)take;
     return result.patches;
   }
+  /// True for a step that changes the whole take or nothing (head stabilisation is a change of
+  /// coordinates): the panel's "selected markers only" and "frame range only" do not apply to it.
+  [[nodiscard]] virtual bool wholeTake() const { return false; }
   /// Shows a finished result (e.g. a list of flags to review). Called on the UI thread.
   virtual void showResult(const StepResult& result) { (void)result; }
 

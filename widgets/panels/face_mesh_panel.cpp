@@ -2,13 +2,13 @@
 
 #include "commands/rebind_marker_command.h"
 #include "document/take_document.h"
+#include "panels/reference_markers_row.h"
 #include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
 
 #include "mocap/file_io.h"
-#include "mocap/head_stabilization.h"
 #include "mocap/marker_set.h"
 #include "mocap/mesh_io.h"
 
@@ -21,7 +21,6 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSettings>
@@ -64,15 +63,6 @@ QString nameText(std::string_view name)
   return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
 }
 
-std::vector<std::string> splitLabels(const QString& text)
-{
-  std::vector<std::string> labels;
-  for (const QString& label : text.split(QLatin1Char(','), Qt::SkipEmptyParts))
-    if (!label.trimmed().isEmpty())
-      labels.push_back(label.trimmed().toStdString());
-  return labels;
-}
-
 } // namespace
 
 FaceMeshPanel::FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent)
@@ -85,6 +75,7 @@ FaceMeshPanel::FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget
   connect(m_scene, &FaceMeshScene::rigChanged, this, &FaceMeshPanel::updateRigStatus);
   connect(m_scene, &FaceMeshScene::deformed, this, [this] { m_timing->setText(timingText()); });
   connect(&document, &TakeDocument::takeReset, this, &FaceMeshPanel::onTakeReset);
+  connect(&document, &TakeDocument::referenceMarkersChanged, this, &FaceMeshPanel::applyStabilization);
   connect(&document, &TakeDocument::selectionChanged, this, &FaceMeshPanel::onSelectionChanged);
   view.viewport()->installEventFilter(this);  // vertex clicks, before the view selects markers
   onTakeReset();
@@ -142,11 +133,11 @@ void FaceMeshPanel::buildUi()
 
   auto* rigBox = new QGroupBox(tr("Deformation"), this);
   auto* form = new QFormLayout(rigBox);
-  m_stabilization = new QLineEdit(rigBox);
-  m_stabilization->setToolTip(tr("Head-mounted reference markers (comma separated) whose motion is removed before "
-                                 "binding and deforming; empty: none"));
-  connect(m_stabilization, &QLineEdit::editingFinished, this, &FaceMeshPanel::applyStabilization);
-  form->addRow(tr("Head markers:"), m_stabilization);
+  m_reference = new ReferenceMarkersRow(
+      m_document, tr("Head motion is removed with these markers before binding and deforming; they are not bound."),
+      rigBox);
+  connect(m_reference, &ReferenceMarkersRow::editRequested, this, &FaceMeshPanel::editReferenceMarkersRequested);
+  form->addRow(tr("Reference markers:"), m_reference);
   m_neutral = new QSpinBox(rigBox);
   m_neutral->setToolTip(tr("The frame whose marker positions are the rest mesh"));
   connect(m_neutral, &QSpinBox::valueChanged, this, &FaceMeshPanel::applyOptions);
@@ -304,7 +295,7 @@ void FaceMeshPanel::applyOptions()
 
 void FaceMeshPanel::applyStabilization()
 {
-  const std::vector<std::string> labels = splitLabels(m_stabilization->text());
+  const std::vector<std::string> labels = m_document.referenceLabels();
   if (labels != m_scene->stabilization())
     m_scene->setStabilization(labels);
 }
@@ -318,10 +309,6 @@ void FaceMeshPanel::onTakeReset()
   m_neutral->setRange(first - 1, first + static_cast<int>(std::max<Eigen::Index>(take.frameCount(), 1)) - 1);
   m_neutral->setSpecialValueText(tr("first complete"));
   m_neutral->setValue(first - 1);
-  QStringList reference;
-  for (const Eigen::Index m : guessHeadReferenceMarkers(take))
-    reference << QString::fromStdString(take.label(m));
-  m_stabilization->setText(reference.join(QLatin1Char(',')));
   m_pendingLabel.clear();
   m_undo->clear();  // binding edits were for the old take's markers
   m_scene->setOptions(optionsFromUi());
@@ -385,12 +372,10 @@ QString FaceMeshPanel::autoBind()
     for (const Eigen::Index m : m_document.selection())
       labels.push_back(take.label(m));
   } else if (!take.empty()) {
-    const std::vector<std::string> reference = splitLabels(m_stabilization->text());
     const Eigen::Index frame = mostCompleteFrame(take);
     for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
       const std::string& label = take.label(m);
-      if (take.isValid(frame, m) && !isUnlabelledLabel(label) &&
-          std::find(reference.begin(), reference.end(), label) == reference.end())
+      if (take.isValid(frame, m) && !isUnlabelledLabel(label) && !m_document.isReferenceMarker(m))
         labels.push_back(label);
     }
   }

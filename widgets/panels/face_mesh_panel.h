@@ -12,7 +12,6 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
-class QLineEdit;
 class QSlider;
 class QSpinBox;
 class QStackedWidget;
@@ -23,6 +22,7 @@ namespace mocap::ui {
 
 class FaceMeshScene;
 class MarkerView3d;
+class ReferenceMarkersRow;
 class TakeDocument;
 
 /// The Face mesh dock: load a mesh (OBJ/PLY) and a marker binding (JSON), bind automatically or
@@ -48,8 +48,8 @@ public:
   [[nodiscard]] const QString& meshPath() const { return m_meshPath; }
   QString loadBinding(const QString& path);
   QString saveBinding(const QString& path);
-  /// Binds the selected markers (three or more) or else every labelled marker that is not a
-  /// head reference and is present in the most complete frame.
+  /// Binds the selected markers (three or more) or else every labelled marker that is not one of
+  /// the take's reference markers and is present in the most complete frame.
   QString autoBind();
 
   /// Picking mode: with one marker selected, a click on the mesh binds it to the vertex under the
@@ -60,6 +60,10 @@ public:
   [[nodiscard]] const std::string& pendingLabel() const { return m_pendingLabel; }
   /// The per-frame deform time shown, e.g. "RBF 0.012 ms".
   [[nodiscard]] QString timingText() const;
+
+signals:
+  /// The user asked to edit the reference markers (the main window opens the one editor).
+  void editReferenceMarkersRequested();
 
 protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
@@ -94,7 +98,7 @@ private:
   QLabel* m_meshLabel = nullptr;
   QLabel* m_bindingLabel = nullptr;
   QToolButton* m_pick = nullptr;
-  QLineEdit* m_stabilization = nullptr;
+  ReferenceMarkersRow* m_reference = nullptr;
   QSpinBox* m_neutral = nullptr;
   QComboBox* m_method = nullptr;
   QStackedWidget* m_methodPages = nullptr;

@@ -2,17 +2,19 @@
 
 #include "panels/cleaning_step.h"
 
-class QLineEdit;
 class QSpinBox;
 
 namespace mocap::ui {
 
+class ReferenceMarkersRow;
 class TakeDocument;
 
-/// Head stabilisation (mocap::estimateHeadMotion + removeHeadMotion) as a cleaning step: the
-/// head-mounted reference markers (default: labels starting "root"/"head", or the selection) and
-/// the reference frame. Apply moves every marker into the head frame as one undoable edit, so
-/// neighbour-based fills and smoothing then see facial motion only.
+/// Head stabilisation (mocap::estimateHeadMotion + removeHeadMotion) as a cleaning step, with the
+/// take's reference markers (TakeDocument::referenceMarkers, shown read only with a link to
+/// their editor) and the reference frame. Apply moves every marker in every frame into the head
+/// frame as one undoable edit, so neighbour-based fills and smoothing then see facial motion
+/// only. It is a change of coordinates of the whole take: "selected markers only" and "selected
+/// frame range only" do not apply to it (wholeTake()).
 class HeadStabilisationStep final : public CleaningStep
 {
   Q_OBJECT
@@ -22,15 +24,15 @@ public:
 
   [[nodiscard]] QString title() const override;
   [[nodiscard]] StepJob job() const override;
-  /// Replaces the reference markers by these labels (comma separated).
-  void setReferenceLabels(const QString& labels);
+  [[nodiscard]] bool wholeTake() const override { return true; }
+
+signals:
+  /// The user asked to edit the reference markers (the main window opens the one editor).
+  void editReferenceMarkersRequested();
 
 private:
-  void guessReference();
-  void useSelection();
-
   TakeDocument& m_document;
-  QLineEdit* m_labels = nullptr;
+  ReferenceMarkersRow* m_reference = nullptr;
   QSpinBox* m_frame = nullptr;
 };
 

@@ -1,6 +1,7 @@
 #include "panels/layout_planning_panel.h"
 
 #include "document/take_document.h"
+#include "panels/reference_markers_row.h"
 #include "views/layout_error_plot.h"
 
 #include "mocap/file_io.h"
@@ -59,9 +60,10 @@ QStringList splitLabels(const QString& text)
   return labels;
 }
 
-// The worker: the open take (a copy) and the extra take files, planned as `mocap pfa` plans them.
-// Never throws: a failure is the result's error.
+// The worker: the open take (a copy) and the extra take files, planned as `mocap pfa --stabilize
+// REFERENCE` plans them. Never throws: a failure is the result's error.
 std::shared_ptr<LayoutPlanResult> planLayout(Take openTake, const LayoutPlanParameters& parameters,
+                                             const std::vector<std::string>& reference,
                                              const std::shared_ptr<std::atomic<bool>>& cancel,
                                              const std::shared_ptr<std::atomic<int>>& progress)
 {
@@ -72,10 +74,12 @@ std::shared_ptr<LayoutPlanResult> planLayout(Take openTake, const LayoutPlanPara
     for (const QString& path : parameters.extraTakes)
       takes.push_back(readTake(path.toStdString()));
     LayoutFramesOptions frameOptions;
-    frameOptions.stabilizeLabels = toStd(parameters.stabilizeLabels);
-    result->referenceLabels = frameOptions.stabilizeLabels;
-    frameOptions.markers =
-        defaultPlannedLabels(takes.front(), toStd(parameters.stabilizeLabels + parameters.excludeLabels));
+    frameOptions.stabilizeLabels = reference;
+    result->referenceLabels = reference;
+    std::vector<std::string> excluded = reference;
+    for (const std::string& label : toStd(parameters.excludeLabels))
+      excluded.push_back(label);
+    frameOptions.markers = defaultPlannedLabels(takes.front(), excluded);
     result->frames = collectLayoutFrames(takes, frameOptions);
     if (parameters.pairsFile.isEmpty()) {
       result->symmetry = detectLayoutPairs(result->frames).symmetry;
@@ -220,15 +224,18 @@ void LayoutPlanningPanel::buildForm()
       m_pairs->setText(path);
   });
 
-  m_stabilize = new QLineEdit(this);
-  m_stabilize->setPlaceholderText(tr("e.g. root-1, root-2, root-3"));
-  m_stabilize->setToolTip(tr("Head reference markers, comma-separated: head motion is removed with them "
-                             "and they are not planned over"));
-  form->addRow(tr("Reference markers:"), m_stabilize);
+  m_reference = new ReferenceMarkersRow(
+      m_document, tr("Head motion is removed with these markers before planning, and they are not planned over "
+                     "(a reduced capture still needs them)."),
+      this);
+  connect(m_reference, &ReferenceMarkersRow::editRequested, this,
+          &LayoutPlanningPanel::editReferenceMarkersRequested);
+  form->addRow(tr("Reference markers:"), m_reference);
 
   m_exclude = new QLineEdit(this);
   m_exclude->setPlaceholderText(tr("none"));
-  m_exclude->setToolTip(tr("Markers left out of the plan, comma-separated (unlabelled points always are)"));
+  m_exclude->setToolTip(
+      tr("Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)"));
   form->addRow(tr("Leave out:"), m_exclude);
   layout->addLayout(form);
 
@@ -297,7 +304,6 @@ LayoutPlanParameters LayoutPlanningPanel::parameters() const
   p.maxK = m_maxK->value();
   p.seed = m_seed->value();
   p.pairsFile = m_pairs->text().trimmed();
-  p.stabilizeLabels = splitLabels(m_stabilize->text());
   p.excludeLabels = splitLabels(m_exclude->text());
   return p;
 }
@@ -313,7 +319,6 @@ void LayoutPlanningPanel::setParameters(const LayoutPlanParameters& p)
   m_maxK->setValue(p.maxK);
   m_seed->setValue(p.seed);
   m_pairs->setText(p.pairsFile);
-  m_stabilize->setText(p.stabilizeLabels.join(QStringLiteral(", ")));
   m_exclude->setText(p.excludeLabels.join(QStringLiteral(", ")));
 }
 
@@ -329,7 +334,6 @@ void LayoutPlanningPanel::readSettings()
   p.maxK = settings.value(kGroup + QStringLiteral("maxK"), p.maxK).toInt();
   p.seed = settings.value(kGroup + QStringLiteral("seed"), p.seed).toInt();
   p.pairsFile = settings.value(kGroup + QStringLiteral("pairsFile")).toString();
-  p.stabilizeLabels = settings.value(kGroup + QStringLiteral("stabilize")).toStringList();
   p.excludeLabels = settings.value(kGroup + QStringLiteral("exclude")).toStringList();
   p.extraTakes = settings.value(kGroup + QStringLiteral("extraTakes")).toStringList();
   setParameters(p);
@@ -348,7 +352,6 @@ void LayoutPlanningPanel::writeSettings() const
   settings.setValue(kGroup + QStringLiteral("maxK"), p.maxK);
   settings.setValue(kGroup + QStringLiteral("seed"), p.seed);
   settings.setValue(kGroup + QStringLiteral("pairsFile"), p.pairsFile);
-  settings.setValue(kGroup + QStringLiteral("stabilize"), p.stabilizeLabels);
   settings.setValue(kGroup + QStringLiteral("exclude"), p.excludeLabels);
   settings.setValue(kGroup + QStringLiteral("extraTakes"), p.extraTakes);
 }
@@ -365,9 +368,12 @@ QString LayoutPlanningPanel::run()
     problem = tr("The smallest cluster count (%1) is larger than the largest (%2).").arg(p.minK).arg(p.maxK);
   else if (!p.pairsFile.isEmpty() && !QFileInfo(p.pairsFile).isFile())
     problem = tr("The pairs file %1 does not exist.").arg(p.pairsFile);
-  for (const QString& label : p.stabilizeLabels + p.excludeLabels)
+  for (const QString& label : p.excludeLabels)
     if (problem.isEmpty() && !m_document.take().markerIndex(label.toStdString()))
       problem = tr("The open take has no marker '%1'.").arg(label);
+  const std::vector<std::string> reference = m_document.referenceLabels();
+  if (problem.isEmpty() && !reference.empty() && reference.size() < 3)
+    problem = tr("Head motion needs at least three reference markers (Marker ▸ Reference Markers…).");
   if (!problem.isEmpty()) {
     showError(problem);
     return problem;
@@ -381,7 +387,8 @@ QString LayoutPlanningPanel::run()
   m_status->setText(tr("Planning…"));
   setIdle(false);
   m_progressTimer->start();
-  m_watcher.setFuture(QtConcurrent::run(planLayout, m_document.take(), p, m_cancelFlag, m_progressValue));
+  m_watcher.setFuture(
+      QtConcurrent::run(planLayout, m_document.take(), p, reference, m_cancelFlag, m_progressValue));
   return {};
 }
 
@@ -418,7 +425,7 @@ void LayoutPlanningPanel::setIdle(bool idle)
   m_exportSet->setEnabled(exportable);
   m_exportTake->setEnabled(exportable);
   for (QWidget* w : std::initializer_list<QWidget*>{m_takes, m_addTake, m_removeTake, m_method, m_variance,
-                                                    m_restarts, m_minK, m_maxK, m_seed, m_pairs, m_stabilize,
+                                                    m_restarts, m_minK, m_maxK, m_seed, m_pairs, m_reference,
                                                     m_exclude})
     w->setEnabled(idle);
 }
@@ -446,13 +453,16 @@ void LayoutPlanningPanel::onFinished()
     m_result = std::move(result);
     const LayoutPlan& plan = m_result->plan;
     const LayoutFrames& frames = m_result->frames;
-    m_status->setText(tr("%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.")
+    m_status->setText(tr("%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.")
                           .arg(frames.markerCount())
                           .arg(static_cast<qlonglong>(frames.frames.rows()))
                           .arg(m_result->symmetry.pairs().size())
                           .arg(m_result->pairSource)
                           .arg(static_cast<qlonglong>(plan.pcaComponents))
-                          .arg(static_cast<qlonglong>(plan.recommendedSize)));
+                          .arg(static_cast<qlonglong>(plan.recommendedSize))
+                          .arg(frames.stabilized ? tr("head motion removed with %n reference marker(s)", nullptr,
+                                                      static_cast<int>(m_result->referenceLabels.size()))
+                                                 : tr("head motion not removed: no reference markers")));
     m_status->setToolTip(tr("%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; "
                             "recommended by the %3")
                              .arg(static_cast<qlonglong>(frames.droppedFrames))

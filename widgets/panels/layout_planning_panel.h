@@ -28,6 +28,7 @@ class QTimer;
 namespace mocap::ui {
 
 class LayoutErrorPlot;
+class ReferenceMarkersRow;
 class TakeDocument;
 
 /// What the layout planning panel runs with (remembered in QSettings).
@@ -41,8 +42,8 @@ struct LayoutPlanParameters
   int maxK = 0;
   int seed = 1;
   QString pairsFile;       ///< empty: pairs detected automatically
-  QStringList stabilizeLabels;  ///< head reference markers; also left out of the plan
-  QStringList excludeLabels;    ///< markers left out of the plan (unlabelled points always are)
+  QStringList excludeLabels;  ///< markers left out of the plan (unlabelled points and the take's
+                              ///< reference markers always are)
 };
 
 /// A finished (or failed) planning run: everything the panel shows and exports.
@@ -60,7 +61,9 @@ struct LayoutPlanResult
 /// plus optional take files, method and parameters; Run plans on a worker thread with progress and
 /// Cancel; the error-vs-marker-count plot; the selected size's markers with their pair frequencies,
 /// sent to the 3D view as a kept/dropped highlight; export of the reduced label list, marker-set
-/// file and take. Planning reads a copy of the take, so editing meanwhile is safe.
+/// file and take. Head motion is removed with the take's reference markers
+/// (TakeDocument::referenceMarkers), which are not planned over, as `mocap pfa --stabilize` does.
+/// Planning reads a copy of the take, so editing meanwhile is safe.
 class LayoutPlanningPanel final : public QWidget
 {
   Q_OBJECT
@@ -96,6 +99,8 @@ public:
   QString exportTake(const QString& path) const;
 
 signals:
+  /// The user asked to edit the reference markers (the main window opens the one editor).
+  void editReferenceMarkersRequested();
   /// One flag per marker of the open take: kept by the selected layout or not.
   void highlightChanged(const std::vector<bool>& kept);
   /// No layout to show any more (a new take, a failed or new run).
@@ -125,7 +130,7 @@ private:
   QSpinBox* m_maxK = nullptr;
   QSpinBox* m_seed = nullptr;
   QLineEdit* m_pairs = nullptr;
-  QLineEdit* m_stabilize = nullptr;
+  ReferenceMarkersRow* m_reference = nullptr;
   QLineEdit* m_exclude = nullptr;
   QPushButton* m_run = nullptr;
   QPushButton* m_cancel = nullptr;

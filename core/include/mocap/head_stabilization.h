@@ -46,9 +46,32 @@ void removeHeadMotion(Take& take, const HeadMotion& motion);
 /// O(#frames · #markers).
 void restoreHeadMotion(Take& take, const HeadMotion& motion);
 
-/// The markers whose labels start with "root" or "head" (any case): the usual names of
-/// head-mounted reference markers, a default for the user to confirm. O(#markers).
+/// The head-mounted reference markers to propose (a default for the user to confirm): the markers
+/// whose labels start with "root" or "head" (any case), the usual names, when there are at least
+/// three; else mostRigidCluster(take). Empty when neither finds three. O(#markers) by label,
+/// else as mostRigidCluster.
 [[nodiscard]] std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take);
+
+struct RigidClusterOptions
+{
+  /// The largest strain of a distance between two markers of the cluster (its standard
+  /// deviation over its mean): head-mounted markers keep theirs to their capture noise (the
+  /// sample's root-1…4: at most 0.5 %, root-5 and root-6 up to 1.5 %), while a skin marker moving
+  /// a few millimetres on the face strains by several percent.
+  double tolerance = 0.01;
+  /// Frames sampled, evenly spaced over the take, to measure the distances on.
+  Eigen::Index maxFrames = 300;
+};
+
+/// The largest group of markers that moves as one rigid body: every pairwise distance keeps a
+/// strain (standard deviation / mean) ≤ tolerance over the sampled frames where both are valid. Only labelled
+/// markers (not isUnlabelledLabel) valid in at least half the frames are considered. Greedy:
+/// starts from the most rigid pair and adds the marker whose worst spread to the cluster is least,
+/// while it is within the tolerance. Returns marker indices in take order, or nothing when fewer
+/// than three markers qualify (three are needed for a pose). Not a paper equation: a default for
+/// takes whose head markers are not named. Throws InvalidArgument for tolerance ≤ 0 or
+/// maxFrames < 2. O(#markers² · #sampled frames + #markers³).
+[[nodiscard]] std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options = {});
 
 /// removeHeadMotion as patches (one per marker, every frame): the studio previews and undoes
 /// stabilisation like any other edit. Validity, residuals and states are kept: the samples move,
