@@ -15,6 +15,7 @@
 #include "panels/cleaning_panel.h"
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
+#include "panels/gap_list_panel.h"
 #include "panels/head_stabilisation_step.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/smoothing_step.h"
@@ -83,6 +84,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   createActions();
   m_status = new QLabel(this);
   statusBar()->addPermanentWidget(m_status);
+  connect(m_timeline, &ui::TimelineWidget::message, this, [this](const QString& text) {
+    statusBar()->showMessage(text, 5000);
+  });
 
   connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(m_document, &ui::TakeDocument::filePathChanged, this, &MainWindow::updateTitle);
@@ -164,6 +168,13 @@ void MainWindow::createDocks()
   layoutDock->setWidget(m_layoutPlanning);
   addDockWidget(Qt::RightDockWidgetArea, layoutDock);
   tabifyDockWidget(cleaningDock, layoutDock);
+  m_gapList = new ui::GapListPanel(*m_document, this);  // issue 13: every gap, filled one by one or checked
+  auto* gapDock = new QDockWidget(tr("Gaps"), this);
+  gapDock->setObjectName(QStringLiteral("gapListDock"));
+  gapDock->setWidget(m_gapList);
+  addDockWidget(Qt::RightDockWidgetArea, gapDock);
+  tabifyDockWidget(cleaningDock, gapDock);
+  connect(m_gapList, &ui::GapListPanel::frameRangeRequested, m_curves, &ui::CurveView::setVisibleRange);
   cleaningDock->raise();
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, m_view3d, &ui::MarkerView3d::setLayoutHighlight);
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
@@ -755,6 +766,18 @@ bool MainWindow::offerRecovery()
     statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 10000);
     return true;
   }
+  return false;
+}
+
+bool MainWindow::showDock(const QString& name)
+{
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    if (dock->objectName().compare(name, Qt::CaseInsensitive) == 0 ||
+        dock->windowTitle().compare(name, Qt::CaseInsensitive) == 0) {
+      dock->show();
+      dock->raise();
+      return true;
+    }
   return false;
 }
 
