@@ -276,7 +276,7 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
   if (role == Qt::ToolTipRole && index.column() == StateColumn && !row.note.isEmpty())
     return row.unfillable ? row.note : tr("Filled by: %1").arg(row.note);
   if (role == Qt::ToolTipRole && index.column() == MethodColumn && !row.filled)
-    return tr("Double-click to choose how this gap is filled");
+    return tr("%1 — double-click to choose how this gap is filled").arg(methodTitle(row.method));
   if (role == Qt::ForegroundRole) {
     if (row.filled)
       return QColor(Qt::gray);

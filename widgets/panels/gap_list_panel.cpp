@@ -174,6 +174,9 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   m_view->setContextMenuPolicy(Qt::CustomContextMenu);
   m_view->verticalHeader()->hide();
   m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // Method titles are long ("Distance-weighted neighbours (Lin–Ouhyoung)"): a fixed width, elided.
+  m_view->horizontalHeader()->setSectionResizeMode(GapTableModel::MethodColumn, QHeaderView::Interactive);
+  m_view->horizontalHeader()->resizeSection(GapTableModel::MethodColumn, 130);
   m_view->horizontalHeader()->setStretchLastSection(true);
   layout->addWidget(m_view, 1);
 
