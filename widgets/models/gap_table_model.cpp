@@ -291,14 +291,25 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
 
 QVariant GapTableModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
+  if (orientation == Qt::Horizontal && role == Qt::ToolTipRole) {
+    switch (section) {
+    case MarkerColumn: return tr("Check the gaps to fill together");
+    case FirstFrameColumn: return tr("First missing frame (the file's numbering)");
+    case LengthColumn: return tr("Length in frames");
+    case SecondsColumn: return tr("Length in seconds");
+    case MethodColumn: return tr("How the gap is filled (double-click to choose)");
+    case StateColumn: return tr("Open, previewed, filled, or why it cannot be filled");
+    default: return {};
+    }
+  }
   if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
     return QAbstractTableModel::headerData(section, orientation, role);
-  switch (section) {
+  switch (section) {  // short: the dock is narrow
   case MarkerColumn: return tr("Marker");
-  case FirstFrameColumn: return tr("First frame");
+  case FirstFrameColumn: return tr("First");
   case LengthColumn: return tr("Frames");
-  case SecondsColumn: return tr("Seconds");
-  case MethodColumn: return tr("Fill method");
+  case SecondsColumn: return tr("s");
+  case MethodColumn: return tr("Method");
   case StateColumn: return tr("State");
   default: return {};
   }

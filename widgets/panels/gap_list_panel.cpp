@@ -172,11 +172,12 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
                           QAbstractItemView::EditKeyPressed);
   m_view->setItemDelegateForColumn(GapTableModel::MethodColumn, new MethodDelegate(m_view));
   m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+  m_view->setWordWrap(false);  // one line per gap; long method names are elided
   m_view->verticalHeader()->hide();
   m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   // Method titles are long ("Distance-weighted neighbours (Lin–Ouhyoung)"): a fixed width, elided.
   m_view->horizontalHeader()->setSectionResizeMode(GapTableModel::MethodColumn, QHeaderView::Interactive);
-  m_view->horizontalHeader()->resizeSection(GapTableModel::MethodColumn, 130);
+  m_view->horizontalHeader()->resizeSection(GapTableModel::MethodColumn, 110);
   m_view->horizontalHeader()->setStretchLastSection(true);
   layout->addWidget(m_view, 1);
 
@@ -289,6 +290,7 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   connect(&document, &TakeDocument::markersChanged, this, &GapListPanel::takeChanged);
   connect(&document, &TakeDocument::samplesChanged, this, &GapListPanel::takeChanged);
   updateButtons();
+  m_status->setText(tr("Check gaps, or select rows, to preview their fill; double-click a gap to go to it."));
 }
 
 GapListPanel::~GapListPanel()

@@ -27,7 +27,7 @@
 namespace mocap::ui {
 
 namespace {
-const QColor kGapTickColor(40, 110, 225);  // apart from the flag red and the state colours
+const QColor kGapTickColor(55, 55, 65);  // "missing": apart from the flag red, the state colours and the style's blue
 } // namespace
 
 /// The frame slider with the marks of gaps, bad points and the selected range under the handle.
@@ -37,7 +37,7 @@ public:
   TimelineSlider(TakeDocument& document, QWidget* parent) : QSlider(Qt::Horizontal, parent), m_document(document)
   {
     setMinimumHeight(24);
-    setToolTip(TimelineWidget::tr("Blue: gaps, red: bad points under review — of the selected markers, or of all "
+    setToolTip(TimelineWidget::tr("Dark: gaps, red: bad points under review — of the selected markers, or of all "
                                   "when none is selected. Yellow: the selected frame range."));
     const auto stale = [this] {
       m_columns = -1;
