@@ -14,6 +14,7 @@
 #include "mocap/gaps.h"
 #include "mocap/sample_patch.h"
 
+#include <QElapsedTimer>
 #include <QLineEdit>
 #include <QCheckBox>
 #include <QSettings>
@@ -26,6 +27,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <iostream>
 #include <limits>
 #include <tuple>
 
@@ -357,6 +359,43 @@ TEST_F(GapList, PageDownSelectsTheMarkerOfTheNextGapAndSaysWhich)
   EXPECT_EQ(doc().selection(), std::vector<Eigen::Index>{own});
   EXPECT_FALSE(take.isValid(doc().currentFrame(), own));
   EXPECT_TRUE(take.isValid(doc().currentFrame() - 1, own));
+}
+
+} // namespace
+} // namespace mocap
+
+namespace mocap {
+namespace {
+
+// The timeline's marks on a 20 000-frame, 60-marker take: worked out once, then painting is per
+// pixel column. Prints the times (no threshold: machines differ).
+TEST(GapListTimeline, MarksOfALargeTakeAreWorkedOutOnce)
+{
+  std::vector<std::string> labels;
+  for (int m = 0; m < 60; ++m)
+    labels.push_back("M" + std::to_string(m));
+  Take take(labels, 20000, 100.0);
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      take.valid()(f, m) = (f + 37 * m) % 500 >= 20;  // a 20-frame gap every 500 frames
+  TakeDocument document;
+  document.setTake(std::move(take));
+  ui::TimelineWidget timeline(document);
+  timeline.resize(1200, 40);
+  timeline.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&timeline));
+  document.setFlags({{0, 5}});  // the marks are stale now: the next call works them out again
+  QElapsedTimer clock;
+  clock.start();
+  const auto spans = timeline.gapTickSpans();
+  const double first = static_cast<double>(clock.nsecsElapsed()) * 1e-6;
+  clock.restart();
+  for (int i = 0; i < 20; ++i)
+    timeline.repaint();
+  const double paint = static_cast<double>(clock.nsecsElapsed()) * 1e-6 / 20.0;
+  EXPECT_FALSE(spans.empty());
+  std::cout << "[ measured ] timeline marks of 20000 frames x 60 markers: " << first << " ms to work out, " << paint
+            << " ms per repaint\n";
 }
 
 } // namespace
