@@ -123,7 +123,10 @@ int main(int argc, char** argv)
   const QCommandLineOption binding(QStringLiteral("binding"),
                                    QStringLiteral("With --mesh, the marker binding (.json) to use."),
                                    QStringLiteral("FILE"));
-  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding});
+  const QCommandLineOption showDock(QStringLiteral("show-dock"),
+                                    QStringLiteral("Show and raise the dock NAME (title or object name, e.g. Gaps)."),
+                                    QStringLiteral("NAME"));
+  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding, showDock});
   parser.process(app);
 
   mocap::studio::MainWindow window;
@@ -146,6 +149,9 @@ int main(int argc, char** argv)
         return 1;
     }
   }
+  for (const QString& name : parser.values(showDock))
+    if (!window.showDock(name))
+      std::cerr << "mocap-studio: no dock named " << name.toStdString() << '\n';
   if (parser.isSet(select))
     window.selectLabels(parser.value(select).split(QLatin1Char(','), Qt::SkipEmptyParts));
   if (parser.isSet(frame)) {

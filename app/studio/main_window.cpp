@@ -18,6 +18,7 @@
 #include "panels/cleaning_panel.h"
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
+#include "panels/gap_list_panel.h"
 #include "panels/head_stabilisation_step.h"
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
@@ -102,6 +103,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   m_warningsButton->hide();
   connect(m_warningsButton, &QToolButton::clicked, this, &MainWindow::openReadWarnings);
   statusBar()->addPermanentWidget(m_warningsButton);
+  connect(m_timeline, &ui::TimelineWidget::message, this, [this](const QString& text) {
+    statusBar()->showMessage(text, 5000);
+  });
 
   connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(m_document, &ui::TakeDocument::filePathChanged, this, &MainWindow::updateTitle);
@@ -182,6 +186,13 @@ void MainWindow::createDocks()
   layoutDock->setWidget(m_layoutPlanning);
   addDockWidget(Qt::RightDockWidgetArea, layoutDock);
   tabifyDockWidget(cleaningDock, layoutDock);
+  m_gapList = new ui::GapListPanel(*m_document, this);  // issue 13: every gap, filled one by one or checked
+  auto* gapDock = new QDockWidget(tr("Gaps"), this);
+  gapDock->setObjectName(QStringLiteral("gapListDock"));
+  gapDock->setWidget(m_gapList);
+  addDockWidget(Qt::RightDockWidgetArea, gapDock);
+  tabifyDockWidget(cleaningDock, gapDock);
+  connect(m_gapList, &ui::GapListPanel::frameRangeRequested, m_curves, &ui::CurveView::setVisibleRange);
   cleaningDock->raise();
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, m_view3d, &ui::MarkerView3d::setLayoutHighlight);
   // Every panel shows the take's reference markers and sends the user to the one editor.
@@ -893,6 +904,18 @@ void MainWindow::restoreSession(const QVariantMap& session)
   m_faceMeshDock->show();
   if (!error.isEmpty())
     statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error), 10000);
+}
+
+bool MainWindow::showDock(const QString& name)
+{
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
+    if (dock->objectName().compare(name, Qt::CaseInsensitive) == 0 ||
+        dock->windowTitle().compare(name, Qt::CaseInsensitive) == 0) {
+      dock->show();
+      dock->raise();
+      return true;
+    }
+  return false;
 }
 
 int MainWindow::selectLabels(const QStringList& labels)

@@ -23,6 +23,7 @@ class Autosave;
 struct Preferences;
 class CleaningPanel;
 class FaceMeshPanel;
+class GapListPanel;
 class CurveView;
 class LayoutPlanningPanel;
 class MarkerTableModel;
@@ -55,6 +56,9 @@ public:
   [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
   [[nodiscard]] ui::LayoutPlanningPanel* layoutPlanningPanel() const { return m_layoutPlanning; }
   [[nodiscard]] ui::FaceMeshPanel* faceMeshPanel() const { return m_faceMesh; }
+  [[nodiscard]] ui::GapListPanel* gapListPanel() const { return m_gapList; }
+  /// Shows and raises the dock with this object name or title (any case); false when none has it.
+  bool showDock(const QString& name);
   /// Loads a face mesh (and its binding when given) into the Face Mesh dock and shows it.
   /// Returns the error message, empty on success.
   QString loadFaceMesh(const QString& meshPath, const QString& bindingPath = {});
@@ -127,6 +131,7 @@ private:
   ui::CleaningPanel* m_cleaning = nullptr;
   ui::LayoutPlanningPanel* m_layoutPlanning = nullptr;
   ui::FaceMeshPanel* m_faceMesh = nullptr;
+  ui::GapListPanel* m_gapList = nullptr;
   QDockWidget* m_faceMeshDock = nullptr;
   ui::MarkerTableModel* m_tableModel = nullptr;
   QSortFilterProxyModel* m_proxy = nullptr;

@@ -1,6 +1,7 @@
 #include "views/timeline_widget.h"
 
 #include "document/take_document.h"
+#include "views/sample_colors.h"
 
 #include "mocap/gaps.h"
 
@@ -11,12 +12,150 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QStyle>
+#include <QStyleOptionSlider>
+#include <QStylePainter>
 #include <QTimer>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <tuple>
 
 namespace mocap::ui {
+
+namespace {
+const QColor kGapTickColor(55, 55, 65);  // "missing": apart from the flag red, the state colours and the style's blue
+} // namespace
+
+/// The frame slider with the marks of gaps, bad points and the selected range under the handle.
+class TimelineSlider final : public QSlider
+{
+public:
+  TimelineSlider(TakeDocument& document, QWidget* parent) : QSlider(Qt::Horizontal, parent), m_document(document)
+  {
+    setMinimumHeight(24);
+    setToolTip(TimelineWidget::tr("Dark: gaps, red: bad points under review — of the selected markers, or of all "
+                                  "when none is selected. Yellow: the selected frame range."));
+    const auto stale = [this] {
+      m_columns = -1;
+      update();
+    };
+    connect(&document, &TakeDocument::takeReset, this, stale);
+    connect(&document, &TakeDocument::samplesChanged, this, stale);
+    connect(&document, &TakeDocument::markersChanged, this, stale);
+    connect(&document, &TakeDocument::selectionChanged, this, stale);
+    connect(&document, &TakeDocument::flagsChanged, this, stale);
+    connect(&document, &TakeDocument::rangeChanged, this, qOverload<>(&QWidget::update));
+  }
+
+  /// x of frame `frame`, where the handle's centre is when the slider is at it.
+  [[nodiscard]] int xOf(Eigen::Index frame) const
+  {
+    const auto [left, span] = groove();
+    return left + QStyle::sliderPositionFromValue(minimum(), maximum(), static_cast<int>(frame), span);
+  }
+  [[nodiscard]] std::vector<std::pair<int, int>> gapSpans() const { return spans(ticks().gaps); }
+  [[nodiscard]] std::vector<std::pair<int, int>> flagSpans() const { return spans(ticks().flags); }
+
+protected:
+  void paintEvent(QPaintEvent*) override
+  {
+    QStylePainter painter(this);
+    QStyleOptionSlider option;
+    initStyleOption(&option);
+    option.subControls = QStyle::SC_SliderGroove;
+    painter.drawComplexControl(QStyle::CC_Slider, option);
+    const int mid = height() / 2;
+    if (m_document.hasRange()) {
+      QColor band = colorScheme().selection;
+      band.setAlpha(110);
+      const int x0 = xOf(m_document.rangeFirst()), x1 = xOf(m_document.rangeLast());
+      painter.fillRect(QRect(x0, 1, std::max(x1 - x0 + 1, 2), height() - 2), band);
+    }
+    for (const auto& [x0, x1] : spans(ticks().gaps))
+      painter.fillRect(QRect(x0, 2, x1 - x0 + 1, mid - 2), kGapTickColor);
+    for (const auto& [x0, x1] : spans(ticks().flags))
+      painter.fillRect(QRect(x0, mid, std::max(x1 - x0 + 1, 2), height() - mid - 2), colorScheme().flagged);
+    option.subControls = QStyle::SC_SliderHandle;
+    painter.drawComplexControl(QStyle::CC_Slider, option);
+  }
+
+private:
+  struct Ticks
+  {
+    std::vector<std::uint8_t> gaps;  // one per pixel column of the groove's span
+    std::vector<std::uint8_t> flags;
+  };
+
+  /// The x of the first frame and the span in pixels to the last (as the style places the handle).
+  [[nodiscard]] std::pair<int, int> groove() const
+  {
+    QStyleOptionSlider option;
+    initStyleOption(&option);
+    const QRect grooveRect = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderGroove, this);
+    const QRect handle = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, this);
+    return {grooveRect.x() + handle.width() / 2, std::max(grooveRect.width() - handle.width(), 1)};
+  }
+
+  /// The marks per pixel column, recomputed when the take, selection, flags or width changed:
+  /// O(#frames · #markers + #flags + width).
+  const Ticks& ticks() const
+  {
+    const auto [left, span] = groove();
+    if (m_columns == span + 1 && m_left == left && m_maximum == maximum())
+      return m_ticks;
+    m_columns = span + 1;
+    m_left = left;
+    m_maximum = maximum();
+    m_ticks.gaps.assign(static_cast<std::size_t>(m_columns), 0);
+    m_ticks.flags.assign(static_cast<std::size_t>(m_columns), 0);
+    const Take& take = m_document.take();
+    const auto& selection = m_document.selection();
+    auto column = [&](Eigen::Index frame) {
+      return static_cast<std::size_t>(QStyle::sliderPositionFromValue(minimum(), maximum(), static_cast<int>(frame), span));
+    };
+    auto mark = [&](Eigen::Index m) {
+      for (const Gap& gap : findGaps(take.valid().col(m), m))
+        std::fill(m_ticks.gaps.begin() + static_cast<std::ptrdiff_t>(column(gap.firstFrame)),
+                  m_ticks.gaps.begin() + static_cast<std::ptrdiff_t>(column(gap.firstFrame + gap.length - 1)) + 1, 1);
+    };
+    if (selection.empty())
+      for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+        mark(m);
+    for (Eigen::Index m : selection)
+      mark(m);
+    for (const auto& [marker, frame] : m_document.flags())
+      if ((selection.empty() || std::binary_search(selection.begin(), selection.end(), marker)) && frame >= 0 &&
+          frame < take.frameCount())
+        m_ticks.flags[column(frame)] = 1;
+    return m_ticks;
+  }
+
+  /// Runs of marked columns as [x0, x1] in widget coordinates. O(width).
+  [[nodiscard]] std::vector<std::pair<int, int>> spans(const std::vector<std::uint8_t>& marks) const
+  {
+    std::vector<std::pair<int, int>> runs;
+    const int n = static_cast<int>(marks.size());
+    for (int c = 0; c < n; ++c) {
+      if (!marks[static_cast<std::size_t>(c)])
+        continue;
+      const int start = c;
+      while (c + 1 < n && marks[static_cast<std::size_t>(c + 1)])
+        ++c;
+      runs.emplace_back(m_left + start, m_left + c);
+    }
+    return runs;
+  }
+
+  TakeDocument& m_document;
+  mutable Ticks m_ticks;
+  mutable int m_columns = -1;  // −1: stale
+  mutable int m_left = 0;
+  mutable int m_maximum = 0;
+};
 
 TimelineWidget::TimelineWidget(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
 {
@@ -38,7 +177,7 @@ TimelineWidget::TimelineWidget(TakeDocument& document, QWidget* parent) : QWidge
   m_loop = makeButton(QStyle::SP_BrowserReload, tr("Loop"));
   m_loop->setCheckable(true);
   m_loop->setChecked(true);
-  m_slider = new QSlider(Qt::Horizontal, this);
+  m_slider = new TimelineSlider(document, this);
   layout->addWidget(m_slider, 1);
   m_frame = new QSpinBox(this);
   m_frame->setToolTip(tr("Frame"));
@@ -74,6 +213,11 @@ TimelineWidget::TimelineWidget(TakeDocument& document, QWidget* parent) : QWidge
     }
   });
   connect(&document, &TakeDocument::takeReset, this, &TimelineWidget::syncFromDocument);
+  connect(&document, &TakeDocument::markersChanged, this, &TimelineWidget::syncFromDocument);  // frames may change too
+  connect(&document, &TakeDocument::selectionChanged, this, [this] {
+    if (m_document.selection() != m_jumpSelection)
+      m_jumpSelection.clear();  // the user chose markers: jumps stay within them
+  });
   connect(&document, &TakeDocument::currentFrameChanged, this, &TimelineWidget::syncFromDocument);
   syncFromDocument();
 }
@@ -165,15 +309,42 @@ void TimelineWidget::jumpTo(Eigen::Index frame)
 void TimelineWidget::jumpToGap(int direction)
 {
   const Take& take = m_document.take();
+  const bool everyMarker = m_document.selection().empty() || m_document.selection() == m_jumpSelection;
   std::vector<Eigen::Index> markers = m_document.selection();
-  if (markers.empty())
+  if (everyMarker) {
+    markers.clear();
     for (Eigen::Index m = 0; m < take.markerCount(); ++m)
       markers.push_back(m);
-  std::vector<Eigen::Index> starts;
+  }
+  // Gaps in (frame, marker) order, from where the last jump went (or the current frame), so
+  // gaps of several markers that start on one frame are each visited. O(#frames · #markers).
+  const Eigen::Index current = m_document.currentFrame();
+  const Eigen::Index from =
+      current == m_jumpFrame ? m_jumpMarker : (direction > 0 ? std::numeric_limits<Eigen::Index>::max() : -1);
+  const auto here = std::make_tuple(current, from);
+  std::optional<Gap> best;
   for (Eigen::Index m : markers)
-    for (const Gap& gap : findGaps(take.valid().col(m), m))
-      starts.push_back(gap.firstFrame);
-  jumpTo(nearestInDirection(starts, m_document.currentFrame(), direction));
+    for (const Gap& gap : findGaps(take.valid().col(m), m)) {
+      const auto key = std::make_tuple(gap.firstFrame, gap.marker);
+      const bool ahead = direction > 0 ? key > here : key < here;
+      if (ahead && (!best || (direction > 0) == (key < std::make_tuple(best->firstFrame, best->marker))))
+        best = gap;
+    }
+  if (!best) {
+    emit message(direction > 0 ? tr("No gap after this frame") : tr("No gap before this frame"));
+    return;
+  }
+  jumpTo(best->firstFrame);
+  m_jumpFrame = best->firstFrame;
+  m_jumpMarker = best->marker;
+  if (everyMarker) {
+    m_jumpSelection = {best->marker};
+    m_document.setSelection(m_jumpSelection);
+  }
+  emit message(tr("Gap of %1 at frame %2 (%3 frames)")
+                   .arg(QString::fromStdString(take.label(best->marker)))
+                   .arg(static_cast<qlonglong>(take.firstFrame() + best->firstFrame))
+                   .arg(static_cast<qlonglong>(best->length)));
 }
 
 void TimelineWidget::jumpToFlag(int direction)
@@ -184,6 +355,21 @@ void TimelineWidget::jumpToFlag(int direction)
     if (selection.empty() || std::binary_search(selection.begin(), selection.end(), marker))
       frames.push_back(frame);
   jumpTo(nearestInDirection(frames, m_document.currentFrame(), direction));
+}
+
+int TimelineWidget::tickX(Eigen::Index frame) const
+{
+  return m_slider->xOf(frame);
+}
+
+std::vector<std::pair<int, int>> TimelineWidget::gapTickSpans() const
+{
+  return m_slider->gapSpans();
+}
+
+std::vector<std::pair<int, int>> TimelineWidget::flagTickSpans() const
+{
+  return m_slider->flagSpans();
 }
 
 } // namespace mocap::ui

@@ -1,0 +1,402 @@
+// The Gaps dock and the timeline's gap marks on the real sample take, through the studio window.
+#include "../core/test_support.h"
+
+#include "commands/apply_patches_command.h"
+#include "document/take_document.h"
+#include "main_window.h"
+#include "models/gap_table_model.h"
+#include "panels/cleaning_panel.h"
+#include "panels/gap_list_panel.h"
+#include "views/curve_view.h"
+#include "views/timeline_widget.h"
+
+#include "mocap/gap_fill.h"
+#include "mocap/gaps.h"
+#include "mocap/sample_patch.h"
+
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QCheckBox>
+#include <QSettings>
+#include <QSortFilterProxyModel>
+#include <QStatusBar>
+#include <QTableView>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <iostream>
+#include <limits>
+#include <tuple>
+
+namespace mocap {
+namespace {
+
+using studio::MainWindow;
+using ui::GapTableModel;
+using ui::TakeDocument;
+
+/// True when the two takes hold the same samples bit for bit.
+bool sameSamples(const Take& a, const Take& b)
+{
+  if (a.frameCount() != b.frameCount() || a.markerCount() != b.markerCount())
+    return false;
+  const auto n = static_cast<std::size_t>(a.frameCount() * a.markerCount());
+  return std::memcmp(a.positionData(), b.positionData(), n * 3 * sizeof(double)) == 0 &&
+         (a.valid() == b.valid()).all() &&
+         std::memcmp(a.residuals().data(), b.residuals().data(), n * sizeof(double)) == 0 &&
+         (a.states() == b.states()).all();
+}
+
+class GapList : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    QSettings().clear();
+    window = std::make_unique<MainWindow>();
+    window->resize(1280, 800);
+    window->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+    window->activateWindow();
+    (void)QTest::qWaitForWindowActive(window.get());
+    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    panel = window->gapListPanel();
+    ASSERT_NE(panel, nullptr);
+    model = panel->model();
+  }
+
+  TakeDocument& doc() { return window->document(); }
+
+  /// The model row of the gap of `label` that starts at file frame `fileFrame`.
+  int rowOf(const std::string& label, std::int64_t fileFrame)
+  {
+    const Take& take = doc().take();
+    return model->rowOf(*take.markerIndex(label), static_cast<Eigen::Index>(fileFrame - take.firstFrame()));
+  }
+
+  QString cell(int row, int column) { return model->index(row, column).data().toString(); }
+
+  std::unique_ptr<MainWindow> window;
+  ui::GapListPanel* panel = nullptr;
+  GapTableModel* model = nullptr;
+};
+
+TEST_F(GapList, ShowsExactlyTheGapsCoreFinds)
+{
+  const Take& take = doc().take();
+  const std::vector<Gap> gaps = findGaps(take);
+  ASSERT_EQ(model->rowCount(), static_cast<int>(gaps.size()));
+  ASSERT_GT(gaps.size(), 20u);
+  for (int row = 0; row < model->rowCount(); ++row) {
+    const Gap& gap = gaps[static_cast<std::size_t>(row)];
+    EXPECT_EQ(model->gapAt(row).marker, gap.marker);
+    EXPECT_EQ(model->gapAt(row).firstFrame, gap.firstFrame);
+    EXPECT_EQ(model->gapAt(row).length, gap.length);
+    EXPECT_EQ(model->stateAt(row), GapTableModel::FillState::Open);
+  }
+  // section5-1 loses frames 1723–1788 of the file.
+  const int row = rowOf("section5-1", 1723);
+  ASSERT_GE(row, 0);
+  EXPECT_EQ(cell(row, GapTableModel::MarkerColumn), "section5-1");
+  EXPECT_EQ(cell(row, GapTableModel::FirstFrameColumn), "1723");
+  EXPECT_EQ(cell(row, GapTableModel::LengthColumn), "66");
+  EXPECT_EQ(cell(row, GapTableModel::SecondsColumn), "0.66");
+  EXPECT_EQ(cell(row, GapTableModel::StateColumn), "open");
+  EXPECT_EQ(cell(row, GapTableModel::MethodColumn), GapTableModel::methodTitle(FillOptions{}.method));
+}
+
+TEST_F(GapList, SortingByLengthPutsTheLongestFirst)
+{
+  std::vector<Gap> gaps = findGaps(doc().take());
+  const Eigen::Index longest =
+      std::max_element(gaps.begin(), gaps.end(), [](const Gap& a, const Gap& b) { return a.length < b.length; })->length;
+  panel->view()->sortByColumn(GapTableModel::LengthColumn, Qt::DescendingOrder);
+  QAbstractItemModel* shown = panel->view()->model();
+  ASSERT_EQ(shown->rowCount(), static_cast<int>(gaps.size()));
+  EXPECT_EQ(shown->index(0, GapTableModel::LengthColumn).data().toLongLong(), longest);
+  for (int row = 1; row < shown->rowCount(); ++row)
+    EXPECT_GE(shown->index(row - 1, GapTableModel::LengthColumn).data().toLongLong(),
+              shown->index(row, GapTableModel::LengthColumn).data().toLongLong());
+}
+
+TEST_F(GapList, FiltersByLabelAndByOpenState)
+{
+  const Take& take = doc().take();
+  int section4 = 0;
+  for (const Gap& gap : findGaps(take))
+    section4 += take.label(gap.marker).rfind("section4-", 0) == 0 ? 1 : 0;
+  auto* filter = panel->findChild<QLineEdit*>(QStringLiteral("gapFilter"));
+  ASSERT_NE(filter, nullptr);
+  QTest::keyClicks(filter, QStringLiteral("Section4"));
+  QAbstractItemModel* shown = panel->view()->model();
+  EXPECT_EQ(shown->rowCount(), section4) << "case-insensitive label filter";
+  for (int row = 0; row < shown->rowCount(); ++row)
+    EXPECT_TRUE(shown->index(row, GapTableModel::MarkerColumn).data().toString().startsWith("section4-"));
+
+  // Fill one, which stays listed as filled until "only open gaps" hides it.
+  panel->fill(std::vector<int>{rowOf("section4-1", 822)});
+  panel->waitUntilIdle();
+  const int filledRow = rowOf("section4-1", 822);
+  EXPECT_EQ(filledRow, -1) << "no open gap there any more";
+  EXPECT_EQ(shown->rowCount(), section4);
+  auto* onlyOpen = panel->findChild<QCheckBox*>(QStringLiteral("onlyOpenGaps"));
+  ASSERT_NE(onlyOpen, nullptr);
+  onlyOpen->setChecked(true);
+  EXPECT_EQ(shown->rowCount(), section4 - 1);
+  filter->clear();
+  EXPECT_EQ(shown->rowCount(), static_cast<int>(findGaps(doc().take()).size()));
+}
+
+TEST_F(GapList, DoubleClickSelectsTheMarkerAndFramesTheGap)
+{
+  ASSERT_TRUE(window->showDock(QStringLiteral("Gaps")));
+  QTest::qWait(50);
+  const int row = rowOf("section5-1", 1723);
+  ASSERT_GE(row, 0);
+  QTableView* view = panel->view();
+  const QModelIndex index =
+      static_cast<QSortFilterProxyModel*>(view->model())->mapFromSource(model->index(row, GapTableModel::LengthColumn));
+  view->scrollTo(index);
+  const QPoint at = view->visualRect(index).center();
+  QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, at);
+  QTest::mouseDClick(view->viewport(), Qt::LeftButton, {}, at);
+  const Eigen::Index marker = *doc().take().markerIndex("section5-1");
+  EXPECT_EQ(doc().currentFrame(), 1722);
+  ASSERT_EQ(doc().selection(), std::vector<Eigen::Index>{marker});
+  const ui::CurveView* curves = window->curveView();
+  EXPECT_LT(curves->firstVisible(), 1722.0);
+  EXPECT_GT(curves->lastVisible(), 1722.0 + 65.0);
+  EXPECT_LT(curves->lastVisible() - curves->firstVisible(), 400.0) << "framed, not the whole take";
+}
+
+TEST_F(GapList, FillingTwoCheckedGapsIsOneUndoStepThatRestoresBitForBit)
+{
+  const Take before = doc().take();
+  const int a = rowOf("section3-1", 887), b = rowOf("section4-1", 822);
+  ASSERT_GE(a, 0);
+  ASSERT_GE(b, 0);
+  const Gap gapA = model->gapAt(a), gapB = model->gapAt(b);
+  model->setData(model->index(a, GapTableModel::MarkerColumn), Qt::Checked, Qt::CheckStateRole);
+  model->setData(model->index(b, GapTableModel::MarkerColumn), Qt::Checked, Qt::CheckStateRole);
+  EXPECT_EQ(panel->scopeRows().size(), 2u);
+  const int steps = doc().undoStack()->count();
+  panel->fill();
+  panel->waitUntilIdle();
+  ASSERT_EQ(doc().undoStack()->count(), steps + 1) << panel->statusText().toStdString();
+  EXPECT_EQ(doc().undoStack()->text(steps), QStringLiteral("Fill 2 gaps: %1").arg(GapTableModel::methodTitle(FillOptions{}.method)));
+  const Take& after = doc().take();
+  auto inGap = [](const Gap& gap, Eigen::Index m, Eigen::Index f) {
+    return m == gap.marker && f >= gap.firstFrame && f < gap.firstFrame + gap.length;
+  };
+  int changed = 0;
+  for (Eigen::Index m = 0; m < before.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < before.frameCount(); ++f) {
+      if (inGap(gapA, m, f) || inGap(gapB, m, f)) {
+        EXPECT_TRUE(after.isValid(f, m)) << m << " " << f;
+        EXPECT_EQ(after.state(f, m), SampleState::Filled);
+        ++changed;
+      } else {
+        ASSERT_EQ(after.isValid(f, m), before.isValid(f, m)) << m << " " << f;
+        ASSERT_EQ(after.position(f, m), before.position(f, m)) << m << " " << f;
+      }
+    }
+  EXPECT_EQ(changed, 33 + 42);
+  EXPECT_EQ(panel->statusText(), QStringLiteral("2 gaps filled, 75 samples"));
+  EXPECT_EQ(model->rowCount(), static_cast<int>(findGaps(before).size())) << "filled gaps stay listed";
+  EXPECT_TRUE(model->checkedRows().empty()) << "nothing left checked";
+  EXPECT_EQ(static_cast<int>(findGaps(after).size()), model->rowCount() - 2);
+  doc().undoStack()->undo();
+  EXPECT_TRUE(sameSamples(doc().take(), before));
+  EXPECT_EQ(model->stateAt(rowOf("section3-1", 887)), GapTableModel::FillState::Open);
+}
+
+TEST_F(GapList, EachGapIsFilledWithItsOwnMethod)
+{
+  const Take before = doc().take();
+  const int linear = rowOf("section4-2", 1106), spline = rowOf("section13-2", 877);
+  ASSERT_GE(linear, 0);
+  ASSERT_GE(spline, 0);
+  const Gap linearGap = model->gapAt(linear), splineGap = model->gapAt(spline);
+  ASSERT_TRUE(model->setData(model->index(linear, GapTableModel::MethodColumn), static_cast<int>(FillMethod::Linear)));
+  ASSERT_TRUE(model->setData(model->index(spline, GapTableModel::MethodColumn), static_cast<int>(FillMethod::Spline)));
+  EXPECT_EQ(cell(linear, GapTableModel::MethodColumn), GapTableModel::methodTitle(FillMethod::Linear));
+  model->setCheckedRows({linear, spline}, true);
+  panel->fill();
+  panel->waitUntilIdle();
+  ASSERT_EQ(doc().undoStack()->count(), 1) << panel->statusText().toStdString();
+  for (const auto& [gap, method] : {std::pair{linearGap, FillMethod::Linear}, std::pair{splineGap, FillMethod::Spline}}) {
+    FillOptions options;
+    options.method = method;
+    const FillResult core = fillGaps(before, std::vector<Gap>{gap}, options);
+    ASSERT_EQ(core.patches.size(), 1u);
+    const SamplePatch& patch = core.patches.front();
+    for (std::size_t i = 0; i < patch.size(); ++i)
+      EXPECT_EQ(doc().take().position(patch.frames[i], gap.marker),
+                Eigen::Vector3d(patch.positions.row(static_cast<Eigen::Index>(i)).transpose()))
+          << fillMethodName(method) << " frame " << patch.frames[i];
+  }
+}
+
+TEST_F(GapList, AGapThatCannotBeFilledSaysWhy)
+{
+  const Take& take = doc().take();
+  const int row = rowOf("Unlabeled1", 1);  // touches the first frame: nothing to interpolate from
+  ASSERT_GE(row, 0);
+  const Gap gap = model->gapAt(row);
+  ASSERT_TRUE(gap.atEdge);
+  model->setMethod(row, FillMethod::Linear);
+  FillOptions options;
+  options.method = FillMethod::Linear;
+  const FillResult core = fillGaps(take, std::vector<Gap>{gap}, options);
+  ASSERT_FALSE(core.gaps.front().filled);
+  panel->fill(std::vector<int>{row});
+  panel->waitUntilIdle();
+  EXPECT_EQ(doc().undoStack()->count(), 0) << "nothing filled, nothing pushed";
+  EXPECT_EQ(model->stateAt(row), GapTableModel::FillState::Unfillable);
+  EXPECT_EQ(cell(row, GapTableModel::StateColumn),
+            QStringLiteral("cannot fill: %1").arg(QString::fromStdString(core.gaps.front().reason)));
+  EXPECT_TRUE(panel->statusText().contains(QString::fromStdString(core.gaps.front().reason)));
+}
+
+TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
+{
+  window->cleaningPanel()->waitForPreview();  // its preview of the open take comes first, then ours replaces it
+  ASSERT_TRUE(window->showDock(QStringLiteral("gapListDock")));
+  QTest::qWait(50);
+  const Take before = doc().take();
+  const int row = rowOf("section5-1", 1723);
+  QTableView* view = panel->view();
+  view->selectRow(static_cast<QSortFilterProxyModel*>(view->model())->mapFromSource(model->index(row, 0)).row());
+  ASSERT_EQ(panel->scopeRows(), std::vector<int>{row});
+  panel->waitUntilIdle();
+  ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();
+  EXPECT_EQ(doc().preview().front().marker, model->gapAt(row).marker);
+  EXPECT_EQ(doc().preview().front().size(), 66u);
+  EXPECT_EQ(model->stateAt(row), GapTableModel::FillState::Previewed);
+  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap previewed, 66 samples"));
+  EXPECT_TRUE(sameSamples(doc().take(), before));
+  EXPECT_EQ(doc().undoStack()->count(), 0);
+  panel->fill();
+  panel->waitUntilIdle();
+  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 66 samples"));
+  EXPECT_EQ(doc().undoStack()->count(), 1);
+  EXPECT_TRUE(doc().preview().empty());
+}
+
+TEST_F(GapList, FollowsEditsOfTheTake)
+{
+  const int rows = model->rowCount();
+  const Eigen::Index marker = *doc().take().markerIndex("root-3");
+  // Make a gap of 20 frames, as Edit ▸ Delete Range does.
+  std::vector<SamplePatch> patches{deleteSamples(doc().take(), marker, 100, 119)};
+  doc().undoStack()->push(new ui::ApplyPatchesCommand(doc(), std::move(patches), QStringLiteral("Delete")));
+  ASSERT_EQ(model->rowCount(), rows + 1);
+  const int row = model->rowOf(marker, 100);
+  ASSERT_GE(row, 0);
+  EXPECT_EQ(model->gapAt(row).length, 20);
+  doc().undoStack()->undo();
+  EXPECT_EQ(model->rowCount(), rows);
+}
+
+TEST_F(GapList, TimelineMarksTheGapsAndBadPointsOfTheSelection)
+{
+  ui::TimelineWidget* timeline = window->timeline();
+  const Take& take = doc().take();
+  const Eigen::Index marker = *take.markerIndex("section3-1");  // one gap: file frames 887–919
+  doc().setSelection({marker});
+  const auto spans = timeline->gapTickSpans();
+  ASSERT_EQ(spans.size(), 1u);
+  EXPECT_EQ(spans.front(), std::make_pair(timeline->tickX(886), timeline->tickX(918)));
+  EXPECT_LT(timeline->tickX(886), timeline->tickX(918));
+  EXPECT_TRUE(timeline->flagTickSpans().empty());
+  doc().setFlags({{marker, 1500}, {marker + 1, 2500}});
+  ASSERT_EQ(timeline->flagTickSpans().size(), 1u) << "only the selected marker's bad point";
+  EXPECT_EQ(timeline->flagTickSpans().front(), std::make_pair(timeline->tickX(1500), timeline->tickX(1500)));
+  doc().setSelection({});
+  EXPECT_EQ(timeline->flagTickSpans().size(), 2u) << "every marker's when none is selected";
+  const auto all = timeline->gapTickSpans();
+  ASSERT_FALSE(all.empty());
+  EXPECT_EQ(all.front().first, timeline->tickX(0)) << "Unlabeled1 is missing from the first frame";
+}
+
+TEST_F(GapList, PageDownSelectsTheMarkerOfTheNextGapAndSaysWhich)
+{
+  const Take& take = doc().take();
+  const std::vector<Gap> gaps = findGaps(take);
+  auto nextAfter = [&](Eigen::Index frame, Eigen::Index marker) {
+    const Gap* best = nullptr;
+    for (const Gap& gap : gaps)
+      if (std::make_tuple(gap.firstFrame, gap.marker) > std::make_tuple(frame, marker) &&
+          (!best || std::make_tuple(gap.firstFrame, gap.marker) < std::make_tuple(best->firstFrame, best->marker)))
+        best = &gap;
+    return best ? *best : Gap{-1, -1, 0, false};
+  };
+  doc().setSelection({});
+  doc().setCurrentFrame(1700);
+  ASSERT_TRUE(QTest::qWaitForWindowActive(window.get()));
+  QTest::keyClick(window.get(), Qt::Key_PageDown);
+  const Gap first = nextAfter(1700, std::numeric_limits<Eigen::Index>::max());
+  EXPECT_EQ(doc().currentFrame(), first.firstFrame);
+  ASSERT_EQ(doc().selection(), std::vector<Eigen::Index>{first.marker});
+  EXPECT_EQ(window->statusBar()->currentMessage(),
+            QStringLiteral("Gap of %1 at frame %2 (%3 frames)")
+                .arg(QString::fromStdString(take.label(first.marker)))
+                .arg(take.firstFrame() + first.firstFrame)
+                .arg(first.length));
+  // The next PgDn goes on through every marker's gaps, not only the one it selected.
+  QTest::keyClick(window.get(), Qt::Key_PageDown);
+  const Gap second = nextAfter(first.firstFrame, first.marker);
+  EXPECT_NE(second.marker, first.marker) << "the sample has two markers' gaps in a row here";
+  EXPECT_EQ(doc().currentFrame(), second.firstFrame);
+  EXPECT_EQ(doc().selection(), std::vector<Eigen::Index>{second.marker});
+  // A marker the user selects keeps the jumps to its own gaps.
+  const Eigen::Index own = *take.markerIndex("Unlabeled1");
+  doc().setSelection({own});
+  QTest::keyClick(window.get(), Qt::Key_PageDown);
+  EXPECT_EQ(doc().selection(), std::vector<Eigen::Index>{own});
+  EXPECT_FALSE(take.isValid(doc().currentFrame(), own));
+  EXPECT_TRUE(take.isValid(doc().currentFrame() - 1, own));
+}
+
+} // namespace
+} // namespace mocap
+
+namespace mocap {
+namespace {
+
+// The timeline's marks on a 20 000-frame, 60-marker take: worked out once, then painting is per
+// pixel column. Prints the times (no threshold: machines differ).
+TEST(GapListTimeline, MarksOfALargeTakeAreWorkedOutOnce)
+{
+  std::vector<std::string> labels;
+  for (int m = 0; m < 60; ++m)
+    labels.push_back("M" + std::to_string(m));
+  Take take(labels, 20000, 100.0);
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      take.valid()(f, m) = (f + 37 * m) % 500 >= 20;  // a 20-frame gap every 500 frames
+  TakeDocument document;
+  document.setTake(std::move(take));
+  ui::TimelineWidget timeline(document);
+  timeline.resize(1200, 40);
+  timeline.show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(&timeline));
+  document.setFlags({{0, 5}});  // the marks are stale now: the next call works them out again
+  QElapsedTimer clock;
+  clock.start();
+  const auto spans = timeline.gapTickSpans();
+  const double first = static_cast<double>(clock.nsecsElapsed()) * 1e-6;
+  clock.restart();
+  for (int i = 0; i < 20; ++i)
+    timeline.repaint();
+  const double paint = static_cast<double>(clock.nsecsElapsed()) * 1e-6 / 20.0;
+  EXPECT_FALSE(spans.empty());
+  std::cout << "[ measured ] timeline marks of 20000 frames x 60 markers: " << first << " ms to work out, " << paint
+            << " ms per repaint\n";
+}
+
+} // namespace
+} // namespace mocap

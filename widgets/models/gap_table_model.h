@@ -1,0 +1,103 @@
+#pragma once
+
+#include "mocap/gap_fill.h"
+#include "mocap/gaps.h"
+
+#include <QAbstractTableModel>
+#include <QString>
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace mocap::ui {
+
+class TakeDocument;
+
+/// One row per gap of the take (exactly what findGaps returns), plus one per run of filled samples
+/// so a fill stays in the list, marked "filled", until it is undone. Each open gap carries the
+/// user's choices: a check box (MarkerColumn, Qt::CheckStateRole) and a fill method
+/// (MethodColumn, Qt::EditRole gives and takes the FillMethod as int); they are view state, not
+/// edits, and survive edits of other gaps (kept by marker label and first frame). The state column
+/// says open, previewed (the document's preview covers the gap), filled, or why the last fill
+/// computation could not fill it. Sort through a QSortFilterProxyModel on Qt::UserRole (raw
+/// values). Rebuilt on every change of the take: O(#frames · #markers).
+class GapTableModel final : public QAbstractTableModel
+{
+  Q_OBJECT
+
+public:
+  enum Column
+  {
+    MarkerColumn,
+    FirstFrameColumn,
+    LengthColumn,
+    SecondsColumn,
+    MethodColumn,
+    StateColumn,
+    ColumnCount
+  };
+  enum class FillState
+  {
+    Open,
+    Previewed,
+    Unfillable,
+    Filled,
+  };
+
+  explicit GapTableModel(TakeDocument& document, QObject* parent = nullptr);
+
+  [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
+  [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
+  [[nodiscard]] QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+  [[nodiscard]] QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+  [[nodiscard]] Qt::ItemFlags flags(const QModelIndex& index) const override;
+  bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+
+  /// The gap of `row` (for a filled row, the run of filled samples).
+  [[nodiscard]] const Gap& gapAt(int row) const;
+  [[nodiscard]] FillState stateAt(int row) const;
+  [[nodiscard]] FillMethod methodAt(int row) const;
+  [[nodiscard]] bool isChecked(int row) const;
+  void setChecked(int row, bool checked);
+  void setMethod(int row, FillMethod method);
+  /// Checks or unchecks every open gap among `rows`.
+  void setCheckedRows(const std::vector<int>& rows, bool checked);
+  /// The checked open gaps, in row order.
+  [[nodiscard]] std::vector<int> checkedRows() const;
+  /// The row of the open gap of `marker` that starts at `firstFrame`, or −1.
+  [[nodiscard]] int rowOf(Eigen::Index marker, Eigen::Index firstFrame) const;
+  /// What the last fill computation found for these gaps: the reason of each it could not fill,
+  /// the method (auto names its ingredients) of each it could.
+  void setReports(const std::vector<GapFillReport>& reports);
+
+  /// The method's name in the UI, e.g. "Rigid neighbours".
+  [[nodiscard]] static QString methodTitle(FillMethod method);
+
+signals:
+  /// A check box or a method changed: what a fill of the checked gaps would do changed.
+  void choicesChanged();
+
+private:
+  struct Row
+  {
+    Gap gap;
+    std::string label;
+    bool filled = false;  // a run of filled samples, not a gap
+    bool checked = false;
+    FillMethod method = FillOptions{}.method;
+    bool previewed = false;
+    bool unfillable = false;
+    QString note;  // the reason it cannot be filled, or what would fill it
+  };
+  void rebuild();
+  void updatePreviewed();
+  [[nodiscard]] std::vector<Row> currentRows() const;
+  [[nodiscard]] QString stateText(const Row& row) const;
+
+  TakeDocument& m_document;
+  std::vector<Row> m_rows;
+};
+
+} // namespace mocap::ui

@@ -1,0 +1,555 @@
+#include "panels/gap_list_panel.h"
+
+#include "commands/apply_patches_command.h"
+#include "document/take_document.h"
+#include "models/gap_table_model.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSortFilterProxyModel>
+#include <QStyledItemDelegate>
+#include <QTableView>
+#include <QTimer>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+
+namespace mocap::ui {
+
+namespace {
+
+const QString kLiveKey = QStringLiteral("gapList/livePreview");
+const QString kOnlyOpenKey = QStringLiteral("gapList/onlyOpen");
+
+/// The marker filter (case-insensitive substring of the label) and "only open gaps".
+class GapFilterProxy final : public QSortFilterProxyModel
+{
+public:
+  using QSortFilterProxyModel::QSortFilterProxyModel;
+
+  void setLabelFilter(const QString& text)
+  {
+    m_text = text.trimmed();
+    invalidateFilter();
+  }
+  void setOnlyOpen(bool on)
+  {
+    m_onlyOpen = on;
+    invalidateFilter();
+  }
+
+protected:
+  bool filterAcceptsRow(int row, const QModelIndex& parent) const override
+  {
+    const auto* gaps = static_cast<const GapTableModel*>(sourceModel());
+    if (m_onlyOpen && gaps->stateAt(row) == GapTableModel::FillState::Filled)
+      return false;
+    return m_text.isEmpty() ||
+           gaps->index(row, GapTableModel::MarkerColumn, parent).data().toString().contains(m_text, Qt::CaseInsensitive);
+  }
+
+private:
+  QString m_text;
+  bool m_onlyOpen = false;
+};
+
+/// A combo box of the fill methods for the method column; one choice commits it.
+class MethodDelegate final : public QStyledItemDelegate
+{
+public:
+  using QStyledItemDelegate::QStyledItemDelegate;
+
+  QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const override
+  {
+    auto* combo = new QComboBox(parent);
+    for (FillMethod method : allFillMethods())
+      combo->addItem(GapTableModel::methodTitle(method), static_cast<int>(method));
+    connect(combo, qOverload<int>(&QComboBox::activated), this, [this, combo] {
+      auto* self = const_cast<MethodDelegate*>(this);  // Qt's delegate signals are non-const
+      emit self->commitData(combo);
+      emit self->closeEditor(combo);
+    });
+    return combo;
+  }
+  void setEditorData(QWidget* editor, const QModelIndex& index) const override
+  {
+    auto* combo = static_cast<QComboBox*>(editor);
+    combo->setCurrentIndex(combo->findData(index.data(Qt::EditRole)));
+  }
+  void setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const override
+  {
+    model->setData(index, static_cast<QComboBox*>(editor)->currentData(), Qt::EditRole);
+  }
+};
+
+/// Fills each gap with its own method: one fillGaps call per method (pca models the take once
+/// per call), reports back in the order of `gaps`. Each gap is filled from the take's valid
+/// samples only, so grouping does not change any fill. Cost: that of fillGaps per method.
+FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::vector<FillMethod>& methods)
+{
+  FillResult result;
+  result.gaps.resize(gaps.size());
+  for (FillMethod method : allFillMethods()) {
+    std::vector<Gap> some;
+    std::vector<std::size_t> where;
+    for (std::size_t i = 0; i < gaps.size(); ++i)
+      if (methods[i] == method) {
+        some.push_back(gaps[i]);
+        where.push_back(i);
+      }
+    if (some.empty())
+      continue;
+    FillOptions options;
+    options.method = method;
+    try {
+      FillResult part = fillGaps(take, some, options);
+      for (std::size_t k = 0; k < where.size() && k < part.gaps.size(); ++k)
+        result.gaps[where[k]] = std::move(part.gaps[k]);
+      for (SamplePatch& patch : part.patches)
+        result.patches.push_back(std::move(patch));
+    } catch (const std::exception& e) {  // nothing may throw across the event loop
+      for (std::size_t k = 0; k < where.size(); ++k)
+        result.gaps[where[k]] = GapFillReport{some[k], false, {}, e.what()};
+    }
+  }
+  std::sort(result.patches.begin(), result.patches.end(), [](const SamplePatch& a, const SamplePatch& b) {
+    return std::make_pair(a.marker, a.frames.front()) < std::make_pair(b.marker, b.frames.front());
+  });
+  return result;
+}
+
+} // namespace
+
+bool GapListPanel::Request::operator==(const Request& other) const
+{
+  return methods == other.methods &&
+         std::equal(gaps.begin(), gaps.end(), other.gaps.begin(), other.gaps.end(), [](const Gap& a, const Gap& b) {
+           return a.marker == b.marker && a.firstFrame == b.firstFrame && a.length == b.length;
+         });
+}
+
+GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
+{
+  m_model = new GapTableModel(document, this);
+  auto* proxy = new GapFilterProxy(this);
+  m_proxy = proxy;
+  m_proxy->setSourceModel(m_model);
+  m_proxy->setSortRole(Qt::UserRole);
+
+  auto* layout = new QVBoxLayout(this);
+  auto* filters = new QHBoxLayout;
+  m_filter = new QLineEdit(this);
+  m_filter->setObjectName(QStringLiteral("gapFilter"));
+  m_filter->setPlaceholderText(tr("Filter markers…"));
+  m_filter->setClearButtonEnabled(true);
+  m_onlyOpen = new QCheckBox(tr("Only open gaps"), this);
+  m_onlyOpen->setObjectName(QStringLiteral("onlyOpenGaps"));
+  m_onlyOpen->setChecked(QSettings().value(kOnlyOpenKey, false).toBool());
+  proxy->setOnlyOpen(m_onlyOpen->isChecked());
+  filters->addWidget(m_filter, 1);
+  filters->addWidget(m_onlyOpen);
+  layout->addLayout(filters);
+
+  m_view = new QTableView(this);
+  m_view->setModel(m_proxy);
+  m_view->setSortingEnabled(true);
+  m_view->sortByColumn(-1, Qt::AscendingOrder);  // marker, then frame order until the user sorts
+  m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+  m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::SelectedClicked |
+                          QAbstractItemView::EditKeyPressed);
+  m_view->setItemDelegateForColumn(GapTableModel::MethodColumn, new MethodDelegate(m_view));
+  m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+  m_view->setWordWrap(false);  // one line per gap; long method names are elided
+  m_view->verticalHeader()->hide();
+  m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // Method titles are long ("Distance-weighted neighbours (Lin–Ouhyoung)"): a fixed width, elided.
+  m_view->horizontalHeader()->setSectionResizeMode(GapTableModel::MethodColumn, QHeaderView::Interactive);
+  m_view->horizontalHeader()->resizeSection(GapTableModel::MethodColumn, 110);
+  m_view->horizontalHeader()->setStretchLastSection(true);
+  layout->addWidget(m_view, 1);
+
+  auto* checks = new QHBoxLayout;
+  auto* checkShown = new QPushButton(tr("Check Shown"), this);
+  checkShown->setToolTip(tr("Check every open gap the filter shows"));
+  auto* uncheckAll = new QPushButton(tr("Uncheck All"), this);
+  m_live = new QCheckBox(tr("Live preview"), this);
+  m_live->setChecked(QSettings().value(kLiveKey, true).toBool());
+  m_live->setToolTip(tr("Show the fill of the checked (or selected) gaps over the views before filling"));
+  checks->addWidget(checkShown);
+  checks->addWidget(uncheckAll);
+  checks->addStretch();
+  checks->addWidget(m_live);
+  layout->addLayout(checks);
+
+  m_progress = new QProgressBar(this);
+  m_progress->setRange(0, 0);  // busy indicator: fillGaps reports no partial progress
+  m_progress->setVisible(false);
+  layout->addWidget(m_progress);
+  m_status = new QLabel(this);
+  m_status->setWordWrap(true);
+  layout->addWidget(m_status);
+  auto* buttons = new QHBoxLayout;
+  m_cancel = new QPushButton(tr("Cancel"), this);
+  m_cancel->setEnabled(false);
+  m_fill = new QPushButton(tr("Fill"), this);
+  m_fill->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
+  buttons->addStretch();
+  buttons->addWidget(m_cancel);
+  buttons->addWidget(m_fill);
+  layout->addLayout(buttons);
+
+  m_debounce = new QTimer(this);
+  m_debounce->setSingleShot(true);
+  m_debounce->setInterval(200);
+  connect(m_debounce, &QTimer::timeout, this, &GapListPanel::evaluate);
+  connect(&m_watcher, &QFutureWatcher<FillResult>::finished, this, &GapListPanel::onFinished);
+
+  connect(m_filter, &QLineEdit::textChanged, this, [proxy](const QString& text) { proxy->setLabelFilter(text); });
+  connect(m_onlyOpen, &QCheckBox::toggled, this, [proxy](bool on) {
+    proxy->setOnlyOpen(on);
+    QSettings().setValue(kOnlyOpenKey, on);
+  });
+  connect(m_live, &QCheckBox::toggled, this, [this](bool on) {
+    QSettings().setValue(kLiveKey, on);
+    if (on)
+      schedule();
+    else
+      clearOwnPreview();
+  });
+  connect(checkShown, &QPushButton::clicked, this, [this] {
+    std::vector<int> rows;
+    for (int r = 0; r < m_proxy->rowCount(); ++r)
+      rows.push_back(m_proxy->mapToSource(m_proxy->index(r, 0)).row());
+    m_model->setCheckedRows(rows, true);
+  });
+  connect(uncheckAll, &QPushButton::clicked, this, [this] { m_model->setCheckedRows(m_model->checkedRows(), false); });
+  connect(m_fill, &QPushButton::clicked, this, [this] { fill(); });
+  connect(m_cancel, &QPushButton::clicked, this, &GapListPanel::cancel);
+  connect(m_view, &QTableView::activated, this, [this](const QModelIndex& index) {
+    if (index.column() != GapTableModel::MethodColumn)  // there a double-click chooses the method
+      showGap(m_proxy->mapToSource(index).row());
+  });
+  connect(m_view, &QTableView::customContextMenuRequested, this, [this](const QPoint& position) {
+    const QModelIndex index = m_view->indexAt(position);
+    if (!index.isValid())
+      return;
+    const int row = m_proxy->mapToSource(index).row();
+    QMenu menu(this);
+    menu.addAction(tr("Show Gap"), this, [this, row] { showGap(row); });
+    QAction* fillOne = menu.addAction(tr("Fill This Gap"), this, [this, row] { fill(std::vector<int>{row}); });
+    fillOne->setEnabled(m_model->stateAt(row) != GapTableModel::FillState::Filled);
+    menu.exec(m_view->viewport()->mapToGlobal(position));
+  });
+  connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+    updateButtons();
+    if (m_model->checkedRows().empty())  // the selection is the scope
+      schedule();
+  });
+  connect(m_model, &GapTableModel::choicesChanged, this, [this] {
+    updateButtons();
+    schedule();
+  });
+  // A reset (gaps appeared or went) loses the view's selection: keep it by gap.
+  connect(m_model, &QAbstractItemModel::modelAboutToBeReset, this, [this] {
+    m_savedSelection.clear();
+    for (const QModelIndex& index : m_view->selectionModel()->selectedRows()) {
+      const Gap& gap = m_model->gapAt(m_proxy->mapToSource(index).row());
+      m_savedSelection.emplace_back(gap.marker, gap.firstFrame);
+    }
+  });
+  connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
+    QItemSelection selection;
+    for (const auto& [marker, first] : m_savedSelection) {
+      const int row = m_model->rowOf(marker, first);
+      if (row >= 0) {
+        const QModelIndex index = m_proxy->mapFromSource(m_model->index(row, 0));
+        selection.select(index, index.siblingAtColumn(GapTableModel::ColumnCount - 1));
+      }
+    }
+    m_view->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    updateButtons();
+  });
+  connect(&document, &TakeDocument::previewChanged, this, [this] {
+    if (!m_settingPreview)
+      m_ownsPreview = false;  // another panel's preview now
+  });
+  connect(&document, &TakeDocument::takeReset, this, &GapListPanel::takeChanged);
+  connect(&document, &TakeDocument::markersChanged, this, &GapListPanel::takeChanged);
+  connect(&document, &TakeDocument::samplesChanged, this, &GapListPanel::takeChanged);
+  updateButtons();
+  m_status->setText(tr("Check gaps, or select rows, to preview their fill; double-click a gap to go to it."));
+}
+
+GapListPanel::~GapListPanel()
+{
+  m_watcher.waitForFinished();  // the job holds its own take copy; just let it end
+}
+
+std::vector<int> GapListPanel::scopeRows() const
+{
+  std::vector<int> rows = m_model->checkedRows();
+  if (!rows.empty())
+    return rows;
+  for (const QModelIndex& index : m_view->selectionModel()->selectedRows()) {
+    const int row = m_proxy->mapToSource(index).row();
+    if (m_model->stateAt(row) != GapTableModel::FillState::Filled)
+      rows.push_back(row);
+  }
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
+GapListPanel::Request GapListPanel::requestOf(const std::vector<int>& rows) const
+{
+  Request request;
+  for (int row : rows) {
+    if (row < 0 || row >= m_model->rowCount() || m_model->stateAt(row) == GapTableModel::FillState::Filled)
+      continue;
+    request.gaps.push_back(m_model->gapAt(row));
+    request.methods.push_back(m_model->methodAt(row));
+  }
+  return request;
+}
+
+void GapListPanel::showGap(int row)
+{
+  if (row < 0 || row >= m_model->rowCount())
+    return;
+  const Gap gap = m_model->gapAt(row);  // a copy: the selection change may rebuild nothing, but be safe
+  const Eigen::Index margin = std::max<Eigen::Index>(10, gap.length / 2);
+  m_document.setSelection({gap.marker});
+  m_document.setCurrentFrame(gap.firstFrame);
+  emit frameRangeRequested(static_cast<double>(gap.firstFrame - margin),
+                           static_cast<double>(gap.firstFrame + gap.length - 1 + margin));
+}
+
+void GapListPanel::updateButtons()
+{
+  const bool checked = !m_model->checkedRows().empty();
+  const auto count = static_cast<int>(scopeRows().size());
+  m_fill->setEnabled(count > 0);
+  if (count == 0)
+    m_fill->setText(tr("Fill"));
+  else if (checked)
+    m_fill->setText(count == 1 ? tr("Fill 1 Checked Gap") : tr("Fill %1 Checked Gaps").arg(count));
+  else
+    m_fill->setText(count == 1 ? tr("Fill Selected Gap") : tr("Fill %1 Selected Gaps").arg(count));
+  m_fill->setToolTip(tr("Fill the checked gaps, or else the selected ones, each with its method (Ctrl+Return)"));
+}
+
+void GapListPanel::schedule()
+{
+  m_cancelled = false;
+  m_debounce->start();
+}
+
+void GapListPanel::takeChanged()
+{
+  ++m_takeGeneration;  // results computed on the old take are stale
+  clearOwnPreview();
+  updateButtons();
+  schedule();
+}
+
+void GapListPanel::showEvent(QShowEvent* event)
+{
+  QWidget::showEvent(event);
+  schedule();  // previews are made only while the list is shown
+}
+
+void GapListPanel::hideEvent(QHideEvent* event)
+{
+  QWidget::hideEvent(event);
+  clearOwnPreview();  // the views should not show a fill nobody can see the list of
+}
+
+bool GapListPanel::busy() const
+{
+  return m_computing || m_debounce->isActive() || m_pendingFill.has_value();
+}
+
+bool GapListPanel::resultMatches(const Request& request) const
+{
+  return m_resultTake == m_takeGeneration && m_resultRequest == request;
+}
+
+// Decides the next step: push a fill whose result is ready, show a ready preview, or compute.
+void GapListPanel::evaluate()
+{
+  if (m_computing)
+    return;  // onFinished evaluates again
+  if (m_cancelled || !m_document.hasTake()) {
+    m_pendingFill.reset();
+    return;
+  }
+  const bool filling = m_pendingFill.has_value();
+  if (!filling && !(m_live->isChecked() && isVisible())) {
+    clearOwnPreview();
+    return;
+  }
+  const Request wanted = filling ? *m_pendingFill : requestOf(scopeRows());
+  if (wanted.gaps.empty()) {
+    m_pendingFill.reset();
+    clearOwnPreview();
+    if (filling)
+      m_status->setText(tr("No open gap to fill"));
+    return;
+  }
+  if (!resultMatches(wanted)) {
+    launch(wanted);
+    return;
+  }
+  if (filling) {
+    m_pendingFill.reset();
+    push();
+  } else {
+    showPreview();
+  }
+}
+
+void GapListPanel::launch(const Request& request)
+{
+  m_running = request;
+  m_runningTake = m_takeGeneration;
+  m_computing = true;
+  m_progress->setVisible(true);
+  m_cancel->setEnabled(true);
+  m_status->setText(tr("Computing the fill of %n gap(s)…", nullptr, static_cast<int>(request.gaps.size())));
+  m_watcher.setFuture(QtConcurrent::run([take = m_document.take(), gaps = request.gaps, methods = request.methods] {
+    return fillEach(take, gaps, methods);
+  }));
+}
+
+void GapListPanel::onFinished()
+{
+  m_computing = false;
+  m_progress->setVisible(false);
+  m_cancel->setEnabled(false);
+  if (m_cancelled)
+    return;
+  if (m_runningTake == m_takeGeneration) {  // a valid result for its request, even if no longer wanted
+    m_result = m_watcher.result();
+    m_resultRequest = m_running;
+    m_resultTake = m_runningTake;
+    m_model->setReports(m_result.gaps);
+  }
+  evaluate();
+}
+
+void GapListPanel::cancel()
+{
+  m_cancelled = true;
+  m_pendingFill.reset();
+  m_debounce->stop();
+  m_progress->setVisible(false);
+  m_cancel->setEnabled(false);
+  m_status->setText(tr("Cancelled"));
+}
+
+void GapListPanel::fill(std::optional<std::vector<int>> rows)
+{
+  m_pendingFill = requestOf(rows ? *rows : scopeRows());
+  m_cancelled = false;
+  m_debounce->stop();
+  evaluate();
+}
+
+QString GapListPanel::countsText(bool applied) const
+{
+  const auto gaps = static_cast<int>(m_result.patches.size());
+  int samples = 0;
+  for (const SamplePatch& patch : m_result.patches)
+    samples += static_cast<int>(patch.size());
+  const auto unfilled = static_cast<int>(
+      std::count_if(m_result.gaps.begin(), m_result.gaps.end(), [](const GapFillReport& r) { return !r.filled; }));
+  // Singular and plural spelled out: the source language has no translation of its own.
+  QString text;
+  if (gaps > 0) {
+    text = applied ? (gaps == 1 ? tr("1 gap filled") : tr("%1 gaps filled").arg(gaps))
+                   : (gaps == 1 ? tr("1 gap previewed") : tr("%1 gaps previewed").arg(gaps));
+    text += samples == 1 ? tr(", 1 sample") : tr(", %1 samples").arg(samples);
+  }
+  if (unfilled > 0) {
+    const auto first = std::find_if(m_result.gaps.begin(), m_result.gaps.end(),
+                                    [](const GapFillReport& r) { return !r.filled; });
+    const QString reason = QString::fromStdString(first->reason);
+    const QString open = unfilled == 1 ? tr("1 gap cannot be filled: %1").arg(reason)
+                                       : tr("%1 gaps cannot be filled (the first: %2)").arg(unfilled).arg(reason);
+    text = text.isEmpty() ? open : tr("%1; %2").arg(text, open);
+  }
+  return text;
+}
+
+void GapListPanel::showPreview()
+{
+  m_status->setText(countsText(false));
+  if (m_result.patches.empty() && !m_ownsPreview)
+    return;
+  m_settingPreview = true;
+  m_document.setPreview(m_result.patches);
+  m_settingPreview = false;
+  m_ownsPreview = true;
+}
+
+void GapListPanel::clearOwnPreview()
+{
+  if (!m_ownsPreview)
+    return;
+  m_settingPreview = true;
+  m_document.clearPreview();
+  m_settingPreview = false;
+  m_ownsPreview = false;
+}
+
+void GapListPanel::push()
+{
+  clearOwnPreview();
+  const QString counts = countsText(true);
+  if (m_result.patches.empty()) {
+    m_status->setText(counts);
+    return;
+  }
+  QStringList methods;
+  for (std::size_t i = 0; i < m_result.gaps.size(); ++i)
+    if (m_result.gaps[i].filled && !methods.contains(GapTableModel::methodTitle(m_resultRequest.methods[i])))
+      methods << GapTableModel::methodTitle(m_resultRequest.methods[i]);
+  const auto gaps = static_cast<int>(m_result.patches.size());
+  const QString text = (gaps == 1 ? tr("Fill 1 gap: %1") : tr("Fill %1 gaps: %2").arg(gaps)).arg(methods.join(", "));
+  m_document.undoStack()->push(new ApplyPatchesCommand(m_document, m_result.patches, text));
+  m_status->setText(counts);  // after the push: the take change schedules a new preview
+}
+
+void GapListPanel::waitUntilIdle()
+{
+  while (busy()) {
+    if (m_computing)
+      m_watcher.waitForFinished();  // then processEvents delivers finished
+    else if (m_debounce->isActive()) {
+      m_debounce->stop();
+      evaluate();
+    }
+    QCoreApplication::processEvents();
+    if (!m_computing && !m_debounce->isActive() && m_pendingFill)
+      evaluate();
+  }
+}
+
+QString GapListPanel::statusText() const
+{
+  return m_status->text();
+}
+
+} // namespace mocap::ui
