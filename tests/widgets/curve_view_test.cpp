@@ -71,7 +71,7 @@ TEST(AxisTicks, NiceValuesForZeroToThirtySevenMillimetres)
   EXPECT_EQ(more.values.size(), 8u);  // 0, 5, ..., 35
   EXPECT_DOUBLE_EQ(more.values.back(), 35.0);
   // A sub-millimetre range: ticks at hundredths, shown with two decimals, exact multiples.
-  const ui::AxisTicks fine = ui::niceTicks(-0.013, 0.042, 5);
+  const ui::AxisTicks fine = ui::niceTicks(-0.013, 0.042, 6);
   EXPECT_DOUBLE_EQ(fine.step, 0.01);
   EXPECT_EQ(fine.decimals, 2);
   ASSERT_FALSE(fine.values.empty());
@@ -110,20 +110,20 @@ TEST(CurveView, HoverReadOutNamesMarkerFrameAndValue)
   view.resize(900, 420);
   view.setVisibleRange(400, 500);
   paintOnce(view);
-  const auto point = view.pointOf(2, 450, 1);
+  const auto point = view.pointOf(2, 450, 2);  // z: 20 mm apart from marker 0's
   ASSERT_TRUE(point);
   const QString text = view.readoutAt(*point);
   const Take& take = doc.take();
   EXPECT_TRUE(text.contains(QStringLiteral("marker2"))) << text.toStdString();
   EXPECT_TRUE(text.contains(QStringLiteral("frame 451"))) << text.toStdString();  // file numbering
-  const QString value = ui::formatLength(take.position(450, 2).y(), take.units(), LengthUnit::Millimetre);
+  const QString value = ui::formatLength(take.position(450, 2).z(), take.units(), LengthUnit::Millimetre);
   EXPECT_TRUE(text.contains(value + QStringLiteral(" mm"))) << text.toStdString();
   EXPECT_TRUE(text.contains(QStringLiteral("3.750 s"))) << text.toStdString();  // 450 / 120 Hz
   // In centimetres the same sample reads a tenth.
   view.setDisplayUnit(LengthUnit::Centimetre);
   paintOnce(view);
   EXPECT_TRUE(view.readoutAt(*point).contains(
-      ui::formatLength(take.position(450, 2).y(), take.units(), LengthUnit::Centimetre) + QStringLiteral(" cm")));
+      ui::formatLength(take.position(450, 2).z(), take.units(), LengthUnit::Centimetre) + QStringLiteral(" cm")));
   EXPECT_TRUE(view.readoutAt(QPointF(2.0, 2.0)).isEmpty()) << "the margin holds no sample";
 }
 
@@ -266,6 +266,7 @@ TEST_F(StudioViews, TheThreeDViewDrawsSelectedMarkersInTheirCurveColours)
 TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsLeft)
 {
   ui::TakeDocument& doc = window->document();
+  doc.setCurrentFrame(1000);
   auto* layoutDock = window->findChild<QDockWidget*>(QStringLiteral("layoutPlanningDock"));
   ASSERT_NE(layoutDock, nullptr);
   layoutDock->raise();
@@ -282,6 +283,7 @@ TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsL
   const Eigen::Index root = *take.markerIndex("root-1");
   reference[static_cast<std::size_t>(root)] = true;
   view->setLayoutHighlight(kept, reference);
+  ASSERT_TRUE(view->markerColor(keptMarker) && view->markerColor(droppedMarker) && view->markerColor(root));
   const QColor keptColor = *view->markerColor(keptMarker);
   const QColor droppedColor = *view->markerColor(droppedMarker);
   const QColor referenceColor = *view->markerColor(root);
@@ -299,6 +301,7 @@ TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsL
   window->findChild<QDockWidget*>(QStringLiteral("cleaningDock"))->raise();
   QApplication::processEvents();
   EXPECT_TRUE(view->layoutHighlight().empty());
+  ASSERT_TRUE(view->markerColor(droppedMarker));
   EXPECT_EQ(*view->markerColor(droppedMarker), ui::stateColor(take.state(doc.currentFrame(), droppedMarker)));
 }
 
@@ -308,13 +311,19 @@ TEST_F(StudioViews, CtrlBShowsTheStabilisedIndicatorUntilTheLabFrameIsBack)
   QAction* stabilise = actionWithShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
   ASSERT_NE(stabilise, nullptr);
   EXPECT_TRUE(view->statusText().isEmpty());
-  auto* indicator = view->findChild<QLabel*>();
+  auto* indicator = view->findChild<QLabel*>(QStringLiteral("viewStatus"));
   // Ctrl+B asks for the reference markers (the head markers are proposed): accept them.
-  QTimer::singleShot(0, [] {
-    if (auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget()))
+  QTimer accept;
+  accept.setInterval(20);
+  QObject::connect(&accept, &QTimer::timeout, [&accept] {
+    if (auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget())) {
       dialog->accept();
+      accept.stop();
+    }
   });
+  accept.start();
   stabilise->trigger();
+  accept.stop();
   ASSERT_FALSE(view->headReference().empty());
   EXPECT_TRUE(view->statusText().contains(QStringLiteral("Head-stabilised"))) << view->statusText().toStdString();
   ASSERT_NE(indicator, nullptr);
@@ -335,7 +344,6 @@ TEST_F(StudioViews, FollowHeadKeepsTheCameraOnTheHeadMarkers)
   ASSERT_TRUE(follow->isCheckable());
   // The sample's head markers are root-1..6, which the guess finds.
   ASSERT_EQ(view->followedMarkers().size(), 6u);
-  const Eigen::Vector3d unfollowed = view->cameraFocalPoint();
   follow->setChecked(true);
   EXPECT_TRUE(view->statusText().contains(QStringLiteral("follows")));
   doc.setCurrentFrame(200);
@@ -356,7 +364,6 @@ TEST_F(StudioViews, FollowHeadKeepsTheCameraOnTheHeadMarkers)
   follow->setChecked(false);
   doc.setCurrentFrame(1000);
   EXPECT_LT((view->cameraFocalPoint() - at2500).norm(), 1e-9) << "not following: the camera stays";
-  (void)unfollowed;
 }
 
 } // namespace

@@ -233,19 +233,21 @@ void CurveView::paintLegend(QPainter& painter) const
   {
     QString text;
     QColor color;
-    bool dashed;
+    bool dashed = false;
   };
-  std::vector<KeyItem> key = {{tr("filled"), stateColor(SampleState::Filled), false},
-                              {tr("smoothed"), stateColor(SampleState::Smoothed), false},
-                              {tr("edited"), stateColor(SampleState::Edited), false}};
-  if (!m_document.preview().empty())
-    key.insert(key.begin(), KeyItem{tr("preview"), previewColor(selectionPaletteColor(0)), true});
+  const bool preview = !m_document.preview().empty();
+  const std::array<KeyItem, 4> all = {KeyItem{tr("preview"), previewColor(selectionPaletteColor(0)), true},
+                                      KeyItem{tr("filled"), stateColor(SampleState::Filled), false},
+                                      KeyItem{tr("smoothed"), stateColor(SampleState::Smoothed), false},
+                                      KeyItem{tr("edited"), stateColor(SampleState::Edited), false}};
+  const std::size_t firstKey = preview ? 0 : 1;
   double keyWidth = 0.0;
-  for (const KeyItem& item : key)
-    keyWidth += 22.0 + metrics.horizontalAdvance(item.text) + 10.0;
+  for (std::size_t k = firstKey; k < all.size(); ++k)
+    keyWidth += 22.0 + metrics.horizontalAdvance(all[k].text) + 10.0;
   double x = right - keyWidth;
   painter.setRenderHint(QPainter::Antialiasing, false);
-  for (const KeyItem& item : key) {
+  for (std::size_t k = firstKey; k < all.size(); ++k) {
+    const KeyItem& item = all[k];
     const double mid = y + h / 2.0;
     if (item.dashed) {
       painter.setPen(QPen(item.color, 2.5, Qt::DashLine));
@@ -363,7 +365,8 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
   if (framesPerPixel > 1.0) {
     const int columns = static_cast<int>(strip.width());
     lines.reserve(columns);
-    std::optional<double> previous;  // last value of the previous column, when it joins this one
+    double previous = 0.0;  // last value of the previous column
+    bool joined = false;    // whether the previous column ended on a valid sample
     for (int c = 0; c < columns; ++c) {
       const auto f0 = std::max(first, static_cast<Eigen::Index>(std::floor(frameAt(strip.left() + c))));
       const auto f1 = std::min(last, static_cast<Eigen::Index>(std::floor(frameAt(strip.left() + c + 1))));
@@ -380,14 +383,15 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
         state = std::max(state, states(f));
       }
       if (!std::isfinite(cmin)) {
-        previous.reset();
+        joined = false;
         continue;
       }
-      if (previous && !broken) {
-        cmin = std::min(cmin, *previous);
-        cmax = std::max(cmax, *previous);
+      if (joined && !broken) {
+        cmin = std::min(cmin, previous);
+        cmax = std::max(cmax, previous);
       }
-      previous = valid(f1) ? std::optional(values(f1)) : std::nullopt;
+      joined = valid(f1);
+      previous = values(f1);
       const double x = strip.left() + c + 0.5;
       const QLineF line(QPointF(x, scale.yOf(cmin) + 0.5), QPointF(x, scale.yOf(cmax) - 0.5));
       lines.push_back(line);
@@ -431,7 +435,9 @@ void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) c
   const auto& selection = m_document.selection();
   const auto& scale = m_scales[static_cast<std::size_t>(axis)];
   const double pixelsPerFrame = strip.width() / (m_last - m_first);
-  painter.setRenderHint(QPainter::Antialiasing, true);
+  // Antialiased wide dashes cost far more than the curve itself; zoomed out (a point per pixel
+  // column) they look the same without it.
+  painter.setRenderHint(QPainter::Antialiasing, pixelsPerFrame >= 1.0);
   for (const SamplePatch& patch : m_document.preview()) {
     const QColor marker = selectedMarkerColor(selection, patch.marker);
     if (!marker.isValid())

@@ -120,6 +120,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   // Says what the view shows when it is not the plain lab frame; a child of the viewport, so
   // it stays in its corner and out of the rendered image the baseline test compares.
   m_status = new QLabel(m_viewport);
+  m_status->setObjectName(QStringLiteral("viewStatus"));
   m_status->setAttribute(Qt::WA_TransparentForMouseEvents);
   m_status->setStyleSheet(QStringLiteral("QLabel { color: #ffd27a; background: rgba(0, 0, 0, 150); "
                                          "padding: 3px 6px; border-radius: 3px; font-weight: bold; }"));
@@ -405,9 +406,9 @@ void MarkerView3d::updateFollow()
   Eigen::Vector3d focal, position;
   camera->GetFocalPoint(focal.data());
   camera->GetPosition(position.data());
-  const Eigen::Vector3d shift = *target - focal;
+  const Eigen::Vector3d moved = position + (*target - focal);
   camera->SetFocalPoint(target->data());
-  camera->SetPosition((position + shift).data());
+  camera->SetPosition(moved.data());
   m_viewport->renderer()->ResetCameraClippingRange();
 }
 
