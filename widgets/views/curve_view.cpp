@@ -215,7 +215,6 @@ void CurveView::paintFrameTicks(QPainter& painter, const QRectF& area) const
   painter.setPen(QColor(120, 120, 120));
   for (const double t : seconds.values) {
     const double x = xOf(t * rate);
-    painter.drawLine(QPointF(x, area.bottom() + 15.0), QPointF(x, area.bottom() + 18.0));
     painter.drawText(QRectF(x - widest / 2.0, area.bottom() + 15.0, widest, 13.0), Qt::AlignHCenter | Qt::AlignTop,
                      tr("%1 s").arg(t, 0, 'f', seconds.decimals));
   }
@@ -309,11 +308,12 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
   }
 
   const auto range = valueRange(axis);
-  painter.setPen(QColor(170, 170, 170));
-  painter.drawText(QRectF(strip.left() + 4.0, strip.top() + 1.0, 80.0, 14.0), Qt::AlignLeft | Qt::AlignTop,
-                   QStringLiteral("%1 (%2)").arg(QLatin1String(kAxisNames[axis]), unitLabel(m_displayUnit)));
-  if (!range)
+  const QString axisName = QStringLiteral("%1 (%2)").arg(QLatin1String(kAxisNames[axis]), unitLabel(m_displayUnit));
+  if (!range) {
+    painter.setPen(QColor(170, 170, 170));
+    painter.drawText(QRectF(strip.left() + 4.0, strip.top() + 1.0, 80.0, 14.0), Qt::AlignLeft | Qt::AlignTop, axisName);
     return;
+  }
   const auto [lo, hi] = *range;
   m_scales[static_cast<std::size_t>(axis)] = {strip, lo, hi, true};
   paintValueTicks(painter, strip, axis, lo, hi);
@@ -325,13 +325,19 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
   paintPreview(painter, strip, axis);
   paintFlags(painter, strip, axis);
   painter.restore();
+  // The axis name on a dark plate, so a curve passing the corner does not hide it.
+  const QRectF plate(strip.left() + 2.0, strip.top() + 2.0,
+                     QFontMetricsF(painter.font()).horizontalAdvance(axisName) + 8.0, 15.0);
+  painter.fillRect(plate, QColor(30, 32, 36, 200));
+  painter.setPen(QColor(190, 190, 190));
+  painter.drawText(plate, Qt::AlignCenter, axisName);
 }
 
 void CurveView::paintValueTicks(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const
 {
   const LengthUnit units = m_document.take().units();
   const double from = toDisplay(lo, units, m_displayUnit), to = toDisplay(hi, units, m_displayUnit);
-  const AxisTicks ticks = niceTicks(from, to, std::max(2, static_cast<int>(strip.height() / 26.0)));
+  const AxisTicks ticks = niceTicks(from, to, std::max(4, static_cast<int>(strip.height() / 16.0)));
   const double scale = (hi - lo) / (to - from);  // take units per display unit
   const StripScale& s = m_scales[static_cast<std::size_t>(axis)];
   painter.setRenderHint(QPainter::Antialiasing, false);
