@@ -194,7 +194,21 @@ void MainWindow::createDocks()
   tabifyDockWidget(cleaningDock, gapDock);
   connect(m_gapList, &ui::GapListPanel::frameRangeRequested, m_curves, &ui::CurveView::setVisibleRange);
   cleaningDock->raise();
-  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, m_view3d, &ui::MarkerView3d::setLayoutHighlight);
+  // The highlight shows only while the dock is on screen: leaving the panel (another tab raised,
+  // the dock closed) gives the 3D view its sample-state colours back, returning shows it again.
+  auto showLayout = [this, layoutDock](const std::vector<bool>& kept) {
+    if (!layoutDock->isVisible() || kept.empty()) {
+      m_view3d->clearLayoutHighlight();
+      return;
+    }
+    std::vector<bool> reference(kept.size(), false);
+    if (const ui::LayoutPlanResult* result = m_layoutPlanning->result())
+      for (const std::string& label : result->referenceLabels)
+        if (const auto m = m_document->take().markerIndex(label); m && static_cast<std::size_t>(*m) < kept.size())
+          reference[static_cast<std::size_t>(*m)] = true;
+    m_view3d->setLayoutHighlight(kept, std::move(reference));
+  };
+  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, this, showLayout);
   // Every panel shows the take's reference markers and sends the user to the one editor.
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, this,
           &MainWindow::editReferenceMarkers);
@@ -202,6 +216,19 @@ void MainWindow::createDocks()
           this, &MainWindow::editReferenceMarkers);
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
           &ui::MarkerView3d::clearLayoutHighlight);
+  connect(layoutDock, &QDockWidget::visibilityChanged, this, [this, showLayout](bool visible) {
+    std::vector<bool> kept;
+    if (visible) {
+      const Take& take = m_document->take();
+      const std::vector<std::string> labels = m_layoutPlanning->selectedLabels();
+      if (!labels.empty())
+        kept.assign(static_cast<std::size_t>(take.markerCount()), false);
+      for (const std::string& label : labels)
+        if (const auto m = take.markerIndex(label))
+          kept[static_cast<std::size_t>(*m)] = true;
+    }
+    showLayout(kept);
+  });
   m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
   m_faceMeshDock = new QDockWidget(tr("Face Mesh"), this);
@@ -310,6 +337,17 @@ void MainWindow::createActions()
     m_view3d->setLinksVisible(on);
     QSettings().setValue(QStringLiteral("view/links"), on);
   });
+  QAction* follow = m_viewMenu->addAction(tr("&Follow Head"));
+  follow->setObjectName(QStringLiteral("followHeadAction"));
+  follow->setShortcut(QKeySequence(Qt::Key_F));
+  follow->setCheckable(true);
+  follow->setToolTip(tr("Keep the camera on the head as it moves (the centroid of the head markers)"));
+  follow->setChecked(QSettings().value(QStringLiteral("view/followHead"), false).toBool());
+  m_view3d->setFollowHead(follow->isChecked());
+  connect(follow, &QAction::toggled, this, [this](bool on) {
+    m_view3d->setFollowHead(on);
+    QSettings().setValue(QStringLiteral("view/followHead"), on);
+  });
   QMenu* languages = m_viewMenu->addMenu(tr("&Language"));
   auto* languageGroup = new QActionGroup(this);
   const QString current = QSettings().value(QStringLiteral("language"), defaultLanguage()).toString();
@@ -367,7 +405,7 @@ void MainWindow::createActions()
                            tr("<p>Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next "
                               "gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, "
                               "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised "
-                              "view, Ctrl+Shift+S save as.</p>"));
+                              "view, F camera follows the head, Ctrl+Shift+S save as.</p>"));
   });
   updateRecentMenu();
 }
@@ -380,6 +418,8 @@ void MainWindow::applyPreferences(const ui::Preferences& preferences)
   m_autosave->setInterval(preferences.autosaveMinutes * 60 * 1000);
   const LengthUnit unit = parseLengthUnit(preferences.displayUnit.toStdString()).value_or(LengthUnit::Millimetre);
   m_curves->setDisplayUnit(unit);
+  if (auto* smoothing = m_cleaning->step<ui::SmoothingStep>())
+    smoothing->setDisplayUnit(unit);
   if (!(preferences.colors == ui::colorScheme())) {
     ui::setColorScheme(preferences.colors);
     m_view3d->refreshColors();

@@ -1,5 +1,7 @@
 #include "panels/smoothing_step.h"
 
+#include "views/display_units.h"
+
 #include "mocap/smoothing.h"
 
 #include <QComboBox>
@@ -8,7 +10,57 @@
 #include <QFormLayout>
 #include <QSpinBox>
 
+#include <cmath>
+
 namespace mocap::ui {
+
+namespace {
+
+/// How far `patches` move the samples of `take` they replace: the RMS and the largest
+/// Euclidean distance between old and new positions (take units), over every sample valid both
+/// before and after. O(total patch size).
+struct PositionChange
+{
+  double rms = 0.0;
+  double max = 0.0;
+  Eigen::Index maxMarker = -1;
+  Eigen::Index maxFrame = 0;
+  Eigen::Index samples = 0;
+};
+
+PositionChange positionChange(const Take& take, const std::vector<SamplePatch>& patches)
+{
+  PositionChange change;
+  double sumSquares = 0.0;
+  for (const SamplePatch& patch : patches)
+    for (std::size_t i = 0; i < patch.frames.size(); ++i) {
+      const auto row = static_cast<Eigen::Index>(i);
+      const Eigen::Index frame = patch.frames[i];
+      if (!patch.valid(row) || !take.isValid(frame, patch.marker))
+        continue;
+      const double d = (patch.positions.row(row).transpose() - take.position(frame, patch.marker)).norm();
+      sumSquares += d * d;
+      ++change.samples;
+      if (d > change.max) {
+        change.max = d;
+        change.maxMarker = patch.marker;
+        change.maxFrame = frame;
+      }
+    }
+  if (change.samples > 0)
+    change.rms = std::sqrt(sumSquares / static_cast<double>(change.samples));
+  return change;
+}
+
+// A change in the display unit with a hundredth of a millimetre visible: smoothing moves
+// samples by fractions of a millimetre, finer than formatLength shows positions.
+QString changeText(double value, LengthUnit from, LengthUnit to)
+{
+  const int decimals = to == LengthUnit::Millimetre ? 2 : to == LengthUnit::Centimetre ? 3 : 5;
+  return QString::number(value * millimetresPer(from) / millimetresPer(to), 'f', decimals);
+}
+
+} // namespace
 
 SmoothingStep::SmoothingStep(QWidget* parent) : CleaningStep(parent)
 {
@@ -74,12 +126,20 @@ StepJob SmoothingStep::job() const
   options.knotSpacing = m_knotSpacing->value();
   options.cutoffHz = m_cutoff->value();
   options.savgolWindow = m_window->value() | 1;  // odd
-  return [options](const Take& take) {
+  return [options, unit = m_displayUnit](const Take& take) {
     StepResult result;
     result.patches = smoothTake(take, options);
     result.summary = QCoreApplication::translate("SmoothingStep", "%1 smoothing")
                          .arg(QString::fromUtf8(smoothMethodName(options.method).data(),
                                                 static_cast<int>(smoothMethodName(options.method).size())));
+    // What a technician judges a smoothing by: how far it moves the samples.
+    const PositionChange change = positionChange(take, result.patches);
+    if (change.samples > 0)
+      result.summary += QCoreApplication::translate("SmoothingStep", ": moves samples by RMS %1 %3, at most %2 %3 (%4, frame %5)")
+                            .arg(changeText(change.rms, take.units(), unit),
+                                 changeText(change.max, take.units(), unit), unitLabel(unit),
+                                 QString::fromStdString(take.label(change.maxMarker)))
+                            .arg(static_cast<qlonglong>(take.firstFrame() + change.maxFrame));
     return result;
   };
 }

@@ -2,6 +2,8 @@
 
 #include "panels/cleaning_step.h"
 
+#include "mocap/length_unit.h"
+
 class QComboBox;
 class QDoubleSpinBox;
 class QSpinBox;
@@ -9,7 +11,9 @@ class QSpinBox;
 namespace mocap::ui {
 
 /// Smoothing (mocap::smoothTake): method and the parameters that method uses — B-spline degree
-/// and knot spacing, Butterworth cutoff, smoothing-spline degree, Savitzky–Golay window.
+/// and knot spacing, Butterworth cutoff, smoothing-spline degree, Savitzky–Golay window. The
+/// summary says how far the samples would move: RMS and largest change of position, in the
+/// display unit, and where the largest is.
 class SmoothingStep final : public CleaningStep
 {
   Q_OBJECT
@@ -19,6 +23,8 @@ public:
 
   [[nodiscard]] QString title() const override;
   [[nodiscard]] StepJob job() const override;
+  /// Unit of the change the summary reports (the take keeps its own units).
+  void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
 
 private:
   void updateEnabled();
@@ -28,6 +34,7 @@ private:
   QDoubleSpinBox* m_knotSpacing = nullptr;
   QDoubleSpinBox* m_cutoff = nullptr;
   QSpinBox* m_window = nullptr;
+  LengthUnit m_displayUnit = LengthUnit::Millimetre;
 };
 
 } // namespace mocap::ui

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QString>
 #include <QWidget>
 
 #include "mocap/length_unit.h"
@@ -9,18 +10,25 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 
 namespace mocap::ui {
 
 class TakeDocument;
 
-/// x, y and z against frame for the selected markers, one strip per axis: samples coloured by
-/// state, gaps of the first selected marker shaded, the current frame marked. Click sets the
-/// current frame; Shift-drag selects a frame range (for range edits); the wheel zooms around
-/// the cursor; right- or middle-drag pans; Ctrl+Home shows everything. Zoomed in far enough to
-/// tell samples apart, dragging a sample of a selected marker up or down edits that coordinate
-/// (one undoable command on release, previewed while dragging; Esc cancels). Each pixel column draws the min-max of its frames, so 20 000 frames cost the
-/// same as the widget's width.
+/// x, y and z against frame for the selected markers, one strip per axis. Each selected marker
+/// has its own colour (selection_palette.h, shared with the 3D view) named in the legend above
+/// the strips; samples that are not original (filled, smoothed, edited) get a halo in their
+/// state's colour; each marker's gaps are shaded lightly in its colour. Value ticks and a grid
+/// in the display unit, frame and time ticks along the bottom, the current frame marked, and
+/// the live preview (TakeDocument::preview) drawn as a thick dashed line with dots, inside the
+/// strip's value range. Hovering shows marker, frame and value. Setting the current frame
+/// outside the visible range centres it (the zoom is kept). Click sets the current frame;
+/// Shift-drag selects a frame range (for range edits); the wheel zooms around the cursor; right-
+/// or middle-drag pans; Ctrl+Home shows everything. Zoomed in far enough to tell samples apart,
+/// dragging a sample of a selected marker up or down edits that coordinate (one undoable command
+/// on release, previewed while dragging; Esc cancels). Each pixel column draws the min-max of its
+/// frames, so painting costs O(visible frames × selected markers + width), whatever the zoom.
 class CurveView final : public QWidget
 {
   Q_OBJECT
@@ -38,6 +46,14 @@ public:
   /// Where sample `frame` of `marker` on `axis` (0 x, 1 y, 2 z) was last drawn; nullopt before
   /// the first paint or when it is not drawn.
   [[nodiscard]] std::optional<QPointF> pointOf(Eigen::Index marker, Eigen::Index frame, int axis) const;
+  /// The value range strip `axis` shows (take units, margins included): every visible valid
+  /// sample of the selected markers and of the preview patches for them. nullopt when there is
+  /// nothing to show. O(visible frames × selected markers + preview size).
+  [[nodiscard]] std::optional<std::pair<double, double>> valueRange(int axis) const;
+  /// The hover read-out for widget position `position` ("section3-1 · frame 1000 (8.325 s) ·
+  /// Z 12.3 mm"): the selected marker drawn nearest in y at the frame under the cursor, in the
+  /// strip under it; empty when none is. Valid after a paint. O(#selected).
+  [[nodiscard]] QString readoutAt(const QPointF& position) const;
 
 protected:
   void paintEvent(QPaintEvent* event) override;
@@ -46,6 +62,7 @@ protected:
   void mouseReleaseEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
+  void leaveEvent(QEvent* event) override;
 
 private:
   /// How a strip mapped values to pixels at the last paint.
@@ -76,8 +93,24 @@ private:
   [[nodiscard]] double xOf(double frame) const;
   [[nodiscard]] QRectF plotArea() const;
   void showAll();
+  /// Centres `frame` when it lies outside the visible range.
+  void follow(Eigen::Index frame);
+  /// The marker, frame and axis readoutAt() describes.
+  struct HoverSample
+  {
+    Eigen::Index marker = -1;
+    Eigen::Index frame = 0;
+    int axis = 0;
+  };
+  [[nodiscard]] std::optional<HoverSample> sampleAt(const QPointF& position) const;
   void paintStrip(class QPainter& painter, const QRectF& strip, int axis) const;
-  void paintOverlay(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const;
+  void paintValueTicks(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const;
+  void paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index marker, int axis, const QColor& color) const;
+  void paintPreview(QPainter& painter, const QRectF& strip, int axis) const;
+  void paintFlags(QPainter& painter, const QRectF& strip, int axis) const;
+  void paintFrameTicks(QPainter& painter, const QRectF& area) const;
+  void paintLegend(QPainter& painter) const;
+  void paintReadout(QPainter& painter) const;
 
   TakeDocument& m_document;
   double m_first = 0.0;
@@ -88,6 +121,7 @@ private:
   mutable std::array<StripScale, 3> m_scales{};
   LengthUnit m_displayUnit = LengthUnit::Millimetre;
   std::optional<Drag> m_drag;
+  std::optional<QPointF> m_hover;  // mouse position while it moves over the view unpressed
 };
 
 } // namespace mocap::ui

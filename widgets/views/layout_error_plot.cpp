@@ -1,5 +1,7 @@
 #include "views/layout_error_plot.h"
 
+#include "views/axis_ticks.h"
+
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -42,17 +44,6 @@ std::size_t index(LayoutErrorPlot::Measure measure)
 std::size_t index(LayoutErrorPlot::Curve curve)
 {
   return static_cast<std::size_t>(curve);
-}
-
-// A "nice" tick spacing (1, 2 or 5 × 10ⁿ) giving about `count` ticks over `span`.
-double tickStep(double span, int count)
-{
-  const double raw = span / std::max(count, 1);
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double factor : {1.0, 2.0, 5.0})
-    if (raw <= factor * magnitude)
-      return factor * magnitude;
-  return 10.0 * magnitude;
 }
 
 } // namespace
@@ -214,7 +205,7 @@ void LayoutErrorPlot::paintPlot(QPainter& painter, Measure measure) const
 
   // Horizontal grid and y labels.
   const double top = maxValue(measure);
-  const double yStep = tickStep(top, 4);
+  const double yStep = niceTickStep(top, 4);
   for (double v = 0.0; v <= top + 1e-12; v += yStep) {
     const double y = yOf(measure, v);
     painter.setPen(QPen(grid, 0.0, Qt::DotLine));
@@ -229,7 +220,7 @@ void LayoutErrorPlot::paintPlot(QPainter& painter, Measure measure) const
   const double widest = metrics.horizontalAdvance(QString::number(last)) + 8.0;
   const Eigen::Index xStep =
       std::max<Eigen::Index>(1, static_cast<Eigen::Index>(std::ceil(
-                                    tickStep(static_cast<double>(last - first + 1),
+                                    niceTickStep(static_cast<double>(last - first + 1),
                                              std::max(1, static_cast<int>(area.width() / widest))))));
   for (Eigen::Index s = (first + xStep - 1) / xStep * xStep; s <= last; s += xStep) {
     const double x = xOf(s);

@@ -3,12 +3,15 @@
 #include "document/take_document.h"
 #include "views/display_units.h"
 #include "views/sample_colors.h"
+#include "views/selection_palette.h"
 
+#include "mocap/head_stabilization.h"
 #include "mocap/marker_links.h"
 #include "mocap/marker_set.h"
 #include "views/vtk_viewport.h"
 
 #include <QLabel>
+#include <QStringList>
 #include <QToolTip>
 #include <QStackedLayout>
 
@@ -16,6 +19,7 @@
 #include <vtkAxesActor.h>
 #include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
+#include <vtkCellData.h>
 #include <vtkCellArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGlyph3DMapper.h>
@@ -43,11 +47,16 @@ bool isSelected(const std::vector<Eigen::Index>& selection, Eigen::Index marker)
   return std::binary_search(selection.begin(), selection.end(), marker);
 }
 
-// Kept and dropped markers of a planned layout: far apart in hue and brightness, and unlike
-// every sample-state colour, so the layout reads at a glance.
-QColor layoutColor(bool kept)
+// Kept, dropped and reference markers of a planned layout: far apart in brightness and hue,
+// and none of them a sample-state colour (sample_colors.h) nor in the selection palette, so the
+// layout reads at a glance and a kept marker is never mistaken for a smoothed one.
+const QColor kLayoutKept(250, 250, 250);
+const QColor kLayoutDropped(85, 85, 92);
+const QColor kLayoutReference(40, 110, 255);
+
+unsigned char channel(int value)
 {
-  return kept ? QColor(60, 230, 90) : QColor(95, 95, 100);
+  return static_cast<unsigned char>(std::clamp(value, 0, 255));
 }
 
 /// Mean and spread of all valid samples, for camera placement and marker size.
@@ -108,6 +117,15 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   m_failure->setWordWrap(true);
   m_stack->addWidget(m_viewport);
   m_stack->addWidget(m_failure);
+  // Says what the view shows when it is not the plain lab frame; a child of the viewport, so
+  // it stays in its corner and out of the rendered image the baseline test compares.
+  m_status = new QLabel(m_viewport);
+  m_status->setObjectName(QStringLiteral("viewStatus"));
+  m_status->setAttribute(Qt::WA_TransparentForMouseEvents);
+  m_status->setStyleSheet(QStringLiteral("QLabel { color: #ffd27a; background: rgba(0, 0, 0, 150); "
+                                         "padding: 3px 6px; border-radius: 3px; font-weight: bold; }"));
+  m_status->move(8, 8);
+  m_status->hide();
   connect(m_viewport, &VtkViewport::failed, this, [this](const QString& reason) {
     m_failure->setText(reason);
     m_stack->setCurrentWidget(m_failure);
@@ -151,10 +169,8 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
 
   vtkNew<vtkPolyDataMapper> trailMapper;
   trailMapper->SetInputData(m_trails);
+  trailMapper->SetScalarModeToUseCellData();  // each trail in its marker's colour
   m_trailActor->SetMapper(trailMapper);
-  const QColor trail = selectionColor();
-  m_trailActor->GetProperty()->SetColor(static_cast<double>(trail.redF()), static_cast<double>(trail.greenF()),
-                                        static_cast<double>(trail.blueF()));
   m_trailActor->GetProperty()->SetOpacity(0.7);
   m_trailActor->GetProperty()->SetLineWidth(2.0f);
   m_viewport->renderer()->AddActor(m_trailActor);
@@ -188,8 +204,11 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
 
   connect(&document, &TakeDocument::takeReset, this, [this] {
     m_layoutKept.clear();
+    m_layoutReference.clear();
     m_headReference.clear();  // a new take
     m_headMotion.reset();
+    m_followMarkers = guessFollowMarkers();
+    updateStatus();
     m_links.clear();
     if (m_linksVisible)
       computeLinks();
@@ -201,8 +220,11 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markersChanged, this, [this] {
     m_layoutKept.clear();
+    m_layoutReference.clear();
     m_headReference.clear();  // indices shifted
     m_headMotion.reset();
+    m_followMarkers = guessFollowMarkers();
+    updateStatus();
     m_links.clear();
     if (m_linksVisible)
       computeLinks();
@@ -300,8 +322,94 @@ QString MarkerView3d::setHeadReference(std::vector<Eigen::Index> referenceMarker
   }
   m_headReference = std::move(referenceMarkers);
   m_headMotion = std::move(motion);
+  updateStatus();
   updateFrame();
   return {};
+}
+
+QString MarkerView3d::statusText() const
+{
+  QStringList parts;
+  if (m_headMotion)
+    parts << tr("Head-stabilised on %n marker(s) — Ctrl+B for the lab frame", nullptr,
+                static_cast<int>(m_headReference.size()));
+  if (m_followHead)
+    parts << tr("Camera follows the head");
+  return parts.join(QStringLiteral("\n"));
+}
+
+void MarkerView3d::updateStatus()
+{
+  const QString text = statusText();
+  m_status->setText(text);
+  m_status->adjustSize();
+  m_status->setVisible(!text.isEmpty());
+}
+
+std::vector<Eigen::Index> MarkerView3d::guessFollowMarkers() const
+{
+  const Take& take = m_document.take();
+  std::vector<Eigen::Index> markers = guessHeadReferenceMarkers(take);
+  if (markers.empty())  // no head markers by name: the whole face
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+      markers.push_back(m);
+  return markers;
+}
+
+void MarkerView3d::setFollowHead(bool on)
+{
+  m_followHead = on;
+  if (m_followMarkers.empty())
+    m_followMarkers = guessFollowMarkers();
+  updateStatus();
+  updateFollow();
+  m_viewport->requestRender();
+}
+
+std::optional<Eigen::Vector3d> MarkerView3d::followTarget(Eigen::Index frame) const
+{
+  const Take& take = m_document.take();
+  if (take.empty() || frame < 0 || frame >= take.frameCount())
+    return std::nullopt;
+  const auto halfWindow = static_cast<Eigen::Index>(std::lround(0.2 * take.frameRate()));
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Index frames = 0;
+  for (Eigen::Index f = std::max<Eigen::Index>(0, frame - halfWindow);
+       f <= std::min<Eigen::Index>(take.frameCount() - 1, frame + halfWindow); ++f) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    Eigen::Index count = 0;
+    for (Eigen::Index m : m_followMarkers)
+      if (m < take.markerCount() && take.isValid(f, m)) {
+        centroid += displayPosition(f, m);
+        ++count;
+      }
+    // A frame counts only with every followed marker: a marker dropping out would jolt the centroid.
+    if (count == static_cast<Eigen::Index>(m_followMarkers.size()) && count > 0) {
+      sum += centroid / static_cast<double>(count);
+      ++frames;
+    }
+  }
+  if (frames == 0)
+    return std::nullopt;
+  return sum / static_cast<double>(frames);
+}
+
+// Moves the camera (position and focal point together) so it looks at the follow target.
+void MarkerView3d::updateFollow()
+{
+  if (!m_followHead)
+    return;
+  const auto target = followTarget(m_document.currentFrame());
+  if (!target)
+    return;
+  vtkCamera* camera = m_viewport->renderer()->GetActiveCamera();
+  Eigen::Vector3d focal, position;
+  camera->GetFocalPoint(focal.data());
+  camera->GetPosition(position.data());
+  const Eigen::Vector3d moved = position + (*target - focal);
+  camera->SetFocalPoint(target->data());
+  camera->SetPosition(moved.data());
+  m_viewport->renderer()->ResetCameraClippingRange();
 }
 
 Eigen::Vector3d MarkerView3d::displayPosition(Eigen::Index frame, Eigen::Index marker) const
@@ -342,9 +450,13 @@ void MarkerView3d::updateFrame()
       const Eigen::Vector3d p = displayPosition(frame, m);
       m_points->InsertNextPoint(p.data());
       // Unlabelled points (fragments waiting for a label) stand apart from every labelled state.
-      const QColor color = isSelected(selection, m)                ? selectionColor()
-                           : !m_layoutKept.empty()              ? layoutColor(m_layoutKept[static_cast<std::size_t>(m)])
-                           : flagged[static_cast<std::size_t>(m)] ? colorScheme().flagged
+      const auto i = static_cast<std::size_t>(m);
+      const QColor color = isSelected(selection, m) ? selectedMarkerColor(selection, m)
+                           : !m_layoutKept.empty()
+                               ? (m_layoutKept[i]                                     ? kLayoutKept
+                                  : !m_layoutReference.empty() && m_layoutReference[i] ? kLayoutReference
+                                                                                        : kLayoutDropped)
+                           : flagged[i]                        ? colorScheme().flagged
                            : isUnlabelledLabel(take.label(m)) ? QColor(200, 130, 255)
                                                               : stateColor(take.state(frame, m));
       const unsigned char rgb[3] = {static_cast<unsigned char>(color.red()), static_cast<unsigned char>(color.green()),
@@ -359,6 +471,7 @@ void MarkerView3d::updateFrame()
   updateLinks();
   updateTrails();
   updateLabels();
+  updateFollow();
   m_viewport->requestRender();
 }
 
@@ -405,17 +518,25 @@ void MarkerView3d::updateTrails()
   const Take& take = m_document.take();
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
   const Eigen::Index frame = m_document.currentFrame();
+  const auto& selection = m_document.selection();
   if (m_trailFrames > 0 && frame < take.frameCount()) {
-    for (Eigen::Index m : m_document.selection()) {
+    for (std::size_t i = 0; i < selection.size(); ++i) {
+      const Eigen::Index m = selection[i];
       if (m_document.isHidden(m))
         continue;
+      const QColor color = selectionPaletteColor(i);
+      const unsigned char rgb[3] = {channel(color.red()), channel(color.green()), channel(color.blue())};
       const Eigen::Index first = std::max<Eigen::Index>(0, frame - m_trailFrames);
       const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, frame + m_trailFrames);
       std::vector<vtkIdType> run;
       auto flush = [&] {
-        if (run.size() > 1)
+        if (run.size() > 1) {
           lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data());
+          colors->InsertNextTypedTuple(rgb);
+        }
         run.clear();
       };
       for (Eigen::Index f = first; f <= last; ++f) {
@@ -430,6 +551,7 @@ void MarkerView3d::updateTrails()
   }
   m_trails->SetPoints(points);
   m_trails->SetLines(lines);
+  m_trails->GetCellData()->SetScalars(colors);
   m_trails->Modified();
 }
 
@@ -438,34 +560,47 @@ void MarkerView3d::updateLabels()
   vtkRenderer* renderer = m_viewport->renderer();
   const Take& take = m_document.take();
   const auto& selection = m_document.selection();
-  // Text actors are rebuilt only when the selection (or a label) changes: rasterising text
-  // every frame would dominate playback.
-  bool rebuild = selection.size() != m_labels.size();
-  for (std::size_t i = 0; !rebuild && i < selection.size(); ++i)
-    rebuild = m_labelMarkers[i] != selection[i] || m_labelTexts[i] != take.label(selection[i]);
+  // Selected markers in their palette colours, then the kept markers of a layout highlight.
+  std::vector<Eigen::Index> markers = selection;
+  std::vector<QColor> colors;
+  for (std::size_t i = 0; i < selection.size(); ++i)
+    colors.push_back(selectionPaletteColor(i));
+  for (std::size_t m = 0; m < m_layoutKept.size(); ++m)
+    if (m_layoutKept[m] && !isSelected(selection, static_cast<Eigen::Index>(m))) {
+      markers.push_back(static_cast<Eigen::Index>(m));
+      colors.push_back(kLayoutKept);
+    }
+  // Text actors are rebuilt only when the labelled markers (or a label) change: rasterising
+  // text every frame would dominate playback.
+  bool rebuild = markers != m_labelMarkers || colors != m_labelColors;
+  for (std::size_t i = 0; !rebuild && i < markers.size(); ++i)
+    rebuild = m_labelTexts[i] != take.label(markers[i]);
   if (rebuild) {
     for (auto& label : m_labels)
       renderer->RemoveActor(label);
     m_labels.clear();
-    m_labelMarkers = selection;
+    m_labelMarkers = markers;
+    m_labelColors = colors;
     m_labelTexts.clear();
-    for (Eigen::Index m : selection) {
+    for (std::size_t i = 0; i < markers.size(); ++i) {
       auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
-      label->SetInput(take.label(m).c_str());
+      label->SetInput(take.label(markers[i]).c_str());
       label->GetTextProperty()->SetFontSize(14);
-      label->GetTextProperty()->SetColor(1.0, 1.0, 0.8);
+      label->GetTextProperty()->SetColor(static_cast<double>(colors[i].redF()), static_cast<double>(colors[i].greenF()),
+                                         static_cast<double>(colors[i].blueF()));
       label->GetTextProperty()->SetBold(true);
       label->GetTextProperty()->SetShadow(true);
       renderer->AddActor(label);
       m_labels.push_back(label);
-      m_labelTexts.push_back(take.label(m));
+      m_labelTexts.push_back(take.label(markers[i]));
     }
   }
   const Eigen::Index frame = m_document.currentFrame();
   const double offset = 2.5 * m_markerScale * m_takeSize;
   for (std::size_t i = 0; i < m_labels.size(); ++i) {
     const Eigen::Index m = m_labelMarkers[i];
-    const bool visible = frame < take.frameCount() && take.isValid(frame, m) && !m_document.isHidden(m);
+    const bool visible = frame < take.frameCount() && m < take.markerCount() && take.isValid(frame, m) &&
+                         !m_document.isHidden(m);
     m_labels[i]->SetVisibility(visible);
     if (!visible)
       continue;
@@ -522,11 +657,31 @@ std::optional<QPointF> MarkerView3d::screenPosition(Eigen::Index marker) const
   return projected(static_cast<vtkIdType>(it - m_drawnMarkers.begin()));
 }
 
-void MarkerView3d::setLayoutHighlight(std::vector<bool> kept)
+Eigen::Vector3d MarkerView3d::cameraFocalPoint() const
+{
+  Eigen::Vector3d focal;
+  m_viewport->renderer()->GetActiveCamera()->GetFocalPoint(focal.data());
+  return focal;
+}
+
+std::optional<QColor> MarkerView3d::markerColor(Eigen::Index marker) const
+{
+  const auto it = std::find(m_drawnMarkers.begin(), m_drawnMarkers.end(), marker);
+  if (it == m_drawnMarkers.end())
+    return std::nullopt;
+  unsigned char rgb[3];
+  m_colors->GetTypedTuple(static_cast<vtkIdType>(it - m_drawnMarkers.begin()), rgb);
+  return QColor(rgb[0], rgb[1], rgb[2]);
+}
+
+void MarkerView3d::setLayoutHighlight(std::vector<bool> kept, std::vector<bool> reference)
 {
   if (static_cast<Eigen::Index>(kept.size()) != m_document.take().markerCount())
     kept.clear();  // a flag per marker or none: anything else belongs to another take
+  if (kept.empty() || reference.size() != kept.size())
+    reference.clear();
   m_layoutKept = std::move(kept);
+  m_layoutReference = std::move(reference);
   updateFrame();
 }
 

@@ -2,6 +2,7 @@
 
 #include "mocap/head_stabilization.h"
 
+#include <QColor>
 #include <QWidget>
 
 #include <optional>
@@ -31,8 +32,10 @@ class TakeDocument;
 class VtkViewport;
 
 /// The 3D viewport: the current frame's markers as spheres coloured by sample state
-/// (original, filled, smoothed, edited, flagged as a bad point; selected markers highlighted and labelled), trails of
-/// the selected markers over ±trailFrames frames, and an axes marker in the corner.
+/// (original, filled, smoothed, edited, flagged as a bad point); selected markers in their curve
+/// colours (selection_palette.h) and labelled, with trails over ±trailFrames frames in the same
+/// colours; an axes marker in the corner and, while the view is head-stabilised or follows the
+/// head, a line of text saying so in the top-left corner.
 /// Missing samples are not drawn. Click picks the nearest marker, Ctrl+drag a rubber band picks all inside it (Ctrl/Shift adds to the
 /// selection); the camera faces the take's markers from the side they protrude to.
 class MarkerView3d final : public QWidget
@@ -78,10 +81,30 @@ public:
   [[nodiscard]] std::vector<Eigen::Index> markersIn(const QRect& rectangle) const;
   /// Where drawn marker `marker` appears in the widget; nullopt when it is not drawn.
   [[nodiscard]] std::optional<QPointF> screenPosition(Eigen::Index marker) const;
-  /// A planned marker layout over the take: while set, markers are drawn kept (bright green) or
-  /// dropped (dim grey) instead of by sample state; selection still shows. One flag per marker;
-  /// dropped when markers are added, removed or another take is opened.
-  void setLayoutHighlight(std::vector<bool> kept);
+  /// Camera follows the head: the focal point tracks the smoothed centroid of the head markers
+  /// (guessHeadReferenceMarkers, else every valid marker), keeping orientation and distance, so
+  /// the face stays in view while the head moves in the lab frame.
+  void setFollowHead(bool on);
+  [[nodiscard]] bool followHead() const { return m_followHead; }
+  /// Where the camera looks in `frame` while following: the mean, over frames within ±0.2 s, of
+  /// the centroid of the followed markers' drawn positions (a window mean, so scrubbing back and
+  /// forth gives the same view). nullopt when no followed marker is valid near `frame`.
+  /// O(window × followed markers).
+  [[nodiscard]] std::optional<Eigen::Vector3d> followTarget(Eigen::Index frame) const;
+  /// The markers the camera follows.
+  [[nodiscard]] const std::vector<Eigen::Index>& followedMarkers() const { return m_followMarkers; }
+  /// The camera's focal point (lab or stabilised coordinates, as drawn).
+  [[nodiscard]] Eigen::Vector3d cameraFocalPoint() const;
+  /// The colour `marker` is drawn in at the current frame; nullopt when it is not drawn.
+  [[nodiscard]] std::optional<QColor> markerColor(Eigen::Index marker) const;
+  /// The corner text shown (head-stabilised, following the head); empty when none is shown.
+  [[nodiscard]] QString statusText() const;
+  /// A planned marker layout over the take: while set, markers are drawn kept (white, labelled)
+  /// or dropped (dim grey), and the head reference markers the plan leaves out in blue, instead
+  /// of by sample state (none of these is a sample-state colour); selection still shows. One flag
+  /// per marker in each; `reference` may be empty. Dropped when markers are added, removed or
+  /// another take is opened.
+  void setLayoutHighlight(std::vector<bool> kept, std::vector<bool> reference = {});
   void clearLayoutHighlight();
   /// The highlight shown, empty when none.
   [[nodiscard]] const std::vector<bool>& layoutHighlight() const { return m_layoutKept; }
@@ -96,6 +119,9 @@ private:
   void updateLinks();
   void computeLinks();
   void updateLabels();
+  void updateStatus();
+  void updateFollow();
+  [[nodiscard]] std::vector<Eigen::Index> guessFollowMarkers() const;
   void onClicked(QPoint position, Qt::KeyboardModifiers modifiers);
   void onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers);
   /// Drawn point `id` in widget (logical) coordinates.
@@ -132,6 +158,11 @@ private:
   LengthUnit m_displayUnit = LengthUnit::Millimetre;
   std::optional<HeadMotion> m_headMotion;
   std::vector<bool> m_layoutKept;  // empty: no layout highlight
+  std::vector<bool> m_layoutReference;  // empty or one per marker
+  std::vector<QColor> m_labelColors;
+  bool m_followHead = false;
+  std::vector<Eigen::Index> m_followMarkers;
+  QLabel* m_status = nullptr;
 };
 
 } // namespace mocap::ui
