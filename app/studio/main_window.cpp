@@ -3,6 +3,7 @@
 #include "language.h"
 
 #include "commands/apply_patches_command.h"
+#include "commands/record_step_command.h"
 #include "commands/insert_marker_command.h"
 #include "commands/remove_markers_command.h"
 #include "commands/replace_take_command.h"
@@ -594,8 +595,12 @@ void MainWindow::trackAndLabel()
                              10000);
     return;
   }
+  ProcessingStep step = ui::studioStep(*m_document, "track and label",
+                                       {{"fragments labelled", std::to_string(labelled) + " of " + std::to_string(fragments)}},
+                                       {}, 0, -1, 0);
   m_document->undoStack()->push(new ui::ReplaceTakeCommand(
-      *m_document, std::move(tracked), tr("Track and label (%1 of %2 fragments labelled)").arg(labelled).arg(fragments)));
+      *m_document, std::move(tracked), tr("Track and label (%1 of %2 fragments labelled)").arg(labelled).arg(fragments),
+      std::move(step)));
   statusBar()->showMessage(tr("%1 of %2 fragments labelled; %3 samples left unlabelled")
                                .arg(labelled)
                                .arg(fragments)
@@ -632,8 +637,9 @@ void MainWindow::reviewSwaps()
   for (const LabelSwap& swap : accepted)  // in frame order, as found
     exchangeMarkersFrom(repaired, swap.first, swap.second, swap.frame);
   const int count = static_cast<int>(accepted.size());
-  m_document->undoStack()->push(
-      new ui::ReplaceTakeCommand(*m_document, std::move(repaired), tr("Repair %n label swap(s)", nullptr, count)));
+  m_document->undoStack()->push(new ui::ReplaceTakeCommand(
+      *m_document, std::move(repaired), tr("Repair %n label swap(s)", nullptr, count),
+      ui::studioStep(*m_document, "repair label swaps", {{"swaps", std::to_string(count)}}, {}, 0, -1, 0)));
 }
 
 void MainWindow::assignLabel(Eigen::Index point)
@@ -709,12 +715,13 @@ void MainWindow::swapOverRange()
   }
   auto patches = swapMarkersOverRange(take, selection[0], selection[1], m_document->rangeFirst(),
                                       m_document->rangeLast());
-  m_document->undoStack()->push(new ui::ApplyPatchesCommand(
+  m_document->undoStack()->push(ui::makeRecordedEdit(
       *m_document, std::move(patches),
       tr("Swap %1 and %2 over frames %3–%4")
           .arg(QString::fromStdString(take.label(selection[0])), QString::fromStdString(take.label(selection[1])))
           .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeFirst()))
-          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast()))));
+          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast())),
+      "swap markers", {{"markers", take.label(selection[0]) + ", " + take.label(selection[1])}}));
 }
 
 void MainWindow::deleteRange()
@@ -734,10 +741,11 @@ void MainWindow::deleteRange()
     return;
   }
   const Take& take = m_document->take();
-  m_document->undoStack()->push(new ui::ApplyPatchesCommand(
+  m_document->undoStack()->push(ui::makeRecordedEdit(
       *m_document, std::move(patches),
       tr("Delete frames %1–%2").arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeFirst()))
-          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast()))));
+          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast())),
+      "delete samples", {}));
 }
 
 QString MainWindow::openFile(const QString& path, bool quiet)

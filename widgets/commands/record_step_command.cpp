@@ -1,5 +1,6 @@
 #include "commands/record_step_command.h"
 
+#include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 
 #include <algorithm>
@@ -47,6 +48,28 @@ ProcessingStep studioStep(const TakeDocument& document, std::string operation,
   step.time = currentUtcTime();
   step.tool = "mocap-studio";
   return step;
+}
+
+QUndoCommand* makeRecordedEdit(TakeDocument& document, std::vector<SamplePatch> patches, const QString& text,
+                               std::string operation, std::vector<std::pair<std::string, std::string>> parameters,
+                               QUndoCommand* parent)
+{
+  std::vector<Eigen::Index> markers;
+  Eigen::Index first = document.take().frameCount(), last = -1;
+  std::int64_t samples = 0;
+  for (const SamplePatch& patch : patches) {
+    if (patch.empty())
+      continue;
+    markers.push_back(patch.marker);
+    first = std::min(first, patch.frames.front());
+    last = std::max(last, patch.frames.back());
+    samples += static_cast<std::int64_t>(patch.size());
+  }
+  ProcessingStep step = studioStep(document, std::move(operation), std::move(parameters), markers, first, last, samples);
+  auto* command = new QUndoCommand(text, parent);
+  new ApplyPatchesCommand(document, std::move(patches), text, command);
+  new RecordStepCommand(document, std::move(step), command);
+  return command;
 }
 
 } // namespace mocap::ui

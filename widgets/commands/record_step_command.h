@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/processing_step.h"
+#include "mocap/sample_patch.h"
 
 #include <QUndoCommand>
 
@@ -31,5 +32,13 @@ private:
                                         std::vector<std::pair<std::string, std::string>> parameters,
                                         const std::vector<Eigen::Index>& markers, Eigen::Index first,
                                         Eigen::Index last, std::int64_t samples);
+
+/// One undoable edit that applies `patches` and records it in the take's history as
+/// `operation` with `parameters`; the markers, frame range and sample count come from the
+/// patches. `parent` (optional) adopts it, as QUndoCommand children do.
+[[nodiscard]] QUndoCommand* makeRecordedEdit(TakeDocument& document, std::vector<SamplePatch> patches,
+                                             const QString& text, std::string operation,
+                                             std::vector<std::pair<std::string, std::string>> parameters,
+                                             QUndoCommand* parent = nullptr);
 
 } // namespace mocap::ui

@@ -1,6 +1,7 @@
 #include "panels/gap_list_panel.h"
 
 #include "commands/apply_patches_command.h"
+#include "commands/record_step_command.h"
 #include "document/take_document.h"
 #include "models/gap_table_model.h"
 
@@ -528,7 +529,8 @@ void GapListPanel::push()
       methods << GapTableModel::methodTitle(m_resultRequest.methods[i]);
   const auto gaps = static_cast<int>(m_result.patches.size());
   const QString text = (gaps == 1 ? tr("Fill 1 gap: %1") : tr("Fill %1 gaps: %2").arg(gaps)).arg(methods.join(", "));
-  m_document.undoStack()->push(new ApplyPatchesCommand(m_document, m_result.patches, text));
+  m_document.undoStack()->push(
+      makeRecordedEdit(m_document, m_result.patches, text, "fill gaps", {{"method", methods.join(", ").toStdString()}}));
   m_status->setText(counts);  // after the push: the take change schedules a new preview
 }
 

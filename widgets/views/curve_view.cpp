@@ -1,6 +1,7 @@
 #include "views/curve_view.h"
 
 #include "commands/apply_patches_command.h"
+#include "commands/record_step_command.h"
 #include "document/take_document.h"
 #include "views/display_units.h"
 #include "views/sample_colors.h"
@@ -670,11 +671,12 @@ void CurveView::finishDrag(const std::optional<QPointF>& commitAt)
   if (patches.empty())
     return;
   const Take& take = m_document.take();
-  m_document.undoStack()->push(new ApplyPatchesCommand(
+  m_document.undoStack()->push(makeRecordedEdit(
       m_document, std::move(patches),
       tr("Move %1 %2 at frame %3")
           .arg(QString::fromStdString(take.label(drag.marker)), kAxisNames[drag.axis])
-          .arg(static_cast<qlonglong>(take.firstFrame() + drag.frame))));
+          .arg(static_cast<qlonglong>(take.firstFrame() + drag.frame)),
+      "edit sample", {{"axis", kAxisNames[drag.axis]}}));
 }
 
 void CurveView::mousePressEvent(QMouseEvent* event)
