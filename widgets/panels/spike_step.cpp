@@ -23,6 +23,12 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
   m_method = new QComboBox(this);
   m_method->addItem(tr("Robust (local fit + MAD)"), static_cast<int>(SpikeMethod::Robust));
   m_method->addItem(tr("Paper (eqs 8–10)"), static_cast<int>(SpikeMethod::Paper));
+  m_method->setItemData(0, tr("Judges each sample against a robust local fit. It looks again after replacing what it "
+                             "found, so detecting again after a repair finds nothing new."),
+                         Qt::ToolTipRole);
+  m_method->setItemData(1, tr("Eqs 8–10 as written, in one pass: after a repair, detecting again can flag samples "
+                             "that the replaced ones hid."),
+                         Qt::ToolTipRole);
   form->addRow(tr("Method"), m_method);
   m_factor = new QDoubleSpinBox(this);
   m_factor->setRange(1.0, 10.0);
@@ -72,6 +78,7 @@ StepJob SpikeStep::job() const
   options.threshold = m_threshold->value();
   return [options](const Take& take) {
     StepResult result;
+    result.detection = true;
     const std::vector<SpikeFlag> flags = detectSpikes(take, options);
     for (const SpikeFlag& flag : flags)
       result.flags.emplace_back(flag.marker, flag.frame);

@@ -69,6 +69,12 @@ struct SpikeOptions
   /// trajectory does not turn rounding into spikes (with the default threshold, nothing under
   /// 0.3 mm off the fit is flagged). Finite and ≥ 0.
   double noiseFloor = 0.05;
+  /// Robust: a spike can hide a smaller one beside it, which stands out once the first is
+  /// replaced. So the trajectory is judged again with the flags so far replaced as replaceSpikes
+  /// does, until a pass adds no flag or after this many passes; repairing the flags and
+  /// detecting again then finds nothing new. 1: a single pass. Paper always makes one pass
+  /// (eq 9 as written). In 1..100.
+  int maxPasses = 8;
 };
 
 /// Throws InvalidArgument naming the first option out of its documented range. O(1).
@@ -90,7 +96,8 @@ struct SpikeFlag
 /// run is judged on its own, never across a gap; invalid samples are never read or flagged.
 /// `options.noiseFloor` is taken in the units of `xyz`. Runs too short to judge (fewer than 3
 /// samples for Paper, fewer than 5 for Robust) and, for Paper, runs that do not move (k = 0) give
-/// no flags. Paper: eqs 8-9, O(#frames). Robust: O(#frames) (fixed windows of 7, 9 and 11 samples).
+/// no flags. Paper: eqs 8-9, O(#frames). Robust: O(#frames · passes) (fixed windows of 7, 9 and 11
+/// samples; a further pass only while the last one added flags, at most maxPasses).
 /// Throws InvalidArgument when the sizes disagree, an option is out of range or a valid sample
 /// is not finite (naming its frame).
 [[nodiscard]] std::vector<Eigen::Index>
