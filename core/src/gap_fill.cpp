@@ -78,8 +78,8 @@ std::vector<std::pair<UnfilledCause, std::string>> markerVerdicts(const Take& ta
       const double percent = std::round(1000.0 * static_cast<double>(valid) / frames) / 10.0;
       verdict = {UnfilledCause::RarelyValid,
                  "marker valid in only " + shortNumber(percent) +
-                     " % of the take (under " + shortNumber(100.0 * options.minValidFraction) +
-                     " %; select it to fill it anyway)"};
+                     " % of the take (under the " + shortNumber(100.0 * options.minValidFraction) +
+                     " % needed to fill it)"};
     }
   }
   return verdicts;

@@ -174,7 +174,11 @@ TEST_F(CleaningDefaults, RepairingBadPointsSettlesThem)
 {
   TakeDocument& doc = window->document();
   ui::CleaningPanel* panel = window->cleaningPanel();
-  panel->setCurrentStep(panel->step<ui::SpikeStep>());
+  auto* step = panel->step<ui::SpikeStep>();
+  panel->setCurrentStep(step);
+  auto* settle = step->findChild<QCheckBox*>(QStringLiteral("settle"));
+  ASSERT_NE(settle, nullptr);
+  settle->setChecked(true);  // look again until nothing new
   panel->waitForPreview();
   const std::size_t found = doc.flags().size();
   ASSERT_GT(found, 100u);
