@@ -248,6 +248,7 @@ void GapFillStep::showResult(const StepResult& result)
   m_open->clear();
   for (const ReviewNote& note : result.notes) {
     auto* item = new QListWidgetItem(note.text, m_open);
+    item->setToolTip(note.text);  // the list is narrow in the dock
     item->setData(kMarkerRole, static_cast<qlonglong>(note.marker));
     item->setData(kFrameRole, static_cast<qlonglong>(note.frame));
   }
