@@ -92,9 +92,13 @@ mocap::Take syntheticTake(Eigen::Index frames)
 void fill(benchmark::State& state, mocap::FillMethod method)
 {
   const mocap::Take take = syntheticTake(state.range(0));
+  mocap::FillOptions options{method, 0, 6};
+  options.maxGapSeconds = 0.0;  // every gap, as before the defaults that leave some open
+  options.extrapolate = true;
+  options.minValidFraction = 0.0;
   std::size_t filled = 0;
   for (auto _ : state) {
-    const mocap::FillResult result = mocap::fillGaps(take, {method, 0, 6});
+    const mocap::FillResult result = mocap::fillGaps(take, options);
     filled = result.patches.size();
     benchmark::DoNotOptimize(result.patches.data());
   }

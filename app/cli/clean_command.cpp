@@ -43,8 +43,20 @@ std::optional<FillOptions> fillOptions(const Arguments& arguments)
       throw UsageError("--fill: unknown method '" + *name + "'");
     options.method = *method;
   }
-  if (const auto maxGap = arguments.integer("--max-gap", 1, 1LL << 40))
+  const auto maxGap = arguments.integer("--max-gap", 0, 1LL << 40);
+  const auto maxGapSeconds = arguments.number("--max-gap-seconds", 0.0, 1e9);
+  if (maxGap && maxGapSeconds)
+    throw UsageError("give the longest gap as --max-gap N (frames) or --max-gap-seconds S, not both");
+  if (maxGap) {
     options.maxGap = static_cast<Eigen::Index>(*maxGap);
+    if (*maxGap == 0)
+      options.maxGapSeconds = 0.0;  // --max-gap 0: unlimited, as before
+  }
+  if (maxGapSeconds)
+    options.maxGapSeconds = *maxGapSeconds;
+  options.extrapolate = arguments.has("--extrapolate");
+  if (const auto minValid = arguments.number("--min-valid", 0.0, 1.0))
+    options.minValidFraction = *minValid;
   if (const auto neighbours = arguments.integer("--neighbours", 1, 1000))
     options.neighbours = static_cast<int>(*neighbours);
   return options;
@@ -100,6 +112,19 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   json.endObject();
   json.key("fill").beginObject();
   json.key("method").value(options.fill ? fillMethodName(options.fill->method) : "off");
+  if (options.fill) {
+    // The options used, so a report says what was left alone on purpose.
+    json.key("options").beginObject();
+    const FillOptions& fill = *options.fill;
+    const Eigen::Index longest = longestGapFrames(fill, take.frameRate());
+    json.key("max_gap_frames").value(static_cast<std::int64_t>(longest));  // 0: unlimited
+    json.key("max_gap_seconds").value(static_cast<double>(longest) / take.frameRate());
+    json.key("unlimited").value(longest == 0);
+    json.key("extrapolate").value(fill.extrapolate);
+    json.key("min_valid_fraction").value(fill.minValidFraction);
+    json.key("neighbours").value(static_cast<std::int64_t>(fill.neighbours));
+    json.endObject();
+  }
   std::int64_t filledGaps = 0;
   for (const GapFillReport& gap : report.gaps)
     filledGaps += gap.filled ? 1 : 0;
@@ -114,8 +139,23 @@ std::string reportJson(const std::string& input, const std::string& output, cons
     json.key("length").value(static_cast<std::int64_t>(gap.gap.length));
     json.key("filled").value(gap.filled);
     json.key("method").value(gap.method);
-    if (!gap.filled)
+    if (!gap.filled) {
       json.key("reason").value(gap.reason);
+      json.key("cause").value(unfilledCauseName(gap.cause));
+    }
+    json.endObject();
+  }
+  json.endArray();
+  json.key("unfilled").beginArray();  // the gaps left open, with why: nothing hidden
+  for (const GapFillReport& gap : report.gaps) {
+    if (gap.filled)
+      continue;
+    json.beginObject();
+    json.key("marker").value(take.label(gap.gap.marker));
+    json.key("first_frame").value(take.firstFrame() + gap.gap.firstFrame);
+    json.key("length").value(static_cast<std::int64_t>(gap.gap.length));
+    json.key("cause").value(unfilledCauseName(gap.cause));
+    json.key("reason").value(gap.reason);
     json.endObject();
   }
   json.endArray();
@@ -133,10 +173,10 @@ std::string reportJson(const std::string& input, const std::string& output, cons
 
 int runClean(const std::vector<std::string>& args)
 {
-  const Arguments arguments(args, {"--keep-stabilized"},
+  const Arguments arguments(args, {"--keep-stabilized", "--extrapolate"},
                             {"-o", "--output", "--spikes", "--spike-factor", "--spike-threshold", "--fill", "--max-gap",
-                             "--neighbours", "--smooth", "--order", "--knot-spacing", "--cutoff", "--stabilize",
-                             "--report"});
+                             "--max-gap-seconds", "--min-valid", "--neighbours", "--smooth", "--order",
+                             "--knot-spacing", "--cutoff", "--stabilize", "--report"});
   const auto [input, output] = arguments.inputAndOutput();
   CleanOptions options;
   options.spikes = spikeOptions(arguments);

@@ -255,7 +255,13 @@ FillEvaluation evaluateFill(const Take& take, const FillEvaluationOptions& optio
                                 Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
         }
       for (std::size_t k = 0; k < options.methods.size(); ++k) {
-        const FillResult result = fillGaps(corrupted, gaps, {options.methods[k], 0, options.neighbours});
+        // The methods are measured, not the defaults that leave gaps open: every hidden gap is
+        // filled whatever its length, place or marker.
+        FillOptions measured{options.methods[k], 0, options.neighbours};
+        measured.maxGapSeconds = 0.0;
+        measured.extrapolate = true;
+        measured.minValidFraction = 0.0;
+        const FillResult result = fillGaps(corrupted, gaps, measured);
         std::size_t patch = 0;
         for (const GapFillReport& report : result.gaps) {
           ++acc[k].gaps;

@@ -5,10 +5,13 @@
 #include "mocap/fill_context.h"
 #include "mocap/interpolation_fill.h"
 #include "mocap/neighbour_propagation.h"
+#include "mocap/number_text.h"
 #include "mocap/pca_fill.h"
 #include "mocap/rigid_fill.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 
 namespace mocap {
@@ -43,6 +46,43 @@ void checkOptions(const FillOptions& options)
   if (options.neighbours < 1 || options.neighbours > 1000)
     throw InvalidArgument("the number of neighbours must be in 1..1000, got " +
                           std::to_string(options.neighbours));
+  if (!(std::isfinite(options.maxGapSeconds) && options.maxGapSeconds >= 0.0))
+    throw InvalidArgument("the longest gap to fill in seconds must be 0 (unlimited) or positive, got " +
+                          std::to_string(options.maxGapSeconds));
+  if (!(options.minValidFraction >= 0.0 && options.minValidFraction <= 1.0))
+    throw InvalidArgument("the smallest valid fraction of a marker to fill must be in [0, 1], got " +
+                          std::to_string(options.minValidFraction));
+}
+
+// A number as people write it: 0.5, 20, 12.5 (the shortest text that reads back).
+std::string shortNumber(double value)
+{
+  std::string text;
+  appendNumber(text, value);
+  return text;
+}
+
+// Per marker: may its gaps be filled at all? Empty reason: yes. O(#frames · #markers).
+std::vector<std::pair<UnfilledCause, std::string>> markerVerdicts(const Take& take, const FillOptions& options)
+{
+  std::vector<std::pair<UnfilledCause, std::string>> verdicts(static_cast<std::size_t>(take.markerCount()));
+  const auto frames = static_cast<double>(std::max<Eigen::Index>(take.frameCount(), 1));
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    const Eigen::Index valid = take.valid().col(m).count();
+    auto& verdict = verdicts[static_cast<std::size_t>(m)];
+    const bool named =
+        std::find(options.fillAnyway.begin(), options.fillAnyway.end(), m) != options.fillAnyway.end();
+    if (valid == 0) {
+      verdict = {UnfilledCause::NeverValid, "the marker has no valid sample"};
+    } else if (!named && static_cast<double>(valid) < options.minValidFraction * frames) {
+      const double percent = std::round(1000.0 * static_cast<double>(valid) / frames) / 10.0;
+      verdict = {UnfilledCause::RarelyValid,
+                 "marker valid in only " + shortNumber(percent) +
+                     " % of the take (under the " + shortNumber(100.0 * options.minValidFraction) +
+                     " % needed to fill it)"};
+    }
+  }
+  return verdicts;
 }
 
 void checkFinite(const Take& take)
@@ -105,6 +145,31 @@ std::optional<FillMethod> parseFillMethod(std::string_view name)
   return std::nullopt;
 }
 
+std::string_view unfilledCauseName(UnfilledCause cause)
+{
+  switch (cause) {
+  case UnfilledCause::None: return "";
+  case UnfilledCause::NeverValid: return "never_valid";
+  case UnfilledCause::RarelyValid: return "rarely_valid";
+  case UnfilledCause::TooLong: return "too_long";
+  case UnfilledCause::EdgeGap: return "edge_gap";
+  case UnfilledCause::Method: return "method";
+  }
+  return "";
+}
+
+Eigen::Index longestGapFrames(const FillOptions& options, double frameRate)
+{
+  if (!(std::isfinite(frameRate) && frameRate > 0.0))
+    throw InvalidArgument("the frame rate must be a positive number to turn seconds into frames");
+  if (options.maxGap > 0)
+    return options.maxGap;
+  if (options.maxGapSeconds <= 0.0)
+    return 0;
+  const double frames = std::round(options.maxGapSeconds * frameRate);
+  return std::max<Eigen::Index>(1, frames >= 1e15 ? Eigen::Index{1} << 50 : static_cast<Eigen::Index>(frames));
+}
+
 std::string_view fillMethodName(FillMethod method)
 {
   for (const auto& entry : kNames)
@@ -124,17 +189,38 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
   checkOptions(options);
   for (const Gap& gap : gaps)
     checkGap(take, gap);
+  for (Eigen::Index m : options.fillAnyway)
+    if (m < 0 || m >= take.markerCount())
+      throw InvalidArgument("a marker to fill anyway (" + std::to_string(m) + ") is not in the take");
   checkFinite(take);
+  const Eigen::Index longest = gaps.empty() ? 0 : longestGapFrames(options, take.frameRate());
+  const auto verdicts = markerVerdicts(take, options);
   FillResult result;
   std::unique_ptr<PcaFillModel> pca;
   std::unique_ptr<FillContext> context;
+  const auto leaveOpen = [&result](GapFillReport& report, UnfilledCause cause, std::string reason) {
+    report.cause = cause;
+    report.reason = std::move(reason);
+    result.gaps.push_back(std::move(report));
+  };
   for (const Gap& gap : gaps) {
     GapFillReport report;
     report.gap = gap;
     const GapQuery query(take, gap.marker, gap.firstFrame, gap.length);
-    if (options.maxGap > 0 && gap.length > options.maxGap) {
-      report.reason = "longer than the longest gap to fill (" + std::to_string(options.maxGap) + " frames)";
-      result.gaps.push_back(std::move(report));
+    const auto& verdict = verdicts[static_cast<std::size_t>(gap.marker)];
+    if (verdict.first != UnfilledCause::None) {
+      leaveOpen(report, verdict.first, verdict.second);
+      continue;
+    }
+    if (longest > 0 && gap.length > longest) {
+      std::string limit = std::to_string(longest) + " frames";
+      if (options.maxGap == 0)
+        limit += ", " + shortNumber(options.maxGapSeconds) + " s";
+      leaveOpen(report, UnfilledCause::TooLong, "longer than the longest gap to fill (" + limit + ")");
+      continue;
+    }
+    if (gap.atEdge && !options.extrapolate) {
+      leaveOpen(report, UnfilledCause::EdgeGap, "edge gap (extrapolation off)");
       continue;
     }
     if (options.method == FillMethod::Pca && !pca)
@@ -146,8 +232,7 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
       prediction = GapPrediction::failure(std::string(fillMethodName(options.method)) +
                                           " gave positions that are not finite");
     if (!prediction.filled()) {
-      report.reason = std::move(prediction.reason);
-      result.gaps.push_back(std::move(report));
+      leaveOpen(report, UnfilledCause::Method, std::move(prediction.reason));
       continue;
     }
     std::vector<Eigen::Index> frames(static_cast<std::size_t>(gap.length));

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 namespace mocap {
@@ -135,6 +136,8 @@ void checkSpikeOptions(const SpikeOptions& options)
   if (!(std::isfinite(options.noiseFloor) && options.noiseFloor >= 0.0))
     throw InvalidArgument("spike noise floor must be a finite number >= 0, not " +
                           std::to_string(options.noiseFloor));
+  if (options.maxPasses < 1 || options.maxPasses > 100)
+    throw InvalidArgument("spike detection passes must be in 1..100, not " + std::to_string(options.maxPasses));
 }
 
 namespace {
@@ -419,26 +422,6 @@ void detectRobust(const Trajectory& xyz, const Run& run, double threshold, doubl
       flags.push_back(run.first + i);
 }
 
-std::vector<Eigen::Index> detectIn(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
-                                   const SpikeOptions& options, double floor)
-{
-  if (xyz.rows() != valid.size())
-    throw InvalidArgument("trajectory has " + std::to_string(xyz.rows()) + " frames but its validity mask " +
-                          std::to_string(valid.size()));
-  for (Eigen::Index f = 0; f < xyz.rows(); ++f)
-    if (valid(f) && !xyz.row(f).allFinite())
-      throw InvalidArgument("valid sample at frame " + std::to_string(f) + " is not a finite position");
-  std::vector<Eigen::Index> flags;
-  RobustWork work;
-  for (const Run& run : validRuns(valid)) {
-    if (options.method == SpikeMethod::Paper)
-      detectPaper(xyz, run, options.factor, flags);
-    else
-      detectRobust(xyz, run, options.threshold, floor, work, flags);
-  }
-  return flags;
-}
-
 // Least-squares line through (t, p) evaluated at `at`; a single point is held constant.
 Eigen::RowVector3d extrapolate(const std::vector<Eigen::Index>& frames, const Trajectory& xyz,
                                Eigen::Index at)
@@ -462,6 +445,101 @@ Eigen::RowVector3d extrapolate(const std::vector<Eigen::Index>& frames, const Tr
   if (stt <= 0.0)
     return meanP;
   return meanP + (static_cast<double>(at) - meanT) * (stp / stt);
+}
+
+// The replacements of replaceSpikes for one trajectory: `flagged` holds valid frames, ascending
+// and unique; appends the replaced frames and their positions. O(#flags · log #flags).
+void replaceFlagged(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
+                    const std::vector<Eigen::Index>& flagged, std::vector<Eigen::Index>& frames,
+                    std::vector<Eigen::RowVector3d>& positions)
+{
+  const Eigen::Index frameCount = xyz.rows();
+  auto isFlagged = [&](Eigen::Index f) { return std::binary_search(flagged.begin(), flagged.end(), f); };
+  auto usable = [&](Eigen::Index f) { return f >= 0 && f < frameCount && valid(f) && !isFlagged(f); };
+  std::size_t i = 0;
+  while (i < flagged.size()) {
+    // A block of consecutive flagged frames [first, last].
+    const Eigen::Index first = flagged[i];
+    Eigen::Index last = first;
+    while (i + 1 < flagged.size() && flagged[i + 1] == last + 1)
+      last = flagged[++i];
+    ++i;
+    const bool left = usable(first - 1);
+    const bool right = usable(last + 1);
+    std::vector<Eigen::Index> support;
+    if (!left && right) {
+      for (Eigen::Index f = last + 1; f < frameCount && valid(f) && support.size() < 4; ++f)
+        if (!isFlagged(f))
+          support.push_back(f);
+    } else if (left && !right) {
+      for (Eigen::Index f = first - 1; f >= 0 && valid(f) && support.size() < 4; --f)
+        if (!isFlagged(f))
+          support.push_back(f);
+    }
+    if (!left && !right)
+      continue;  // the block is a whole run: nothing to rebuild it from
+    for (Eigen::Index f = first; f <= last; ++f) {
+      frames.push_back(f);
+      if (left && right) {
+        const double u = static_cast<double>(f - first + 1) / static_cast<double>(last - first + 2);
+        positions.push_back((1.0 - u) * xyz.row(first - 1) + u * xyz.row(last + 1));  // eq 10 for one sample
+      } else {
+        positions.push_back(extrapolate(support, xyz, f));
+      }
+    }
+  }
+}
+
+// One pass of the detector over every valid run of a trajectory whose samples are checked.
+std::vector<Eigen::Index> detectOnce(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
+                                     const SpikeOptions& options, double floor)
+{
+  std::vector<Eigen::Index> flags;
+  RobustWork work;
+  for (const Run& run : validRuns(valid)) {
+    if (options.method == SpikeMethod::Paper)
+      detectPaper(xyz, run, options.factor, flags);
+    else
+      detectRobust(xyz, run, options.threshold, floor, work, flags);
+  }
+  return flags;
+}
+
+std::vector<Eigen::Index> detectIn(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
+                                   const SpikeOptions& options, double floor)
+{
+  if (xyz.rows() != valid.size())
+    throw InvalidArgument("trajectory has " + std::to_string(xyz.rows()) + " frames but its validity mask " +
+                          std::to_string(valid.size()));
+  for (Eigen::Index f = 0; f < xyz.rows(); ++f)
+    if (valid(f) && !xyz.row(f).allFinite())
+      throw InvalidArgument("valid sample at frame " + std::to_string(f) + " is not a finite position");
+  std::vector<Eigen::Index> flags = detectOnce(xyz, valid, options, floor);
+  if (options.method == SpikeMethod::Paper)
+    return flags;  // eq 9 as written: one pass
+  // A spike can hide a smaller one beside it (it widens the local scale); once it is replaced,
+  // the neighbour stands out. So the detector judges the trajectory again with its flags so far
+  // replaced exactly as replaceSpikes will, until a pass adds nothing: repairing the flags and
+  // detecting again with the same settings then finds nothing new.
+  Eigen::Matrix<double, Eigen::Dynamic, 3> repaired;
+  std::vector<Eigen::Index> frames;
+  std::vector<Eigen::RowVector3d> positions;
+  for (int pass = 1; pass < options.maxPasses && !flags.empty(); ++pass) {
+    repaired = xyz;
+    frames.clear();
+    positions.clear();
+    replaceFlagged(xyz, valid, flags, frames, positions);
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      repaired.row(frames[k]) = positions[k];
+    const std::vector<Eigen::Index> again = detectOnce(repaired, valid, options, floor);
+    std::vector<Eigen::Index> merged;
+    merged.reserve(flags.size() + again.size());
+    std::set_union(flags.begin(), flags.end(), again.begin(), again.end(), std::back_inserter(merged));
+    if (merged.size() == flags.size())
+      break;
+    flags = std::move(merged);
+  }
+  return flags;
 }
 
 } // namespace
@@ -524,61 +602,21 @@ std::vector<SamplePatch> replaceSpikes(const Take& take, const std::vector<Spike
 
   std::vector<SamplePatch> patches;
   std::size_t b = 0;
+  std::vector<Eigen::Index> flagged;
   while (b < sorted.size()) {
     const Eigen::Index marker = sorted[b].marker;
-    std::size_t e = b;
-    while (e < sorted.size() && sorted[e].marker == marker)
-      ++e;
-    const auto xyz = take.trajectory(marker);
-    const auto valid = take.valid().col(marker);
-    auto flagged = [&](Eigen::Index f) {
-      return std::binary_search(sorted.begin() + static_cast<std::ptrdiff_t>(b),
-                                sorted.begin() + static_cast<std::ptrdiff_t>(e), SpikeFlag{marker, f},
-                                [](const SpikeFlag& x, const SpikeFlag& y) { return x.frame < y.frame; });
-    };
-    auto usable = [&](Eigen::Index f) { return f >= 0 && f < take.frameCount() && valid(f) && !flagged(f); };
+    flagged.clear();
+    for (; b < sorted.size() && sorted[b].marker == marker; ++b)
+      flagged.push_back(sorted[b].frame);
     std::vector<Eigen::Index> frames;
     std::vector<Eigen::RowVector3d> positions;
-    std::size_t i = b;
-    while (i < e) {
-      // A block of consecutive flagged frames [first, last].
-      const Eigen::Index first = sorted[i].frame;
-      Eigen::Index last = first;
-      while (i + 1 < e && sorted[i + 1].frame == last + 1)
-        last = sorted[++i].frame;
-      ++i;
-      const bool left = usable(first - 1);
-      const bool right = usable(last + 1);
-      std::vector<Eigen::Index> support;
-      if (!left && right) {
-        for (Eigen::Index f = last + 1; f < take.frameCount() && valid(f) && support.size() < 4; ++f)
-          if (!flagged(f))
-            support.push_back(f);
-      } else if (left && !right) {
-        for (Eigen::Index f = first - 1; f >= 0 && valid(f) && support.size() < 4; --f)
-          if (!flagged(f))
-            support.push_back(f);
-      }
-      if (!left && !right)
-        continue;  // the block is a whole run: nothing to rebuild it from
-      for (Eigen::Index f = first; f <= last; ++f) {
-        frames.push_back(f);
-        if (left && right) {
-          const double u = static_cast<double>(f - first + 1) / static_cast<double>(last - first + 2);
-          positions.push_back((1.0 - u) * xyz.row(first - 1) +
-                              u * xyz.row(last + 1));  // eq 10 for one sample
-        } else {
-          positions.push_back(extrapolate(support, xyz, f));
-        }
-      }
-    }
+    replaceFlagged(take.trajectory(marker), take.valid().col(marker), flagged, frames, positions);
     if (!frames.empty()) {
       Eigen::Matrix<double, Eigen::Dynamic, 3> matrix(static_cast<Eigen::Index>(positions.size()), 3);
       for (std::size_t r = 0; r < positions.size(); ++r)
         matrix.row(static_cast<Eigen::Index>(r)) = positions[r];
       patches.push_back(makePatch(marker, std::move(frames), std::move(matrix), SampleState::Edited));
     }
-    b = e;
   }
   return patches;
 }

@@ -210,6 +210,56 @@ TEST(Cli, CleanFillsTheSampleAndReportsEveryStep)
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
 }
 
+TEST(Cli, CleanByDefaultLeavesLongGapsOpenAndSaysWhy)
+{
+  test::TempDir dir;
+  const CommandResult run = runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("clean.c3d")) +
+                                         " --report " + q(dir.file("report.json")),
+                                     dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string report = readFileBytes(dir.file("report.json"));
+  // The defaults are printed with the fill.
+  for (const char* option : {"\"max_gap_frames\": 50,", "\"max_gap_seconds\": 0.5,", "\"extrapolate\": false,",
+                             "\"min_valid_fraction\": 0.2,", "\"unlimited\": false,"})
+    EXPECT_NE(report.find(option), std::string::npos) << option;
+  // Unlabeled1 (35 valid frames) keeps its 703- and 865-frame gaps, listed with the reason.
+  const std::size_t open = report.find("\"unfilled\": [");
+  ASSERT_NE(open, std::string::npos);
+  const std::string unfilled = report.substr(open);
+  for (const char* length : {"703", "865"})
+    EXPECT_NE(unfilled.find(std::string("\"marker\": \"Unlabeled1\",\n        \"first_frame\": ") +
+                            (length[0] == '7' ? "864" : "2136") + ",\n        \"length\": " + length +
+                            ",\n        \"cause\": \"rarely_valid\",\n        \"reason\": \"marker valid in only 1.2 %"),
+              std::string::npos)
+        << length << "\n" << unfilled.substr(0, 2000);
+  EXPECT_NE(unfilled.find("\"cause\": \"too_long\",\n        \"reason\": \"longer than the longest gap to fill (50 frames, "
+                          "0.5 s)\""),
+            std::string::npos);
+  EXPECT_EQ(report.find("\"unfilled_gaps\": 0,"), std::string::npos) << "some gaps are left open";
+  const CommandResult info = runMocap("info " + q(dir.file("clean.c3d")) + " --json", dir);
+  ASSERT_EQ(info.exitCode, 0);
+  EXPECT_NE(info.out.find("\"marker\": \"Unlabeled1\""), std::string::npos) << "nothing invented for Unlabeled1";
+
+  // Asked for, everything is filled as before: --max-gap 0 is unlimited.
+  const CommandResult all = runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("all.c3d")) +
+                                         " --max-gap 0 --extrapolate --min-valid 0 --report " + q(dir.file("all.json")),
+                                     dir);
+  ASSERT_EQ(all.exitCode, 0) << all.err;
+  const std::string everything = readFileBytes(dir.file("all.json"));
+  EXPECT_NE(everything.find("\"unfilled_gaps\": 0,"), std::string::npos);
+  EXPECT_NE(everything.find("\"unlimited\": true,"), std::string::npos);
+  const CommandResult seconds = runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("s.c3d")) +
+                                             " --max-gap-seconds 2 --report " + q(dir.file("s.json")),
+                                         dir);
+  ASSERT_EQ(seconds.exitCode, 0) << seconds.err;
+  EXPECT_NE(readFileBytes(dir.file("s.json")).find("\"max_gap_frames\": 200,"), std::string::npos);
+  EXPECT_EQ(runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --max-gap 10 --max-gap-seconds 1",
+                     dir)
+                .exitCode,
+            2);
+  EXPECT_EQ(runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --min-valid 2", dir).exitCode, 2);
+}
+
 TEST(Cli, FailedConvertLeavesNoOutputFile)
 {
   test::TempDir dir;

@@ -78,7 +78,9 @@ TEST(GapFill, RigidFillsARigidlyMovingClusterExactly)
   for (const auto& [first, length] : {std::pair<Eigen::Index, Eigen::Index>{20, 35}, {0, 15}, {60, 20}}) {
     Take take = truth;
     hide(take, 0, first, length);
-    const FillResult result = fillGaps(take, {FillMethod::Rigid, 0, 4});
+    FillOptions options{FillMethod::Rigid, 0, 4};
+    options.extrapolate = true;  // {0, 15} is an edge gap
+    const FillResult result = fillGaps(take, options);
     ASSERT_TRUE(result.gaps.front().filled) << result.gaps.front().reason;
     const SamplePatch patch = onlyPatch(result);
     for (Eigen::Index i = 0; i < length; ++i)
@@ -184,6 +186,115 @@ TEST(GapFill, LinearIsExactOnLinesAndSplineOnCubics)
     EXPECT_LT((spline.patches[1].positions.row(i).transpose() - truth.position(25 + i, 1)).norm(), 1e-9);
 }
 
+// FillOptions that fill whatever the method can: every length, the edges, every marker.
+FillOptions everything(FillMethod method)
+{
+  FillOptions options{method, 0, 6};
+  options.maxGapSeconds = 0.0;
+  options.extrapolate = true;
+  options.minValidFraction = 0.0;
+  return options;
+}
+
+// A smooth wave per marker, all valid, at 100 Hz (for gaps long enough to matter).
+Take wavingMarkers(Eigen::Index frames)
+{
+  Take take = allValid({"a", "b", "c", "d", "e", "f"}, frames);
+  for (Eigen::Index f = 0; f < frames; ++f)
+    for (Eigen::Index m = 0; m < 6; ++m) {
+      const double t = 0.01 * static_cast<double>(f);
+      const auto k = static_cast<double>(m);
+      take.setPosition(f, m, Eigen::Vector3d(20 * k + 5 * std::sin(2 * t + k), 10 * std::cos(1.3 * t), 3 * k + t));
+    }
+  return take;
+}
+
+TEST(GapFill, DefaultsLeaveGapsLongerThanHalfASecondOpen)
+{
+  Take take = wavingMarkers(400);
+  hide(take, 0, 100, 100);  // 1 s at 100 Hz
+  hide(take, 1, 100, 40);   // 0.4 s
+  EXPECT_EQ(longestGapFrames(FillOptions{}, 100.0), 50);
+  EXPECT_EQ(longestGapFrames(FillOptions{}, 60.0), 30);
+  const FillResult defaults = fillGaps(take, FillOptions{});
+  ASSERT_EQ(defaults.gaps.size(), 2u);
+  EXPECT_FALSE(defaults.gaps[0].filled);
+  EXPECT_EQ(defaults.gaps[0].cause, UnfilledCause::TooLong);
+  EXPECT_NE(defaults.gaps[0].reason.find("50 frames, 0.5 s"), std::string::npos) << defaults.gaps[0].reason;
+  EXPECT_TRUE(defaults.gaps[1].filled) << defaults.gaps[1].reason;
+  EXPECT_EQ(defaults.gaps[1].cause, UnfilledCause::None);
+  FillOptions unlimited;
+  unlimited.maxGapSeconds = 0.0;
+  EXPECT_EQ(longestGapFrames(unlimited, 100.0), 0);
+  const FillResult all = fillGaps(take, unlimited);
+  EXPECT_TRUE(all.gaps[0].filled) << all.gaps[0].reason;
+  EXPECT_EQ(all.patches.size(), 2u);
+  FillOptions frames;
+  frames.maxGap = 120;  // an explicit frame count wins over the seconds
+  EXPECT_EQ(longestGapFrames(frames, 100.0), 120);
+  EXPECT_TRUE(fillGaps(take, frames).gaps[0].filled);
+  frames.maxGap = 30;
+  EXPECT_FALSE(fillGaps(take, frames).gaps[1].filled);
+}
+
+TEST(GapFill, EdgeGapsAreLeftOpenUnlessExtrapolating)
+{
+  Take take = rigidCluster();
+  hide(take, 0, 0, 8);
+  hide(take, 1, 70, 10);
+  hide(take, 2, 30, 8);
+  const FillResult defaults = fillGaps(take, FillOptions{});
+  ASSERT_EQ(defaults.gaps.size(), 3u);
+  for (const GapFillReport& report : defaults.gaps)
+    if (report.gap.atEdge) {
+      EXPECT_FALSE(report.filled);
+      EXPECT_EQ(report.cause, UnfilledCause::EdgeGap);
+      EXPECT_EQ(report.reason, "edge gap (extrapolation off)");
+    } else {
+      EXPECT_TRUE(report.filled) << report.reason;
+    }
+  EXPECT_EQ(defaults.patches.size(), 1u);
+  FillOptions extrapolate;
+  extrapolate.extrapolate = true;
+  const FillResult all = fillGaps(take, extrapolate);
+  for (const GapFillReport& report : all.gaps)
+    EXPECT_TRUE(report.filled) << report.reason;
+}
+
+TEST(GapFill, RarelySeenMarkersAreSkippedUnlessNamed)
+{
+  Take take = wavingMarkers(200);
+  hide(take, 3, 0, 20);
+  hide(take, 3, 50, 150);  // 30 of 200 frames valid: 15 %
+  hide(take, 4, 60, 20);   // 90 % valid
+  const FillResult defaults = fillGaps(take, FillOptions{});
+  ASSERT_EQ(defaults.gaps.size(), 3u);
+  EXPECT_EQ(defaults.gaps[0].cause, UnfilledCause::RarelyValid);
+  EXPECT_EQ(defaults.gaps[1].cause, UnfilledCause::RarelyValid);
+  EXPECT_NE(defaults.gaps[0].reason.find("15 %"), std::string::npos) << defaults.gaps[0].reason;
+  EXPECT_TRUE(defaults.gaps[2].filled) << defaults.gaps[2].reason;
+  FillOptions named;
+  named.fillAnyway = {3};
+  named.extrapolate = true;
+  named.maxGapSeconds = 0.0;
+  const FillResult anyway = fillGaps(take, named);
+  EXPECT_TRUE(anyway.gaps[0].filled) << anyway.gaps[0].reason;
+  EXPECT_NE(anyway.gaps[1].cause, UnfilledCause::RarelyValid) << anyway.gaps[1].reason;  // judged by the method
+  FillOptions lower;
+  lower.minValidFraction = 0.1;
+  EXPECT_NE(fillGaps(take, lower).gaps[0].cause, UnfilledCause::RarelyValid);
+  EXPECT_EQ(unfilledCauseName(UnfilledCause::RarelyValid), "rarely_valid");
+  EXPECT_EQ(unfilledCauseName(UnfilledCause::EdgeGap), "edge_gap");
+  named.fillAnyway = {6};
+  EXPECT_THROW((void)fillGaps(take, named), InvalidArgument);
+  FillOptions bad;
+  bad.minValidFraction = 1.5;
+  EXPECT_THROW((void)fillGaps(take, bad), InvalidArgument);
+  bad = FillOptions{};
+  bad.maxGapSeconds = -1.0;
+  EXPECT_THROW((void)fillGaps(take, bad), InvalidArgument);
+}
+
 TEST(GapFill, MaxGapIsRespected)
 {
   Take take = rigidCluster();
@@ -205,7 +316,9 @@ TEST(GapFill, EdgeGapsAreExtrapolatedOnlyByMethodsThatCan)
   hide(take, 0, 0, 8);
   hide(take, 1, 70, 10);
   for (const FillMethod method : allFillMethods()) {
-    const FillResult result = fillGaps(take, {method, 0, 6});
+    FillOptions options{method, 0, 6};
+    options.extrapolate = true;
+    const FillResult result = fillGaps(take, options);
     ASSERT_EQ(result.gaps.size(), 2u);
     const bool interpolates = method == FillMethod::Linear || method == FillMethod::Spline;
     for (const GapFillReport& report : result.gaps) {
@@ -319,7 +432,7 @@ TEST(GapFill, BadInputIsRejected)
     return lonely;
   }();
   for (const FillMethod method : allFillMethods()) {
-    const FillResult result = fillGaps(single, {method, 0, 6});
+    const FillResult result = fillGaps(single, everything(method));
     ASSERT_EQ(result.gaps.size(), 1u);
     EXPECT_FALSE(result.gaps[0].filled) << fillMethodName(method);  // no neighbours, edge gap
   }

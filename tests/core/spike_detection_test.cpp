@@ -383,6 +383,29 @@ TEST(SpikeDetection, BadInput)
   EXPECT_THROW((void)replaceSpikes(invalid, {{0, -1}}), InvalidArgument);
 }
 
+TEST(SpikeDetection, RepairedSpikesAreNotFlaggedAgain)
+{
+  // The sample take has real glitches; a spike can hide a smaller one beside it. Detecting,
+  // repairing and detecting again with the same settings must find (next to) nothing new.
+  Take take = readC3d(test::sampleTake());
+  SpikeOptions settle = robust();
+  settle.maxPasses = 100;
+  const std::vector<SpikeFlag> first = detectSpikes(take, settle);
+  ASSERT_GT(first.size(), 100u);
+  applyPatches(take, replaceSpikes(take, first));
+  const std::vector<SpikeFlag> second = detectSpikes(take, settle);
+  EXPECT_LE(second.size(), first.size() / 100) << first.size() << " then " << second.size();
+  // One pass (the default): the repair uncovers dozens more.
+  SpikeOptions onePass = robust();
+  onePass.maxPasses = 1;
+  Take again = readC3d(test::sampleTake());
+  const std::vector<SpikeFlag> single = detectSpikes(again, onePass);
+  applyPatches(again, replaceSpikes(again, single));
+  EXPECT_GT(detectSpikes(again, onePass).size(), 10u);
+  onePass.maxPasses = 0;
+  EXPECT_THROW((void)detectSpikes(again, onePass), InvalidArgument);
+}
+
 TEST(SpikeEvaluation, RobustMeetsTheTargetOnCleanRealData)
 {
   // The target at 5 mm: recall >= 99 % with at most 1 % false alarms.

@@ -149,6 +149,7 @@ TEST_F(StudioWindow, FillingOnlyTheSelectedRangeLeavesTheRestOfTheGap)
   auto* step = panel->step<ui::GapFillStep>();
   ASSERT_NE(step, nullptr);
   panel->setCurrentStep(step);
+  step->setMaxGapSeconds(1.0);  // the 60-frame gap is longer than the 0.5 s default
   auto* rangeOnly = panel->findChild<QCheckBox*>(QStringLiteral("rangeOnly"));
   ASSERT_NE(rangeOnly, nullptr);
   rangeOnly->setChecked(true);

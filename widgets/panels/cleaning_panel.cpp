@@ -138,6 +138,7 @@ void CleaningPanel::start()
   m_progress->setVisible(true);
   m_cancel->setEnabled(true);
   m_status->setText(tr("Computing…"));
+  step->setScope(scope());
   m_watcher.setFuture(QtConcurrent::run([job = step->job(), take = m_document.take()] {
     try {
       return job(take);
@@ -167,7 +168,8 @@ void CleaningPanel::onFinished()
   m_status->setText(tr("%1 — %n sample(s) would change", nullptr, samples).arg(m_result.summary));
   if (CleaningStep* step = currentStep())
     step->showResult(m_result);
-  m_document.setFlags(m_result.flags);
+  if (m_result.detection)  // flags are the last detection's, on every tab, until the next one
+    m_document.setFlags(m_result.flags);
   m_document.setPreview(m_result.patches);
 }
 
@@ -189,6 +191,34 @@ void CleaningPanel::waitForPreview()
     if (!m_watcher.isRunning() && m_resultGeneration != m_generation)
       start();
   }
+}
+
+StepScope CleaningPanel::scope() const
+{
+  StepScope scope;
+  scope.markersOnly = m_selectedOnly->isChecked();
+  if (scope.markersOnly)
+    scope.markers = m_document.selection();  // sorted by the document
+  scope.rangeOnly = m_rangeOnly->isChecked();
+  scope.first = m_document.rangeFirst();
+  scope.last = m_document.rangeLast();
+  return scope;
+}
+
+void CleaningPanel::dropRepairedFlags(const std::vector<SamplePatch>& repairs)
+{
+  // The flags the repair replaces are settled; the others (unchecked, out of scope) stay.
+  // O(#flags · log #repaired).
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> repaired;
+  for (const SamplePatch& patch : repairs)
+    for (Eigen::Index frame : patch.frames)
+      repaired.emplace_back(patch.marker, frame);
+  std::sort(repaired.begin(), repaired.end());
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> flags = m_document.flags();
+  const auto isRepaired = [&](const auto& flag) { return std::binary_search(repaired.begin(), repaired.end(), flag); };
+  flags.erase(std::remove_if(flags.begin(), flags.end(), isRepaired), flags.end());
+  if (flags.size() != m_document.flags().size())
+    m_document.setFlags(std::move(flags));
 }
 
 std::vector<SamplePatch> CleaningPanel::onlySelected(std::vector<SamplePatch> patches) const
@@ -218,12 +248,14 @@ int CleaningPanel::apply()
     return 0;
   if (m_resultGeneration != m_generation)
     waitForPreview();
+  step->setScope(scope());
   std::vector<SamplePatch> patches = onlySelected(step->patchesToApply(m_document.take(), m_result));
   int samples = 0;
   for (const SamplePatch& p : patches)
     samples += static_cast<int>(p.size());
   m_document.clearPreview();
-  m_document.setFlags({});
+  if (m_result.detection)
+    dropRepairedFlags(patches);
   if (samples == 0) {
     m_status->setText(tr("Nothing to apply"));
     return 0;

@@ -22,6 +22,8 @@ class TakeDocument;
 /// recomputes the step on a worker thread, on a copy of the take, and shows the result as a
 /// preview over the views without touching the take; Apply pushes it as one undoable command.
 /// A newer request supersedes a running one (its result is dropped), and Cancel drops it too.
+/// A detection's flags (bad points) become the document's flags and stay on every tab until the
+/// next detection or a repair of them.
 class CleaningPanel final : public QWidget
 {
   Q_OBJECT
@@ -59,6 +61,10 @@ private:
   void start();
   void onFinished();
   void cancel();
+  /// What "Selected markers only" and "Selected frame range only" limit the steps to now.
+  [[nodiscard]] StepScope scope() const;
+  /// Removes the document's flags on samples that `repairs` replace.
+  void dropRepairedFlags(const std::vector<SamplePatch>& repairs);
   /// The patches restricted to the selected markers and frame range, when those options are on.
   [[nodiscard]] std::vector<SamplePatch> onlySelected(std::vector<SamplePatch> patches) const;
 

@@ -5,11 +5,20 @@
 #include <QString>
 #include <QWidget>
 
+#include <algorithm>
 #include <functional>
 #include <utility>
 #include <vector>
 
 namespace mocap::ui {
+
+/// A line a step lists for review (e.g. a gap left open and why), pointing at one sample.
+struct ReviewNote
+{
+  Eigen::Index marker = 0;
+  Eigen::Index frame = 0;
+  QString text;
+};
 
 /// What a cleaning step proposes for a take: the patches Apply would push, samples to flag for
 /// review, and a one-line summary.
@@ -18,7 +27,28 @@ struct StepResult
   std::vector<SamplePatch> patches;
   std::vector<std::pair<Eigen::Index, Eigen::Index>> flags;  ///< (marker, frame)
   QString summary;
+  /// True for a detection: its flags become the document's flags (kept on every tab until the
+  /// next detection). Other steps leave the document's flags alone.
+  bool detection = false;
+  std::vector<ReviewNote> notes;  ///< shown by the step (showResult)
 };
+
+/// What the panel's "Selected markers only" / "Selected frame range only" limit a step to, so a
+/// step's summary counts what Apply would change.
+struct StepScope
+{
+  bool markersOnly = false;
+  std::vector<Eigen::Index> markers;  ///< sorted; meaningful when markersOnly
+  bool rangeOnly = false;
+  Eigen::Index first = 0, last = -1;  ///< the frame range; empty when first > last
+
+  [[nodiscard]] bool hasMarker(Eigen::Index marker) const;
+};
+
+inline bool StepScope::hasMarker(Eigen::Index marker) const
+{
+  return !markersOnly || std::binary_search(markers.begin(), markers.end(), marker);
+}
 
 /// A computation of a step with the parameters it had when job() was called; runs on a worker
 /// thread on its own copy of the take, so it must not touch widgets.
@@ -47,9 +77,15 @@ public:
   [[nodiscard]] virtual bool wholeTake() const { return false; }
   /// Shows a finished result (e.g. a list of flags to review). Called on the UI thread.
   virtual void showResult(const StepResult& result) { (void)result; }
+  /// Set by the panel before job() and patchesToApply().
+  void setScope(StepScope scope) { m_scope = std::move(scope); }
+  [[nodiscard]] const StepScope& scope() const { return m_scope; }
 
 signals:
   void changed();
+
+private:
+  StepScope m_scope;
 };
 
 } // namespace mocap::ui

@@ -4,14 +4,82 @@
 
 #include "mocap/gap_fill.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
+#include <QListWidget>
+#include <QSignalBlocker>
 #include <QSpinBox>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace mocap::ui {
+
+namespace {
+
+constexpr int kMarkerRole = Qt::UserRole;
+constexpr int kFrameRole = Qt::UserRole + 1;
+
+// "0.5 s" as a technician writes it (no trailing zeros).
+QString seconds(double value)
+{
+  return QCoreApplication::translate("GapFillStep", "%1 s").arg(QString::number(value, 'g', 4));
+}
+
+// Why a gap was left open, in the panel's words.
+QString causeText(const GapFillReport& report, const Take& take, double maxGapSeconds)
+{
+  switch (report.cause) {
+  case UnfilledCause::TooLong:
+    return QCoreApplication::translate("GapFillStep", "longer than %1").arg(seconds(maxGapSeconds));
+  case UnfilledCause::EdgeGap: return QCoreApplication::translate("GapFillStep", "edge gap (extrapolation off)");
+  case UnfilledCause::RarelyValid: {
+    const double seen = 100.0 * static_cast<double>(take.valid().col(report.gap.marker).count()) /
+                        static_cast<double>(std::max<Eigen::Index>(take.frameCount(), 1));
+    return QCoreApplication::translate("GapFillStep", "marker seen in only %1 % of the take")
+        .arg(QString::number(seen, 'f', 1));
+  }
+  case UnfilledCause::NeverValid: return QCoreApplication::translate("GapFillStep", "marker never seen");
+  case UnfilledCause::Method:
+  case UnfilledCause::None: break;
+  }
+  return QString::fromStdString(report.reason);
+}
+
+// "1 gap filled, 66 samples; 3 left open (2 longer than 0.5 s, 1 edge gap)".
+QString summary(int filledGaps, int samples, const std::array<int, 6>& openByCause, double maxGapSeconds)
+{
+  const QString text =
+      filledGaps == 0 ? QCoreApplication::translate("GapFillStep", "No gap filled")
+                      : QCoreApplication::translate("GapFillStep", "%n gap(s) filled", nullptr, filledGaps) +
+                            QCoreApplication::translate("GapFillStep", ", %n sample(s)", nullptr, samples);
+  int open = 0;
+  for (int count : openByCause)
+    open += count;
+  if (open == 0)
+    return text;
+  QStringList causes;
+  const auto count = [&](UnfilledCause cause) { return openByCause[static_cast<std::size_t>(cause)]; };
+  if (const int n = count(UnfilledCause::TooLong))
+    causes << QCoreApplication::translate("GapFillStep", "%1 longer than %2").arg(n).arg(seconds(maxGapSeconds));
+  if (const int n = count(UnfilledCause::EdgeGap))
+    causes << QCoreApplication::translate("GapFillStep", "%n edge gap(s)", nullptr, n);
+  if (const int n = count(UnfilledCause::RarelyValid))
+    causes << QCoreApplication::translate("GapFillStep", "%n on rarely seen markers", nullptr, n);
+  if (const int n = count(UnfilledCause::NeverValid))
+    causes << QCoreApplication::translate("GapFillStep", "%n on markers never seen", nullptr, n);
+  if (const int n = count(UnfilledCause::Method))
+    causes << QCoreApplication::translate("GapFillStep", "%n the method could not fill", nullptr, n);
+  return text + QCoreApplication::translate("GapFillStep", "; %n left open", nullptr, open) + QStringLiteral(" (") +
+         causes.join(QStringLiteral(", ")) + QStringLiteral(")");
+}
+
+} // namespace
 
 GapFillStep::GapFillStep(TakeDocument& document, QWidget* parent) : CleaningStep(parent), m_document(document)
 {
@@ -35,15 +103,63 @@ GapFillStep::GapFillStep(TakeDocument& document, QWidget* parent) : CleaningStep
   m_neighbours->setRange(1, 30);
   m_neighbours->setValue(FillOptions{}.neighbours);
   form->addRow(tr("Neighbours"), m_neighbours);
-  m_maxGap = new QSpinBox(this);
-  m_maxGap->setRange(0, 1000000);
-  m_maxGap->setSpecialValueText(tr("unlimited"));
-  m_maxGap->setSuffix(tr(" frames"));
-  form->addRow(tr("Longest gap"), m_maxGap);
+
+  m_maxGapSeconds = FillOptions{}.maxGapSeconds;
+  m_maxGapSecondsBox = new QDoubleSpinBox(this);
+  m_maxGapSecondsBox->setObjectName(QStringLiteral("maxGapSeconds"));
+  m_maxGapSecondsBox->setRange(0.0, 3600.0);
+  m_maxGapSecondsBox->setDecimals(3);
+  m_maxGapSecondsBox->setSingleStep(0.1);
+  m_maxGapSecondsBox->setSpecialValueText(tr("unlimited"));
+  m_maxGapSecondsBox->setSuffix(tr(" s"));
+  m_maxGapFrames = new QSpinBox(this);
+  m_maxGapFrames->setObjectName(QStringLiteral("maxGapFrames"));
+  m_maxGapFrames->setRange(0, 1000000);
+  m_maxGapFrames->setSpecialValueText(tr("unlimited"));
+  m_maxGapFrames->setSuffix(tr(" frames"));
+  const QString longestTip = tr("Longer gaps are left open: filling them would invent motion");
+  m_maxGapSecondsBox->setToolTip(longestTip);
+  m_maxGapFrames->setToolTip(longestTip);
+  auto* longest = new QHBoxLayout;
+  longest->addWidget(m_maxGapSecondsBox);
+  longest->addWidget(m_maxGapFrames);
+  form->addRow(tr("Longest gap"), longest);
+  showMaxGap();
+
+  m_extrapolate = new QCheckBox(tr("Extrapolate before a marker's first and after its last sample"), this);
+  m_extrapolate->setObjectName(QStringLiteral("extrapolate"));
+  m_extrapolate->setChecked(FillOptions{}.extrapolate);
+  form->addRow(m_extrapolate);
+  m_minValid = new QSpinBox(this);
+  m_minValid->setObjectName(QStringLiteral("minValid"));
+  m_minValid->setRange(0, 100);
+  m_minValid->setSuffix(tr(" % of the take"));
+  m_minValid->setSpecialValueText(tr("fill every marker"));
+  m_minValid->setValue(static_cast<int>(std::lround(100.0 * FillOptions{}.minValidFraction)));
+  m_minValid->setToolTip(tr("Markers seen in fewer frames are left open, unless they are selected and "
+                            "\"Selected markers only\" is on"));
+  form->addRow(tr("Skip markers seen under"), m_minValid);
+  m_open = new QListWidget(this);
+  m_open->setObjectName(QStringLiteral("openGaps"));
+  m_open->setToolTip(tr("Gaps left open and why; click one to go there"));
+  form->addRow(tr("Left open"), m_open);
+
   connect(m_method, qOverload<int>(&QComboBox::currentIndexChanged), this, &CleaningStep::changed);
   connect(m_neighbours, qOverload<int>(&QSpinBox::valueChanged), this, &CleaningStep::changed);
-  connect(m_maxGap, qOverload<int>(&QSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_maxGapSecondsBox, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+          &GapFillStep::setMaxGapSeconds);
+  connect(m_maxGapFrames, qOverload<int>(&QSpinBox::valueChanged), this,
+          [this](int frames) { setMaxGapSeconds(static_cast<double>(frames) / frameRate()); });
+  connect(m_extrapolate, &QCheckBox::toggled, this, &CleaningStep::changed);
+  connect(m_minValid, qOverload<int>(&QSpinBox::valueChanged), this, &CleaningStep::changed);
   connect(&document, &TakeDocument::rangeChanged, this, &CleaningStep::changed);
+  connect(&document, &TakeDocument::takeReset, this, &GapFillStep::showMaxGap);  // a new rate
+  connect(m_open, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* item) {
+    if (!item)
+      return;
+    m_document.setSelection({item->data(kMarkerRole).value<qlonglong>()});
+    m_document.setCurrentFrame(item->data(kFrameRole).value<qlonglong>());
+  });
 }
 
 QString GapFillStep::title() const
@@ -51,36 +167,91 @@ QString GapFillStep::title() const
   return tr("Gaps");
 }
 
+double GapFillStep::frameRate() const
+{
+  const double rate = m_document.hasTake() ? m_document.take().frameRate() : 0.0;
+  return rate > 0.0 ? rate : 100.0;
+}
+
+void GapFillStep::setMaxGapSeconds(double seconds)
+{
+  seconds = std::max(0.0, seconds);
+  if (seconds == m_maxGapSeconds)
+    return;
+  m_maxGapSeconds = seconds;
+  showMaxGap();
+  emit changed();
+}
+
+void GapFillStep::showMaxGap()
+{
+  const QSignalBlocker blockSeconds(m_maxGapSecondsBox);
+  const QSignalBlocker blockFrames(m_maxGapFrames);
+  m_maxGapSecondsBox->setValue(m_maxGapSeconds);
+  FillOptions options;
+  options.maxGapSeconds = m_maxGapSeconds;
+  const Eigen::Index frames = longestGapFrames(options, frameRate());
+  m_maxGapFrames->setValue(static_cast<int>(std::min<Eigen::Index>(frames, m_maxGapFrames->maximum())));
+}
+
 StepJob GapFillStep::job() const
 {
   FillOptions options;
   options.method = static_cast<FillMethod>(m_method->currentData().toInt());
   options.neighbours = m_neighbours->value();
-  options.maxGap = m_maxGap->value();
-  const bool ranged = m_document.hasRange();
-  const Eigen::Index first = m_document.rangeFirst(), last = m_document.rangeLast();
-  return [options, ranged, first, last](const Take& take) {
+  options.maxGap = 0;
+  options.maxGapSeconds = m_maxGapSeconds;
+  options.extrapolate = m_extrapolate->isChecked();
+  options.minValidFraction = m_minValid->value() / 100.0;
+  const StepScope scope = this->scope();
+  if (scope.markersOnly)
+    options.fillAnyway = scope.markers;  // a technician who selects a marker means it
+  return [options, scope](const Take& take) {
     FillResult filled = fillGaps(take, options);
+    // The gaps in scope: the selected markers (when limited to them) and, with a range on the
+    // curves, the gaps overlapping it; the summary counts only these, as Apply changes only these.
+    const bool ranged = scope.first <= scope.last;
+    const auto inScope = [&](Eigen::Index marker, Eigen::Index first, Eigen::Index last) {
+      return scope.hasMarker(marker) && (!ranged || (last >= scope.first && first <= scope.last));
+    };
     StepResult result;
-    int unfilled = 0;
-    for (std::size_t i = 0; i < filled.gaps.size(); ++i) {
-      const GapFillReport& report = filled.gaps[i];
+    std::array<int, 6> openByCause{};
+    for (const GapFillReport& report : filled.gaps) {
       const Eigen::Index end = report.gap.firstFrame + report.gap.length - 1;
-      if (ranged && (end < first || report.gap.firstFrame > last))
+      if (report.filled || !inScope(report.gap.marker, report.gap.firstFrame, end))
         continue;
-      unfilled += report.filled ? 0 : 1;
+      ++openByCause[static_cast<std::size_t>(report.cause)];
+      const QString where = tr("%1, frames %2–%3 (%4)")
+                                .arg(QString::fromStdString(take.label(report.gap.marker)))
+                                .arg(static_cast<qlonglong>(take.firstFrame() + report.gap.firstFrame))
+                                .arg(static_cast<qlonglong>(take.firstFrame() + end))
+                                .arg(static_cast<qlonglong>(report.gap.length));
+      result.notes.push_back({report.gap.marker, report.gap.firstFrame,
+                              where + QStringLiteral(": ") + causeText(report, take, options.maxGapSeconds)});
     }
+    int samples = 0;
     for (SamplePatch& patch : filled.patches) {
-      if (ranged && (patch.frames.back() < first || patch.frames.front() > last))
+      if (!inScope(patch.marker, patch.frames.front(), patch.frames.back()))
         continue;
+      samples +=
+          static_cast<int>(scope.rangeOnly ? patchWithin(patch, scope.first, scope.last).size() : patch.size());
       result.patches.push_back(std::move(patch));
     }
-    const int filledCount = static_cast<int>(result.patches.size());  // plain variable: lupdate sees the plural
-    result.summary = QCoreApplication::translate("GapFillStep", "%n gap(s) filled", nullptr, filledCount);
-    if (unfilled > 0)
-      result.summary += QCoreApplication::translate("GapFillStep", ", %n left open", nullptr, unfilled);
+    const int filledCount = static_cast<int>(result.patches.size());
+    result.summary = summary(filledCount, samples, openByCause, options.maxGapSeconds);
     return result;
   };
+}
+
+void GapFillStep::showResult(const StepResult& result)
+{
+  m_open->clear();
+  for (const ReviewNote& note : result.notes) {
+    auto* item = new QListWidgetItem(note.text, m_open);
+    item->setToolTip(note.text);  // the list is narrow in the dock
+    item->setData(kMarkerRole, static_cast<qlonglong>(note.marker));
+    item->setData(kFrameRole, static_cast<qlonglong>(note.frame));
+  }
 }
 
 } // namespace mocap::ui

@@ -4,6 +4,7 @@
 
 #include "mocap/spike_detection.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -23,6 +24,8 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
   m_method = new QComboBox(this);
   m_method->addItem(tr("Robust (local fit + MAD)"), static_cast<int>(SpikeMethod::Robust));
   m_method->addItem(tr("Paper (eqs 8–10)"), static_cast<int>(SpikeMethod::Paper));
+  m_method->setItemData(0, tr("Judges each sample against a robust local fit of its neighbours"), Qt::ToolTipRole);
+  m_method->setItemData(1, tr("Eqs 8–10 as written, in one pass"), Qt::ToolTipRole);
   form->addRow(tr("Method"), m_method);
   m_factor = new QDoubleSpinBox(this);
   m_factor->setRange(1.0, 10.0);
@@ -36,6 +39,13 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
   m_threshold->setValue(SpikeOptions{}.threshold);
   m_threshold->setToolTip(tr("Robust: flag samples this many robust standard deviations off the local fit"));
   form->addRow(tr("Threshold"), m_threshold);
+  m_settle = new QCheckBox(tr("Look again until nothing new"), this);
+  m_settle->setObjectName(QStringLiteral("settle"));
+  m_settle->setToolTip(tr("A glitch longer than a few frames is found a part at a time, its worst samples first, so "
+                          "detecting again after a repair finds the rest beside the repaired samples. On, the robust "
+                          "detector repeats itself on the repaired curve until it finds nothing new: whole glitches "
+                          "are flagged at once (more flags), and a second detection finds next to nothing."));
+  form->addRow(m_settle);
   m_flags = new QListWidget(this);
   m_flags->setToolTip(tr("Click to go to a flag; uncheck to keep that sample"));
   form->addRow(m_flags);
@@ -43,6 +53,7 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
     const bool paper = m_method->currentData().toInt() == static_cast<int>(SpikeMethod::Paper);
     m_factor->setEnabled(paper);
     m_threshold->setEnabled(!paper);
+    m_settle->setEnabled(!paper);  // eq 9 as written: one pass
   };
   updateEnabled();
   connect(m_method, qOverload<int>(&QComboBox::currentIndexChanged), this, [this, updateEnabled] {
@@ -51,6 +62,7 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
   });
   connect(m_factor, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &CleaningStep::changed);
   connect(m_threshold, qOverload<double>(&QDoubleSpinBox::valueChanged), this, &CleaningStep::changed);
+  connect(m_settle, &QCheckBox::toggled, this, &CleaningStep::changed);
   connect(m_flags, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* item) {
     if (!item)
       return;
@@ -70,8 +82,10 @@ StepJob SpikeStep::job() const
   options.method = static_cast<SpikeMethod>(m_method->currentData().toInt());
   options.factor = m_factor->value();
   options.threshold = m_threshold->value();
+  options.maxPasses = m_settle->isChecked() ? 100 : 1;
   return [options](const Take& take) {
     StepResult result;
+    result.detection = true;
     const std::vector<SpikeFlag> flags = detectSpikes(take, options);
     for (const SpikeFlag& flag : flags)
       result.flags.emplace_back(flag.marker, flag.frame);

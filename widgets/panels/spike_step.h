@@ -2,6 +2,7 @@
 
 #include "panels/cleaning_step.h"
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QListWidget;
@@ -11,7 +12,7 @@ namespace mocap::ui {
 class TakeDocument;
 
 /// Bad-point detection (mocap::detectSpikes) and replacement: method, factor (paper) or
-/// threshold (robust), and the list of flags to step through; unchecking a flag keeps that
+/// threshold (robust), whether to look again until nothing new, and the list of flags to step through; unchecking a flag keeps that
 /// sample as it is when applying.
 class SpikeStep final : public CleaningStep
 {
@@ -30,6 +31,7 @@ private:
   QComboBox* m_method = nullptr;
   QDoubleSpinBox* m_factor = nullptr;
   QDoubleSpinBox* m_threshold = nullptr;
+  QCheckBox* m_settle = nullptr;
   QListWidget* m_flags = nullptr;
 };
 

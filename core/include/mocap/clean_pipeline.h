@@ -13,7 +13,8 @@
 namespace mocap {
 
 /// Which cleaning steps run, in the fixed order stabilise → spikes → fill → smooth.
-/// A step whose options are empty is skipped.
+/// A step whose options are empty is skipped. The fill defaults (FillOptions) leave gaps longer
+/// than 0.5 s, edge gaps and rarely seen markers open; CleanReport::gaps says which and why.
 struct CleanOptions
 {
   std::vector<std::string> stabilizeLabels;  ///< head reference markers; empty: no stabilisation
