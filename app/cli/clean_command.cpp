@@ -9,6 +9,7 @@
 #include "mocap/take_io.h"
 
 #include <iostream>
+#include <sstream>
 
 namespace mocap::cli {
 
@@ -171,6 +172,57 @@ std::string reportJson(const std::string& input, const std::string& output, cons
 
 } // namespace
 
+namespace {
+
+/// One history step per pipeline step that ran, so the written take says how it was cleaned.
+void appendHistory(Take& take, const CleanOptions& options, const CleanReport& report)
+{
+  auto step = [&take](std::string operation, std::vector<std::pair<std::string, std::string>> parameters,
+                      std::int64_t samples) {
+    ProcessingStep s;
+    s.operation = std::move(operation);
+    s.parameters = std::move(parameters);
+    s.firstFrame = take.firstFrame();
+    s.lastFrame = take.firstFrame() + take.frameCount() - 1;
+    s.samples = samples;
+    s.time = currentUtcTime();
+    s.tool = "mocap clean";
+    take.history().push_back(std::move(s));
+  };
+  auto number = [](double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  };
+  if (!options.stabilizeLabels.empty()) {
+    std::string labels;
+    for (const std::string& label : options.stabilizeLabels)
+      labels += (labels.empty() ? "" : ",") + label;
+    step("stabilise head", {{"reference markers", labels}, {"kept", options.keepStabilized ? "yes" : "no"}}, 0);
+  }
+  if (options.spikes)
+    step("repair spikes",
+         {{"method", std::string(spikeMethodName(options.spikes->method))},
+          {"factor", number(options.spikes->factor)},
+          {"threshold", number(options.spikes->threshold)}},
+         static_cast<std::int64_t>(report.spikes.size()));
+  if (options.fill) {
+    const Eigen::Index longest = longestGapFrames(*options.fill, take.frameRate());
+    step("fill gaps",
+         {{"method", std::string(fillMethodName(options.fill->method))},
+          {"max gap", longest == 0 ? std::string("unlimited") : std::to_string(longest) + " frames"},
+          {"extrapolate", options.fill->extrapolate ? "yes" : "no"},
+          {"min valid", number(options.fill->minValidFraction)},
+          {"neighbours", std::to_string(options.fill->neighbours)}},
+         static_cast<std::int64_t>(report.filledSamples));
+  }
+  if (options.smooth)
+    step("smooth", {{"method", std::string(smoothMethodName(options.smooth->method))}},
+         static_cast<std::int64_t>(report.smoothedSamples));
+}
+
+} // namespace
+
 int runClean(const std::vector<std::string>& args)
 {
   const Arguments arguments(args, {"--keep-stabilized", "--extrapolate"},
@@ -191,6 +243,7 @@ int runClean(const std::vector<std::string>& args)
   for (const auto& w : warnings)
     std::cerr << input << ": warning: " << w << '\n';
   const CleanReport report = cleanTake(take, options);
+  appendHistory(take, options, report);
   if (formatFromPath(output) == TakeFormat::Bvh && report.headMotion && !options.keepStabilized) {
     // BVH carries the head motion in its root joint; the markers go in head space.
     removeHeadMotion(take, *report.headMotion);

@@ -63,6 +63,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 #include "mocap/face_rig.h"
 #include "mocap/head_stabilization.h"
@@ -1046,18 +1047,31 @@ void MainWindow::applyFirstRunLayout()
   const QSize size(available.width() * 85 / 100, available.height() * 85 / 100);
   resize(size);
   move(available.center() - QPoint(size.width() / 2, size.height() / 2));
+  m_firstRun = true;  // the docks are proportioned once the window is shown (see showEvent)
+}
+
+void MainWindow::proportionDocks()
+{
   // Side docks share at most half the width; the 3D view keeps the rest.
-  QList<QDockWidget*> left, right;
+  QList<QDockWidget*> docks;
+  QList<int> widths;
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-    if (dockWidgetArea(dock) == Qt::LeftDockWidgetArea)
-      left.append(dock);
-    else if (dockWidgetArea(dock) == Qt::RightDockWidgetArea)
-      right.append(dock);
+    if (!dock->isVisible() || dock->isFloating())
+      continue;
+    const Qt::DockWidgetArea area = dockWidgetArea(dock);
+    if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) {
+      docks.append(dock);
+      widths.append(width() * (area == Qt::LeftDockWidgetArea ? 12 : 26) / 100);
+    }
   }
-  if (!left.isEmpty())
-    resizeDocks({left.front()}, {size.width() * 18 / 100}, Qt::Horizontal);
-  if (!right.isEmpty())
-    resizeDocks({right.front()}, {size.width() * 28 / 100}, Qt::Horizontal);
+  resizeDocks(docks, widths, Qt::Horizontal);
+}
+
+void MainWindow::showEvent(QShowEvent* event)
+{
+  QMainWindow::showEvent(event);
+  if (std::exchange(m_firstRun, false))
+    proportionDocks();
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event)

@@ -77,6 +77,7 @@ public:
 protected:
   void closeEvent(QCloseEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
+  void showEvent(QShowEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
@@ -108,6 +109,8 @@ private:
   void openReadWarnings();
   /// Sizes a first-run window to the screen, with the 3D view at least half its width.
   void applyFirstRunLayout();
+  /// Gives the side docks 12 % and 26 % of the width, so the 3D view keeps more than half.
+  void proportionDocks();
   /// The face mesh, its binding and the window layout, kept with every autosave.
   [[nodiscard]] QVariantMap recoverySession() const;
   void restoreSession(const QVariantMap& session);
@@ -144,7 +147,8 @@ private:
   QAction* m_headStabilisedView = nullptr;
   QLabel* m_status = nullptr;
   QToolButton* m_warningsButton = nullptr;
-  QTimer* m_layoutSaver = nullptr;  // saves the window layout shortly after every change
+  QTimer* m_layoutSaver = nullptr;
+  bool m_firstRun = false;  // saves the window layout shortly after every change
   QStringList m_recent;
   bool m_syncingSelection = false;
   bool m_confirmedOverwrite = false;

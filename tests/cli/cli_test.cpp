@@ -101,6 +101,16 @@ TEST(Cli, InfoJsonReportsProvenanceAndDataLoss)
   EXPECT_NE(run.out.find("\"method\": \"gcvspl\""), std::string::npos);
   EXPECT_NE(run.out.find("\"data_loss\": []"), std::string::npos);
 
+  // mocap clean appends its steps to the history the take already has.
+  const CommandResult clean =
+      runMocap("clean " + q(dir.file("processed.c3d")) + " -o " + q(dir.file("cleaned.c3d")), dir);
+  ASSERT_EQ(clean.exitCode, 0) << clean.err;
+  const Take cleaned = readTake(dir.file("cleaned.c3d"));
+  ASSERT_GE(cleaned.history().size(), 3u);
+  EXPECT_EQ(cleaned.history().front().operation, "smooth");
+  EXPECT_EQ(cleaned.history()[1].tool, "mocap clean");
+  EXPECT_EQ(cleaned.history()[2].operation, "fill gaps");
+
   const std::string bytes = readFileBytes(test::sampleTake());
   writeFileAtomically(dir.file("cut.c3d"), std::string_view(bytes).substr(0, bytes.size() / 2));
   const CommandResult cut = runMocap("info " + q(dir.file("cut.c3d")) + " --json", dir);

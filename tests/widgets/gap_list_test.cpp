@@ -228,8 +228,11 @@ TEST_F(GapList, EachGapIsFilledWithItsOwnMethod)
   panel->waitUntilIdle();
   ASSERT_EQ(doc().undoStack()->count(), 1) << panel->statusText().toStdString();
   for (const auto& [gap, method] : {std::pair{linearGap, FillMethod::Linear}, std::pair{splineGap, FillMethod::Spline}}) {
-    FillOptions options;
+    FillOptions options;  // a gap the technician picked: no bulk limits (see GapListPanel)
     options.method = method;
+    options.maxGapSeconds = 0.0;
+    options.extrapolate = true;
+    options.fillAnyway = {gap.marker};
     const FillResult core = fillGaps(before, std::vector<Gap>{gap}, options);
     ASSERT_EQ(core.patches.size(), 1u);
     const SamplePatch& patch = core.patches.front();
@@ -248,8 +251,11 @@ TEST_F(GapList, AGapThatCannotBeFilledSaysWhy)
   const Gap gap = model->gapAt(row);
   ASSERT_TRUE(gap.atEdge);
   model->setMethod(row, FillMethod::Linear);
-  FillOptions options;
+  FillOptions options;  // as the panel fills a picked gap: no bulk limits, so only the method says no
   options.method = FillMethod::Linear;
+  options.maxGapSeconds = 0.0;
+  options.extrapolate = true;
+  options.fillAnyway = {gap.marker};
   const FillResult core = fillGaps(take, std::vector<Gap>{gap}, options);
   ASSERT_FALSE(core.gaps.front().filled);
   panel->fill(std::vector<int>{row});

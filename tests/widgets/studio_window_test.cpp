@@ -184,7 +184,10 @@ TEST_F(StudioWindow, SaveAndReopenKeepTheEdit)
   EXPECT_TRUE((doc.take().valid() == saved.valid()).all());
   // C3D stores floats: the filled doubles come back to float precision.
   EXPECT_LT((doc.take().position(900, marker) - saved.position(900, marker)).norm(), 1e-4);
-  EXPECT_EQ(doc.take().state(900, marker), SampleState::Original) << "states are not stored in C3D";
+  // The provenance survives: the filled samples reopen as filled, the rest as measured.
+  ASSERT_EQ(saved.state(900, marker), SampleState::Filled);
+  EXPECT_TRUE((doc.take().states() == saved.states()).all());
+  EXPECT_EQ(doc.take().state(900, marker), saved.state(900, marker));
 }
 
 TEST_F(StudioWindow, CorruptFileShowsAnErrorAndKeepsTheOpenTake)

@@ -9,7 +9,10 @@
 #include "document/autosave.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "panels/cleaning_panel.h"
+#include "panels/face_mesh_panel.h"
 #include "panels/history_panel.h"
+#include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/wheel_guard.h"
 
@@ -41,6 +44,8 @@
 #include <QWheelEvent>
 
 #include <gtest/gtest.h>
+
+#include <cstdlib>
 
 namespace mocap {
 namespace {
@@ -222,7 +227,15 @@ TEST_F(Trust, FirstRunFillsMostOfTheScreenWithTheViewAtLeastHalf)
   const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
   EXPECT_GE(window->width(), screen.width() * 8 / 10);
   EXPECT_GE(window->height(), screen.height() * 8 / 10);
-  EXPECT_GE(window->markerView()->width(), window->width() / 2);
+  QString docks;
+  for (const QDockWidget* dock : window->findChildren<QDockWidget*>())
+    if (dock->isVisible())
+      docks += QStringLiteral("%1 %2 (min %3); ").arg(dock->objectName()).arg(dock->width()).arg(dock->minimumSizeHint().width());
+  if (std::getenv("MOCAP_DEBUG_DOCKS"))
+    for (const QWidget* w : window->cleaningPanel()->findChildren<QWidget*>())
+      if (w->minimumSizeHint().width() > 300)
+        docks += QStringLiteral("\n%1 %2 %3").arg(QString::fromLatin1(w->metaObject()->className()), w->objectName()).arg(w->minimumSizeHint().width());
+  EXPECT_GE(window->markerView()->width(), window->width() / 2) << docks.toStdString();
 }
 
 TEST_F(Trust, SaveAsHasCtrlShiftS)

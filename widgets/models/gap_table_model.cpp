@@ -30,8 +30,8 @@ QString GapTableModel::methodTitle(FillMethod method)
   case FillMethod::Pca: return tr("PCA (marker correlations)");
   case FillMethod::Spline: return tr("Cubic spline");
   case FillMethod::Linear: return tr("Linear");
-  case FillMethod::Zhang3: return tr("Paper: three neighbours (eqs 3–5)");
-  case FillMethod::ZhangN: return tr("Paper: n neighbours (eqs 6–7)");
+  case FillMethod::Zhang3: return tr("Paper method: three neighbours (Zhang et al., eqs 3–5)");
+  case FillMethod::ZhangN: return tr("Paper method: n neighbours (Zhang et al., eqs 6–7)");
   case FillMethod::Guenter: return tr("Neighbour average (Guenter)");
   case FillMethod::LinOuhyoung: return tr("Distance-weighted neighbours (Lin–Ouhyoung)");
   }

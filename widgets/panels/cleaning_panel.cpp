@@ -1,9 +1,13 @@
 #include "panels/cleaning_panel.h"
 
 #include "commands/apply_patches_command.h"
+#include "commands/record_step_command.h"
 #include "document/take_document.h"
 
+#include <QAbstractSpinBox>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
 #include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -18,6 +22,42 @@
 #include <algorithm>
 
 namespace mocap::ui {
+
+namespace {
+
+/// The step's parameters as its form shows them (label → value), for the processing history:
+/// what the user saw is what the history says, for every step without per-step code.
+std::vector<std::pair<std::string, std::string>> shownParameters(const QWidget& step)
+{
+  std::vector<std::pair<std::string, std::string>> parameters;
+  for (const QFormLayout* form : step.findChildren<QFormLayout*>()) {
+    for (int row = 0; row < form->rowCount(); ++row) {
+      const QLayoutItem* labelItem = form->itemAt(row, QFormLayout::LabelRole);
+      const QLayoutItem* fieldItem = form->itemAt(row, QFormLayout::FieldRole);
+      const auto* label = labelItem ? qobject_cast<const QLabel*>(labelItem->widget()) : nullptr;
+      QWidget* field = fieldItem ? fieldItem->widget() : nullptr;
+      if (!field || !field->isEnabled())
+        continue;
+      QString value;
+      if (const auto* combo = qobject_cast<const QComboBox*>(field))
+        value = combo->currentText();
+      else if (const auto* spin = qobject_cast<const QAbstractSpinBox*>(field))
+        value = spin->text();
+      else if (const auto* box = qobject_cast<const QCheckBox*>(field))
+        value = box->isChecked() ? QStringLiteral("on") : QStringLiteral("off");
+      else
+        continue;
+      const auto* check = qobject_cast<const QCheckBox*>(field);
+      QString name = label ? label->text() : check ? check->text() : QString();
+      name.remove(QLatin1Char('&'));
+      if (!name.isEmpty())
+        parameters.emplace_back(name.trimmed().toStdString(), value.trimmed().toStdString());
+    }
+  }
+  return parameters;
+}
+
+} // namespace
 
 CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
 {
@@ -260,7 +300,8 @@ int CleaningPanel::apply()
     m_status->setText(tr("Nothing to apply"));
     return 0;
   }
-  m_document.undoStack()->push(new ApplyPatchesCommand(m_document, std::move(patches), step->title()));
+  m_document.undoStack()->push(makeRecordedEdit(m_document, std::move(patches), step->title(),
+                                                step->title().toStdString(), shownParameters(*step)));
   return samples;
 }
 

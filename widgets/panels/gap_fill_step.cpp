@@ -1,6 +1,7 @@
 #include "panels/gap_fill_step.h"
 
 #include "document/take_document.h"
+#include "models/gap_table_model.h"
 
 #include "mocap/gap_fill.h"
 
@@ -85,19 +86,12 @@ GapFillStep::GapFillStep(TakeDocument& document, QWidget* parent) : CleaningStep
 {
   auto* form = new QFormLayout(this);
   m_method = new QComboBox(this);
-  const std::pair<FillMethod, QString> methods[] = {
-      {FillMethod::Auto, tr("Auto (best blend)")},
-      {FillMethod::Rigid, tr("Rigid neighbours")},
-      {FillMethod::Pca, tr("PCA (marker correlations)")},
-      {FillMethod::Spline, tr("Cubic spline")},
-      {FillMethod::Linear, tr("Linear")},
-      {FillMethod::Zhang3, tr("Paper: three neighbours (eqs 3–5)")},
-      {FillMethod::ZhangN, tr("Paper: n neighbours (eqs 6–7)")},
-      {FillMethod::Guenter, tr("Neighbour average (Guenter)")},
-      {FillMethod::LinOuhyoung, tr("Distance-weighted neighbours (Lin–Ouhyoung)")},
-  };
-  for (const auto& [method, name] : methods)
-    m_method->addItem(name, static_cast<int>(method));
+  m_method->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // the dock stays narrow
+  m_method->setMinimumContentsLength(18);
+  // The order a technician tries them in; the names are the gap list's, so both read the same.
+  for (FillMethod method : {FillMethod::Auto, FillMethod::Rigid, FillMethod::Pca, FillMethod::Spline, FillMethod::Linear,
+                            FillMethod::Zhang3, FillMethod::ZhangN, FillMethod::Guenter, FillMethod::LinOuhyoung})
+    m_method->addItem(GapTableModel::methodTitle(method), static_cast<int>(method));
   form->addRow(tr("Method"), m_method);
   m_neighbours = new QSpinBox(this);
   m_neighbours->setRange(1, 30);
@@ -120,13 +114,14 @@ GapFillStep::GapFillStep(TakeDocument& document, QWidget* parent) : CleaningStep
   const QString longestTip = tr("Longer gaps are left open: filling them would invent motion");
   m_maxGapSecondsBox->setToolTip(longestTip);
   m_maxGapFrames->setToolTip(longestTip);
-  auto* longest = new QHBoxLayout;
-  longest->addWidget(m_maxGapSecondsBox);
-  longest->addWidget(m_maxGapFrames);
-  form->addRow(tr("Longest gap"), longest);
+  // One row each, so the dock stays narrow enough for the 3D view at 1280 px.
+  form->addRow(tr("Longest gap"), m_maxGapSecondsBox);
+  form->addRow(tr("= frames"), m_maxGapFrames);
   showMaxGap();
 
-  m_extrapolate = new QCheckBox(tr("Extrapolate before a marker's first and after its last sample"), this);
+  m_extrapolate = new QCheckBox(tr("Extrapolate edge gaps"), this);
+  m_extrapolate->setToolTip(tr("Fill before a marker's first and after its last valid sample (invents motion "
+                               "nobody measured; off by default)"));
   m_extrapolate->setObjectName(QStringLiteral("extrapolate"));
   m_extrapolate->setChecked(FillOptions{}.extrapolate);
   form->addRow(m_extrapolate);

@@ -112,8 +112,16 @@ FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::v
       }
     if (some.empty())
       continue;
+    // Each gap here was picked by the technician, with its method: the bulk defaults that keep
+    // the cleaning panel from inventing data (longest gap, no extrapolation, rarely seen
+    // markers skipped) do not second-guess that choice.
     FillOptions options;
     options.method = method;
+    options.maxGap = 0;
+    options.maxGapSeconds = 0.0;
+    options.extrapolate = true;
+    for (const Gap& gap : some)
+      options.fillAnyway.push_back(gap.marker);
     try {
       FillResult part = fillGaps(take, some, options);
       for (std::size_t k = 0; k < where.size() && k < part.gaps.size(); ++k)

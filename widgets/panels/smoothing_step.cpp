@@ -67,8 +67,10 @@ SmoothingStep::SmoothingStep(QWidget* parent) : CleaningStep(parent)
   const SmoothOptions defaults;
   auto* form = new QFormLayout(this);
   m_method = new QComboBox(this);
-  m_method->addItem(tr("Smoothing spline (GCV)"), static_cast<int>(SmoothMethod::Gcvspl));
-  m_method->addItem(tr("B-spline (eqs 11–12)"), static_cast<int>(SmoothMethod::BSpline));
+  m_method->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // the dock stays narrow
+  m_method->setMinimumContentsLength(18);
+  m_method->addItem(tr("GCV smoothing spline (Woltring)"), static_cast<int>(SmoothMethod::Gcvspl));
+  m_method->addItem(tr("B-spline (Zhang et al., eqs 11–12)"), static_cast<int>(SmoothMethod::BSpline));
   m_method->addItem(tr("Butterworth (zero lag)"), static_cast<int>(SmoothMethod::Butterworth));
   m_method->addItem(tr("Savitzky–Golay"), static_cast<int>(SmoothMethod::SavGol));
   form->addRow(tr("Method"), m_method);

@@ -22,8 +22,10 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
 {
   auto* form = new QFormLayout(this);
   m_method = new QComboBox(this);
+  m_method->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // the dock stays narrow
+  m_method->setMinimumContentsLength(18);
   m_method->addItem(tr("Robust (local fit + MAD)"), static_cast<int>(SpikeMethod::Robust));
-  m_method->addItem(tr("Paper (eqs 8–10)"), static_cast<int>(SpikeMethod::Paper));
+  m_method->addItem(tr("Paper method (Zhang et al., eqs 8–10)"), static_cast<int>(SpikeMethod::Paper));
   m_method->setItemData(0, tr("Judges each sample against a robust local fit of its neighbours"), Qt::ToolTipRole);
   m_method->setItemData(1, tr("Eqs 8–10 as written, in one pass"), Qt::ToolTipRole);
   form->addRow(tr("Method"), m_method);

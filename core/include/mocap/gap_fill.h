@@ -55,7 +55,7 @@ struct FillOptions
   /// unless named in fillAnyway. In [0, 1]; 0 fills every marker.
   double minValidFraction = 0.2;
   /// Markers filled whatever their valid fraction (e.g. the ones a technician selected).
-  std::vector<Eigen::Index> fillAnyway;
+  std::vector<Eigen::Index> fillAnyway{};
 };
 
 /// Why a gap was left open; None for a filled gap.
