@@ -1,6 +1,8 @@
 // The Face mesh dock under Xvfb: the sample mesh and binding driven by the sample take, binding
 // edits by picking (undoable), RBF vs Laplacian, clear errors, and a render against a baseline.
 #include "../core/test_support.h"
+
+#include "commands/apply_patches_command.h"
 #include "image_difference.h"
 
 #include "dialogs/export_dialog.h"
@@ -205,6 +207,17 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   EXPECT_EQ(panel->undoStack()->index(), 0);
   panel->undoStack()->redo();
   EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
+  // One undo history: the binding edit and a take edit undo in order, with Ctrl+Z's stack.
+  ASSERT_EQ(panel->undoStack(), document().undoStack());
+  document().undoStack()->push(new ui::ApplyPatchesCommand(
+      document(), {deleteSamples(document().take(), marker, 10, 12)}, QStringLiteral("delete")));
+  document().undoStack()->undo();  // the take edit first
+  EXPECT_TRUE(document().take().isValid(11, marker));
+  EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
+  document().undoStack()->undo();  // then the binding edit
+  EXPECT_EQ(bindingOf("section7-1").vertices, was.vertices);
+  document().undoStack()->redo();
+  EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
   // Saved and read back, the edited binding is the same (and starts a new history).
   test::TempDir dir;
   const QString saved = QString::fromStdString(dir.file("edited.binding.json").string());
@@ -212,7 +225,11 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   ASSERT_EQ(panel->loadBinding(saved), QString());
   EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
   EXPECT_EQ(scene().binding().markers.size(), original.markers.size());
-  EXPECT_EQ(panel->undoStack()->count(), 0);
+  // The edit was for the binding now replaced: undoing it changes nothing and drops it.
+  const int before = document().undoStack()->count();
+  document().undoStack()->undo();  // the binding edit (the take edit after it was undone above)
+  EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
+  EXPECT_LT(document().undoStack()->count(), before);
 }
 
 TEST_F(FaceMeshPanelTest, TheMeshStaysOnTheMarkersInTheHeadStabilisedView)

@@ -7,7 +7,7 @@
 namespace mocap::ui {
 
 RebindMarkerCommand::RebindMarkerCommand(FaceMeshScene& scene, std::string label, std::optional<MarkerBinding> binding)
-    : m_scene(scene), m_label(std::move(label)), m_binding(std::move(binding))
+    : m_scene(scene), m_label(std::move(label)), m_binding(std::move(binding)), m_generation(scene.bindingGeneration())
 {
   const QString name = QString::fromStdString(m_label);
   if (!m_binding)
@@ -22,6 +22,10 @@ RebindMarkerCommand::RebindMarkerCommand(FaceMeshScene& scene, std::string label
 
 void RebindMarkerCommand::swap()
 {
+  if (m_scene.bindingGeneration() != m_generation) {
+    setObsolete(true);
+    return;
+  }
   m_binding = m_scene.rebind(m_label, std::move(m_binding));
 }
 

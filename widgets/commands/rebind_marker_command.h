@@ -12,7 +12,9 @@ namespace mocap::ui {
 class FaceMeshScene;
 
 /// Binds one marker to another mesh point (or unbinds it); undo puts the old binding back (the
-/// binding is swapped each time, FaceMeshScene::rebind).
+/// binding is swapped each time, FaceMeshScene::rebind). It lives on the document's undo stack
+/// with every other edit; once the whole binding has been replaced (another mesh, binding file or
+/// auto-bind) it no longer applies and becomes obsolete, so the stack drops it.
 class RebindMarkerCommand final : public QUndoCommand
 {
 public:
@@ -27,6 +29,7 @@ private:
   FaceMeshScene& m_scene;
   std::string m_label;
   std::optional<MarkerBinding> m_binding;
+  int m_generation;
 };
 
 } // namespace mocap::ui

@@ -67,7 +67,7 @@ QString nameText(std::string_view name)
 
 FaceMeshPanel::FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent)
     : QWidget(parent), m_document(document), m_view(view), m_scene(new FaceMeshScene(document, view, this)),
-      m_undo(new QUndoStack(this))
+      m_undo(document.undoStack())
 {
   buildUi();
   readSettings();
@@ -310,7 +310,6 @@ void FaceMeshPanel::onTakeReset()
   m_neutral->setSpecialValueText(tr("first complete"));
   m_neutral->setValue(first - 1);
   m_pendingLabel.clear();
-  m_undo->clear();  // binding edits were for the old take's markers
   m_scene->setOptions(optionsFromUi());
   applyStabilization();
 }
@@ -325,7 +324,6 @@ QString FaceMeshPanel::loadMesh(const QString& path)
     return m_status->text();
   }
   m_meshLabel->setText(tr("%1: %n vertices", nullptr, static_cast<int>(mesh.vertexCount())).arg(QFileInfo(path).fileName()));
-  m_undo->clear();
   m_scene->setMesh(std::move(mesh));
   m_meshPath = QFileInfo(path).absoluteFilePath();
   updateRigStatus();
@@ -345,7 +343,6 @@ QString FaceMeshPanel::loadBinding(const QString& path)
     showError(tr("Cannot read the binding %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())));
     return m_status->text();
   }
-  m_undo->clear();
   m_scene->setBinding(std::move(binding));
   updateRigStatus();
   return m_scene->error();
@@ -359,7 +356,6 @@ QString FaceMeshPanel::saveBinding(const QString& path)
     showError(tr("Cannot save the binding: %1").arg(QString::fromStdString(e.what())));
     return m_status->text();
   }
-  m_undo->setClean();
   m_status->setText(tr("Saved %1").arg(QFileInfo(path).fileName()));
   return {};
 }
@@ -385,7 +381,6 @@ QString FaceMeshPanel::autoBind()
     showError(tr("Auto-bind: %1").arg(error));
     return m_status->text();
   }
-  m_undo->clear();  // the whole binding was replaced
   updateRigStatus();
   return m_scene->error();
 }

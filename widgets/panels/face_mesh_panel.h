@@ -90,7 +90,7 @@ private:
   MarkerView3d& m_view;
   FaceMeshScene* m_scene = nullptr;
   QString m_meshPath;
-  QUndoStack* m_undo = nullptr;
+  QUndoStack* m_undo = nullptr;  // the document's: binding edits undo in order with every other edit
   std::string m_pendingLabel;
   QPoint m_pressPosition;
   bool m_loadingSettings = false;

@@ -82,6 +82,7 @@ void FaceMeshScene::setMesh(Mesh mesh)
   m_layer->setMesh(m_mesh);
   m_compareLayer->setMesh(m_mesh);
   if (m_binding.meshVertices != m_mesh.vertexCount()) {
+    ++m_bindingGeneration;
     m_binding = MeshBinding{};
     m_binding.meshVertices = m_mesh.vertexCount();
     emit bindingChanged();
@@ -92,6 +93,7 @@ void FaceMeshScene::setMesh(Mesh mesh)
 
 void FaceMeshScene::setBinding(MeshBinding binding)
 {
+  ++m_bindingGeneration;
   m_binding = std::move(binding);
   m_binding.meshVertices = m_mesh.vertexCount();
   emit bindingChanged();

@@ -45,6 +45,9 @@ public:
   [[nodiscard]] bool hasMesh() const { return m_mesh.vertexCount() > 0; }
   void setBinding(MeshBinding binding);
   [[nodiscard]] const MeshBinding& binding() const { return m_binding; }
+  /// Counts replacements of the whole binding (a mesh, a binding file, auto-bind): an edit made
+  /// for an earlier binding no longer applies (RebindMarkerCommand checks it).
+  [[nodiscard]] int bindingGeneration() const { return m_bindingGeneration; }
   /// Binds the marker `label` as `binding` says (nullopt: unbinds it) and returns what it was
   /// bound to before (nullopt: it was not bound), so applying the result undoes the change.
   std::optional<MarkerBinding> rebind(const std::string& label, std::optional<MarkerBinding> binding);
@@ -98,6 +101,7 @@ private:
   std::unique_ptr<MeshLayer> m_compareLayer;
   Mesh m_mesh;
   MeshBinding m_binding;
+  int m_bindingGeneration = 0;
   std::vector<std::string> m_stabilization;
   FaceRigOptions m_options;
   bool m_compare = false;
