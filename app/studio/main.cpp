@@ -82,6 +82,12 @@ int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen
             << ", \"median_ms\": " << percentile(0.5) << ", \"p95_ms\": " << percentile(0.95)
             << ", \"max_ms\": " << (sorted.empty() ? 0.0 : sorted.back())
             << ", \"take_rate_hz\": " << document.take().frameRate();
+  // Autosave's share of the UI thread: the copy of the take handed to its worker.
+  QElapsedTimer copyClock;
+  copyClock.start();
+  const mocap::Take copy = document.take();
+  std::cout << ", \"autosave_ui_copy_ms\": " << static_cast<double>(copyClock.nsecsElapsed()) * 1e-6
+            << ", \"autosave_copy_frames\": " << copy.frameCount();
   if (deformCount > 0)  // with --mesh: the face rig's deform alone, per frame
     std::cout << ", \"mesh_deform_ms_mean\": " << deformSum / static_cast<double>(deformCount);
   std::cout << "}\n";
