@@ -4,6 +4,7 @@
 
 #include "document/take_document.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
 #include "panels/gap_fill_step.h"
@@ -36,14 +37,8 @@ class CleaningDefaults : public ::testing::Test
 protected:
   void SetUp() override
   {
-    QSettings().clear();
-    window = std::make_unique<MainWindow>();
-    window->resize(1280, 800);
-    window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    window->activateWindow();  // shortcuts need the active window (Xvfb has no window manager)
-    (void)QTest::qWaitForWindowActive(window.get());
-    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window = test::openSampleWindow(1280, 800);
+    ASSERT_NE(window, nullptr);
   }
 
   /// The marker table's bad-points column summed over all rows.

@@ -8,6 +8,7 @@
 #include "dialogs/export_dialog.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "panels/face_mesh_panel.h"
 #include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
@@ -46,12 +47,8 @@ class FaceMeshPanelTest : public ::testing::Test
 protected:
   void SetUp() override
   {
-    QSettings().clear();
-    window = std::make_unique<MainWindow>();
-    window->resize(1280, 800);
-    window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window = test::openSampleWindow(1280, 800);
+    ASSERT_NE(window, nullptr);
     ASSERT_EQ(window->loadFaceMesh(kMesh, kBinding), QString());
     panel = window->faceMeshPanel();
   }

@@ -4,6 +4,7 @@
 #include "commands/apply_patches_command.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "models/gap_table_model.h"
 #include "panels/cleaning_panel.h"
 #include "panels/gap_list_panel.h"
@@ -55,14 +56,8 @@ class GapList : public ::testing::Test
 protected:
   void SetUp() override
   {
-    QSettings().clear();
-    window = std::make_unique<MainWindow>();
-    window->resize(1280, 800);
-    window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    window->activateWindow();
-    (void)QTest::qWaitForWindowActive(window.get());
-    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window = test::openSampleWindow(1280, 800);
+    ASSERT_NE(window, nullptr);
     panel = window->gapListPanel();
     ASSERT_NE(panel, nullptr);
     model = panel->model();

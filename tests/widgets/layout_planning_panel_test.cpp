@@ -4,6 +4,7 @@
 
 #include "document/take_document.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "panels/layout_planning_panel.h"
 #include "views/layout_error_plot.h"
 #include "views/marker_view_3d.h"
@@ -37,12 +38,8 @@ class LayoutPlanning : public ::testing::Test
 protected:
   void SetUp() override
   {
-    QSettings().clear();
-    window = std::make_unique<MainWindow>();
-    window->resize(1280, 900);
-    window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window = test::openSampleWindow(1280, 900);
+    ASSERT_NE(window, nullptr);
     window->findChild<QDockWidget*>(QStringLiteral("layoutPlanningDock"))->raise();  // tabbed behind Cleaning
     panel = window->layoutPlanningPanel();
     ASSERT_NE(panel, nullptr);

@@ -10,6 +10,7 @@
 #include "dialogs/reference_markers_dialog.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "panels/cleaning_panel.h"
 #include "panels/head_stabilisation_step.h"
 #include "panels/layout_planning_panel.h"
@@ -71,12 +72,8 @@ class ReferenceMarkers : public ::testing::Test
 protected:
   void SetUp() override
   {
-    QSettings().clear();
-    window = std::make_unique<MainWindow>();
-    window->resize(1280, 900);
-    window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window = test::openSampleWindow(1280, 900);
+    ASSERT_NE(window, nullptr);
   }
   void TearDown() override { QSettings().clear(); }
 

@@ -9,6 +9,7 @@
 #include "document/take_document.h"
 #include "language.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
 #include "panels/gap_fill_step.h"
@@ -53,14 +54,8 @@ class StudioWindow : public ::testing::Test
 protected:
   void SetUp() override
   {
-    QSettings().clear();  // no remembered layout or recent files from other runs
-    window = std::make_unique<MainWindow>();
-    window->resize(1280, 800);
-    window->show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
-    window->activateWindow();  // shortcuts need the active window (Xvfb has no window manager)
-    (void)QTest::qWaitForWindowActive(window.get());  // asserted only where a test needs it
-    ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+    window = test::openSampleWindow(1280, 800);
+    ASSERT_NE(window, nullptr);
   }
 
   /// Linear interpolation across every interior gap of `marker`, as one undoable command.
