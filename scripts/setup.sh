@@ -5,13 +5,11 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
-# OpenCV: only core and ml (~4 MB). libopencv-dev would add ~200 packages (GUI, video, codecs)
-# that the Qt-free core never uses; cmake/FindOpenCVCore.cmake finds the two libraries.
 # Never libvtk9-qt-dev: it drags in the Qt 5 stack.
 packages=(
   cmake make g++ clang pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-l10n-tools
-  libvtk9-dev libeigen3-dev libopencv-core-dev libopencv-ml-dev
+  libvtk9-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri
 )

@@ -23,6 +23,7 @@ void writeJson(const std::string& file, const SpikeEvaluationOptions& options,
   json.key("amplitude").value(options.amplitude);
   json.key("count").value(options.count);
   json.key("seed").value(static_cast<std::int64_t>(options.seed));
+  json.key("passes").value(static_cast<std::int64_t>(options.detector.maxPasses));
   json.key("methods").beginArray();
   for (const SpikeEvaluation& result : results) {
     json.beginObject();
@@ -70,7 +71,7 @@ void writeText(const std::string& file, const SpikeEvaluationOptions& options,
 int runEvalSpikes(const std::vector<std::string>& args)
 {
   const Arguments arguments(args, {"--json"},
-                            {"--count", "--amplitude", "--seed", "--factor", "--threshold"});
+                            {"--count", "--amplitude", "--seed", "--factor", "--threshold", "--passes"});
   arguments.expectPositionals(1, "one TAKE");
   const std::string& file = arguments.positionals()[0];
   SpikeEvaluationOptions options;
@@ -84,6 +85,8 @@ int runEvalSpikes(const std::vector<std::string>& args)
     options.detector.factor = *factor;
   if (const auto threshold = arguments.number("--threshold", 1e-6, 1e6))
     options.detector.threshold = *threshold;
+  if (const auto passes = arguments.integer("--passes", 1, 1000))
+    options.detector.maxPasses = static_cast<int>(*passes);
   std::vector<std::string> warnings;
   const Take take = readTake(file, &warnings);
   for (const auto& w : warnings)

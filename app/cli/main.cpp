@@ -24,7 +24,7 @@ constexpr const char* kUsage =
     "                       stabilise, remove spikes, fill gaps, smooth; write OUT and a JSON report\n"
     "  eval-fill TAKE [--lengths 10,30,60,120,240] [--copies N] [--seed S] [--methods a,b,...] [--json]\n"
     "                       gap-filling methods against hidden truth (Gloersen & Federolf protocol)\n"
-    "  eval-spikes TAKE [--count N] [--amplitude MM] [--seed S] [--json]\n"
+    "  eval-spikes TAKE [--count N] [--amplitude MM] [--seed S] [--factor F] [--threshold T] [--passes N] [--json]\n"
     "                       inject spikes, report recall and false alarms per detector\n"
     "  eval-smooth TAKE [--noise MM] [--seed S] [--json]\n"
     "                       add noise, report position and acceleration RMSE per smoother\n"

@@ -2,11 +2,10 @@
 // views, models and commands live in mocap::widgets.
 #include "language.h"
 #include "main_window.h"
+#include "studio_profile.h"
+#include "ui_stall_meter.h"
 
 #include "document/take_document.h"
-#include "panels/face_mesh_panel.h"
-#include "views/face_mesh_scene.h"
-#include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
 
 #include <QApplication>
@@ -38,62 +37,6 @@ void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
   });
 }
 
-/// Steps through every frame with the selection's trails drawn, painting what changed, and
-/// prints frame-time statistics as JSON (the playback budget at 100 Hz is 10 ms), with the time
-/// the file took to open (read, table statistics, views).
-int profilePlayback(mocap::studio::MainWindow& window, double openSeconds, Eigen::Index maxFrames)
-{
-  window.resize(1280, 800);
-  window.show();
-  QApplication::processEvents();
-  auto& document = window.document();
-  const Eigen::Index frames = std::min(document.take().frameCount(), maxFrames);
-  std::vector<double> times;
-  times.reserve(static_cast<std::size_t>(frames));
-  const mocap::ui::FaceMeshScene& mesh = window.faceMeshPanel()->scene();
-  double deformSum = 0.0;
-  Eigen::Index deformCount = 0;
-  QElapsedTimer total;
-  total.start();
-  for (Eigen::Index f = 0; f < frames; ++f) {
-    QElapsedTimer clock;
-    clock.start();
-    document.setCurrentFrame(f);
-    // What playback does: the views that changed ask for an update, and the event loop paints
-    // them (the 3D render included) before the next frame.
-    QApplication::processEvents();
-    times.push_back(static_cast<double>(clock.nsecsElapsed()) * 1e-6);
-    if (mesh.lastDeformMs() >= 0.0) {
-      deformSum += mesh.lastDeformMs();
-      ++deformCount;
-    }
-  }
-  const double seconds = static_cast<double>(total.nsecsElapsed()) * 1e-9;
-  std::vector<double> sorted = times;
-  std::sort(sorted.begin(), sorted.end());
-  auto percentile = [&](double p) {
-    return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(p * static_cast<double>(sorted.size() - 1))];
-  };
-  double mean = 0.0;
-  for (double t : times)
-    mean += t;
-  mean /= std::max<double>(static_cast<double>(times.size()), 1.0);
-  std::cout << "{\"open_seconds\": " << openSeconds << ", \"frames\": " << frames << ", \"seconds\": " << seconds << ", \"mean_ms\": " << mean
-            << ", \"median_ms\": " << percentile(0.5) << ", \"p95_ms\": " << percentile(0.95)
-            << ", \"max_ms\": " << (sorted.empty() ? 0.0 : sorted.back())
-            << ", \"take_rate_hz\": " << document.take().frameRate();
-  // Autosave's share of the UI thread: the copy of the take handed to its worker.
-  QElapsedTimer copyClock;
-  copyClock.start();
-  const mocap::Take copy = document.take();
-  std::cout << ", \"autosave_ui_copy_ms\": " << static_cast<double>(copyClock.nsecsElapsed()) * 1e-6
-            << ", \"autosave_copy_frames\": " << copy.frameCount();
-  if (deformCount > 0)  // with --mesh: the face rig's deform alone, per frame
-    std::cout << ", \"mesh_deform_ms_mean\": " << deformSum / static_cast<double>(deformCount);
-  std::cout << "}\n";
-  return 0;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -120,7 +63,7 @@ int main(int argc, char** argv)
   const QCommandLineOption select(QStringLiteral("select"), QStringLiteral("Select markers LABEL,..."),
                                   QStringLiteral("LABELS"));
   const QCommandLineOption profile(QStringLiteral("profile"),
-                                   QStringLiteral("Step through every frame, print frame times as JSON, exit."));
+                                   QStringLiteral("Step through every frame, run Track and Label, the swap search and each cleaning preview, print frame times and UI-thread stalls as JSON, exit."));
   const QCommandLineOption profileFrames(QStringLiteral("profile-frames"),
                                          QStringLiteral("With --profile, step through only the first N frames."),
                                          QStringLiteral("N"));
@@ -136,12 +79,15 @@ int main(int argc, char** argv)
   parser.process(app);
 
   mocap::studio::MainWindow window;
-  double openSeconds = 0.0;
+  mocap::studio::OpenFigures open;
   if (!parser.positionalArguments().isEmpty()) {
     QElapsedTimer openClock;
     openClock.start();
+    mocap::studio::UiStallMeter meter;
+    meter.start();
     const QString error = window.openFile(parser.positionalArguments().front(), parser.isSet(screenshot));
-    openSeconds = static_cast<double>(openClock.nsecsElapsed()) * 1e-9;
+    open.seconds = static_cast<double>(openClock.nsecsElapsed()) * 1e-9;
+    open.stallMs = meter.stop();
     if (!error.isEmpty() && parser.isSet(screenshot)) {
       std::cerr << error.toStdString() << '\n';
       return 1;
@@ -176,7 +122,7 @@ int main(int argc, char** argv)
       std::cerr << "mocap-studio: --profile-frames needs a positive number of frames\n";
       return 2;
     }
-    return profilePlayback(window, openSeconds,
+    return mocap::studio::profileStudio(window, open,
                            limit > 0 ? static_cast<Eigen::Index>(limit) : window.document().take().frameCount());
   }
   if (parser.isSet(screenshot))

@@ -10,6 +10,7 @@
 #include "commands/set_reference_markers_command.h"
 #include "dialogs/export_dialog.h"
 #include "dialogs/reference_markers_dialog.h"
+#include "dialogs/job_dialog.h"
 #include "dialogs/swap_review_dialog.h"
 #include "dialogs/preferences_dialog.h"
 #include "dialogs/read_warnings_dialog.h"
@@ -577,11 +578,12 @@ void MainWindow::trackAndLabel()
   TrackReport report;
   Take tracked;
   try {
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    tracked = trackTake(take, nullptr, {}, &report);
-    QApplication::restoreOverrideCursor();
+    if (!ui::runJob(this, tr("Tracking and labelling…"),
+                    [&](const JobControl& job) { tracked = trackTake(take, nullptr, {}, &report, job); })) {
+      statusBar()->showMessage(tr("Track and Label cancelled; the take is unchanged"), 5000);
+      return;
+    }
   } catch (const std::exception& e) {
-    QApplication::restoreOverrideCursor();
     QMessageBox::warning(this, tr("Track and Label"), QString::fromStdString(e.what()));
     return;
   }
@@ -609,18 +611,31 @@ void MainWindow::trackAndLabel()
                            10000);
 }
 
+std::optional<std::vector<LabelSwap>> MainWindow::findSwaps()
+{
+  std::vector<LabelSwap> swaps;
+  try {
+    if (!ui::runJob(this, tr("Looking for label swaps…"),
+                    [&](const JobControl& job) { swaps = detectSwaps(m_document->take(), {}, job); })) {
+      statusBar()->showMessage(tr("Swap search cancelled"), 5000);
+      return std::nullopt;
+    }
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Fix Swaps"), QString::fromStdString(e.what()));
+    return std::nullopt;
+  }
+  return swaps;
+}
+
 void MainWindow::reviewSwaps()
 {
   const Take& take = m_document->take();
   if (take.empty())
     return;
-  std::vector<LabelSwap> swaps;
-  try {
-    swaps = detectSwaps(take);
-  } catch (const std::exception& e) {
-    QMessageBox::warning(this, tr("Fix Swaps"), QString::fromStdString(e.what()));
+  std::optional<std::vector<LabelSwap>> found = findSwaps();
+  if (!found)
     return;
-  }
+  std::vector<LabelSwap> swaps = std::move(*found);
   if (swaps.empty()) {
     statusBar()->showMessage(tr("No label swaps found"), 5000);
     return;
@@ -751,7 +766,17 @@ void MainWindow::deleteRange()
 
 QString MainWindow::openFile(const QString& path, bool quiet)
 {
-  const QString error = m_document->open(path);
+  // Read on a worker (a long take takes seconds); the UI thread only installs the result.
+  ui::TakeDocument::ReadResult read;
+  QString error;
+  try {
+    if (!ui::runJob(this, tr("Opening %1…").arg(QFileInfo(path).fileName()),
+                    [&](const JobControl&) { read = ui::TakeDocument::read(path); }))
+      return tr("Cancelled");
+    m_document->open(std::move(read), path);
+  } catch (const std::exception& e) {  // a failed read leaves the open take as it was
+    error = QString::fromStdString(e.what());
+  }
   if (!error.isEmpty()) {
     if (!quiet)
       QMessageBox::critical(this, tr("Cannot open file"), error);

@@ -4,9 +4,12 @@
 #include <QStringList>
 #include <QVariantMap>
 
+#include "mocap/swap_detection.h"
+
 #include <Eigen/Core>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -73,6 +76,12 @@ public:
   void editReferenceMarkers();
   /// Pushes SetReferenceMarkersCommand unless `markers` is the current set. Returns whether it did.
   bool changeReferenceMarkers(std::vector<Eigen::Index> markers);
+  /// Label ▸ Track and Label: re-tracks the unlabelled points on a worker (progress, Cancel) and
+  /// pushes the labelled take as one undoable step; a run that labels nothing pushes nothing.
+  void trackAndLabel();
+  /// The label swaps in the take, found on a worker (progress, Cancel); nullopt when cancelled
+  /// or failed (the failure is shown).
+  std::optional<std::vector<LabelSwap>> findSwaps();
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -94,7 +103,6 @@ private:
   void deleteRange();
   void createMarkerMenu();
   void createLabelMenu();
-  void trackAndLabel();
   void reviewSwaps();
   void assignLabel(Eigen::Index point);
   void deleteMarkers();

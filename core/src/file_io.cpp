@@ -28,6 +28,18 @@ struct FileCloser
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
 using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+
+// Makes a rename in `directory` durable. Best effort: the file is already in place, and some
+// file systems refuse to sync a directory (EINVAL), which is no reason to report a failed write.
+void syncDirectory(const std::filesystem::path& directory)
+{
+  const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0)
+    return;
+  (void)::fsync(fd);
+  ::close(fd);
+}
+
 } // namespace
 
 std::string readFileBytes(const std::filesystem::path& path)
@@ -141,6 +153,9 @@ void AtomicFileWriter::commit()
     throw IoError(m_path.string() + ": committed twice");
   if (std::fflush(m_file) != 0)
     fail("write failed");
+  // On the disk before the rename: else a crash could leave the new name on an empty file.
+  if (::fsync(::fileno(m_file)) != 0)
+    fail("cannot flush to disk");
   std::fclose(m_file);
   m_file = nullptr;
   std::error_code ec;
@@ -149,6 +164,7 @@ void AtomicFileWriter::commit()
     std::filesystem::remove(m_temporary, ec);
     throw IoError(m_path.string() + ": cannot replace (" + ec.message() + ")");
   }
+  syncDirectory(m_path.parent_path().empty() ? std::filesystem::path(".") : m_path.parent_path());
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes)

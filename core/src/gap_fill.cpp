@@ -178,13 +178,13 @@ std::string_view fillMethodName(FillMethod method)
   return "unknown";
 }
 
-FillResult fillGaps(const Take& take, const FillOptions& options)
+FillResult fillGaps(const Take& take, const FillOptions& options, const JobControl& job)
 {
   checkOptions(options);
-  return fillGaps(take, findGaps(take), options);
+  return fillGaps(take, findGaps(take), options, job);
 }
 
-FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options)
+FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options, const JobControl& job)
 {
   checkOptions(options);
   for (const Gap& gap : gaps)
@@ -204,6 +204,7 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
     result.gaps.push_back(std::move(report));
   };
   for (const Gap& gap : gaps) {
+    job.checkpoint(static_cast<double>(result.gaps.size()) / static_cast<double>(gaps.size()));
     GapFillReport report;
     report.gap = gap;
     const GapQuery query(take, gap.marker, gap.firstFrame, gap.length);

@@ -67,7 +67,7 @@ double automaticGate(const PointCloud& cloud)
   return 0.5 * *low;
 }
 
-TrackingResult trackPoints(const PointCloud& cloud, const TrackerOptions& options)
+TrackingResult trackPoints(const PointCloud& cloud, const TrackerOptions& options, const JobControl& job)
 {
   checkCloud(cloud, options);
   TrackingResult result;
@@ -77,6 +77,7 @@ TrackingResult trackPoints(const PointCloud& cloud, const TrackerOptions& option
   std::vector<std::size_t> nextLive;
   Eigen::MatrixXd cost;
   for (Eigen::Index f = 0; f < cloud.frameCount(); ++f) {
+    job.checkpoint(static_cast<double>(f) / static_cast<double>(cloud.frameCount()));
     const Eigen::Index points = cloud.pointCount(f);
     const auto tracks = static_cast<Eigen::Index>(live.size());
     cost.resize(tracks, points);

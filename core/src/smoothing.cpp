@@ -190,12 +190,13 @@ smoothTrajectory(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>
   return smoother.smooth(xyz, TrajectorySmoother::usableSamples(xyz, valid));
 }
 
-std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options)
+std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options, const JobControl& job)
 {
   TrajectorySmoother smoother(options, take.frameRate());
   std::vector<SamplePatch> patches;
   patches.reserve(static_cast<std::size_t>(take.markerCount()));
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
     const auto xyz = take.trajectory(m);
     const ValidMask usable = TrajectorySmoother::usableSamples(xyz, take.valid().col(m));
     const Trajectory smoothed = smoother.smooth(xyz, usable);

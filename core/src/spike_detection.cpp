@@ -565,12 +565,13 @@ std::vector<Eigen::Index> detectSpikes(const Eigen::Ref<const Eigen::Matrix<doub
   return detectIn(xyz, valid, options, options.noiseFloor);
 }
 
-std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& options)
+std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& options, const JobControl& job)
 {
   checkSpikeOptions(options);
   const double floor = options.noiseFloor / millimetresPer(take.units());
   std::vector<SpikeFlag> flags;
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
     std::vector<Eigen::Index> frames;
     try {
       frames = detectIn(take.trajectory(m), take.valid().col(m), options, floor);

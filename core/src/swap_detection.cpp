@@ -123,7 +123,7 @@ void exchangeMarkersFrom(Take& take, Eigen::Index a, Eigen::Index b, Eigen::Inde
   }
 }
 
-std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options)
+std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options, const JobControl& job)
 {
   checkOptions(options);
   std::vector<LabelSwap> swaps;
@@ -133,6 +133,7 @@ std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options)
   Eigen::VectorXd error = Eigen::VectorXd::Zero(take.markerCount());
   std::vector<Eigen::Index> jumping;
   for (Eigen::Index f = 2; f < take.frameCount(); ++f) {
+    job.checkpoint(static_cast<double>(f) / static_cast<double>(take.frameCount()));
     jumping.clear();
     for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
       if (!predictable(take, f, m))
@@ -151,10 +152,10 @@ std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options)
   return swaps;
 }
 
-std::vector<LabelSwap> detectSwaps(const Take& take, const SwapOptions& options)
+std::vector<LabelSwap> detectSwaps(const Take& take, const SwapOptions& options, const JobControl& job)
 {
   Take copy = take;
-  return repairSwaps(copy, options);
+  return repairSwaps(copy, options, job);
 }
 
 } // namespace mocap

@@ -19,7 +19,7 @@ MarkerSet inUnits(MarkerSet set, LengthUnit units)
 }
 
 std::vector<Fragment> fragmentsToLabel(const Take& take, const std::vector<Eigen::Index>& unlabelled,
-                                       const TrackOptions& options, TrackReport& report)
+                                       const TrackOptions& options, TrackReport& report, const JobControl& job)
 {
   if (!options.retrack)
     return fragmentsOfMarkers(take, unlabelled);
@@ -31,7 +31,7 @@ std::vector<Fragment> fragmentsToLabel(const Take& take, const std::vector<Eigen
     const double gate = automaticGate(pointCloudFromTake(take, all));
     tracker.maxSpeed = std::isfinite(gate) ? gate : 0.0;
   }
-  TrackingResult tracked = trackPoints(pointCloudFromTake(take, unlabelled), tracker);
+  TrackingResult tracked = trackPoints(pointCloudFromTake(take, unlabelled), tracker, job);
   report.gate = tracked.gate;
   return std::move(tracked.fragments);
 }
@@ -65,8 +65,10 @@ void labelAndAppend(Take& output, const std::vector<Fragment>& fragments, const 
 
 } // namespace
 
-Take trackTake(const Take& take, const MarkerSet* set, const TrackOptions& options, TrackReport* reportOut)
+Take trackTake(const Take& take, const MarkerSet* set, const TrackOptions& options, TrackReport* reportOut,
+               const JobControl& job)
 {
+  job.checkpoint(0.0);
   TrackReport report;
   std::vector<Eigen::Index> labelled;
   std::vector<Eigen::Index> unlabelled;
@@ -103,7 +105,8 @@ Take trackTake(const Take& take, const MarkerSet* set, const TrackOptions& optio
   for (const auto& [from, to] : copies)
     copyMarker(take, from, output, to);
 
-  const std::vector<Fragment> fragments = fragmentsToLabel(take, unlabelled, options, report);
+  const std::vector<Fragment> fragments = fragmentsToLabel(take, unlabelled, options, report, job.part(0.0, 0.7));
+  job.checkpoint(0.7);
   labelAndAppend(output, fragments, own ? &*own : nullptr, options, report);
   if (reportOut)
     *reportOut = report;

@@ -21,6 +21,7 @@
 #include <QSettings>
 #include <QTableView>
 #include <QTest>
+#include <QUndoStack>
 
 #include <gtest/gtest.h>
 
@@ -181,6 +182,29 @@ TEST_F(CleaningDefaults, RepairingBadPointsSettlesThem)
   panel->waitForPreview();  // detects again on the repaired take
   EXPECT_LE(doc.flags().size(), found / 100) << found << " then " << doc.flags().size();
   EXPECT_EQ(badPointsInTable(), static_cast<int>(doc.flags().size()));
+}
+
+// With one pass (the default), detecting again after a repair flags parts of long glitches beside
+// the repaired samples; the summary says so, why, and what to do, instead of leaving it a mystery.
+TEST_F(CleaningDefaults, DetectingAgainAfterARepairExplainsTheFlagsBesideIt)
+{
+  TakeDocument& doc = window->document();
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  auto* step = panel->step<ui::SpikeStep>();
+  panel->setCurrentStep(step);
+  panel->waitForPreview();
+  EXPECT_FALSE(panel->lastResult().summary.contains(QStringLiteral("beside")));
+  ASSERT_GT(panel->apply(), 0);
+  panel->waitForPreview();
+  ASSERT_FALSE(doc.flags().empty());
+  const QString summary = panel->lastResult().summary;
+  EXPECT_TRUE(summary.contains(QStringLiteral("beside samples just repaired")) &&
+              summary.contains(QStringLiteral("Look again until nothing new")))
+      << summary.toStdString();
+  // Undone, the repair no longer explains anything.
+  doc.undoStack()->undo();
+  panel->waitForPreview();
+  EXPECT_FALSE(panel->lastResult().summary.contains(QStringLiteral("beside"))) << panel->lastResult().summary.toStdString();
 }
 
 } // namespace

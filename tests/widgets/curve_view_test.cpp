@@ -211,7 +211,7 @@ TEST(SmoothingStep, SummaryGivesTheRmsAndLargestChangeInTheDisplayUnit)
     for (Eigen::Index f = 0; f < take.frameCount(); ++f)
       take.setPosition(f, m, take.position(f, m) + Eigen::Vector3d((f % 2 == 0 ? 0.4 : -0.4), 0.0, 0.0));
   ui::SmoothingStep step;
-  const ui::StepResult result = step.job()(take);
+  const ui::StepResult result = step.job()(take, JobControl{});
   ASSERT_FALSE(result.patches.empty());
   double sum = 0.0, largest = 0.0;
   long count = 0;
@@ -233,7 +233,7 @@ TEST(SmoothingStep, SummaryGivesTheRmsAndLargestChangeInTheDisplayUnit)
   EXPECT_TRUE(summary.contains(QString::number(rms, 'f', 2) + QStringLiteral(" mm"))) << summary.toStdString();
   EXPECT_TRUE(summary.contains(QString::number(largest, 'f', 2) + QStringLiteral(" mm"))) << summary.toStdString();
   step.setDisplayUnit(LengthUnit::Centimetre);
-  EXPECT_TRUE(step.job()(take).summary.contains(QString::number(rms / 10.0, 'f', 3) + QStringLiteral(" cm")));
+  EXPECT_TRUE(step.job()(take, JobControl{}).summary.contains(QString::number(rms / 10.0, 'f', 3) + QStringLiteral(" cm")));
 }
 
 /// The studio on the sample take, for the 3D view's behaviour in the window.

@@ -194,6 +194,12 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   EXPECT_EQ(scene().binding().markers.size(), original.markers.size());
   EXPECT_EQ(panel->undoStack()->count(), 1);
   ASSERT_NE(scene().rig(), nullptr);  // set up again with the new binding
+  // The pick says where and how well: the vertex, and the marker's new residual beside the old.
+  const QString status = panel->statusText();
+  EXPECT_TRUE(status.contains(QStringLiteral("vertex %1").arg(target))) << status.toStdString();
+  EXPECT_TRUE(status.contains(QStringLiteral("residual")) && status.contains(QStringLiteral("mm (was")))
+      << status.toStdString();
+  EXPECT_TRUE(std::isfinite(panel->pickResidual(marker)));
   panel->undoStack()->undo();
   EXPECT_EQ(bindingOf("section7-1").vertices, was.vertices);
   // Without picking, the same click only changes the view's selection.

@@ -2,6 +2,11 @@
 
 #include "main_window.h"
 
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <functional>
 #include <memory>
 
 namespace mocap::test {
@@ -10,5 +15,27 @@ namespace mocap::test {
 /// fixed size, shown, exposed and (where the display allows) active, so shortcuts work.
 /// Returns nullptr after a test failure when the window or the take did not come up.
 [[nodiscard]] std::unique_ptr<studio::MainWindow> openSampleWindow(int width = 1280, int height = 800);
+
+/// Runs `act` on the first modal widget of type T to come up, polling every 10 ms for up to
+/// 10 s: for a dialog opened after work the UI thread waits on (a zero timer would fire then,
+/// before the dialog is there). `act` must close the dialog.
+template <typename T>
+void whenModal(std::function<void(T*)> act)
+{
+  auto* poll = new QTimer(qApp);
+  auto clock = std::make_shared<QElapsedTimer>();
+  clock->start();
+  QObject::connect(poll, &QTimer::timeout, poll, [poll, clock, act = std::move(act)] {
+    if (auto* modal = qobject_cast<T*>(QApplication::activeModalWidget())) {
+      poll->deleteLater();
+      poll->stop();
+      act(modal);
+    } else if (clock->elapsed() > 10000) {
+      poll->deleteLater();
+      poll->stop();
+    }
+  });
+  poll->start(10);
+}
 
 } // namespace mocap::test

@@ -9,6 +9,7 @@
 #include "document/autosave.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "sample_window.h"
 #include "panels/cleaning_panel.h"
 #include "panels/face_mesh_panel.h"
 #include "panels/history_panel.h"
@@ -193,10 +194,7 @@ TEST_F(Trust, ATruncatedTakeMustBeAcknowledgedAndSaysIncomplete)
   auto window = showWindow();
   QStringList listed;
   QString title;
-  QTimer::singleShot(0, [&] {  // inside the dialog's exec()
-    auto* dialog = qobject_cast<ui::ReadWarningsDialog*>(QApplication::activeModalWidget());
-    if (!dialog)
-      return;
+  test::whenModal<ui::ReadWarningsDialog>([&](ui::ReadWarningsDialog* dialog) {  // inside its exec()
     title = dialog->windowTitle();
     for (int i = 0; i < dialog->list()->count(); ++i)
       listed << dialog->list()->item(i)->text();

@@ -13,14 +13,24 @@ TakeDocument::TakeDocument(QObject* parent) : QObject(parent)
   connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
 }
 
+TakeDocument::ReadResult TakeDocument::read(const QString& path)
+{
+  ReadResult result;
+  result.take = readTake(path.toStdString(), &result.warnings, &result.dataLoss);
+  return result;
+}
+
+void TakeDocument::open(ReadResult read, const QString& path)
+{
+  setTake(std::move(read.take), path);
+  m_loadWarnings = std::move(read.warnings);
+  m_dataLoss = std::move(read.dataLoss);
+}
+
 QString TakeDocument::open(const QString& path)
 {
-  std::vector<std::string> warnings, dataLoss;
   try {
-    Take loaded = readTake(path.toStdString(), &warnings, &dataLoss);
-    setTake(std::move(loaded), path);
-    m_loadWarnings = std::move(warnings);
-    m_dataLoss = std::move(dataLoss);
+    open(read(path), path);
     return {};
   } catch (const std::exception& e) {  // a failed read leaves the open take as it was
     return QString::fromStdString(e.what());

@@ -34,6 +34,17 @@ public:
   /// True when the open take lost data at open: the title says "(incomplete)".
   [[nodiscard]] bool isIncomplete() const { return !m_dataLoss.empty(); }
 
+  /// A take as read from a file, with the reader's warnings, before it becomes the document's.
+  struct ReadResult
+  {
+    Take take;
+    std::vector<std::string> warnings, dataLoss;
+  };
+  /// Reads `path`; throws what the readers throw. Touches no document, so it may run on a
+  /// worker thread (the studio opens large files so).
+  [[nodiscard]] static ReadResult read(const QString& path);
+  /// Makes `read` (of `path`) the document's take, as open does.
+  void open(ReadResult read, const QString& path);
   /// Reads `path` into a fresh take and replaces the current one only when the read succeeds.
   /// Returns an empty string on success, else the error message (the open take is untouched).
   QString open(const QString& path);

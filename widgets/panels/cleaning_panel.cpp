@@ -3,6 +3,7 @@
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
 #include "document/take_document.h"
+#include "panels/job_progress_row.h"
 
 #include <QAbstractSpinBox>
 #include <QCheckBox>
@@ -11,7 +12,6 @@
 #include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QTabWidget>
 #include <QTimer>
@@ -73,20 +73,15 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   layout->addWidget(m_live);
   layout->addWidget(m_selectedOnly);
   layout->addWidget(m_rangeOnly);
-  m_progress = new QProgressBar(this);
-  m_progress->setRange(0, 0);  // busy indicator: core steps report no partial progress
-  m_progress->setVisible(false);
+  m_progress = new JobProgressRow(this);
   layout->addWidget(m_progress);
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   layout->addWidget(m_status);
   auto* buttons = new QHBoxLayout;
-  m_cancel = new QPushButton(tr("Cancel"), this);
-  m_cancel->setEnabled(false);
   m_apply = new QPushButton(tr("Apply"), this);
   m_apply->setDefault(true);
   buttons->addStretch();
-  buttons->addWidget(m_cancel);
   buttons->addWidget(m_apply);
   layout->addLayout(buttons);
 
@@ -96,7 +91,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   connect(m_debounce, &QTimer::timeout, this, &CleaningPanel::start);
   connect(&m_watcher, &QFutureWatcher<StepResult>::finished, this, &CleaningPanel::onFinished);
   connect(m_apply, &QPushButton::clicked, this, [this] { apply(); });
-  connect(m_cancel, &QPushButton::clicked, this, &CleaningPanel::cancel);
+  connect(m_progress, &JobProgressRow::cancelled, this, &CleaningPanel::cancel);
   connect(m_live, &QCheckBox::toggled, this, [this](bool on) {
     if (on)
       schedule();
@@ -140,6 +135,14 @@ CleaningStep* CleaningPanel::currentStep() const
   return qobject_cast<CleaningStep*>(m_tabs->currentWidget());
 }
 
+std::vector<CleaningStep*> CleaningPanel::steps() const
+{
+  std::vector<CleaningStep*> steps;
+  for (int i = 0; i < m_tabs->count(); ++i)
+    steps.push_back(static_cast<CleaningStep*>(m_tabs->widget(i)));
+  return steps;
+}
+
 bool CleaningPanel::busy() const
 {
   return m_watcher.isRunning();
@@ -171,17 +174,20 @@ void CleaningPanel::start()
   if (!step || !m_document.hasTake())
     return;
   if (m_watcher.isRunning()) {
+    if (m_runningGeneration != m_generation)
+      m_progress->stopRunning();  // superseded: stop it at its next checkpoint
     m_debounce->start();  // one job at a time; try again when this one ends
     return;
   }
   m_runningGeneration = m_generation;
-  m_progress->setVisible(true);
-  m_cancel->setEnabled(true);
+  const JobControl control = m_progress->begin();
   m_status->setText(tr("Computing…"));
   step->setScope(scope());
-  m_watcher.setFuture(QtConcurrent::run([job = step->job(), take = m_document.take()] {
+  m_watcher.setFuture(QtConcurrent::run([job = step->job(), take = m_document.take(), control] {
     try {
-      return job(take);
+      return job(take, control);
+    } catch (const JobCancelled&) {
+      return StepResult{};  // dropped: its generation is stale
     } catch (const std::exception& e) {  // nothing may throw across the event loop
       StepResult failed;
       failed.summary = QString::fromStdString(e.what());
@@ -192,8 +198,7 @@ void CleaningPanel::start()
 
 void CleaningPanel::onFinished()
 {
-  m_progress->setVisible(false);
-  m_cancel->setEnabled(false);
+  m_progress->finish();
   if (m_runningGeneration != m_generation) {  // superseded or cancelled
     if (m_live->isChecked())
       m_debounce->start();
@@ -300,6 +305,7 @@ int CleaningPanel::apply()
     m_status->setText(tr("Nothing to apply"));
     return 0;
   }
+  step->applied(patches);
   m_document.undoStack()->push(makeRecordedEdit(m_document, std::move(patches), step->title(),
                                                 step->title().toStdString(), shownParameters(*step)));
   return samples;

@@ -9,19 +9,20 @@
 
 class QCheckBox;
 class QLabel;
-class QProgressBar;
 class QPushButton;
 class QTabWidget;
 class QTimer;
 
 namespace mocap::ui {
 
+class JobProgressRow;
 class TakeDocument;
 
 /// The cleaning dock: one tab per step (bad points, gaps, smoothing). Changing a parameter
 /// recomputes the step on a worker thread, on a copy of the take, and shows the result as a
 /// preview over the views without touching the take; Apply pushes it as one undoable command.
-/// A newer request supersedes a running one (its result is dropped), and Cancel drops it too.
+/// A newer request supersedes a running one, and Cancel stops it: the computation itself stops at
+/// its next checkpoint (JobControl) and its result is dropped.
 /// A detection's flags (bad points) become the document's flags and stay on every tab until the
 /// next detection or a repair of them.
 class CleaningPanel final : public QWidget
@@ -49,6 +50,10 @@ public:
   int apply();
   /// True while a computation runs.
   [[nodiscard]] bool busy() const;
+  /// True when the shown result is that of the latest request (nothing running or stale).
+  [[nodiscard]] bool previewReady() const { return !busy() && m_resultGeneration == m_generation; }
+  /// The added steps, in tab order.
+  [[nodiscard]] std::vector<CleaningStep*> steps() const;
   /// Blocks until the running computation (if any) has delivered its preview. For tests.
   void waitForPreview();
   [[nodiscard]] const StepResult& lastResult() const { return m_result; }
@@ -74,8 +79,7 @@ private:
   QCheckBox* m_selectedOnly = nullptr;
   QCheckBox* m_rangeOnly = nullptr;
   QPushButton* m_apply = nullptr;
-  QPushButton* m_cancel = nullptr;
-  QProgressBar* m_progress = nullptr;
+  JobProgressRow* m_progress = nullptr;
   QLabel* m_status = nullptr;
   QTimer* m_debounce = nullptr;
   QFutureWatcher<StepResult> m_watcher;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mocap/job_control.h"
 #include "mocap/sample_patch.h"
 
 #include <QString>
@@ -51,8 +52,9 @@ inline bool StepScope::hasMarker(Eigen::Index marker) const
 }
 
 /// A computation of a step with the parameters it had when job() was called; runs on a worker
-/// thread on its own copy of the take, so it must not touch widgets.
-using StepJob = std::function<StepResult(const Take&)>;
+/// thread on its own copy of the take, so it must not touch widgets. It passes the JobControl to
+/// the core step, which reports progress and stops (JobCancelled) when the panel cancels.
+using StepJob = std::function<StepResult(const Take&, const JobControl&)>;
 
 /// One tab of the cleaning panel: parameters for one core method. Emits changed() whenever a
 /// parameter changes, so the panel can refresh the live preview.
@@ -77,6 +79,8 @@ public:
   [[nodiscard]] virtual bool wholeTake() const { return false; }
   /// Shows a finished result (e.g. a list of flags to review). Called on the UI thread.
   virtual void showResult(const StepResult& result) { (void)result; }
+  /// Told the patches Apply pushed (before the push changes the take). Called on the UI thread.
+  virtual void applied(const std::vector<SamplePatch>& patches) { (void)patches; }
   /// Set by the panel before job() and patchesToApply().
   void setScope(StepScope scope) { m_scope = std::move(scope); }
   [[nodiscard]] const StepScope& scope() const { return m_scope; }

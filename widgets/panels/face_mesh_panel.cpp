@@ -8,6 +8,7 @@
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
 
+#include "mocap/face_rig.h"
 #include "mocap/file_io.h"
 #include "mocap/marker_set.h"
 #include "mocap/mesh_io.h"
@@ -435,11 +436,42 @@ bool FaceMeshPanel::pickVertex(QPoint position)
   const Eigen::Index vertex = m_scene->vertexAt(position);
   if (vertex < 0)
     return false;
+  const double before = pickResidual(*marker);
   m_undo->push(new RebindMarkerCommand(*m_scene, m_pendingLabel,
                                        MarkerBinding{m_pendingLabel, MeshPoint::atVertex(vertex),
                                                      std::numeric_limits<double>::quiet_NaN()}));
-  m_status->setText(tr("%1 bound to vertex %2").arg(QString::fromStdString(m_pendingLabel)).arg(vertex));
+  QString text = tr("%1 bound to vertex %2").arg(QString::fromStdString(m_pendingLabel)).arg(vertex);
+  const double after = pickResidual(*marker);
+  if (std::isfinite(after))
+    text += std::isfinite(before) ? tr("; residual %1 mm (was %2 mm)").arg(after, 0, 'f', 2).arg(before, 0, 'f', 2)
+                                  : tr("; residual %1 mm").arg(after, 0, 'f', 2);
+  m_status->setText(text);
   return true;
+}
+
+QString FaceMeshPanel::statusText() const
+{
+  return m_status->text();
+}
+
+double FaceMeshPanel::pickResidual(Eigen::Index marker) const
+{
+  // The rig's placement puts the neutral frame on the mesh; the residual is how far the placed
+  // marker is from its bound point, in take units (the placement's scale divided out).
+  const FaceRig* rig = m_scene->rig();
+  if (!rig)
+    return std::numeric_limits<double>::quiet_NaN();
+  const auto& labels = rig->labels();
+  const auto bound = std::find(labels.begin(), labels.end(), m_document.take().label(marker));
+  if (bound == labels.end())
+    return std::numeric_limits<double>::quiet_NaN();
+  const Take& take = m_scene->rigTake();
+  const auto i = static_cast<std::size_t>(bound - labels.begin());
+  const Eigen::Index frame = rig->neutralFrame(), index = rig->markers()[i];
+  if (frame < 0 || frame >= take.frameCount() || !take.valid()(frame, index))
+    return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Vector3d placed = rig->placement().apply(take.position(frame, index));
+  return (placed - rig->points()[i].on(m_scene->mesh().vertices)).norm() / rig->placement().scale;
 }
 
 QString FaceMeshPanel::timingText() const

@@ -27,7 +27,7 @@ class TakeDocument;
 
 /// The Face mesh dock: load a mesh (OBJ/PLY) and a marker binding (JSON), bind automatically or
 /// edit the binding by picking (select a marker, then click the mesh vertex it belongs to; each
-/// edit undoable on the panel's own stack, since the binding is not part of the take), choose
+/// edit undoable on the document's stack, and the status says the marker's new residual), choose
 /// RBF (kernel, radius, regions) or Laplacian (weights, constraint weight, rotations) deformation
 /// or both side by side, and read the per-frame deform time. The mesh itself lives in
 /// FaceMeshScene. Settings are remembered (QSettings, "faceMesh/…").
@@ -38,6 +38,11 @@ class FaceMeshPanel final : public QWidget
 public:
   FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent = nullptr);
   ~FaceMeshPanel() override;
+  /// How far `marker` (bound) sits from its mesh point once the rig places the neutral frame on
+  /// the mesh, in take units; NaN without a rig or with the marker missing there. O(1).
+  [[nodiscard]] double pickResidual(Eigen::Index marker) const;
+  /// The panel's status line (the last pick: vertex and residual, or what to do next).
+  [[nodiscard]] QString statusText() const;
 
   [[nodiscard]] FaceMeshScene& scene() const { return *m_scene; }
   [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }

@@ -201,8 +201,8 @@ StepJob GapFillStep::job() const
   const StepScope scope = this->scope();
   if (scope.markersOnly)
     options.fillAnyway = scope.markers;  // a technician who selects a marker means it
-  return [options, scope](const Take& take) {
-    FillResult filled = fillGaps(take, options);
+  return [options, scope](const Take& take, const JobControl& control) {
+    FillResult filled = fillGaps(take, options, control);
     // The gaps in scope: the selected markers (when limited to them) and, with a range on the
     // curves, the gaps overlapping it; the summary counts only these, as Apply changes only these.
     const bool ranged = scope.first <= scope.last;

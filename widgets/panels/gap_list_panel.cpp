@@ -4,6 +4,7 @@
 #include "commands/record_step_command.h"
 #include "document/take_document.h"
 #include "models/gap_table_model.h"
+#include "panels/job_progress_row.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -14,7 +15,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QSortFilterProxyModel>
@@ -98,10 +98,12 @@ public:
 /// Fills each gap with its own method: one fillGaps call per method (pca models the take once
 /// per call), reports back in the order of `gaps`. Each gap is filled from the take's valid
 /// samples only, so grouping does not change any fill. Cost: that of fillGaps per method.
-FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::vector<FillMethod>& methods)
+FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::vector<FillMethod>& methods,
+                    const JobControl& job)
 {
   FillResult result;
   result.gaps.resize(gaps.size());
+  std::size_t done = 0;
   for (FillMethod method : allFillMethods()) {
     std::vector<Gap> some;
     std::vector<std::size_t> where;
@@ -122,12 +124,17 @@ FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::v
     options.extrapolate = true;
     for (const Gap& gap : some)
       options.fillAnyway.push_back(gap.marker);
+    const double share = 1.0 / static_cast<double>(gaps.size());
+    const JobControl part = job.part(static_cast<double>(done) * share, static_cast<double>(done + some.size()) * share);
+    done += some.size();
     try {
-      FillResult part = fillGaps(take, some, options);
-      for (std::size_t k = 0; k < where.size() && k < part.gaps.size(); ++k)
-        result.gaps[where[k]] = std::move(part.gaps[k]);
-      for (SamplePatch& patch : part.patches)
+      FillResult filled = fillGaps(take, some, options, part);
+      for (std::size_t k = 0; k < where.size() && k < filled.gaps.size(); ++k)
+        result.gaps[where[k]] = std::move(filled.gaps[k]);
+      for (SamplePatch& patch : filled.patches)
         result.patches.push_back(std::move(patch));
+    } catch (const JobCancelled&) {
+      throw;  // the panel drops the whole result
     } catch (const std::exception& e) {  // nothing may throw across the event loop
       for (std::size_t k = 0; k < where.size(); ++k)
         result.gaps[where[k]] = GapFillReport{some[k], false, {}, e.what()};
@@ -203,20 +210,15 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   checks->addWidget(m_live);
   layout->addLayout(checks);
 
-  m_progress = new QProgressBar(this);
-  m_progress->setRange(0, 0);  // busy indicator: fillGaps reports no partial progress
-  m_progress->setVisible(false);
+  m_progress = new JobProgressRow(this);
   layout->addWidget(m_progress);
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   layout->addWidget(m_status);
   auto* buttons = new QHBoxLayout;
-  m_cancel = new QPushButton(tr("Cancel"), this);
-  m_cancel->setEnabled(false);
   m_fill = new QPushButton(tr("Fill"), this);
   m_fill->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
   buttons->addStretch();
-  buttons->addWidget(m_cancel);
   buttons->addWidget(m_fill);
   layout->addLayout(buttons);
 
@@ -246,7 +248,7 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   });
   connect(uncheckAll, &QPushButton::clicked, this, [this] { m_model->setCheckedRows(m_model->checkedRows(), false); });
   connect(m_fill, &QPushButton::clicked, this, [this] { fill(); });
-  connect(m_cancel, &QPushButton::clicked, this, &GapListPanel::cancel);
+  connect(m_progress, &JobProgressRow::cancelled, this, &GapListPanel::cancel);
   connect(m_view, &QTableView::activated, this, [this](const QModelIndex& index) {
     if (index.column() != GapTableModel::MethodColumn)  // there a double-click chooses the method
       showGap(m_proxy->mapToSource(index).row());
@@ -434,19 +436,22 @@ void GapListPanel::launch(const Request& request)
   m_running = request;
   m_runningTake = m_takeGeneration;
   m_computing = true;
-  m_progress->setVisible(true);
-  m_cancel->setEnabled(true);
+  const JobControl control = m_progress->begin();
   m_status->setText(tr("Computing the fill of %n gap(s)…", nullptr, static_cast<int>(request.gaps.size())));
-  m_watcher.setFuture(QtConcurrent::run([take = m_document.take(), gaps = request.gaps, methods = request.methods] {
-    return fillEach(take, gaps, methods);
-  }));
+  m_watcher.setFuture(
+      QtConcurrent::run([take = m_document.take(), gaps = request.gaps, methods = request.methods, control] {
+        try {
+          return fillEach(take, gaps, methods, control);
+        } catch (const JobCancelled&) {
+          return FillResult{};  // dropped by onFinished (cancelled)
+        }
+      }));
 }
 
 void GapListPanel::onFinished()
 {
   m_computing = false;
-  m_progress->setVisible(false);
-  m_cancel->setEnabled(false);
+  m_progress->finish();
   if (m_cancelled)
     return;
   if (m_runningTake == m_takeGeneration) {  // a valid result for its request, even if no longer wanted
@@ -463,8 +468,6 @@ void GapListPanel::cancel()
   m_cancelled = true;
   m_pendingFill.reset();
   m_debounce->stop();
-  m_progress->setVisible(false);
-  m_cancel->setEnabled(false);
   m_status->setText(tr("Cancelled"));
 }
 

@@ -11,7 +11,6 @@
 class QCheckBox;
 class QLabel;
 class QLineEdit;
-class QProgressBar;
 class QPushButton;
 class QSortFilterProxyModel;
 class QTableView;
@@ -20,6 +19,7 @@ class QTimer;
 namespace mocap::ui {
 
 class GapTableModel;
+class JobProgressRow;
 class TakeDocument;
 
 /// The Gaps dock: every gap of the take in a sortable table (marker, first frame, length in frames
@@ -93,8 +93,7 @@ private:
   QCheckBox* m_onlyOpen = nullptr;
   QCheckBox* m_live = nullptr;
   QPushButton* m_fill = nullptr;
-  QPushButton* m_cancel = nullptr;
-  QProgressBar* m_progress = nullptr;
+  JobProgressRow* m_progress = nullptr;
   QLabel* m_status = nullptr;
   QTimer* m_debounce = nullptr;
 

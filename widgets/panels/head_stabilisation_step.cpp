@@ -54,7 +54,8 @@ StepJob HeadStabilisationStep::job() const
   const std::vector<Eigen::Index> markers = m_document.referenceMarkers();
   // The spin box counts frames as the take numbers them; 0 (its minimum) means automatic.
   const long long frameNumber = m_frame->value();
-  return [markers, frameNumber](const Take& take) {
+  return [markers, frameNumber](const Take& take, const JobControl& control) {
+    control.checkpoint(0.0);
     if (markers.empty())
       throw InvalidArgument(QCoreApplication::translate("HeadStabilisationStep",
                                                         "No reference markers: choose them in Marker ▸ Reference "

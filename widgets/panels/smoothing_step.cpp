@@ -128,9 +128,9 @@ StepJob SmoothingStep::job() const
   options.knotSpacing = m_knotSpacing->value();
   options.cutoffHz = m_cutoff->value();
   options.savgolWindow = m_window->value() | 1;  // odd
-  return [options, unit = m_displayUnit](const Take& take) {
+  return [options, unit = m_displayUnit](const Take& take, const JobControl& control) {
     StepResult result;
-    result.patches = smoothTake(take, options);
+    result.patches = smoothTake(take, options, control);
     result.summary = QCoreApplication::translate("SmoothingStep", "%1 smoothing")
                          .arg(QString::fromUtf8(smoothMethodName(options.method).data(),
                                                 static_cast<int>(smoothMethodName(options.method).size())));

@@ -11,11 +11,36 @@
 #include <QFormLayout>
 #include <QListWidget>
 
+#include <algorithm>
+
 namespace mocap::ui {
 
 namespace {
 constexpr int kMarkerRole = Qt::UserRole;
 constexpr int kFrameRole = Qt::UserRole + 1;
+constexpr Eigen::Index kBeside = 2;  // frames either side of a repaired sample
+
+/// The flags within kBeside frames of a sample `repairs` replaced that the take still holds as
+/// repaired (an undone repair does not count). O(#repaired + #flags · log #repaired).
+int flagsBesideRepairs(const Take& take, const std::vector<SpikeFlag>& flags, const std::vector<SamplePatch>& repairs)
+{
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> repaired;  // (marker, frame), sorted
+  for (const SamplePatch& patch : repairs)
+    for (std::size_t i = 0; i < patch.size(); ++i) {
+      const Eigen::Index frame = patch.frames[i];
+      if (patch.marker < take.markerCount() && frame < take.frameCount() && take.isValid(frame, patch.marker) &&
+          take.position(frame, patch.marker) == patch.positions.row(static_cast<Eigen::Index>(i)).transpose())
+        repaired.emplace_back(patch.marker, frame);
+    }
+  std::sort(repaired.begin(), repaired.end());
+  int beside = 0;
+  for (const SpikeFlag& flag : flags) {
+    const auto near = std::lower_bound(repaired.begin(), repaired.end(), std::make_pair(flag.marker, flag.frame - kBeside));
+    if (near != repaired.end() && near->first == flag.marker && near->second <= flag.frame + kBeside)
+      ++beside;
+  }
+  return beside;
+}
 } // namespace
 
 SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(parent), m_document(document)
@@ -85,15 +110,23 @@ StepJob SpikeStep::job() const
   options.factor = m_factor->value();
   options.threshold = m_threshold->value();
   options.maxPasses = m_settle->isChecked() ? 100 : 1;
-  return [options](const Take& take) {
+  return [options, repairs = m_repairs](const Take& take, const JobControl& control) {
     StepResult result;
     result.detection = true;
-    const std::vector<SpikeFlag> flags = detectSpikes(take, options);
+    const std::vector<SpikeFlag> flags = detectSpikes(take, options, control);
     for (const SpikeFlag& flag : flags)
       result.flags.emplace_back(flag.marker, flag.frame);
     result.patches = replaceSpikes(take, flags);
     const int count = static_cast<int>(flags.size());  // a plain variable, so lupdate sees the plural
     result.summary = QCoreApplication::translate("SpikeStep", "%n bad point(s) found", nullptr, count);
+    const int beside = flagsBesideRepairs(take, flags, repairs);
+    if (beside > 0)  // why a repair seems to breed flags, and what to do about it
+      result.summary += QCoreApplication::translate(
+          "SpikeStep",
+          "; %n beside samples just repaired: a glitch longer than a few frames is found a part at a "
+          "time (its worst samples first). Repair these too, or turn on \"Look again until nothing new\" "
+          "to flag whole glitches at once",
+          nullptr, beside);
     return result;
   };
 }
@@ -111,6 +144,11 @@ void SpikeStep::showResult(const StepResult& result)
     item->setData(kMarkerRole, static_cast<qlonglong>(marker));
     item->setData(kFrameRole, static_cast<qlonglong>(frame));
   }
+}
+
+void SpikeStep::applied(const std::vector<SamplePatch>& patches)
+{
+  m_repairs = patches;
 }
 
 std::vector<SamplePatch> SpikeStep::patchesToApply(const Take& take, const StepResult&) const

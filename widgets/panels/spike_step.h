@@ -25,8 +25,11 @@ public:
   [[nodiscard]] StepJob job() const override;
   [[nodiscard]] std::vector<SamplePatch> patchesToApply(const Take& take, const StepResult& result) const override;
   void showResult(const StepResult& result) override;
+  /// Remembers the repaired samples, so the next detection says which flags sit beside them.
+  void applied(const std::vector<SamplePatch>& patches) override;
 
 private:
+  std::vector<SamplePatch> m_repairs;  // the last Apply's, while the take still holds them
   TakeDocument& m_document;
   QComboBox* m_method = nullptr;
   QDoubleSpinBox* m_factor = nullptr;

@@ -207,12 +207,16 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
     m_layoutReference.clear();
     m_headReference.clear();  // a new take
     m_headMotion.reset();
-    m_followMarkers = guessFollowMarkers();
+    m_followMarkers = markersToFollow();
     updateStatus();
     m_links.clear();
     if (m_linksVisible)
       computeLinks();
     rebuildScene();
+  });
+  connect(&document, &TakeDocument::referenceMarkersChanged, this, [this] {
+    m_followMarkers = markersToFollow();
+    updateFollow();
   });
   connect(&document, &TakeDocument::currentFrameChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::samplesChanged, this, &MarkerView3d::updateFrame);
@@ -223,7 +227,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
     m_layoutReference.clear();
     m_headReference.clear();  // indices shifted
     m_headMotion.reset();
-    m_followMarkers = guessFollowMarkers();
+    m_followMarkers = markersToFollow();
     updateStatus();
     m_links.clear();
     if (m_linksVisible)
@@ -346,11 +350,12 @@ void MarkerView3d::updateStatus()
   m_status->setVisible(!text.isEmpty());
 }
 
-std::vector<Eigen::Index> MarkerView3d::guessFollowMarkers() const
+std::vector<Eigen::Index> MarkerView3d::markersToFollow() const
 {
+  // The document's reference (head) markers, the one set every panel uses.
   const Take& take = m_document.take();
-  std::vector<Eigen::Index> markers = guessHeadReferenceMarkers(take);
-  if (markers.empty())  // no head markers by name: the whole face
+  std::vector<Eigen::Index> markers = m_document.referenceMarkers();
+  if (markers.empty())  // no head markers: the whole face
     for (Eigen::Index m = 0; m < take.markerCount(); ++m)
       markers.push_back(m);
   return markers;
@@ -360,7 +365,7 @@ void MarkerView3d::setFollowHead(bool on)
 {
   m_followHead = on;
   if (m_followMarkers.empty())
-    m_followMarkers = guessFollowMarkers();
+    m_followMarkers = markersToFollow();
   updateStatus();
   updateFollow();
   m_viewport->requestRender();

@@ -121,7 +121,8 @@ private:
   void updateLabels();
   void updateStatus();
   void updateFollow();
-  [[nodiscard]] std::vector<Eigen::Index> guessFollowMarkers() const;
+  /// The document's reference markers (the whole face when it has none). O(#markers).
+  [[nodiscard]] std::vector<Eigen::Index> markersToFollow() const;
   void onClicked(QPoint position, Qt::KeyboardModifiers modifiers);
   void onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers);
   /// Drawn point `id` in widget (logical) coordinates.

@@ -104,7 +104,8 @@ private:
   /// O(#frames · #markers + #flags + width).
   const Ticks& ticks() const
   {
-    const auto [left, span] = groove();
+    const auto [left, grooveSpan] = groove();
+    const int span = grooveSpan; // a lambda cannot capture a structured binding in C++17
     if (m_columns == span + 1 && m_left == left && m_maximum == maximum())
       return m_ticks;
     m_columns = span + 1;

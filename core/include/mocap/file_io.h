@@ -31,13 +31,14 @@ private:
   std::string m_fallback;
 };
 
-/// Writes `bytes` to a temporary file beside `path`, flushes it and renames it over `path`,
-/// so `path` is either the old file or the complete new one, never a partial write.
+/// Writes `bytes` to a temporary file beside `path`, flushes it to the disk (fsync) and renames
+/// it over `path` (then syncs the folder), so `path` is either the old file or the complete new
+/// one, never a partial write, also after a power cut.
 /// Throws IoError (and removes the temporary file) when any step fails.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 /// writeFileAtomically for output too large to hold at once: bytes are streamed to a temporary
-/// file beside `path`, and commit() flushes it and renames it over `path`. Destroyed without
+/// file beside `path`, and commit() flushes it to the disk and renames it over `path`. Destroyed without
 /// commit() (e.g. by an exception), it removes the temporary file and leaves `path` untouched.
 /// Every method throws IoError naming `path` when a step fails.
 class AtomicFileWriter

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/gaps.h"
+#include "mocap/job_control.h"
 #include "mocap/sample_patch.h"
 #include "mocap/take.h"
 
@@ -109,11 +110,13 @@ struct FillResult
 /// 1..1000, or a valid sample that is not finite. O(#frames · #markers) plus each method's cost
 /// per gap (at most O(length · #markers) for the neighbour methods; pca adds one model of the
 /// whole take).
-[[nodiscard]] FillResult fillGaps(const Take& take, const FillOptions& options);
+[[nodiscard]] FillResult fillGaps(const Take& take, const FillOptions& options, const JobControl& job = {});
 
 /// Like fillGaps(take, options) but only for `gaps`, each of which must be a run of invalid
 /// samples of the take (as findGaps returns them; InvalidArgument otherwise). Reports follow
 /// `gaps`. Used by evaluations and by the studio to fill a selection.
-[[nodiscard]] FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options);
+/// `job` is checked between gaps (a cancelled fill throws JobCancelled).
+[[nodiscard]] FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options,
+                                  const JobControl& job = {});
 
 } // namespace mocap

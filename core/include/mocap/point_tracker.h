@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/point_cloud.h"
+#include "mocap/job_control.h"
 
 #include <vector>
 
@@ -55,6 +56,8 @@ struct TrackingResult
 /// frame without their point; joining across gaps is the labeller's job. Throws InvalidArgument
 /// for a negative or non-finite maxSpeed or a non-finite point. O(#frames · tracks · points) plus
 /// the assignment of the points near more than one track.
-[[nodiscard]] TrackingResult trackPoints(const PointCloud& cloud, const TrackerOptions& options = {});
+/// `job` is checked once a frame.
+[[nodiscard]] TrackingResult trackPoints(const PointCloud& cloud, const TrackerOptions& options = {},
+                                         const JobControl& job = {});
 
 } // namespace mocap

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/sample_patch.h"
+#include "mocap/job_control.h"
 #include "mocap/smoothing_spline.h"
 #include "mocap/take.h"
 
@@ -82,6 +83,7 @@ smoothTrajectory(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>
 /// still a measured one). Applying the patches smooths the take; applying their undo restores it.
 /// B-spline factorisations are shared between runs of equal length. Throws InvalidArgument as
 /// checkSmoothOptions with the take's frame rate. O(#markers · cost of smoothTrajectory).
-[[nodiscard]] std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options);
+[[nodiscard]] std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options,
+                                                const JobControl& job = {});
 
 } // namespace mocap

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/sample_patch.h"
+#include "mocap/job_control.h"
 #include "mocap/take.h"
 
 #include <Eigen/Core>
@@ -110,7 +111,8 @@ detectSpikes(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& x
 /// Every flagged sample of every marker, markers then frames ascending; `noiseFloor` is converted
 /// from millimetres to the take's units, so the flags do not depend on the units. An empty take
 /// gives no flags. O(#frames · #markers). Throws InvalidArgument as above, naming the marker.
-[[nodiscard]] std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& options);
+[[nodiscard]] std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& options,
+                                                 const JobControl& job = {});
 
 /// Replacements for the flagged samples (eq 10 and its extension to blocks), one patch per marker
 /// with flags, markers ascending; each replaced sample is valid with residual 0 and state

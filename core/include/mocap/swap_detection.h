@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/take.h"
+#include "mocap/job_control.h"
 
 #include <vector>
 
@@ -44,10 +45,11 @@ struct LabelSwap
 /// pair and undone in turn. Works on and repairs `take` in place; returns the swaps in frame
 /// order for review. Needs the three samples t−2..t of both markers valid. Not a paper equation.
 /// Throws InvalidArgument for options out of range. O(#frames · #markers + #swaps · #frames).
-std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options = {});
+std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options = {}, const JobControl& job = {});
 
 /// repairSwaps on a copy: the swaps without changing `take`.
-[[nodiscard]] std::vector<LabelSwap> detectSwaps(const Take& take, const SwapOptions& options = {});
+[[nodiscard]] std::vector<LabelSwap> detectSwaps(const Take& take, const SwapOptions& options = {},
+                                                const JobControl& job = {});
 
 /// Exchanges every sample of markers `a` and `b` from `frame` to the end of the take (the repair
 /// of one swap; applying it twice restores the take). Throws InvalidArgument out of range.

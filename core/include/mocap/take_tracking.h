@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/marker_set.h"
+#include "mocap/job_control.h"
 #include "mocap/point_cloud.h"
 #include "mocap/point_tracker.h"
 #include "mocap/template_labelling.h"
@@ -40,8 +41,9 @@ struct TrackReport
 /// (appendFragments); rate, first frame, units, analog data, events and parameters are kept.
 /// The set's units are converted to the take's. Throws InvalidArgument as the steps do.
 /// O(tracking + labelling) (see trackPoints, labelFragments).
+/// `job` is checked once a tracked frame and between the steps.
 [[nodiscard]] Take trackTake(const Take& take, const MarkerSet* set, const TrackOptions& options = {},
-                             TrackReport* report = nullptr);
+                             TrackReport* report = nullptr, const JobControl& job = {});
 
 /// The same for raw points (a CSV of points): tracked, then labelled with `set` when given.
 [[nodiscard]] Take trackPointCloud(const PointCloud& cloud, const MarkerSet* set, const TrackOptions& options = {},

@@ -1,0 +1,81 @@
+// Progress and cancellation of long computations: a cancelled job stops in the computation
+// itself (JobCancelled), and progress rises to the end of the part it belongs to.
+#include "test_support.h"
+
+#include "mocap/c3d_reader.h"
+#include "mocap/gap_fill.h"
+#include "mocap/job_control.h"
+#include "mocap/smoothing.h"
+#include "mocap/spike_detection.h"
+#include "mocap/swap_detection.h"
+#include "mocap/take_tracking.h"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+#include <vector>
+
+namespace mocap {
+namespace {
+
+TEST(JobControl, DefaultDoesNothing)
+{
+  const JobControl none;
+  EXPECT_FALSE(none.cancelled());
+  EXPECT_NO_THROW(none.checkpoint(0.5));
+}
+
+TEST(JobControl, CancelThrowsAtTheNextCheckpoint)
+{
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  const JobControl job({}, cancel);
+  EXPECT_NO_THROW(job.checkpoint(0.1));
+  *cancel = true;
+  EXPECT_TRUE(job.cancelled());
+  EXPECT_THROW(job.checkpoint(0.2), JobCancelled);
+  EXPECT_THROW(job.part(0.5, 1.0).checkpoint(0.0), JobCancelled);
+}
+
+TEST(JobControl, PartMapsProgressIntoItsShareAndThrottles)
+{
+  std::vector<double> reported;
+  const JobControl job([&](double f) { reported.push_back(f); }, nullptr);
+  job.part(0.5, 1.0).checkpoint(0.5);
+  ASSERT_EQ(reported.size(), 1u);
+  EXPECT_DOUBLE_EQ(reported.back(), 0.75);
+  job.checkpoint(0.9);  // within 50 ms of the last report: throttled
+  EXPECT_EQ(reported.size(), 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  job.part(0.0, 0.5).part(0.5, 1.0).checkpoint(2.0);  // clamped to the part's end
+  ASSERT_EQ(reported.size(), 2u);
+  EXPECT_DOUBLE_EQ(reported.back(), 0.5);
+}
+
+// Each long core step stops when cancelled instead of running to the end.
+TEST(JobControl, CancelledStepsOnTheSampleThrow)
+{
+  const Take take = readC3d(test::sampleTake());
+  const JobControl job({}, std::make_shared<std::atomic<bool>>(true));
+  EXPECT_THROW((void)fillGaps(take, FillOptions{}, job), JobCancelled);
+  EXPECT_THROW((void)smoothTake(take, SmoothOptions{}, job), JobCancelled);
+  EXPECT_THROW((void)detectSpikes(take, SpikeOptions{}, job), JobCancelled);
+  EXPECT_THROW((void)detectSwaps(take, {}, job), JobCancelled);
+  EXPECT_THROW((void)trackTake(take, nullptr, {}, nullptr, job), JobCancelled);
+}
+
+TEST(JobControl, TrackingReportsRisingProgress)
+{
+  const Take take = readC3d(test::sampleTake());
+  std::vector<double> reported;
+  const JobControl job([&](double f) { reported.push_back(f); }, std::make_shared<std::atomic<bool>>(false));
+  TrackReport report;
+  const Take tracked = trackTake(take, nullptr, {}, &report, job);
+  EXPECT_EQ(tracked.frameCount(), take.frameCount());
+  ASSERT_FALSE(reported.empty());
+  for (std::size_t i = 1; i < reported.size(); ++i)
+    EXPECT_GE(reported[i], reported[i - 1]);
+  EXPECT_LE(reported.back(), 1.0);
+}
+
+} // namespace
+} // namespace mocap

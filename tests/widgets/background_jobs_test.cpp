@@ -1,0 +1,129 @@
+// Work that never blocks: opening a take, Track and Label and every cleaning preview run off
+// the UI thread, which keeps serving its event loop; Cancel stops the computation itself; long
+// jobs show progress with a time estimate.
+#include "../core/test_support.h"
+#include "sample_window.h"
+
+#include "document/take_document.h"
+#include "main_window.h"
+#include "panels/cleaning_panel.h"
+#include "panels/cleaning_step.h"
+#include "panels/job_progress_row.h"
+
+#include <QElapsedTimer>
+#include <QPushButton>
+#include <QTest>
+#include <QTimer>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+namespace mocap {
+namespace {
+
+/// Counts the UI thread's timer ticks while it runs: zero means the thread never served its loop.
+class TickCounter
+{
+public:
+  TickCounter()
+  {
+    m_timer.setInterval(1);
+    QObject::connect(&m_timer, &QTimer::timeout, [this] { ++m_ticks; });
+    m_timer.start();
+  }
+  [[nodiscard]] int ticks() const { return m_ticks; }
+
+private:
+  QTimer m_timer;
+  int m_ticks = 0;
+};
+
+TEST(BackgroundJobs, OpeningATakeKeepsTheEventLoopServed)
+{
+  auto window = test::openSampleWindow();
+  ASSERT_TRUE(window);
+  TickCounter counter;
+  ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+  EXPECT_GT(counter.ticks(), 0) << "the file was read on the UI thread";
+  EXPECT_EQ(window->document().take().frameCount(), 3000);
+}
+
+TEST(BackgroundJobs, TrackAndLabelAndTheSwapSearchKeepTheEventLoopServed)
+{
+  auto window = test::openSampleWindow();
+  ASSERT_TRUE(window);
+  {
+    TickCounter counter;
+    window->trackAndLabel();
+    EXPECT_GT(counter.ticks(), 0) << "Track and Label ran on the UI thread";
+  }
+  TickCounter counter;
+  const auto swaps = window->findSwaps();
+  ASSERT_TRUE(swaps.has_value());
+  EXPECT_GT(counter.ticks(), 0) << "the swap search ran on the UI thread";
+}
+
+/// A step whose computation runs until cancelled (or 20 s), to see whether Cancel stops it.
+class EndlessStep final : public ui::CleaningStep
+{
+public:
+  using CleaningStep::CleaningStep;
+  [[nodiscard]] QString title() const override { return QStringLiteral("Endless"); }
+  [[nodiscard]] ui::StepJob job() const override
+  {
+    return [ended = m_ended](const Take&, const JobControl& control) {
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      try {
+        for (double f = 0.0; std::chrono::steady_clock::now() < until; f = std::min(f + 0.001, 0.99)) {
+          control.checkpoint(f);
+          std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+      } catch (const JobCancelled&) {
+        *ended = true;
+        throw;
+      }
+      *ended = true;
+      return ui::StepResult{};
+    };
+  }
+  std::shared_ptr<std::atomic<bool>> m_ended = std::make_shared<std::atomic<bool>>(false);
+};
+
+TEST(BackgroundJobs, CancelStopsTheComputationItselfAndProgressShowsTimeLeft)
+{
+  auto window = test::openSampleWindow();
+  ASSERT_TRUE(window);
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  auto* step = new EndlessStep(panel);
+  panel->addStep(step);
+  panel->setCurrentStep(step);
+  panel->refresh();
+  ASSERT_TRUE(panel->busy());
+  auto* row = panel->findChild<ui::JobProgressRow*>();
+  ASSERT_NE(row, nullptr);
+  EXPECT_TRUE(row->cancelButton()->isEnabled());
+  QTest::qWait(1200);  // long enough for an estimate
+  EXPECT_TRUE(row->estimateText().contains(QStringLiteral("left"))) << row->estimateText().toStdString();
+  QTest::mouseClick(row->cancelButton(), Qt::LeftButton);
+  QElapsedTimer clock;
+  clock.start();
+  while (!*step->m_ended && clock.elapsed() < 5000)
+    QTest::qWait(10);
+  EXPECT_TRUE(*step->m_ended);
+  EXPECT_LT(clock.elapsed(), 1000) << "Cancel left the computation running";
+  EXPECT_FALSE(row->cancelButton()->isEnabled());
+}
+
+TEST(BackgroundJobs, TimeLeftAssumesAnEvenPaceAndWaitsUntilItCanTell)
+{
+  EXPECT_TRUE(ui::timeLeftText(0.5, 0.2).isEmpty());   // too early
+  EXPECT_TRUE(ui::timeLeftText(0.01, 5.0).isEmpty());  // too little done
+  EXPECT_EQ(ui::timeLeftText(0.25, 3.0), QStringLiteral("about 9 s left"));
+  EXPECT_EQ(ui::timeLeftText(0.1, 60.0), QStringLiteral("about 9 min left"));
+}
+
+} // namespace
+} // namespace mocap
