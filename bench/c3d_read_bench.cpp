@@ -1,9 +1,9 @@
 // Reading a large float C3D (60 markers × 20 000 frames, ~19 MB, written by our own writer)
 // against the reference of reading the same file's bytes from the disk cache.
 // Target (issue 2): readC3d within 3× of BM_ReadFileBytes.
-#include "mocap/c3d_reader.h"
-#include "mocap/c3d_writer.h"
-#include "mocap/file_io.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/io/c3d_writer.h"
+#include "mocap/base/file_io.h"
 
 #include <benchmark/benchmark.h>
 

@@ -2,7 +2,7 @@
 // replacement, `auto` gap filling and B-spline smoothing, one core. Target: < 100 ms, linear in
 // frames (compare the 5 000 and 10 000 frame runs). Reference in the same run: one pass that
 // copies every trajectory (the cost of touching the data at all).
-#include "mocap/clean_pipeline.h"
+#include "mocap/cleaning/clean_pipeline.h"
 
 #include <benchmark/benchmark.h>
 

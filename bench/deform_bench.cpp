@@ -6,9 +6,9 @@
 // against the precomputed vertex × control product, and the per-frame Cholesky back-substitution
 // against the precomputed Laplacian response. The rotation-aware Laplacian (2 iterations) is
 // timed too; it has no frame-rate target.
-#include "mocap/laplacian_deformer.h"
-#include "mocap/obj_io.h"
-#include "mocap/rbf_deformer.h"
+#include "mocap/deform/laplacian_deformer.h"
+#include "mocap/io/obj_io.h"
+#include "mocap/deform/rbf_deformer.h"
 
 #include <benchmark/benchmark.h>
 

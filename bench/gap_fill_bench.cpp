@@ -3,7 +3,7 @@
 // `auto` against the reference `linear` in the same run. Target (issue 3): the whole cleaning
 // pipeline (spikes + auto fill + smoothing) under 100 ms on one core, so auto fill well under 70 ms,
 // and linear in the number of frames (compare the 5 000- and 10 000-frame runs).
-#include "mocap/gap_fill.h"
+#include "mocap/cleaning/fill/gap_fill.h"
 
 #include <benchmark/benchmark.h>
 

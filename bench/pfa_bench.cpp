@@ -3,9 +3,9 @@
 // sweep on one thread (the reference), and the whole plan (sweep + greedy + random baselines +
 // both errors at every size). Target: the multi-threaded sweep under 10 s on a 2-core machine.
 // A wall-clock line for each is printed before the benchmark table.
-#include "mocap/layout_frames.h"
-#include "mocap/marker_selection.h"
-#include "mocap/take_io.h"
+#include "mocap/layout/layout_frames.h"
+#include "mocap/layout/marker_selection.h"
+#include "mocap/io/take_io.h"
 
 #include <benchmark/benchmark.h>
 

@@ -2,8 +2,8 @@
 // marker every 1150 frames) with each method through smoothTake, against the reference of a plain
 // 5-point moving average over the same valid runs (the cheapest smoother there is).
 // Target (issue 3): B-spline smoothing a small part of the cleaning pipeline's 100 ms.
-#include "mocap/smoothing.h"
-#include "mocap/valid_runs.h"
+#include "mocap/cleaning/smoothing.h"
+#include "mocap/model/valid_runs.h"
 
 #include <benchmark/benchmark.h>
 

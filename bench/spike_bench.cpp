@@ -5,7 +5,7 @@
 // Measured (RelWithDebInfo, 2 shared cores, CPU time): reference 1.2-1.5 ms, paper 3.1-4.6 ms
 // (~3×), robust 85-110 ms (~70×: three small median networks, a 9-sample fit and two 11-sample
 // medians per sample), replaceSpikes 0.4 ms for ~6 000 flags.
-#include "mocap/spike_detection.h"
+#include "mocap/cleaning/spike_detection.h"
 
 #include <benchmark/benchmark.h>
 

@@ -5,8 +5,8 @@
 // Hungarian tracking, template labelling); BM_TrackHungarian and the reference BM_TrackGreedy
 // compare the tracking step alone against greedy nearest-neighbour assignment in the same run.
 // The "recovered" counter is the fraction of samples back under their true label.
-#include "mocap/take_tracking.h"
-#include "mocap/tracking_evaluation.h"
+#include "mocap/tracking/take_tracking.h"
+#include "mocap/evaluation/tracking_evaluation.h"
 
 #include <benchmark/benchmark.h>
 

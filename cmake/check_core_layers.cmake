@@ -3,7 +3,7 @@
 # (a group may include its own and lower ranks; groups of one rank do not include each other):
 #   0 base · 1 model · 2 io, math · 3 cleaning (with cleaning/fill) · 4 tracking, layout, deform ·
 #   5 evaluation
-# cleaning sits below tracking, layout and deform because they use its head stabilisation and
+# cleaning sits below tracking, layout and deform because they use its head stabilization and
 # smoothers; nothing in cleaning needs them.
 set(rank_base 0)
 set(rank_model 1)
@@ -18,6 +18,7 @@ set(rank_evaluation 5)
 if(NOT CORE)
   message(FATAL_ERROR "check_core_layers: pass -DCORE=<core directory>")
 endif()
+get_filename_component(CORE "${CORE}" ABSOLUTE)
 file(GLOB_RECURSE files RELATIVE "${CORE}" "${CORE}/include/mocap/*.h" "${CORE}/src/*.cpp")
 set(violations 0)
 foreach(file IN LISTS files)

@@ -4,33 +4,127 @@
 <context>
     <name>GapFillStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="+81"/>
         <source>, %n left open</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>, %n offen geblieben</numerusform>
             <numerusform>, %n offen geblieben</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+32"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>longer than %1</source>
+        <translation>länger als %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>edge gap (extrapolation off)</source>
+        <translation>Randlücke (Extrapolation aus)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>marker seen in only %1 % of the take</source>
+        <translation>Marker nur in %1 % der Aufnahme sichtbar</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>marker never seen</source>
+        <translation>Marker nie sichtbar</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>No gap filled</source>
+        <translation>Keine Lücke gefüllt</translation>
+    </message>
     <message numerus="yes">
-        <location line="-2"/>
+        <location line="+1"/>
         <source>%n gap(s) filled</source>
         <translation>
             <numerusform>%n Lücke gefüllt</numerusform>
             <numerusform>%n Lücken gefüllt</numerusform>
         </translation>
     </message>
-</context>
-<context>
-    <name>HeadStabilisationStep</name>
-    <message>
-        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="+96"/>
-        <source>There is no marker &apos;%1&apos;.</source>
-        <translation>Es gibt keinen Marker „%1“.</translation>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>, %n sample(s)</source>
+        <translation>
+            <numerusform>, %n Abtastwert</numerusform>
+            <numerusform>, %n Abtastwerte</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
+        <source>%1 longer than %2</source>
+        <translation>%1 länger als %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n edge gap(s)</source>
+        <translation>
+            <numerusform>%n Randlücke</numerusform>
+            <numerusform>%n Randlücken</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n on rarely seen markers</source>
+        <translation>
+            <numerusform>%n an selten sichtbaren Markern</numerusform>
+            <numerusform>%n an selten sichtbaren Markern</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n on markers never seen</source>
+        <translation>
+            <numerusform>%n an nie sichtbaren Markern</numerusform>
+            <numerusform>%n an nie sichtbaren Markern</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n the method could not fill</source>
+        <translation>
+            <numerusform>%n, die die Methode nicht füllen konnte</numerusform>
+            <numerusform>%n, die die Methode nicht füllen konnte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>; %n left open</source>
+        <translation>
+            <numerusform>; %n offen geblieben</numerusform>
+            <numerusform>; %n offen geblieben</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>HeadStabilizationStep</name>
+    <message>
+        <source>There is no marker &apos;%1&apos;.</source>
+        <translation type="vanished">Es gibt keinen Marker „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
+        <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
+        <translation>Keine Referenzmarker: Wählen Sie sie unter Marker ▸ Referenzmarker… aus</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>head pose measured in %1 of %2 frames</source>
         <translation>Kopfhaltung in %1 von %2 Bildern gemessen</translation>
+    </message>
+</context>
+<context>
+    <name>QProgressDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/job_dialog.cpp" line="+25"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
     </message>
 </context>
 <context>
@@ -75,31 +169,44 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+80"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
         <source>%1 smoothing</source>
         <translation>Glättung: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>: moves samples by RMS %1 %3, at most %2 %3 (%4, frame %5)</source>
+        <translation>: verschiebt Abtastwerte um RMS %1 %3, höchstens %2 %3 (%4, Bild %5)</translation>
     </message>
 </context>
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+80"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+121"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>%n Ausreißer gefunden</numerusform>
             <numerusform>%n Ausreißer gefunden</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>; %n beside samples just repaired: a glitch longer than a few frames is found a part at a time (its worst samples first). Repair these too, or turn on &quot;Look again until nothing new&quot; to flag whole glitches at once</source>
+        <translation>
+            <numerusform>; %n davon neben gerade reparierten Abtastwerten: Eine Störung, die länger als einige Bilder dauert, wird stückweise gefunden (ihre schlimmsten Abtastwerte zuerst). Reparieren Sie auch diese, oder schalten Sie „Wiederholen, bis nichts Neues kommt“ ein, um ganze Störungen auf einmal zu markieren</numerusform>
+            <numerusform>; %n davon neben gerade reparierten Abtastwerten: Eine Störung, die länger als einige Bilder dauert, wird stückweise gefunden (ihre schlimmsten Abtastwerte zuerst). Reparieren Sie auch diese, oder schalten Sie „Wiederholen, bis nichts Neues kommt“ ein, um ganze Störungen auf einmal zu markieren</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+77"/>
+        <location filename="../app/studio/main_window.cpp" line="+94"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
     </message>
@@ -109,7 +216,7 @@
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Markers</source>
         <translation>Marker</translation>
     </message>
@@ -124,12 +231,11 @@
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>&lt;opened take&gt;</source>
-        <translation>&lt;geöffnete Aufnahme&gt;</translation>
+        <translation type="vanished">&lt;geöffnete Aufnahme&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Cleaning</source>
         <translation>Bereinigung</translation>
     </message>
@@ -139,7 +245,12 @@
         <translation>Layoutplanung</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>Gaps</source>
+        <translation>Lücken</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
@@ -260,28 +371,37 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>&amp;Follow Head</source>
+        <translation>Kopf &amp;folgen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
+        <translation>Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+82"/>
+        <location line="+95"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-82"/>
-        <location line="+82"/>
+        <location line="-95"/>
+        <location line="+95"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>&amp;Head-Stabilised View…</source>
-        <translation>&amp;Kopfstabilisierte Ansicht…</translation>
+        <source>&amp;Head-Stabilized View…</source>
+        <translation type="vanished">&amp;Kopfstabilisierte Ansicht…</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="-56"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -296,36 +416,80 @@
         <translation>Über Mocap Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>
+        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized view.&lt;/p&gt;</source>
+        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+64"/>
         <source>3D view in the lab frame</source>
         <translation>3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+9"/>
-        <location line="+7"/>
-        <source>Head-Stabilised View</source>
+        <location line="+8"/>
+        <source>Head-Stabilized View</source>
         <translation>Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="-15"/>
         <source>Head-mounted reference markers (at least three, comma separated):</source>
-        <translation>Am Kopf befestigte Referenzmarker (mindestens drei, durch Kommas getrennt):</translation>
+        <translation type="vanished">Am Kopf befestigte Referenzmarker (mindestens drei, durch Kommas getrennt):</translation>
     </message>
     <message>
-        <location line="+8"/>
         <source>There is no marker &apos;%1&apos;.</source>
-        <translation>Es gibt keinen Marker „%1“.</translation>
+        <translation type="vanished">Es gibt keinen Marker „%1“.</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>3D view stabilised on the head (Ctrl+B again for the lab frame)</source>
-        <translation>3D-Ansicht auf den Kopf stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+        <source>3D view stabilized on the head (Ctrl+B again for the lab frame)</source>
+        <translation type="vanished">3D-Ansicht auf den Kopf stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+    </message>
+    <message>
+        <location line="-106"/>
+        <source>&amp;Head-Stabilized View</source>
+        <translation>&amp;Kopfstabilisierte Ansicht</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
+        <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized view, F camera follows the head, Ctrl+Shift+S save as.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Ausreißer, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht, F Kamera folgt dem Kopf, Strg+Umschalt+S Speichern unter.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
+        <translation>Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
+        <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
+        <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Reference markers unchanged</source>
+        <translation>Referenzmarker unverändert</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Select at least three head-mounted markers first</source>
+        <translation>Wählen Sie zuerst mindestens drei am Kopf befestigte Marker aus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The selected markers already are the reference markers</source>
+        <translation>Die ausgewählten Marker sind bereits die Referenzmarker</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -361,6 +525,26 @@
         <location line="+2"/>
         <source>Exchange the data of the two selected markers over the selected frame range</source>
         <translation>Die Daten der beiden ausgewählten Marker im ausgewählten Bildbereich vertauschen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Reference Markers…</source>
+        <translation>&amp;Referenzmarker…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The head-mounted markers that head stabilization, layout planning and the face mesh use</source>
+        <translation>Die am Kopf befestigten Marker, die Kopfstabilisierung, Layoutplanung und Gesichtsnetz verwenden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Selected as Reference &amp;Markers</source>
+        <translation>Auswahl als Referenz&amp;marker festlegen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Make the selected markers (at least three) the take&apos;s reference markers (undoable)</source>
+        <translation>Die ausgewählten Marker (mindestens drei) zu den Referenzmarkern der Aufnahme machen (rückgängig machbar)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -413,32 +597,70 @@
         <translation>Beschriften: einen Marker in der Tabelle wählen, dann den Punkt anklicken, der er ist</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+15"/>
+        <source>Tracking and labelling…</source>
+        <translation>Verfolgen und Beschriften…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Track and Label cancelled; the take is unchanged</source>
+        <translation>Verfolgen und Beschriften abgebrochen; die Aufnahme ist unverändert</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Track and Label</source>
         <translation>Verfolgen und beschriften</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>Nothing to label: every marker has a label</source>
+        <translation>Nichts zu beschriften: Jeder Marker hat einen Namen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Nothing to label: none of the %n unlabelled fragment(s) matches a marker</source>
+        <translation>
+            <numerusform>Nichts zu beschriften: %n unbeschriftetes Fragment passt zu keinem Marker</numerusform>
+            <numerusform>Nichts zu beschriften: Keines der %n unbeschrifteten Fragmente passt zu einem Marker</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Track and label (%1 of %2 fragments labelled)</source>
         <translation>Verfolgen und beschriften (%1 von %2 Fragmenten beschriftet)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
         <translation>%1 von %2 Fragmenten beschriftet; %3 Abtastwerte unbeschriftet</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+11"/>
+        <source>Looking for label swaps…</source>
+        <translation>Suche nach Namensvertauschungen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Swap search cancelled</source>
+        <translation>Suche nach Vertauschungen abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Fix Swaps</source>
         <translation>Vertauschungen beheben</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>No label swaps found</source>
         <translation>Keine vertauschten Namen gefunden</translation>
     </message>
+    <message>
+        <location line="+9"/>
+        <source>No swap accepted; the take is unchanged</source>
+        <translation>Keine Vertauschung übernommen; die Aufnahme ist unverändert</translation>
+    </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+8"/>
         <source>Repair %n label swap(s)</source>
         <translation>
             <numerusform>%n Namensvertauschung reparieren</numerusform>
@@ -446,7 +668,7 @@
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Select the one marker whose label the point gets, then click the point</source>
         <translation>Den einen Marker wählen, dessen Namen der Punkt erhält, dann den Punkt anklicken</translation>
     </message>
@@ -492,35 +714,80 @@
         <translation>Wählen Sie genau zwei Marker aus und ziehen Sie zuerst mit Umschalt einen Bildbereich in den Kurven auf</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>Nothing to swap: both markers are gaps over the selected range</source>
+        <translation>Nichts zu tauschen: Beide Marker sind im ausgewählten Bereich Lücken</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Swap %1 and %2 over frames %3–%4</source>
         <translation>%1 und %2 in den Bildern %3–%4 tauschen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Select markers and Shift-drag a frame range on the curves first</source>
         <translation>Zuerst Marker auswählen und auf den Kurven per Umschalt-Ziehen einen Frame-Bereich markieren</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>Nothing to delete: the selected range is already a gap</source>
+        <translation>Nichts zu löschen: Der ausgewählte Bereich ist bereits eine Lücke</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Delete frames %1–%2</source>
         <translation>Frames %1–%2 löschen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Opening %1…</source>
+        <translation>%1 wird geöffnet…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Cannot open file</source>
         <translation>Datei kann nicht geöffnet werden</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
-        <source>%n warning(s) while reading; the first: %1</source>
+        <location line="+16"/>
+        <source>⚠ Incomplete: %n warning(s)</source>
         <translation>
+            <numerusform>⚠ Unvollständig: %n Warnung</numerusform>
+            <numerusform>⚠ Unvollständig: %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>⚠ %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ %n Warnung</numerusform>
+            <numerusform>⚠ %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show every warning from reading the file</source>
+        <translation>Alle Warnungen beim Lesen der Datei anzeigen</translation>
+    </message>
+    <message>
+        <location line="+180"/>
+        <source>The face mesh of the recovered session could not be restored: %1</source>
+        <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s) while reading; the first: %1</source>
+        <translation type="vanished">
             <numerusform>%n Warnung beim Lesen: %1</numerusform>
             <numerusform>%n Warnungen beim Lesen; die erste: %1</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-158"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -587,6 +854,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>%1 (incomplete)[*] — Mocap Studio</source>
+        <translation>%1 (unvollständig)[*] — Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1[*] — Mocap Studio</source>
         <translation>%1[*] — Mocap Studio</translation>
     </message>
@@ -611,12 +883,12 @@
         <translation>Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-687"/>
+        <location line="-863"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -624,7 +896,7 @@
 <context>
     <name>mocap::ui::Autosave</name>
     <message>
-        <location filename="../widgets/document/autosave.cpp" line="+82"/>
+        <location filename="../widgets/document/autosave.cpp" line="+81"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>Der Wiederherstellungsordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -632,7 +904,7 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+27"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+67"/>
         <source>Live preview</source>
         <translation>Live-Vorschau</translation>
     </message>
@@ -652,22 +924,21 @@
         <translation>Nur die in den Kurven ausgewählten Bilder ändern (Umschalt+Ziehen)</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Cancel</source>
-        <translation>Abbrechen</translation>
+        <translation type="vanished">Abbrechen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+10"/>
         <source>Apply</source>
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+102"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+29"/>
         <source>%1 — %n sample(s) would change</source>
         <translation>
             <numerusform>%1 — %n Abtastwert würde sich ändern</numerusform>
@@ -675,12 +946,12 @@
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+80"/>
         <source>Nothing to apply</source>
         <translation>Nichts anzuwenden</translation>
     </message>
@@ -688,12 +959,52 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+95"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+169"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
     <message>
-        <location line="+203"/>
+        <location line="+51"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>filled</source>
+        <translation>gefüllt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smoothed</source>
+        <translation>geglättet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>edited</source>
+        <translation>bearbeitet</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>+%1 more</source>
+        <translation>+%1 weitere</translation>
+    </message>
+    <message>
+        <location line="+287"/>
+        <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
+        <translation>%1 · Bild %2 (%3 s) · %4 %5 %6</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source> → preview %1</source>
+        <translation> → Vorschau %1</translation>
+    </message>
+    <message>
+        <location line="+100"/>
         <source>Move %1 %2 at frame %3</source>
         <translation>%1 %2 in Bild %3 verschieben</translation>
     </message>
@@ -701,7 +1012,7 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+72"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -736,7 +1047,12 @@
         <translation>&amp;Ausgabe:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
+        <source>R&amp;ange:</source>
+        <translation>Be&amp;reich:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>to</source>
         <translation>bis</translation>
     </message>
@@ -752,17 +1068,53 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+243"/>
+        <location line="+341"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-310"/>
+        <source>Whole take (%1–%2)</source>
+        <translation>Gesamte Aufnahme (%1–%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Selected range (%1–%2)</source>
+        <translation>Ausgewählter Bereich (%1–%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Custom</source>
+        <translation>Benutzerdefiniert</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>Laden Sie zuerst ein Gesichtsnetz: Diese Formate exportieren das verformte Netz.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+112"/>
+        <source>Replace %n existing file(s)?</source>
+        <translation>
+            <numerusform>%n vorhandene Datei ersetzen?</numerusform>
+            <numerusform>%n vorhandene Dateien ersetzen?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… und %n weitere</numerusform>
+            <numerusform>… und %n weitere</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+47"/>
+        <location line="+1"/>
+        <source>Replace Files?</source>
+        <translation>Dateien ersetzen?</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Folder for the OBJ sequence</source>
         <translation>Ordner für die OBJ-Sequenz</translation>
     </message>
@@ -816,8 +1168,13 @@
         <source>%1 is a folder; choose a file name.</source>
         <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen.</translation>
     </message>
+    <message>
+        <location line="+39"/>
+        <source>Not exported: the existing files are kept.</source>
+        <translation>Nicht exportiert: Die vorhandenen Dateien bleiben erhalten.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+49"/>
+        <location line="+14"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>%n Bild wird exportiert…</numerusform>
@@ -856,7 +1213,7 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+99"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+91"/>
         <source>Mesh and binding</source>
         <translation>Netz und Bindung</translation>
     </message>
@@ -907,12 +1264,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+294"/>
+        <location line="+284"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>Wählen Sie einen Marker aus und klicken Sie dann auf seinen Scheitelpunkt im Netz</translation>
     </message>
     <message>
-        <location line="-291"/>
+        <location line="-281"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
@@ -927,14 +1284,22 @@
         <translation>Verformung</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Head-mounted reference markers (comma separated) whose motion is removed before binding and deforming; empty: none</source>
-        <translation>Am Kopf befestigte Referenzmarker (durch Kommas getrennt), deren Bewegung vor dem Binden und Verformen entfernt wird; leer: keine</translation>
+        <translation type="vanished">Am Kopf befestigte Referenzmarker (durch Kommas getrennt), deren Bewegung vor dem Binden und Verformen entfernt wird; leer: keine</translation>
+    </message>
+    <message>
+        <source>Head markers:</source>
+        <translation type="vanished">Kopfmarker:</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Head markers:</source>
-        <translation>Kopfmarker:</translation>
+        <source>Head motion is removed with these markers before binding and deforming; they are not bound.</source>
+        <translation>Mit diesen Markern wird die Kopfbewegung vor dem Binden und Verformen entfernt; sie selbst werden nicht gebunden.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reference markers:</source>
+        <translation>Referenzmarker:</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -948,18 +1313,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+313"/>
+        <location line="+334"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-312"/>
-        <location line="+312"/>
+        <location line="-333"/>
+        <location line="+333"/>
         <source>Laplacian</source>
         <translation>Laplace</translation>
     </message>
     <message>
-        <location line="-311"/>
+        <location line="-332"/>
         <source>Method:</source>
         <translation>Methode:</translation>
     </message>
@@ -1029,7 +1394,7 @@
         <translation>erstes vollständiges</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+13"/>
         <source>Cannot read the mesh %1: %2</source>
         <translation>Das Netz %1 kann nicht gelesen werden: %2</translation>
     </message>
@@ -1052,32 +1417,42 @@
         <translation>Die Bindung %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Cannot save the binding: %1</source>
         <translation>Die Bindung kann nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+22"/>
         <source>Auto-bind: %1</source>
         <translation>Automatische Bindung: %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Click the vertex for %1</source>
         <translation>Klicken Sie auf den Scheitelpunkt für %1</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1 bound to vertex %2</source>
         <translation>%1 an Scheitelpunkt %2 gebunden</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>; residual %1 mm (was %2 mm)</source>
+        <translation>; Residuum %1 mm (vorher %2 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; residual %1 mm</source>
+        <translation>; Residuum %1 mm</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Deform per frame: %1 %2 ms</source>
         <translation>Verformung pro Bild: %1 %2 ms</translation>
     </message>
@@ -1138,13 +1513,13 @@
 <context>
     <name>mocap::ui::FaceMeshScene</name>
     <message>
-        <location filename="../widgets/views/face_mesh_scene.cpp" line="+124"/>
+        <location filename="../widgets/views/face_mesh_scene.cpp" line="+126"/>
         <source>Load a mesh first.</source>
         <translation>Laden Sie zuerst ein Netz.</translation>
     </message>
     <message>
         <location line="+54"/>
-        <source>Head stabilisation: %1</source>
+        <source>Head stabilization: %1</source>
         <translation>Kopfstabilisierung: %1</translation>
     </message>
     <message>
@@ -1156,7 +1531,294 @@
 <context>
     <name>mocap::ui::GapFillStep</name>
     <message>
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="-58"/>
+        <source>Auto (best blend)</source>
+        <translation type="vanished">Automatisch (beste Überblendung)</translation>
+    </message>
+    <message>
+        <source>Rigid neighbours</source>
+        <translation type="vanished">Starre Nachbarn</translation>
+    </message>
+    <message>
+        <source>PCA (marker correlations)</source>
+        <translation type="vanished">PCA (Marker-Korrelationen)</translation>
+    </message>
+    <message>
+        <source>Cubic spline</source>
+        <translation type="vanished">Kubischer Spline</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation type="vanished">Linear</translation>
+    </message>
+    <message>
+        <source>Paper: three neighbours (eqs 3–5)</source>
+        <translation type="vanished">Paper: drei Nachbarn (Gl. 3–5)</translation>
+    </message>
+    <message>
+        <source>Paper: n neighbours (eqs 6–7)</source>
+        <translation type="vanished">Paper: n Nachbarn (Gl. 6–7)</translation>
+    </message>
+    <message>
+        <source>Neighbour average (Guenter)</source>
+        <translation type="vanished">Nachbarmittelwert (Guenter)</translation>
+    </message>
+    <message>
+        <source>Distance-weighted neighbours (Lin–Ouhyoung)</source>
+        <translation type="vanished">Distanzgewichtete Nachbarn (Lin–Ouhyoung)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+16"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Neighbours</source>
+        <translation>Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+5"/>
+        <source>unlimited</source>
+        <translation>unbegrenzt</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> frames</source>
+        <translation> Frames</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longer gaps are left open: filling them would invent motion</source>
+        <translation>Längere Lücken bleiben offen: Sie zu füllen, würde Bewegung erfinden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Longest gap</source>
+        <translation>Längste Lücke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>= frames</source>
+        <translation>= Frames</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Extrapolate edge gaps</source>
+        <translation>Randlücken extrapolieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fill before a marker&apos;s first and after its last valid sample (invents motion nobody measured; off by default)</source>
+        <translation>Vor dem ersten und nach dem letzten gültigen Abtastwert eines Markers füllen (erfindet Bewegung, die niemand gemessen hat; standardmäßig aus)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> % of the take</source>
+        <translation> % der Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fill every marker</source>
+        <translation>alle Marker füllen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Markers seen in fewer frames are left open, unless they are selected and &quot;Selected markers only&quot; is on</source>
+        <translation>Marker, die in weniger Bildern sichtbar sind, bleiben offen, außer sie sind ausgewählt und „Nur ausgewählte Marker“ ist aktiviert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Skip markers seen under</source>
+        <translation>Marker auslassen, sichtbar in unter</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gaps left open and why; click one to go there</source>
+        <translation>Offen gebliebene Lücken und der Grund; klicken Sie auf eine, um dorthin zu springen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Left open</source>
+        <translation>Offen geblieben</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Gaps</source>
+        <translation>Lücken</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>%1, frames %2–%3 (%4)</source>
+        <translation>%1, Frames %2–%3 (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::GapListPanel</name>
+    <message>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+171"/>
+        <source>Filter markers…</source>
+        <translation>Marker filtern…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Only open gaps</source>
+        <translation>Nur offene Lücken</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Check Shown</source>
+        <translation>Angezeigte abhaken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check every open gap the filter shows</source>
+        <translation>Jede offene Lücke abhaken, die der Filter anzeigt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Uncheck All</source>
+        <translation>Alle Häkchen entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live preview</source>
+        <translation>Live-Vorschau</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the fill of the checked (or selected) gaps over the views before filling</source>
+        <translation>Die Füllung der abgehakten (oder ausgewählten) Lücken vor dem Füllen in den Ansichten anzeigen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+137"/>
+        <source>Fill</source>
+        <translation>Füllen</translation>
+    </message>
+    <message>
+        <location line="-94"/>
+        <source>Show Gap</source>
+        <translation>Lücke anzeigen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fill This Gap</source>
+        <translation>Diese Lücke füllen</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Check gaps, or select rows, to preview their fill; double-click a gap to go to it.</source>
+        <translation>Haken Sie Lücken ab oder wählen Sie Zeilen aus, um ihre Füllung in der Vorschau zu sehen; ein Doppelklick auf eine Lücke springt zu ihr.</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Fill 1 Checked Gap</source>
+        <translation>1 abgehakte Lücke füllen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fill %1 Checked Gaps</source>
+        <translation>%1 abgehakte Lücken füllen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fill Selected Gap</source>
+        <translation>Ausgewählte Lücke füllen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fill %1 Selected Gaps</source>
+        <translation>%1 ausgewählte Lücken füllen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fill the checked gaps, or else the selected ones, each with its method (Ctrl+Return)</source>
+        <translation>Die abgehakten Lücken füllen, sonst die ausgewählten, jede mit ihrer Methode (Strg+Eingabe)</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>No open gap to fill</source>
+        <translation>Keine offene Lücke zu füllen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+21"/>
+        <source>Computing the fill of %n gap(s)…</source>
+        <translation>
+            <numerusform>Füllung von %n Lücke wird berechnet…</numerusform>
+            <numerusform>Füllung von %n Lücken wird berechnet…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>1 gap filled</source>
+        <translation>1 Lücke gefüllt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 gaps filled</source>
+        <translation>%1 Lücken gefüllt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 gap previewed</source>
+        <translation>1 Lücke in der Vorschau</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 gaps previewed</source>
+        <translation>%1 Lücken in der Vorschau</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, 1 sample</source>
+        <translation>, 1 Abtastwert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>, %1 samples</source>
+        <translation>, %1 Abtastwerte</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>1 gap cannot be filled: %1</source>
+        <translation>1 Lücke kann nicht gefüllt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 gaps cannot be filled (the first: %2)</source>
+        <translation>%1 Lücken können nicht gefüllt werden (die erste: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Fill 1 gap: %1</source>
+        <translation>1 Lücke füllen: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fill %1 gaps: %2</source>
+        <translation>%1 Lücken füllen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::GapTableModel</name>
+    <message>
+        <location filename="../widgets/models/gap_table_model.cpp" line="+28"/>
         <source>Auto (best blend)</source>
         <translation>Automatisch (beste Überblendung)</translation>
     </message>
@@ -1182,13 +1844,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper: three neighbours (eqs 3–5)</source>
-        <translation>Paper: drei Nachbarn (Gl. 3–5)</translation>
+        <source>Paper method: three neighbours (Zhang et al., eqs 3–5)</source>
+        <translation>Paper-Methode: drei Nachbarn (Zhang et al., Gl. 3–5)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper: n neighbours (eqs 6–7)</source>
-        <translation>Paper: n Nachbarn (Gl. 6–7)</translation>
+        <source>Paper method: n neighbours (Zhang et al., eqs 6–7)</source>
+        <translation>Paper-Methode: n Nachbarn (Zhang et al., Gl. 6–7)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1201,50 +1863,113 @@
         <translation>Distanzgewichtete Nachbarn (Lin–Ouhyoung)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+199"/>
+        <source>filled</source>
+        <translation>gefüllt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>previewed</source>
+        <translation>in der Vorschau</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot fill: %1</source>
+        <translation>nicht füllbar: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open</source>
+        <translation>offen</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Filled by: %1</source>
+        <translation>Gefüllt mit: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 — double-click to choose how this gap is filled</source>
+        <translation>%1 — Doppelklick, um zu wählen, wie diese Lücke gefüllt wird</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Check the gaps to fill together</source>
+        <translation>Die gemeinsam zu füllenden Lücken abhaken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First missing frame (the file&apos;s numbering)</source>
+        <translation>Erstes fehlendes Bild (Nummerierung der Datei)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Length in frames</source>
+        <translation>Länge in Bildern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Length in seconds</source>
+        <translation>Länge in Sekunden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How the gap is filled (double-click to choose)</source>
+        <translation>Wie die Lücke gefüllt wird (Doppelklick zum Wählen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open, previewed, filled, or why it cannot be filled</source>
+        <translation>Offen, in der Vorschau, gefüllt oder warum sie nicht gefüllt werden kann</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Marker</source>
+        <translation>Marker</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First</source>
+        <translation>Erstes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frames</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Neighbours</source>
-        <translation>Nachbarn</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>unlimited</source>
-        <translation>unbegrenzt</translation>
-    </message>
-    <message>
         <location line="+1"/>
-        <source> frames</source>
-        <translation> Frames</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Longest gap</source>
-        <translation>Längste Lücke</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Gaps</source>
-        <translation>Lücken</translation>
+        <source>State</source>
+        <translation>Status</translation>
     </message>
 </context>
 <context>
-    <name>mocap::ui::HeadStabilisationStep</name>
+    <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="-78"/>
         <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
-        <translation>Am Kopf befestigte Marker (mindestens drei, durch Kommas getrennt), die sich nur mit dem Kopf bewegen</translation>
+        <translation type="vanished">Am Kopf befestigte Marker (mindestens drei, durch Kommas getrennt), die sich nur mit dem Kopf bewegen</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Use Selection</source>
-        <translation>Auswahl verwenden</translation>
+        <translation type="vanished">Auswahl verwenden</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
+        <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
+        <translation>Am Kopf befestigte Marker, die sich nur mit dem Kopf bewegen: An ihnen wird die Kopfhaltung jedes Bildes gemessen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Reference markers</source>
         <translation>Referenzmarker</translation>
     </message>
@@ -1255,7 +1980,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Frame whose head pose becomes the stabilised pose</source>
+        <source>Frame whose head pose becomes the stabilized pose</source>
         <translation>Bild, dessen Kopfhaltung zur stabilisierten Haltung wird</translation>
     </message>
     <message>
@@ -1264,15 +1989,102 @@
         <translation>Referenzbild</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>Stabilise head</source>
+        <location line="+1"/>
+        <source>Moves all markers in all frames into the head frame: &quot;Selected markers only&quot; and &quot;Selected frame range only&quot; do not apply to this step.</source>
+        <translation>Verschiebt alle Marker in allen Bildern in das Kopfkoordinatensystem: „Nur ausgewählte Marker“ und „Nur ausgewählter Bildbereich“ gelten für diesen Schritt nicht.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Stabilize head</source>
         <translation>Kopf stabilisieren</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::HistoryPanel</name>
+    <message>
+        <location filename="../widgets/panels/history_panel.cpp" line="+19"/>
+        <location line="+7"/>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Processing history (saved with the take)</source>
+        <translation>Bearbeitungsverlauf (mit der Aufnahme gespeichert)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Markers</source>
+        <translation>Marker</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Frames</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Samples</source>
+        <translation>Abtastwerte</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Undo history (this session)</source>
+        <translation>Rückgängig-Verlauf (diese Sitzung)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;opened take&gt;</source>
+        <translation>&lt;geöffnete Aufnahme&gt;</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 by %2 at %3</source>
+        <translation>%1 durch %2 am %3</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::JobProgressRow</name>
+    <message>
+        <location filename="../widgets/panels/job_progress_row.cpp" line="+20"/>
+        <source>about %1 s left</source>
+        <translation>noch etwa %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>about %1 min left</source>
+        <translation>noch etwa %1 min</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the computation (Esc)</source>
+        <translation>Berechnung abbrechen (Esc)</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::LayoutErrorPlot</name>
     <message>
-        <location filename="../widgets/views/layout_error_plot.cpp" line="+65"/>
+        <location filename="../widgets/views/layout_error_plot.cpp" line="+56"/>
         <source>Click a marker count (or use ←/→) to show its layout</source>
         <translation>Klicken Sie auf eine Markeranzahl (oder verwenden Sie ←/→), um ihr Layout anzuzeigen</translation>
     </message>
@@ -1320,7 +2132,7 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+86"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
@@ -1446,16 +2258,42 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>e.g. root-1, root-2, root-3</source>
-        <translation>z. B. root-1, root-2, root-3</translation>
+        <source>Head motion is removed with these markers before planning, and they are not planned over (a reduced capture still needs them).</source>
+        <translation>Mit diesen Markern wird die Kopfbewegung vor der Planung entfernt, und sie werden nicht wegoptimiert (auch eine reduzierte Aufnahme braucht sie).</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
-        <translation>Kopf-Referenzmarker, durch Kommas getrennt: Mit ihnen wird die Kopfbewegung entfernt, und sie werden nicht mit eingeplant</translation>
+        <location line="+10"/>
+        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
+        <translation>Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte und die Referenzmarker sind es immer)</translation>
+    </message>
+    <message>
+        <location line="+218"/>
+        <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
+        <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>head motion removed with %n reference marker(s)</source>
+        <translation>
+            <numerusform>Kopfbewegung mit %n Referenzmarker entfernt</numerusform>
+            <numerusform>Kopfbewegung mit %n Referenzmarkern entfernt</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>head motion not removed: no reference markers</source>
+        <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
+    </message>
+    <message>
+        <source>e.g. root-1, root-2, root-3</source>
+        <translation type="vanished">z. B. root-1, root-2, root-3</translation>
+    </message>
+    <message>
+        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
+        <translation type="vanished">Kopf-Referenzmarker, durch Kommas getrennt: Mit ihnen wird die Kopfbewegung entfernt, und sie werden nicht mit eingeplant</translation>
+    </message>
+    <message>
+        <location line="-232"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -1465,12 +2303,11 @@
         <translation>keine</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
-        <translation>Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte sind es immer)</translation>
+        <translation type="vanished">Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte sind es immer)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Leave out:</source>
         <translation>Auslassen:</translation>
     </message>
@@ -1550,7 +2387,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+71"/>
         <source>A plan is already running.</source>
         <translation>Eine Planung läuft bereits.</translation>
     </message>
@@ -1575,12 +2412,17 @@
         <translation>Die geöffnete Aufnahme hat keinen Marker „%1“.</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Head motion needs at least three reference markers (Marker ▸ Reference Markers…).</source>
+        <translation>Zum Entfernen der Kopfbewegung sind mindestens drei Referenzmarker nötig (Marker ▸ Referenzmarker…).</translation>
+    </message>
+    <message>
         <location line="+11"/>
         <source>Planning…</source>
         <translation>Planung läuft…</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
@@ -1595,12 +2437,11 @@
         <translation>Abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
-        <translation>%1 Marker, %2 Bilder, %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
+        <translation type="vanished">%1 Marker, %2 Bilder, %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
@@ -1660,11 +2501,24 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+127"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+145"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+193"/>
+        <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
+        <translation>
+            <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
+            <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Camera follows the head</source>
+        <translation>Kamera folgt dem Kopf</translation>
     </message>
 </context>
 <context>
@@ -1791,16 +2645,149 @@
     </message>
 </context>
 <context>
-    <name>mocap::ui::SmoothingStep</name>
+    <name>mocap::ui::ReadWarningsDialog</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-62"/>
-        <source>Smoothing spline (GCV)</source>
-        <translation>Glättungsspline (GCV)</translation>
+        <location filename="../widgets/dialogs/read_warnings_dialog.cpp" line="+19"/>
+        <source>%1 is incomplete</source>
+        <translation>%1 ist unvollständig</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Warnings reading %1</source>
+        <translation>Warnungen beim Lesen von %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Data is missing from %1.&lt;/b&gt; The take opened with what could be read; the rest is not in it. Saving writes only what was read.</source>
+        <translation>&lt;b&gt;In %1 fehlen Daten.&lt;/b&gt; Die Aufnahme wurde mit dem geöffnet, was gelesen werden konnte; der Rest ist nicht enthalten. Beim Speichern wird nur das Gelesene geschrieben.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n warning(s) while reading %1. The take opened; these are quirks of the file that were tolerated.</source>
+        <translation>
+            <numerusform>%n Warnung beim Lesen von %1. Die Aufnahme wurde geöffnet; es handelt sich um eine tolerierte Eigenheit der Datei.</numerusform>
+            <numerusform>%n Warnungen beim Lesen von %1. Die Aufnahme wurde geöffnet; es handelt sich um tolerierte Eigenheiten der Datei.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>I understand</source>
+        <translation>Verstanden</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceMarkersDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/reference_markers_dialog.cpp" line="+22"/>
+        <source>Reference Markers</source>
+        <translation>Referenzmarker</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Head-mounted markers that move only with the head (at least three). Head stabilization, the head-stabilized view, layout planning and the face mesh remove the head&apos;s motion with them; layout planning leaves them out.</source>
+        <translation>Am Kopf befestigte Marker, die sich nur mit dem Kopf bewegen (mindestens drei). Kopfstabilisierung, kopfstabilisierte Ansicht, Layoutplanung und Gesichtsnetz entfernen mit ihnen die Bewegung des Kopfes; die Layoutplanung lässt sie aus.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Valid in %1 % of the frames</source>
+        <translation>Gültig in %1 % der Bilder</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Guess</source>
+        <translation>&amp;Vorschlagen</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Markers named root… or head…, else the markers that move together as one rigid body</source>
+        <translation>Marker namens root… oder head…, sonst die Marker, die sich gemeinsam als ein starrer Körper bewegen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use &amp;Selection</source>
+        <translation>&amp;Auswahl verwenden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>C&amp;lear</source>
+        <translation>&amp;Leeren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No reference markers: head motion is not removed anywhere</source>
+        <translation>Keine Referenzmarker: Die Kopfbewegung wird nirgends entfernt</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>No reference markers: head motion is not removed, and layout planning plans every labelled marker.</source>
+        <translation>Keine Referenzmarker: Die Kopfbewegung wird nicht entfernt, und die Layoutplanung bezieht jeden beschrifteten Marker ein.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: a head pose needs at least three markers (or none).</source>
+        <translation>%1: Eine Kopfhaltung braucht mindestens drei Marker (oder keinen).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n reference marker(s): %1</source>
+        <translation>
+            <numerusform>%n Referenzmarker: %1</numerusform>
+            <numerusform>%n Referenzmarker: %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceMarkersRow</name>
+    <message>
+        <location filename="../widgets/panels/reference_markers_row.cpp" line="+21"/>
+        <source>One set per take, chosen in Marker ▸ Reference Markers…</source>
+        <translation>Ein Satz pro Aufnahme, gewählt unter Marker ▸ Referenzmarker…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit…</source>
+        <translation>Bearbeiten…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the reference markers (Marker ▸ Reference Markers…)</source>
+        <translation>Referenzmarker wählen (Marker ▸ Referenzmarker…)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>none (head motion is not removed)</source>
+        <translation>keine (Kopfbewegung wird nicht entfernt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SmoothingStep</name>
+    <message>
+        <source>Smoothing spline (GCV)</source>
+        <translation type="vanished">Glättungsspline (GCV)</translation>
+    </message>
+    <message>
         <source>B-spline (eqs 11–12)</source>
-        <translation>B-Spline (Gl. 11–12)</translation>
+        <translation type="vanished">B-Spline (Gl. 11–12)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
+        <source>GCV smoothing spline (Woltring)</source>
+        <translation>GCV-Glättungsspline (Woltring)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B-spline (Zhang et al., eqs 11–12)</source>
+        <translation>B-Spline (Zhang et al., Gl. 11–12)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1862,14 +2849,28 @@
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-56"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-72"/>
         <source>Robust (local fit + MAD)</source>
         <translation>Robust (lokale Anpassung + MAD)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Paper (eqs 8–10)</source>
-        <translation>Paper (Gl. 8–10)</translation>
+        <translation type="vanished">Paper (Gl. 8–10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper method (Zhang et al., eqs 8–10)</source>
+        <translation>Paper-Methode (Zhang et al., Gl. 8–10)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Judges each sample against a robust local fit of its neighbours</source>
+        <translation>Beurteilt jeden Abtastwert anhand einer robusten lokalen Anpassung an seine Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Eqs 8–10 as written, in one pass</source>
+        <translation>Gl. 8–10 wie veröffentlicht, in einem Durchgang</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1897,17 +2898,27 @@
         <translation>Schwellenwert</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Look again until nothing new</source>
+        <translation>Wiederholen, bis nichts Neues kommt</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>A glitch longer than a few frames is found a part at a time, its worst samples first, so detecting again after a repair finds the rest beside the repaired samples. On, the robust detector repeats itself on the repaired curve until it finds nothing new: whole glitches are flagged at once (more flags), and a second detection finds next to nothing.</source>
+        <translation>Eine Störung, die länger als einige Bilder dauert, wird stückweise gefunden, ihre schlimmsten Abtastwerte zuerst; eine erneute Erkennung nach einer Reparatur findet daher den Rest neben den reparierten Abtastwerten. Eingeschaltet wiederholt der robuste Detektor die Suche auf der reparierten Kurve, bis er nichts Neues findet: Ganze Störungen werden auf einmal markiert (mehr Markierungen), und eine zweite Erkennung findet so gut wie nichts.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Click to go to a flag; uncheck to keep that sample</source>
         <translation>Klicken, um zum markierten Abtastwert zu springen; Häkchen entfernen, um ihn zu behalten</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Bad points</source>
         <translation>Ausreißer</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+36"/>
         <source>%1 at frame %2</source>
         <translation>%1 bei Frame %2</translation>
     </message>
@@ -1941,7 +2952,12 @@
 <context>
     <name>mocap::ui::TimelineWidget</name>
     <message>
-        <location filename="../widgets/views/timeline_widget.cpp" line="+33"/>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+40"/>
+        <source>Dark: gaps, red: bad points under review — of the selected markers, or of all when none is selected. Yellow: the selected frame range.</source>
+        <translation>Dunkel: Lücken, rot: zu prüfende Ausreißer — der ausgewählten Marker oder aller, wenn keiner ausgewählt ist. Gelb: der ausgewählte Frame-Bereich.</translation>
+    </message>
+    <message>
+        <location line="+133"/>
         <source>Previous gap</source>
         <translation>Vorherige Lücke</translation>
     </message>
@@ -1979,6 +2995,21 @@
         <location line="+9"/>
         <source>Playback speed</source>
         <translation>Wiedergabegeschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+142"/>
+        <source>No gap after this frame</source>
+        <translation>Keine Lücke nach diesem Frame</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No gap before this frame</source>
+        <translation>Keine Lücke vor diesem Frame</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Gap of %1 at frame %2 (%3 frames)</source>
+        <translation>Lücke von %1 bei Frame %2 (%3 Frames)</translation>
     </message>
 </context>
 <context>

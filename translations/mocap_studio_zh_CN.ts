@@ -4,31 +4,119 @@
 <context>
     <name>GapFillStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="+81"/>
         <source>, %n left open</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>，%n 个未填补</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+32"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>longer than %1</source>
+        <translation>长于 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>edge gap (extrapolation off)</source>
+        <translation>边缘缺口（外推已关闭）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>marker seen in only %1 % of the take</source>
+        <translation>标记点仅在 %1 % 的拍摄数据中可见</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>marker never seen</source>
+        <translation>标记点从未出现</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>No gap filled</source>
+        <translation>未填补任何缺口</translation>
+    </message>
     <message numerus="yes">
-        <location line="-2"/>
+        <location line="+1"/>
         <source>%n gap(s) filled</source>
         <translation>
             <numerusform>已填补 %n 个缺口</numerusform>
         </translation>
     </message>
-</context>
-<context>
-    <name>HeadStabilisationStep</name>
-    <message>
-        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="+96"/>
-        <source>There is no marker &apos;%1&apos;.</source>
-        <translation>没有标记点“%1”。</translation>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>, %n sample(s)</source>
+        <translation>
+            <numerusform>，%n 个采样点</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
+        <source>%1 longer than %2</source>
+        <translation>%1 个长于 %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n edge gap(s)</source>
+        <translation>
+            <numerusform>%n 个边缘缺口</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n on rarely seen markers</source>
+        <translation>
+            <numerusform>%n 个位于很少出现的标记点上</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n on markers never seen</source>
+        <translation>
+            <numerusform>%n 个位于从未出现的标记点上</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n the method could not fill</source>
+        <translation>
+            <numerusform>%n 个方法无法填补</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>; %n left open</source>
+        <translation>
+            <numerusform>；%n 个未填补</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>HeadStabilizationStep</name>
+    <message>
+        <source>There is no marker &apos;%1&apos;.</source>
+        <translation type="vanished">没有标记点“%1”。</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
+        <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
+        <translation>没有参考标记点：请在“标记点 ▸ 参考标记点…”中选择</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>head pose measured in %1 of %2 frames</source>
         <translation>在 %2 帧中的 %1 帧测得头部姿态</translation>
+    </message>
+</context>
+<context>
+    <name>QProgressDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/job_dialog.cpp" line="+25"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
     </message>
 </context>
 <context>
@@ -73,30 +161,42 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+80"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
         <source>%1 smoothing</source>
         <translation>%1 平滑</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>: moves samples by RMS %1 %3, at most %2 %3 (%4, frame %5)</source>
+        <translation>：采样点移动量 RMS %1 %3，最大 %2 %3（%4，第 %5 帧）</translation>
     </message>
 </context>
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+80"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+121"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>发现 %n 个坏点</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>; %n beside samples just repaired: a glitch longer than a few frames is found a part at a time (its worst samples first). Repair these too, or turn on &quot;Look again until nothing new&quot; to flag whole glitches at once</source>
+        <translation>
+            <numerusform>；其中 %n 个紧邻刚修复的采样点：持续超过几帧的毛刺会被分段发现（最严重的采样点优先）。请一并修复这些点，或开启“反复检测直到无新发现”以一次标记整个毛刺</numerusform>
         </translation>
     </message>
 </context>
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+77"/>
+        <location filename="../app/studio/main_window.cpp" line="+94"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
     </message>
@@ -106,7 +206,7 @@
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Markers</source>
         <translation>标记点</translation>
     </message>
@@ -121,12 +221,11 @@
         <translation>历史记录</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>&lt;opened take&gt;</source>
-        <translation>&lt;已打开的拍摄&gt;</translation>
+        <translation type="vanished">&lt;已打开的拍摄&gt;</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Cleaning</source>
         <translation>清理</translation>
     </message>
@@ -136,7 +235,12 @@
         <translation>布局规划</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>Gaps</source>
+        <translation>缺口</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>Face Mesh</source>
         <translation>面部网格</translation>
     </message>
@@ -257,28 +361,37 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>&amp;Follow Head</source>
+        <translation>跟随头部(&amp;F)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
+        <translation>头部移动时相机始终对准头部（头部标记点的质心）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+82"/>
+        <location line="+95"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-82"/>
-        <location line="+82"/>
+        <location line="-95"/>
+        <location line="+95"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>&amp;Head-Stabilised View…</source>
-        <translation>头部稳定视图(&amp;H)…</translation>
+        <source>&amp;Head-Stabilized View…</source>
+        <translation type="vanished">头部稳定视图(&amp;H)…</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="-56"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
@@ -293,36 +406,80 @@
         <translation>关于 Mocap Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised view.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
+        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized view.&lt;/p&gt;</source>
+        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+64"/>
         <source>3D view in the lab frame</source>
         <translation>三维视图使用实验室坐标系</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+9"/>
-        <location line="+7"/>
-        <source>Head-Stabilised View</source>
+        <location line="+8"/>
+        <source>Head-Stabilized View</source>
         <translation>头部稳定视图</translation>
     </message>
     <message>
-        <location line="-15"/>
         <source>Head-mounted reference markers (at least three, comma separated):</source>
-        <translation>头戴参考标记点（至少三个，以逗号分隔）：</translation>
+        <translation type="vanished">头戴参考标记点（至少三个，以逗号分隔）：</translation>
     </message>
     <message>
-        <location line="+8"/>
         <source>There is no marker &apos;%1&apos;.</source>
-        <translation>没有标记点“%1”。</translation>
+        <translation type="vanished">没有标记点“%1”。</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>3D view stabilised on the head (Ctrl+B again for the lab frame)</source>
-        <translation>三维视图已按头部稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+        <source>3D view stabilized on the head (Ctrl+B again for the lab frame)</source>
+        <translation type="vanished">三维视图已按头部稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+    </message>
+    <message>
+        <location line="-106"/>
+        <source>&amp;Head-Stabilized View</source>
+        <translation>头部稳定视图(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
+        <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized view, F camera follows the head, Ctrl+Shift+S save as.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图，F 相机跟随头部，Ctrl+Shift+S 另存为。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+65"/>
+        <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
+        <translation>请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
+        <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
+        <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Reference markers unchanged</source>
+        <translation>参考标记点未更改</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Select at least three head-mounted markers first</source>
+        <translation>请先选择至少三个头戴标记点</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The selected markers already are the reference markers</source>
+        <translation>所选标记点已经是参考标记点</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -358,6 +515,26 @@
         <location line="+2"/>
         <source>Exchange the data of the two selected markers over the selected frame range</source>
         <translation>在所选帧范围内交换两个所选标记点的数据</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Reference Markers…</source>
+        <translation>参考标记点(&amp;R)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The head-mounted markers that head stabilization, layout planning and the face mesh use</source>
+        <translation>头部稳定、布局规划和面部网格所使用的头戴标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Selected as Reference &amp;Markers</source>
+        <translation>将所选设为参考标记点(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Make the selected markers (at least three) the take&apos;s reference markers (undoable)</source>
+        <translation>将所选标记点（至少三个）设为动捕片段的参考标记点（可撤销）</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -410,39 +587,76 @@
         <translation>标注：在表格中选择一个标记点，然后点击对应的点</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+15"/>
+        <source>Tracking and labelling…</source>
+        <translation>正在跟踪并标注…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Track and Label cancelled; the take is unchanged</source>
+        <translation>跟踪并标注已取消，动捕片段未更改</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Track and Label</source>
         <translation>跟踪并标注</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>Nothing to label: every marker has a label</source>
+        <translation>没有可标注的内容：每个标记点都已有名称</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Nothing to label: none of the %n unlabelled fragment(s) matches a marker</source>
+        <translation>
+            <numerusform>没有可标注的内容：%n 个未标注片段均无法与标记点匹配</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Track and label (%1 of %2 fragments labelled)</source>
         <translation>跟踪并标注（已标注 %2 个片段中的 %1 个）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
         <translation>已标注 %2 个片段中的 %1 个；%3 个采样未标注</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+11"/>
+        <source>Looking for label swaps…</source>
+        <translation>正在查找名称交换…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Swap search cancelled</source>
+        <translation>交换查找已取消</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Fix Swaps</source>
         <translation>修复交换</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>No label swaps found</source>
         <translation>未发现名称交换</translation>
     </message>
+    <message>
+        <location line="+9"/>
+        <source>No swap accepted; the take is unchanged</source>
+        <translation>未接受任何交换，动捕片段未更改</translation>
+    </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+8"/>
         <source>Repair %n label swap(s)</source>
         <translation>
             <numerusform>修复 %n 处名称交换</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Select the one marker whose label the point gets, then click the point</source>
         <translation>请选择一个标记点作为该点的名称，然后点击该点</translation>
     </message>
@@ -488,34 +702,77 @@
         <translation>请先选择恰好两个标记点，并在曲线上按住 Shift 拖动选择帧范围</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
+        <source>Nothing to swap: both markers are gaps over the selected range</source>
+        <translation>没有可交换的内容：两个标记点在所选范围内均为缺口</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Swap %1 and %2 over frames %3–%4</source>
         <translation>在第 %3–%4 帧交换 %1 和 %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Select markers and Shift-drag a frame range on the curves first</source>
         <translation>请先选择标记点，并在曲线上按住 Shift 拖动选取帧范围</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>Nothing to delete: the selected range is already a gap</source>
+        <translation>没有可删除的内容：所选范围已是缺口</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Delete frames %1–%2</source>
         <translation>删除第 %1–%2 帧</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Opening %1…</source>
+        <translation>正在打开 %1…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Cannot open file</source>
         <translation>无法打开文件</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
-        <source>%n warning(s) while reading; the first: %1</source>
+        <location line="+16"/>
+        <source>⚠ Incomplete: %n warning(s)</source>
         <translation>
+            <numerusform>⚠ 不完整：%n 条警告</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>⚠ %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ %n 条警告</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show every warning from reading the file</source>
+        <translation>显示读取文件时的所有警告</translation>
+    </message>
+    <message>
+        <location line="+180"/>
+        <source>The face mesh of the recovered session could not be restored: %1</source>
+        <translation>无法还原所恢复会话的面部网格：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s) while reading; the first: %1</source>
+        <translation type="vanished">
             <numerusform>读取时出现 %n 条警告；第一条：%1</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-158"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -582,6 +839,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>%1 (incomplete)[*] — Mocap Studio</source>
+        <translation>%1（不完整）[*] — Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1[*] — Mocap Studio</source>
         <translation>%1[*] — Mocap Studio</translation>
     </message>
@@ -606,12 +868,12 @@
         <translation>无法恢复</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-687"/>
+        <location line="-863"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -619,7 +881,7 @@
 <context>
     <name>mocap::ui::Autosave</name>
     <message>
-        <location filename="../widgets/document/autosave.cpp" line="+82"/>
+        <location filename="../widgets/document/autosave.cpp" line="+81"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>无法创建恢复文件夹 %1</translation>
     </message>
@@ -627,7 +889,7 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+27"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+67"/>
         <source>Live preview</source>
         <translation>实时预览</translation>
     </message>
@@ -647,34 +909,33 @@
         <translation>仅更改在曲线上选中的帧（Shift+拖动）</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Cancel</source>
-        <translation>取消</translation>
+        <translation type="vanished">取消</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+10"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+102"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+29"/>
         <source>%1 — %n sample(s) would change</source>
         <translation>
             <numerusform>%1 — 将更改 %n 个采样点</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+80"/>
         <source>Nothing to apply</source>
         <translation>没有可应用的更改</translation>
     </message>
@@ -682,12 +943,52 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+95"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+169"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
     <message>
-        <location line="+203"/>
+        <location line="+51"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>preview</source>
+        <translation>预览</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>filled</source>
+        <translation>已填补</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>smoothed</source>
+        <translation>已平滑</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>edited</source>
+        <translation>已编辑</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>+%1 more</source>
+        <translation>另有 %1 个</translation>
+    </message>
+    <message>
+        <location line="+287"/>
+        <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
+        <translation>%1 · 第 %2 帧（%3 s）· %4 %5 %6</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source> → preview %1</source>
+        <translation> → 预览 %1</translation>
+    </message>
+    <message>
+        <location line="+100"/>
         <source>Move %1 %2 at frame %3</source>
         <translation>移动 %1 的 %2（第 %3 帧）</translation>
     </message>
@@ -695,7 +996,7 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+72"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -730,7 +1031,12 @@
         <translation>输出(&amp;O)：</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
+        <source>R&amp;ange:</source>
+        <translation>范围(&amp;A)：</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>to</source>
         <translation>至</translation>
     </message>
@@ -746,17 +1052,51 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+243"/>
+        <location line="+341"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-191"/>
+        <location line="-310"/>
+        <source>Whole take (%1–%2)</source>
+        <translation>整个拍摄数据（%1–%2）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Selected range (%1–%2)</source>
+        <translation>所选范围（%1–%2）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Custom</source>
+        <translation>自定义</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>请先加载面部网格：这些格式导出的是变形后的网格。</translation>
     </message>
+    <message numerus="yes">
+        <location line="+112"/>
+        <source>Replace %n existing file(s)?</source>
+        <translation>
+            <numerusform>要替换 %n 个现有文件吗？</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… 以及另外 %n 个</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+47"/>
+        <location line="+1"/>
+        <source>Replace Files?</source>
+        <translation>替换文件？</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Folder for the OBJ sequence</source>
         <translation>OBJ 序列的文件夹</translation>
     </message>
@@ -810,8 +1150,13 @@
         <source>%1 is a folder; choose a file name.</source>
         <translation>%1 是文件夹，请选择文件名。</translation>
     </message>
+    <message>
+        <location line="+39"/>
+        <source>Not exported: the existing files are kept.</source>
+        <translation>未导出：已保留现有文件。</translation>
+    </message>
     <message numerus="yes">
-        <location line="+49"/>
+        <location line="+14"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>正在导出 %n 帧…</numerusform>
@@ -848,7 +1193,7 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+99"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+91"/>
         <source>Mesh and binding</source>
         <translation>网格与绑定</translation>
     </message>
@@ -899,12 +1244,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+294"/>
+        <location line="+284"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>选择一个标记点，然后在网格上点击其对应的顶点</translation>
     </message>
     <message>
-        <location line="-291"/>
+        <location line="-281"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
@@ -919,14 +1264,22 @@
         <translation>变形</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Head-mounted reference markers (comma separated) whose motion is removed before binding and deforming; empty: none</source>
-        <translation>头戴参考标记点（以逗号分隔），在绑定和变形之前去除其运动；留空：无</translation>
+        <translation type="vanished">头戴参考标记点（以逗号分隔），在绑定和变形之前去除其运动；留空：无</translation>
+    </message>
+    <message>
+        <source>Head markers:</source>
+        <translation type="vanished">头部标记点：</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Head markers:</source>
-        <translation>头部标记点：</translation>
+        <source>Head motion is removed with these markers before binding and deforming; they are not bound.</source>
+        <translation>在绑定和变形之前用这些标记点去除头部运动；它们本身不参与绑定。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reference markers:</source>
+        <translation>参考标记点：</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -940,18 +1293,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+313"/>
+        <location line="+334"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-312"/>
-        <location line="+312"/>
+        <location line="-333"/>
+        <location line="+333"/>
         <source>Laplacian</source>
         <translation>拉普拉斯</translation>
     </message>
     <message>
-        <location line="-311"/>
+        <location line="-332"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
@@ -1021,7 +1374,7 @@
         <translation>第一个完整帧</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+13"/>
         <source>Cannot read the mesh %1: %2</source>
         <translation>无法读取网格 %1：%2</translation>
     </message>
@@ -1043,32 +1396,42 @@
         <translation>无法读取绑定 %1：%2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Cannot save the binding: %1</source>
         <translation>无法保存绑定：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Saved %1</source>
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+22"/>
         <source>Auto-bind: %1</source>
         <translation>自动绑定：%1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Click the vertex for %1</source>
         <translation>请点击 %1 对应的顶点</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1 bound to vertex %2</source>
         <translation>%1 已绑定到顶点 %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>; residual %1 mm (was %2 mm)</source>
+        <translation>；残差 %1 mm（原为 %2 mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>; residual %1 mm</source>
+        <translation>；残差 %1 mm</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>Deform per frame: %1 %2 ms</source>
         <translation>每帧变形：%1 %2 ms</translation>
     </message>
@@ -1128,13 +1491,13 @@
 <context>
     <name>mocap::ui::FaceMeshScene</name>
     <message>
-        <location filename="../widgets/views/face_mesh_scene.cpp" line="+124"/>
+        <location filename="../widgets/views/face_mesh_scene.cpp" line="+126"/>
         <source>Load a mesh first.</source>
         <translation>请先加载网格。</translation>
     </message>
     <message>
         <location line="+54"/>
-        <source>Head stabilisation: %1</source>
+        <source>Head stabilization: %1</source>
         <translation>头部稳定：%1</translation>
     </message>
     <message>
@@ -1146,7 +1509,293 @@
 <context>
     <name>mocap::ui::GapFillStep</name>
     <message>
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="-58"/>
+        <source>Auto (best blend)</source>
+        <translation type="vanished">自动（最佳混合）</translation>
+    </message>
+    <message>
+        <source>Rigid neighbours</source>
+        <translation type="vanished">刚性邻近点</translation>
+    </message>
+    <message>
+        <source>PCA (marker correlations)</source>
+        <translation type="vanished">PCA（标记点相关性）</translation>
+    </message>
+    <message>
+        <source>Cubic spline</source>
+        <translation type="vanished">三次样条</translation>
+    </message>
+    <message>
+        <source>Linear</source>
+        <translation type="vanished">线性</translation>
+    </message>
+    <message>
+        <source>Paper: three neighbours (eqs 3–5)</source>
+        <translation type="vanished">论文：三个邻近点（式 3–5）</translation>
+    </message>
+    <message>
+        <source>Paper: n neighbours (eqs 6–7)</source>
+        <translation type="vanished">论文：n 个邻近点（式 6–7）</translation>
+    </message>
+    <message>
+        <source>Neighbour average (Guenter)</source>
+        <translation type="vanished">邻近点平均（Guenter）</translation>
+    </message>
+    <message>
+        <source>Distance-weighted neighbours (Lin–Ouhyoung)</source>
+        <translation type="vanished">距离加权邻近点（Lin–Ouhyoung）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+16"/>
+        <source>Method</source>
+        <translation>方法</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Neighbours</source>
+        <translation>邻近点数</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+5"/>
+        <source>unlimited</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> frames</source>
+        <translation> 帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Longer gaps are left open: filling them would invent motion</source>
+        <translation>更长的缺口保持未填补：填补它们会凭空捏造运动</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Longest gap</source>
+        <translation>最长缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>= frames</source>
+        <translation>= 帧</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Extrapolate edge gaps</source>
+        <translation>外推边缘缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fill before a marker&apos;s first and after its last valid sample (invents motion nobody measured; off by default)</source>
+        <translation>在标记点的第一个有效采样点之前和最后一个有效采样点之后进行填补（会捏造无人测量过的运动；默认关闭）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> % of the take</source>
+        <translation> %（占拍摄数据）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fill every marker</source>
+        <translation>填补所有标记点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Markers seen in fewer frames are left open, unless they are selected and &quot;Selected markers only&quot; is on</source>
+        <translation>可见帧数少于此值的标记点不予填补，除非它们已被选中且“仅限所选标记点”已开启</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Skip markers seen under</source>
+        <translation>跳过可见比例低于此值的标记点</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gaps left open and why; click one to go there</source>
+        <translation>未填补的缺口及原因；点击某项可跳转到该处</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Left open</source>
+        <translation>未填补</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Gaps</source>
+        <translation>缺口</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>%1, frames %2–%3 (%4)</source>
+        <translation>%1，第 %2–%3 帧（%4）</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::GapListPanel</name>
+    <message>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+171"/>
+        <source>Filter markers…</source>
+        <translation>筛选标记点…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Only open gaps</source>
+        <translation>仅未填补的缺口</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Check Shown</source>
+        <translation>勾选显示项</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check every open gap the filter shows</source>
+        <translation>勾选筛选结果中所有未填补的缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Uncheck All</source>
+        <translation>全部取消勾选</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live preview</source>
+        <translation>实时预览</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the fill of the checked (or selected) gaps over the views before filling</source>
+        <translation>在填补之前，于各视图中显示已勾选（或已选中）缺口的填补结果</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+137"/>
+        <source>Fill</source>
+        <translation>填补</translation>
+    </message>
+    <message>
+        <location line="-94"/>
+        <source>Show Gap</source>
+        <translation>显示缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fill This Gap</source>
+        <translation>填补此缺口</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Check gaps, or select rows, to preview their fill; double-click a gap to go to it.</source>
+        <translation>勾选缺口或选中行以预览其填补结果；双击缺口可跳转到该处。</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Fill 1 Checked Gap</source>
+        <translation>填补 1 个已勾选的缺口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fill %1 Checked Gaps</source>
+        <translation>填补 %1 个已勾选的缺口</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fill Selected Gap</source>
+        <translation>填补所选缺口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fill %1 Selected Gaps</source>
+        <translation>填补 %1 个所选缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fill the checked gaps, or else the selected ones, each with its method (Ctrl+Return)</source>
+        <translation>填补已勾选的缺口（若无则填补所选缺口），各自使用其方法（Ctrl+Return）</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>No open gap to fill</source>
+        <translation>没有可填补的缺口</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+21"/>
+        <source>Computing the fill of %n gap(s)…</source>
+        <translation>
+            <numerusform>正在计算 %n 个缺口的填补…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>1 gap filled</source>
+        <translation>已填补 1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 gaps filled</source>
+        <translation>已填补 %1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1 gap previewed</source>
+        <translation>已预览 1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 gaps previewed</source>
+        <translation>已预览 %1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, 1 sample</source>
+        <translation>，1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>, %1 samples</source>
+        <translation>，%1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>1 gap cannot be filled: %1</source>
+        <translation>1 个缺口无法填补：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 gaps cannot be filled (the first: %2)</source>
+        <translation>%1 个缺口无法填补（第一个：%2）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>Fill 1 gap: %1</source>
+        <translation>填补 1 个缺口：%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Fill %1 gaps: %2</source>
+        <translation>填补 %1 个缺口：%2</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::GapTableModel</name>
+    <message>
+        <location filename="../widgets/models/gap_table_model.cpp" line="+28"/>
         <source>Auto (best blend)</source>
         <translation>自动（最佳混合）</translation>
     </message>
@@ -1172,13 +1821,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper: three neighbours (eqs 3–5)</source>
-        <translation>论文：三个邻近点（式 3–5）</translation>
+        <source>Paper method: three neighbours (Zhang et al., eqs 3–5)</source>
+        <translation>论文方法：三个邻近点（Zhang et al.，式 3–5）</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper: n neighbours (eqs 6–7)</source>
-        <translation>论文：n 个邻近点（式 6–7）</translation>
+        <source>Paper method: n neighbours (Zhang et al., eqs 6–7)</source>
+        <translation>论文方法：n 个邻近点（Zhang et al.，式 6–7）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1191,50 +1840,113 @@
         <translation>距离加权邻近点（Lin–Ouhyoung）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+199"/>
+        <source>filled</source>
+        <translation>已填补</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>previewed</source>
+        <translation>已预览</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot fill: %1</source>
+        <translation>无法填补：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>open</source>
+        <translation>未填补</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Filled by: %1</source>
+        <translation>填补方式：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 — double-click to choose how this gap is filled</source>
+        <translation>%1 — 双击以选择此缺口的填补方式</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Check the gaps to fill together</source>
+        <translation>勾选要一起填补的缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First missing frame (the file&apos;s numbering)</source>
+        <translation>第一个缺失帧（按文件中的编号）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Length in frames</source>
+        <translation>长度（帧）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Length in seconds</source>
+        <translation>长度（秒）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How the gap is filled (double-click to choose)</source>
+        <translation>缺口的填补方式（双击以选择）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open, previewed, filled, or why it cannot be filled</source>
+        <translation>未填补、已预览、已填补，或无法填补的原因</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Marker</source>
+        <translation>标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>First</source>
+        <translation>起始帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frames</source>
+        <translation>帧数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Neighbours</source>
-        <translation>邻近点数</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>unlimited</source>
-        <translation>不限</translation>
-    </message>
-    <message>
         <location line="+1"/>
-        <source> frames</source>
-        <translation> 帧</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Longest gap</source>
-        <translation>最长缺口</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Gaps</source>
-        <translation>缺口</translation>
+        <source>State</source>
+        <translation>状态</translation>
     </message>
 </context>
 <context>
-    <name>mocap::ui::HeadStabilisationStep</name>
+    <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilisation_step.cpp" line="-78"/>
         <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
-        <translation>仅随头部运动的头戴标记点（至少三个，以逗号分隔）</translation>
+        <translation type="vanished">仅随头部运动的头戴标记点（至少三个，以逗号分隔）</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Use Selection</source>
-        <translation>使用所选</translation>
+        <translation type="vanished">使用所选</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
+        <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
+        <translation>仅随头部运动的头戴标记点：每一帧的头部姿态都基于它们测得。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Reference markers</source>
         <translation>参考标记点</translation>
     </message>
@@ -1245,7 +1957,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Frame whose head pose becomes the stabilised pose</source>
+        <source>Frame whose head pose becomes the stabilized pose</source>
         <translation>以该帧的头部姿态作为稳定后的姿态</translation>
     </message>
     <message>
@@ -1254,15 +1966,102 @@
         <translation>参考帧</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>Stabilise head</source>
+        <location line="+1"/>
+        <source>Moves all markers in all frames into the head frame: &quot;Selected markers only&quot; and &quot;Selected frame range only&quot; do not apply to this step.</source>
+        <translation>将所有帧中的所有标记点移入头部坐标系：“仅限所选标记点”和“仅所选帧范围”不适用于此步骤。</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Stabilize head</source>
         <translation>稳定头部</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::HistoryPanel</name>
+    <message>
+        <location filename="../widgets/panels/history_panel.cpp" line="+19"/>
+        <location line="+7"/>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Processing history (saved with the take)</source>
+        <translation>处理历史（随拍摄数据一起保存）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Step</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Markers</source>
+        <translation>标记点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Frames</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Samples</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Undo history (this session)</source>
+        <translation>撤销历史（本次会话）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&lt;opened take&gt;</source>
+        <translation>&lt;已打开的拍摄数据&gt;</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 by %2 at %3</source>
+        <translation>%1，由 %2 于 %3 执行</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::JobProgressRow</name>
+    <message>
+        <location filename="../widgets/panels/job_progress_row.cpp" line="+20"/>
+        <source>about %1 s left</source>
+        <translation>剩余约 %1 秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>about %1 min left</source>
+        <translation>剩余约 %1 分钟</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the computation (Esc)</source>
+        <translation>停止计算（Esc）</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::LayoutErrorPlot</name>
     <message>
-        <location filename="../widgets/views/layout_error_plot.cpp" line="+65"/>
+        <location filename="../widgets/views/layout_error_plot.cpp" line="+56"/>
         <source>Click a marker count (or use ←/→) to show its layout</source>
         <translation>点击某个标记点数量（或使用 ←/→）以显示其布局</translation>
     </message>
@@ -1310,7 +2109,7 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+86"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
@@ -1436,16 +2235,41 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>e.g. root-1, root-2, root-3</source>
-        <translation>例如 root-1, root-2, root-3</translation>
+        <source>Head motion is removed with these markers before planning, and they are not planned over (a reduced capture still needs them).</source>
+        <translation>在规划之前用这些标记点去除头部运动，且它们不参与规划（精简后的捕捉仍需要它们）。</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
-        <translation>头部参考标记点，以逗号分隔：用于去除头部运动，且不参与规划</translation>
+        <location line="+10"/>
+        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
+        <translation>不参与规划的标记点，以逗号分隔（未标注的点和参考标记点始终不参与）</translation>
+    </message>
+    <message>
+        <location line="+218"/>
+        <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
+        <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>head motion removed with %n reference marker(s)</source>
+        <translation>
+            <numerusform>已用 %n 个参考标记点去除头部运动</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>head motion not removed: no reference markers</source>
+        <translation>未去除头部运动：没有参考标记点</translation>
+    </message>
+    <message>
+        <source>e.g. root-1, root-2, root-3</source>
+        <translation type="vanished">例如 root-1, root-2, root-3</translation>
+    </message>
+    <message>
+        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
+        <translation type="vanished">头部参考标记点，以逗号分隔：用于去除头部运动，且不参与规划</translation>
+    </message>
+    <message>
+        <location line="-232"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
@@ -1455,12 +2279,11 @@
         <translation>无</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
-        <translation>不参与规划的标记点，以逗号分隔（未标注的点始终不参与）</translation>
+        <translation type="vanished">不参与规划的标记点，以逗号分隔（未标注的点始终不参与）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Leave out:</source>
         <translation>排除：</translation>
     </message>
@@ -1540,7 +2363,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+71"/>
         <source>A plan is already running.</source>
         <translation>已有规划正在运行。</translation>
     </message>
@@ -1565,12 +2388,17 @@
         <translation>已打开的拍摄数据中没有标记点“%1”。</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Head motion needs at least three reference markers (Marker ▸ Reference Markers…).</source>
+        <translation>去除头部运动至少需要三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
+    </message>
+    <message>
         <location line="+11"/>
         <source>Planning…</source>
         <translation>正在规划…</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
@@ -1585,12 +2413,11 @@
         <translation>已取消，保留先前的结果。</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
-        <translation>%1 个标记点，%2 帧，%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
+        <translation type="vanished">%1 个标记点，%2 帧，%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+15"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
     </message>
@@ -1650,11 +2477,23 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+127"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+145"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+193"/>
+        <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
+        <translation>
+            <numerusform>已基于 %n 个标记点进行头部稳定 — 按 Ctrl+B 返回实验室坐标系</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Camera follows the head</source>
+        <translation>相机跟随头部</translation>
     </message>
 </context>
 <context>
@@ -1781,16 +2620,147 @@
     </message>
 </context>
 <context>
-    <name>mocap::ui::SmoothingStep</name>
+    <name>mocap::ui::ReadWarningsDialog</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-62"/>
-        <source>Smoothing spline (GCV)</source>
-        <translation>平滑样条（GCV）</translation>
+        <location filename="../widgets/dialogs/read_warnings_dialog.cpp" line="+19"/>
+        <source>%1 is incomplete</source>
+        <translation>%1 不完整</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Warnings reading %1</source>
+        <translation>读取 %1 时的警告</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Data is missing from %1.&lt;/b&gt; The take opened with what could be read; the rest is not in it. Saving writes only what was read.</source>
+        <translation>&lt;b&gt;%1 中缺少数据。&lt;/b&gt;拍摄数据已按可读取的部分打开，其余部分不在其中。保存时只会写入已读取的内容。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%n warning(s) while reading %1. The take opened; these are quirks of the file that were tolerated.</source>
+        <translation>
+            <numerusform>读取 %1 时出现 %n 条警告。拍摄数据已打开；这些是文件中已被容忍的不规范之处。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>I understand</source>
+        <translation>我知道了</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceMarkersDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/reference_markers_dialog.cpp" line="+22"/>
+        <source>Reference Markers</source>
+        <translation>参考标记点</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Head-mounted markers that move only with the head (at least three). Head stabilization, the head-stabilized view, layout planning and the face mesh remove the head&apos;s motion with them; layout planning leaves them out.</source>
+        <translation>仅随头部运动的头戴标记点（至少三个）。头部稳定、头部稳定视图、布局规划和面部网格用它们去除头部运动；布局规划不包含它们。</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Valid in %1 % of the frames</source>
+        <translation>在 %1 % 的帧中有效</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Guess</source>
+        <translation>自动推测(&amp;G)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Markers named root… or head…, else the markers that move together as one rigid body</source>
+        <translation>名称为 root… 或 head… 的标记点；若没有，则取作为一个刚体共同运动的标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use &amp;Selection</source>
+        <translation>使用所选(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>C&amp;lear</source>
+        <translation>清除(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No reference markers: head motion is not removed anywhere</source>
+        <translation>不使用参考标记点：任何地方都不去除头部运动</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>No reference markers: head motion is not removed, and layout planning plans every labelled marker.</source>
+        <translation>没有参考标记点：不去除头部运动，布局规划将纳入所有已标注的标记点。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: a head pose needs at least three markers (or none).</source>
+        <translation>%1：头部姿态至少需要三个标记点（或一个都不选）。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n reference marker(s): %1</source>
+        <translation>
+            <numerusform>%n 个参考标记点：%1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceMarkersRow</name>
+    <message>
+        <location filename="../widgets/panels/reference_markers_row.cpp" line="+21"/>
+        <source>One set per take, chosen in Marker ▸ Reference Markers…</source>
+        <translation>每个拍摄数据一组，在“标记点 ▸ 参考标记点…”中选择</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit…</source>
+        <translation>编辑…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the reference markers (Marker ▸ Reference Markers…)</source>
+        <translation>选择参考标记点（标记点 ▸ 参考标记点…）</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>none (head motion is not removed)</source>
+        <translation>无（不去除头部运动）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::SmoothingStep</name>
+    <message>
+        <source>Smoothing spline (GCV)</source>
+        <translation type="vanished">平滑样条（GCV）</translation>
+    </message>
+    <message>
         <source>B-spline (eqs 11–12)</source>
-        <translation>B 样条（式 11–12）</translation>
+        <translation type="vanished">B 样条（式 11–12）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
+        <source>GCV smoothing spline (Woltring)</source>
+        <translation>GCV 平滑样条（Woltring）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B-spline (Zhang et al., eqs 11–12)</source>
+        <translation>B 样条（Zhang et al.，式 11–12）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1852,14 +2822,28 @@
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-56"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-72"/>
         <source>Robust (local fit + MAD)</source>
         <translation>稳健（局部拟合 + MAD）</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Paper (eqs 8–10)</source>
-        <translation>论文（式 8–10）</translation>
+        <translation type="vanished">论文（式 8–10）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Paper method (Zhang et al., eqs 8–10)</source>
+        <translation>论文方法（Zhang et al.，式 8–10）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Judges each sample against a robust local fit of its neighbours</source>
+        <translation>依据相邻采样点的稳健局部拟合来判断每个采样点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Eqs 8–10 as written, in one pass</source>
+        <translation>按论文原式 8–10，单遍执行</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1887,17 +2871,27 @@
         <translation>阈值</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Look again until nothing new</source>
+        <translation>反复检测直到无新发现</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>A glitch longer than a few frames is found a part at a time, its worst samples first, so detecting again after a repair finds the rest beside the repaired samples. On, the robust detector repeats itself on the repaired curve until it finds nothing new: whole glitches are flagged at once (more flags), and a second detection finds next to nothing.</source>
+        <translation>持续超过几帧的毛刺会被分段发现，最严重的采样点优先，因此修复后再次检测会在已修复采样点旁边找到其余部分。开启后，稳健检测器会在修复后的曲线上反复检测，直到没有新发现：整个毛刺会被一次性标记（标记更多），再次检测时几乎不会再有发现。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Click to go to a flag; uncheck to keep that sample</source>
         <translation>单击跳转到该坏点；取消勾选可保留该采样点</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Bad points</source>
         <translation>坏点</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+36"/>
         <source>%1 at frame %2</source>
         <translation>%1，第 %2 帧</translation>
     </message>
@@ -1930,7 +2924,12 @@
 <context>
     <name>mocap::ui::TimelineWidget</name>
     <message>
-        <location filename="../widgets/views/timeline_widget.cpp" line="+33"/>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+40"/>
+        <source>Dark: gaps, red: bad points under review — of the selected markers, or of all when none is selected. Yellow: the selected frame range.</source>
+        <translation>深色：缺口；红色：待检查的坏点 — 针对所选标记点，未选择时针对全部标记点。黄色：所选帧范围。</translation>
+    </message>
+    <message>
+        <location line="+133"/>
         <source>Previous gap</source>
         <translation>上一个缺口</translation>
     </message>
@@ -1968,6 +2967,21 @@
         <location line="+9"/>
         <source>Playback speed</source>
         <translation>播放速度</translation>
+    </message>
+    <message>
+        <location line="+142"/>
+        <source>No gap after this frame</source>
+        <translation>此帧之后没有缺口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No gap before this frame</source>
+        <translation>此帧之前没有缺口</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Gap of %1 at frame %2 (%3 frames)</source>
+        <translation>%1 在第 %2 帧处的缺口（%3 帧）</translation>
     </message>
 </context>
 <context>

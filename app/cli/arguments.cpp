@@ -2,8 +2,8 @@
 
 #include "cli_error.h"
 
-#include "mocap/number_text.h"
-#include "mocap/take_io.h"
+#include "mocap/base/number_text.h"
+#include "mocap/io/take_io.h"
 
 #include <cmath>
 #include <cstdio>

@@ -3,12 +3,12 @@
 #include "arguments.h"
 #include "cli_error.h"
 
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/mesh_binding.h"
-#include "mocap/mesh_io.h"
-#include "mocap/retarget.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/io/mesh_io.h"
+#include "mocap/deform/retarget.h"
+#include "mocap/io/take_io.h"
 
 #include <algorithm>
 #include <cstdio>

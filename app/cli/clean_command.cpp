@@ -2,11 +2,11 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/bvh_writer.h"
-#include "mocap/clean_pipeline.h"
-#include "mocap/file_io.h"
-#include "mocap/json_writer.h"
-#include "mocap/take_io.h"
+#include "mocap/io/bvh_writer.h"
+#include "mocap/cleaning/clean_pipeline.h"
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/io/take_io.h"
 
 #include <iostream>
 #include <sstream>
@@ -198,7 +198,7 @@ void appendHistory(Take& take, const CleanOptions& options, const CleanReport& r
     std::string labels;
     for (const std::string& label : options.stabilizeLabels)
       labels += (labels.empty() ? "" : ",") + label;
-    step("stabilise head", {{"reference markers", labels}, {"kept", options.keepStabilized ? "yes" : "no"}}, 0);
+    step("stabilize head", {{"reference markers", labels}, {"kept", options.keepStabilized ? "yes" : "no"}}, 0);
   }
   if (options.spikes)
     step("repair spikes",

@@ -12,7 +12,7 @@ int runInfo(const std::vector<std::string>& args);
 /// optionally rescaling positions to other units.
 int runConvert(const std::vector<std::string>& args);
 
-/// `mocap clean IN -o OUT ...`: stabilise, spikes, fill, smooth; see issue 3 for the flags.
+/// `mocap clean IN -o OUT ...`: stabilize, spikes, fill, smooth; see issue 3 for the flags.
 int runClean(const std::vector<std::string>& args);
 
 /// `mocap eval-fill TAKE ...`: gap-filling methods against hidden truth (Gløersen & Federolf protocol).

@@ -2,7 +2,7 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/take_io.h"
+#include "mocap/io/take_io.h"
 
 #include <filesystem>
 #include <optional>

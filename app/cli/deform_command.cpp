@@ -3,16 +3,16 @@
 #include "arguments.h"
 #include "cli_error.h"
 
-#include "mocap/deformation_evaluation.h"
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/face_rig.h"
-#include "mocap/json_writer.h"
-#include "mocap/laplacian_deformer.h"
-#include "mocap/mesh_io.h"
-#include "mocap/mesh_sequence_writer.h"
-#include "mocap/rbf_deformer.h"
-#include "mocap/take_io.h"
+#include "mocap/evaluation/deformation_evaluation.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/deform/face_rig.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/deform/laplacian_deformer.h"
+#include "mocap/io/mesh_io.h"
+#include "mocap/io/mesh_sequence_writer.h"
+#include "mocap/deform/rbf_deformer.h"
+#include "mocap/io/take_io.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,18 +1,18 @@
 // `mocap eval-fill TAKE [--lengths 10,30,60,120,240] [--copies N] [--seed S] [--methods a,b,...]
 // [--neighbours N] [--gaps-per-copy N] [--stabilize LABEL,LABEL,LABEL...] [--keep-jumps] [--json]`:
 // every gap-filling method against hidden truth, Gløersen & Federolf's protocol
-// (core/include/mocap/fill_evaluation.h), as a text table or JSON. --stabilize removes the head
+// (core/include/mocap/evaluation/fill_evaluation.h), as a text table or JSON. --stabilize removes the head
 // motion given by head-mounted markers first (head_stabilization.h); --keep-jumps also hides
 // (and scores against) stretches where the take jumps, such as label swaps.
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/fill_evaluation.h"
-#include "mocap/head_stabilization.h"
-#include "mocap/json_writer.h"
-#include "mocap/take_io.h"
-#include "mocap/text.h"
+#include "mocap/evaluation/fill_evaluation.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/io/take_io.h"
+#include "mocap/base/text.h"
 
 #include <cerrno>
 #include <cmath>

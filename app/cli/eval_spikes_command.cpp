@@ -2,9 +2,9 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/json_writer.h"
-#include "mocap/spike_evaluation.h"
-#include "mocap/take_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/evaluation/spike_evaluation.h"
+#include "mocap/io/take_io.h"
 
 #include <cstdio>
 #include <iostream>

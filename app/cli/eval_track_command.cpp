@@ -1,14 +1,14 @@
 // `mocap eval-track TAKE [--seed S] [--fragment-length N] [--cut-gap N] [--swaps N] [--keep-fragments]
 // [--json]`: the
-// issue-8 protocol (core/include/mocap/tracking_evaluation.h): label recovery of an unlabelled,
+// issue-8 protocol (core/include/mocap/evaluation/tracking_evaluation.h): label recovery of an unlabelled,
 // fragmented copy and swaps found / false alarms on a copy with injected swaps.
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/json_writer.h"
-#include "mocap/take_io.h"
-#include "mocap/tracking_evaluation.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/io/take_io.h"
+#include "mocap/evaluation/tracking_evaluation.h"
 
 #include <iostream>
 

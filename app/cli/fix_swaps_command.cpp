@@ -1,14 +1,14 @@
 // `mocap fix-swaps IN -o OUT [--report FILE.json] [--jump-factor F] [--json]`: finds frames where two
-// labels exchange and repairs them (core/include/mocap/swap_detection.h); the report lists each
+// labels exchange and repairs them (core/include/mocap/tracking/swap_detection.h); the report lists each
 // swap for review.
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/file_io.h"
-#include "mocap/json_writer.h"
-#include "mocap/swap_detection.h"
-#include "mocap/take_io.h"
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/tracking/swap_detection.h"
+#include "mocap/io/take_io.h"
 
 #include <iostream>
 

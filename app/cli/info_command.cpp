@@ -2,10 +2,10 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/gaps.h"
-#include "mocap/json_writer.h"
-#include "mocap/provenance.h"
-#include "mocap/take_io.h"
+#include "mocap/model/gaps.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/model/provenance.h"
+#include "mocap/io/take_io.h"
 
 #include <cstdio>
 #include <iostream>

@@ -3,7 +3,7 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/error.h"
+#include "mocap/base/error.h"
 
 #include <functional>
 #include <iostream>
@@ -21,7 +21,7 @@ constexpr const char* kUsage =
     "      [--max-gap-seconds S (0.5) | --max-gap N (frames; 0 = unlimited)] [--extrapolate] [--min-valid F (0.2)]\n"
     "      [--neighbours N] [--smooth bspline|butterworth|gcvspl|savgol|off] [--order K]\n"
     "      [--knot-spacing N] [--cutoff HZ] [--stabilize LABEL,...] [--keep-stabilized] [--report FILE.json]\n"
-    "                       stabilise, remove spikes, fill gaps, smooth; write OUT and a JSON report\n"
+    "                       stabilize, remove spikes, fill gaps, smooth; write OUT and a JSON report\n"
     "  eval-fill TAKE [--lengths 10,30,60,120,240] [--copies N] [--seed S] [--methods a,b,...] [--json]\n"
     "                       gap-filling methods against hidden truth (Gloersen & Federolf protocol)\n"
     "  eval-spikes TAKE [--count N] [--amplitude MM] [--seed S] [--factor F] [--threshold T] [--passes N] [--json]\n"

@@ -3,14 +3,15 @@
 #include "arguments.h"
 #include "cli_error.h"
 
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/json_writer.h"
-#include "mocap/layout_symmetry.h"
-#include "mocap/marker_edits.h"
-#include "mocap/marker_selection.h"
-#include "mocap/number_text.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/layout/layout_symmetry.h"
+#include "mocap/io/marker_set_io.h"
+#include "mocap/model/marker_edits.h"
+#include "mocap/layout/marker_selection.h"
+#include "mocap/base/number_text.h"
+#include "mocap/io/take_io.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,11 +2,11 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/json_writer.h"
-#include "mocap/sample_patch.h"
-#include "mocap/smoothing_evaluation.h"
-#include "mocap/spike_detection.h"
-#include "mocap/take_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/model/sample_patch.h"
+#include "mocap/evaluation/smoothing_evaluation.h"
+#include "mocap/cleaning/spike_detection.h"
+#include "mocap/io/take_io.h"
 
 #include <cstdio>
 #include <iostream>

@@ -1,16 +1,16 @@
 // `mocap track IN -o OUT [--template TAKE_OR_MARKERSET] [--max-speed MM_PER_FRAME] [--keep-fragments]
 // [--rate HZ] [--save-marker-set FILE.json] [--json]`: unlabelled points (a C3D/TRC whose markers
 // are unlabelled fragments, or a CSV of frame,x,y,z points) into labelled trajectories
-// (core/include/mocap/take_tracking.h).
+// (core/include/mocap/tracking/take_tracking.h).
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/file_io.h"
-#include "mocap/json_writer.h"
-#include "mocap/marker_set_io.h"
-#include "mocap/take_io.h"
-#include "mocap/take_tracking.h"
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/io/marker_set_io.h"
+#include "mocap/io/take_io.h"
+#include "mocap/tracking/take_tracking.h"
 
 #include <iostream>
 #include <optional>

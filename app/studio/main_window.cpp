@@ -21,7 +21,7 @@
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/gap_list_panel.h"
-#include "panels/head_stabilisation_step.h"
+#include "panels/head_stabilization_step.h"
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/smoothing_step.h"
@@ -66,15 +66,15 @@
 #include <memory>
 #include <utility>
 
-#include "mocap/face_rig.h"
-#include "mocap/head_stabilization.h"
-#include "mocap/length_unit.h"
-#include "mocap/marker_edits.h"
-#include "mocap/marker_set.h"
-#include "mocap/mesh_binding.h"
-#include "mocap/swap_detection.h"
-#include "mocap/take_io.h"
-#include "mocap/take_tracking.h"
+#include "mocap/deform/face_rig.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/base/length_unit.h"
+#include "mocap/model/marker_edits.h"
+#include "mocap/model/marker_set.h"
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/tracking/swap_detection.h"
+#include "mocap/io/take_io.h"
+#include "mocap/tracking/take_tracking.h"
 
 namespace mocap::studio {
 
@@ -170,7 +170,7 @@ void MainWindow::createDocks()
   m_cleaning->addStep(new ui::GapFillStep(*m_document, m_cleaning));
   m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
   // Last: its preview moves every marker, not something to compute on every open.
-  m_cleaning->addStep(new ui::HeadStabilisationStep(*m_document, m_cleaning));
+  m_cleaning->addStep(new ui::HeadStabilizationStep(*m_document, m_cleaning));
   auto* historyDock = new QDockWidget(tr("History"), this);
   historyDock->setObjectName(QStringLiteral("historyDock"));
   historyDock->setWidget(new ui::HistoryPanel(*m_document, historyDock));
@@ -215,7 +215,7 @@ void MainWindow::createDocks()
   // Every panel shows the take's reference markers and sends the user to the one editor.
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, this,
           &MainWindow::editReferenceMarkers);
-  connect(m_cleaning->step<ui::HeadStabilisationStep>(), &ui::HeadStabilisationStep::editReferenceMarkersRequested,
+  connect(m_cleaning->step<ui::HeadStabilizationStep>(), &ui::HeadStabilizationStep::editReferenceMarkersRequested,
           this, &MainWindow::editReferenceMarkers);
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
           &ui::MarkerView3d::clearLayoutHighlight);
@@ -368,13 +368,13 @@ void MainWindow::createActions()
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
-  m_headStabilisedView = m_viewMenu->addAction(tr("&Head-Stabilised View"));
-  m_headStabilisedView->setObjectName(QStringLiteral("headStabilisedViewAction"));
-  m_headStabilisedView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-  m_headStabilisedView->setCheckable(true);
-  m_headStabilisedView->setToolTip(tr("Show the markers in the head frame of the reference markers (a view "
+  m_headStabilizedView = m_viewMenu->addAction(tr("&Head-Stabilized View"));
+  m_headStabilizedView->setObjectName(QStringLiteral("headStabilizedViewAction"));
+  m_headStabilizedView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+  m_headStabilizedView->setCheckable(true);
+  m_headStabilizedView->setToolTip(tr("Show the markers in the head frame of the reference markers (a view "
                                       "setting; the take is not changed)"));
-  connect(m_headStabilisedView, &QAction::triggered, this, &MainWindow::setHeadStabilisedView);
+  connect(m_headStabilizedView, &QAction::triggered, this, &MainWindow::setHeadStabilizedView);
   // The view drops its head pose when markers shift or a take is set: follow the document's set.
   connect(m_document, &ui::TakeDocument::markersChanged, this, &MainWindow::followReferenceMarkers);
   connect(m_document, &ui::TakeDocument::referenceMarkersChanged, this, &MainWindow::followReferenceMarkers);
@@ -407,7 +407,7 @@ void MainWindow::createActions()
                                .arg(QStringLiteral(MOCAP_VERSION)) +
                            tr("<p>Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next "
                               "gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, "
-                              "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilised "
+                              "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized "
                               "view, F camera follows the head, Ctrl+Shift+S save as.</p>"));
   });
   updateRecentMenu();
@@ -461,34 +461,34 @@ void MainWindow::editPreferences()
   applyPreferences(chosen);
 }
 
-void MainWindow::setHeadStabilisedView(bool on)
+void MainWindow::setHeadStabilizedView(bool on)
 {
   if (!on) {
     m_view3d->setHeadReference({});
-    m_headStabilisedView->setChecked(false);
+    m_headStabilizedView->setChecked(false);
     statusBar()->showMessage(tr("3D view in the lab frame"), 5000);
     return;
   }
   const QString error = m_document->referenceMarkers().size() < 3
                             ? tr("Choose at least three reference markers first (Marker ▸ Reference Markers…).")
                             : m_view3d->setHeadReference(m_document->referenceMarkers());
-  m_headStabilisedView->setChecked(error.isEmpty());
+  m_headStabilizedView->setChecked(error.isEmpty());
   if (!error.isEmpty())
-    QMessageBox::warning(this, tr("Head-Stabilised View"), error);
+    QMessageBox::warning(this, tr("Head-Stabilized View"), error);
   else
-    statusBar()->showMessage(tr("3D view stabilised on the reference markers (Ctrl+B again for the lab frame)"), 5000);
+    statusBar()->showMessage(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"), 5000);
 }
 
 void MainWindow::followReferenceMarkers()
 {
-  if (!m_headStabilisedView->isChecked())
+  if (!m_headStabilizedView->isChecked())
     return;
   // Runs after the view's own handlers (connected later), which dropped the old indices.
   const bool usable = m_document->referenceMarkers().size() >= 3 &&
                       m_view3d->setHeadReference(m_document->referenceMarkers()).isEmpty();
   if (!usable) {
     m_view3d->setHeadReference({});
-    m_headStabilisedView->setChecked(false);
+    m_headStabilizedView->setChecked(false);
     statusBar()->showMessage(tr("3D view back in the lab frame: the reference markers cannot carry a head pose"),
                              10000);
   }
@@ -540,7 +540,7 @@ void MainWindow::createMarkerMenu()
   QAction* reference = markers->addAction(tr("&Reference Markers…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
                                           this, &MainWindow::editReferenceMarkers);
   reference->setObjectName(QStringLiteral("referenceMarkersAction"));
-  reference->setToolTip(tr("The head-mounted markers that head stabilisation, layout planning and the face mesh use"));
+  reference->setToolTip(tr("The head-mounted markers that head stabilization, layout planning and the face mesh use"));
   markers->addAction(tr("Set Selected as Reference &Markers"), this, &MainWindow::setSelectedAsReferenceMarkers)
       ->setToolTip(tr("Make the selected markers (at least three) the take's reference markers (undoable)"));
   markers->addSeparator();

@@ -4,7 +4,7 @@
 #include <QStringList>
 #include <QVariantMap>
 
-#include "mocap/swap_detection.h"
+#include "mocap/tracking/swap_detection.h"
 
 #include <Eigen/Core>
 
@@ -122,8 +122,8 @@ private:
   /// The face mesh, its binding and the window layout, kept with every autosave.
   [[nodiscard]] QVariantMap recoverySession() const;
   void restoreSession(const QVariantMap& session);
-  /// View ▸ Head-Stabilised View: the 3D view in the head frame of the take's reference markers.
-  void setHeadStabilisedView(bool on);
+  /// View ▸ Head-Stabilized View: the 3D view in the head frame of the take's reference markers.
+  void setHeadStabilizedView(bool on);
   void followReferenceMarkers();
   void setSelectedAsReferenceMarkers();
   bool confirmDiscard();
@@ -152,7 +152,7 @@ private:
   QAction* m_yUp = nullptr;
   QAction* m_zUp = nullptr;
   QAction* m_trails = nullptr;
-  QAction* m_headStabilisedView = nullptr;
+  QAction* m_headStabilizedView = nullptr;
   QLabel* m_status = nullptr;
   QToolButton* m_warningsButton = nullptr;
   QTimer* m_layoutSaver = nullptr;

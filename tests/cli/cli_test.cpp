@@ -1,10 +1,10 @@
 // The `mocap` executable end to end: exit codes, one-line errors, JSON output, no partial files.
 #include "../core/test_support.h"
 
-#include "mocap/file_io.h"
-#include "mocap/marker_set_io.h"
-#include "mocap/take_io.h"
-#include "mocap/tracking_evaluation.h"
+#include "mocap/base/file_io.h"
+#include "mocap/io/marker_set_io.h"
+#include "mocap/io/take_io.h"
+#include "mocap/evaluation/tracking_evaluation.h"
 
 #include <gtest/gtest.h>
 

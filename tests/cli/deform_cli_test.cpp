@@ -1,10 +1,10 @@
 // `mocap bind` and `mocap deform` end to end on the bundled take and the MediaPipe face.
 #include "../core/test_support.h"
 
-#include "mocap/file_io.h"
-#include "mocap/json_reader.h"
-#include "mocap/pc2_io.h"
-#include "mocap/ply_io.h"
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_reader.h"
+#include "mocap/io/pc2_io.h"
+#include "mocap/io/ply_io.h"
 
 #include <gtest/gtest.h>
 

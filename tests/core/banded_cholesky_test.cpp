@@ -1,5 +1,5 @@
-#include "mocap/banded_cholesky.h"
-#include "mocap/error.h"
+#include "mocap/math/banded_cholesky.h"
+#include "mocap/base/error.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

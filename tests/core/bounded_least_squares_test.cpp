@@ -1,6 +1,6 @@
 // Bounded least squares (blendshape weights in [0, 1]): bounds, optimality, interior agreement.
-#include "mocap/bounded_least_squares.h"
-#include "mocap/error.h"
+#include "mocap/math/bounded_least_squares.h"
+#include "mocap/base/error.h"
 
 #include <Eigen/QR>
 #include <gtest/gtest.h>

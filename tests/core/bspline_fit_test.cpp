@@ -1,5 +1,5 @@
-#include "mocap/bspline_fit.h"
-#include "mocap/error.h"
+#include "mocap/cleaning/bspline_fit.h"
+#include "mocap/base/error.h"
 
 #include <gtest/gtest.h>
 

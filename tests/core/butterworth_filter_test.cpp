@@ -1,6 +1,6 @@
-#include "mocap/butterworth_filter.h"
-#include "mocap/error.h"
-#include "mocap/winter_cutoff.h"
+#include "mocap/cleaning/butterworth_filter.h"
+#include "mocap/base/error.h"
+#include "mocap/cleaning/winter_cutoff.h"
 
 #include <gtest/gtest.h>
 

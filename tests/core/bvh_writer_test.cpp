@@ -1,7 +1,7 @@
-#include "mocap/bvh_writer.h"
+#include "mocap/io/bvh_writer.h"
 
-#include "mocap/error.h"
-#include "mocap/file_io.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

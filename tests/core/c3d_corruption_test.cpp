@@ -2,9 +2,9 @@
 // crash, hang or throw anything else. (The ASan CI configuration runs these too.)
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/error.h"
-#include "mocap/file_io.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
 
 #include <gtest/gtest.h>
 

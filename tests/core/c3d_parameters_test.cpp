@@ -1,4 +1,4 @@
-#include "mocap/c3d_parameters.h"
+#include "mocap/model/c3d_parameters.h"
 
 #include <gtest/gtest.h>
 

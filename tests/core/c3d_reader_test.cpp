@@ -1,10 +1,10 @@
 // C3D reader against the c3d.org and vendor samples in tests/data/c3d (see tests/data/SOURCES.md).
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/gaps.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/model/gaps.h"
 
 #include <gtest/gtest.h>
 

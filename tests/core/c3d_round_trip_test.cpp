@@ -2,10 +2,10 @@
 // first frame, analog value and event.
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/c3d_writer.h"
-#include "mocap/error.h"
-#include "mocap/trc_io.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/io/c3d_writer.h"
+#include "mocap/base/error.h"
+#include "mocap/io/trc_io.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
-#include "mocap/csv_writer.h"
+#include "mocap/io/csv_writer.h"
 
-#include "mocap/error.h"
-#include "mocap/file_io.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
 #include "test_support.h"
-#include "mocap/text.h"
+#include "mocap/base/text.h"
 
 #include <gtest/gtest.h>
 

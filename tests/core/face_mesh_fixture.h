@@ -2,7 +2,7 @@
 
 #include "test_support.h"
 
-#include "mocap/obj_io.h"
+#include "mocap/io/obj_io.h"
 
 #include <vector>
 

@@ -1,8 +1,8 @@
 // FaceRig: the per-take set-up shared by `mocap deform` and the studio's face mesh panel.
 #include "face_mesh_fixture.h"
 
-#include "mocap/error.h"
-#include "mocap/face_rig.h"
+#include "mocap/base/error.h"
+#include "mocap/deform/face_rig.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/fill_evaluation.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/evaluation/fill_evaluation.h"
+#include "mocap/io/take_io.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "mocap/error.h"
-#include "mocap/gap_fill.h"
-#include "mocap/neighbour_propagation.h"
+#include "mocap/base/error.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/cleaning/fill/neighbour_propagation.h"
 
 #include <gtest/gtest.h>
 

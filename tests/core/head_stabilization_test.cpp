@@ -1,8 +1,8 @@
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/head_stabilization.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/io/take_io.h"
 
 #include <gtest/gtest.h>
 
@@ -171,7 +171,7 @@ TEST(HeadStabilization, FacialSingHeadMarkersBecomeStill)
     EXPECT_GT(deviation(take, m).maxCoeff(), 10.0);  // the singer moves her head
   const HeadMotion motion = estimateHeadMotion(take, roots);
   removeHeadMotion(take, motion);
-  // Head-mounted markers are rigid to 0.3-1.8 mm SD; stabilised, that is all that is left.
+  // Head-mounted markers are rigid to 0.3-1.8 mm SD; stabilized, that is all that is left.
   for (const Eigen::Index m : roots)
     EXPECT_LE(deviation(take, m).maxCoeff(), 1.8) << take.label(m);
   restoreHeadMotion(take, motion);

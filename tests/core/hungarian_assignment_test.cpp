@@ -1,6 +1,6 @@
-#include "mocap/error.h"
-#include "mocap/hungarian_assignment.h"
-#include "mocap/kmeans.h"
+#include "mocap/base/error.h"
+#include "mocap/math/hungarian_assignment.h"
+#include "mocap/math/kmeans.h"
 
 #include <gtest/gtest.h>
 

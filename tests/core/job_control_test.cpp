@@ -2,13 +2,13 @@
 // itself (JobCancelled), and progress rises to the end of the part it belongs to.
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/gap_fill.h"
-#include "mocap/job_control.h"
-#include "mocap/smoothing.h"
-#include "mocap/spike_detection.h"
-#include "mocap/swap_detection.h"
-#include "mocap/take_tracking.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/base/job_control.h"
+#include "mocap/cleaning/smoothing.h"
+#include "mocap/cleaning/spike_detection.h"
+#include "mocap/tracking/swap_detection.h"
+#include "mocap/tracking/take_tracking.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "mocap/error.h"
-#include "mocap/json_writer.h"
+#include "mocap/base/error.h"
+#include "mocap/base/json_writer.h"
 
 #include <gtest/gtest.h>
 

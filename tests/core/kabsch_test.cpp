@@ -1,5 +1,5 @@
-#include "mocap/error.h"
-#include "mocap/kabsch.h"
+#include "mocap/base/error.h"
+#include "mocap/math/kabsch.h"
 
 #include <gtest/gtest.h>
 

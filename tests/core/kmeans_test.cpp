@@ -1,7 +1,7 @@
 // PCA and k-means, the two halves of Principal Feature Analysis.
-#include "mocap/error.h"
-#include "mocap/kmeans.h"
-#include "mocap/pca.h"
+#include "mocap/base/error.h"
+#include "mocap/math/kmeans.h"
+#include "mocap/math/pca.h"
 
 #include <gtest/gtest.h>
 

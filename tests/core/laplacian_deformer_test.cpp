@@ -1,8 +1,8 @@
 #include "face_mesh_fixture.h"
 
-#include "mocap/error.h"
-#include "mocap/laplacian_deformer.h"
-#include "mocap/obj_io.h"
+#include "mocap/base/error.h"
+#include "mocap/deform/laplacian_deformer.h"
+#include "mocap/io/obj_io.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/error.h"
-#include "mocap/marker_edits.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/error.h"
+#include "mocap/model/marker_edits.h"
 
 #include <gtest/gtest.h>
 
@@ -145,8 +145,8 @@ TEST(MarkerEdits, SwapOverRangeExchangesOnlyThatRangeAndSwapsBack)
 } // namespace
 } // namespace mocap
 
-#include "mocap/marker_links.h"
-#include "mocap/marker_set.h"
+#include "mocap/model/marker_links.h"
+#include "mocap/model/marker_set.h"
 
 namespace mocap {
 namespace {

@@ -1,8 +1,8 @@
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/marker_set_io.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/io/marker_set_io.h"
+#include "mocap/io/take_io.h"
 
 #include <gtest/gtest.h>
 

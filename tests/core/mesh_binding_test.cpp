@@ -1,11 +1,11 @@
 #include "face_mesh_fixture.h"
 
-#include "mocap/deformation_evaluation.h"
-#include "mocap/error.h"
-#include "mocap/mesh_binding.h"
-#include "mocap/obj_io.h"
-#include "mocap/rbf_deformer.h"
-#include "mocap/retarget.h"
+#include "mocap/evaluation/deformation_evaluation.h"
+#include "mocap/base/error.h"
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/io/obj_io.h"
+#include "mocap/deform/rbf_deformer.h"
+#include "mocap/deform/retarget.h"
 
 #include <gtest/gtest.h>
 

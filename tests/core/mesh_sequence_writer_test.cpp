@@ -2,12 +2,12 @@
 // nothing behind.
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/mesh_sequence_writer.h"
-#include "mocap/obj_io.h"
-#include "mocap/pc2_io.h"
-#include "mocap/ply_io.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/io/mesh_sequence_writer.h"
+#include "mocap/io/obj_io.h"
+#include "mocap/io/pc2_io.h"
+#include "mocap/io/ply_io.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // layout sweep, on synthetic takes with known structure and on the real AnimFace take.
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/layout_frames.h"
-#include "mocap/marker_selection.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/layout/layout_frames.h"
+#include "mocap/layout/marker_selection.h"
+#include "mocap/io/take_io.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-#include "mocap/error.h"
-#include "mocap/kmeans.h"
-#include "mocap/point_tracker.h"
+#include "mocap/base/error.h"
+#include "mocap/math/kmeans.h"
+#include "mocap/tracking/point_tracker.h"
 
 #include <gtest/gtest.h>
 

@@ -2,15 +2,15 @@
 // trips, stored compactly, and foreign files' residual-0 samples are shown as filled.
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/c3d_writer.h"
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/gap_fill.h"
-#include "mocap/provenance.h"
-#include "mocap/sample_patch.h"
-#include "mocap/take_io.h"
-#include "mocap/trc_io.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/io/c3d_writer.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/model/provenance.h"
+#include "mocap/model/sample_patch.h"
+#include "mocap/io/take_io.h"
+#include "mocap/io/trc_io.h"
 
 #include <gtest/gtest.h>
 

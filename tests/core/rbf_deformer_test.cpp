@@ -1,8 +1,8 @@
 #include "face_mesh_fixture.h"
 
-#include "mocap/error.h"
-#include "mocap/obj_io.h"
-#include "mocap/rbf_deformer.h"
+#include "mocap/base/error.h"
+#include "mocap/io/obj_io.h"
+#include "mocap/deform/rbf_deformer.h"
 
 #include <gtest/gtest.h>
 

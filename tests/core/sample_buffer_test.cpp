@@ -1,4 +1,4 @@
-#include "mocap/sample_buffer.h"
+#include "mocap/model/sample_buffer.h"
 
 #include <gtest/gtest.h>
 

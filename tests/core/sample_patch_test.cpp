@@ -1,8 +1,8 @@
 #include "test_support.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/error.h"
-#include "mocap/sample_patch.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/error.h"
+#include "mocap/model/sample_patch.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "mocap/error.h"
-#include "mocap/savitzky_golay.h"
+#include "mocap/base/error.h"
+#include "mocap/cleaning/savitzky_golay.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/smoothing_evaluation.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/evaluation/smoothing_evaluation.h"
+#include "mocap/io/take_io.h"
 
 #include <gtest/gtest.h>
 

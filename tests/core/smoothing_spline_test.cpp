@@ -1,5 +1,5 @@
-#include "mocap/error.h"
-#include "mocap/smoothing_spline.h"
+#include "mocap/base/error.h"
+#include "mocap/cleaning/smoothing_spline.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
-#include "mocap/spike_detection.h"
+#include "mocap/cleaning/spike_detection.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/error.h"
-#include "mocap/sample_patch.h"
-#include "mocap/spike_evaluation.h"
-#include "mocap/trc_io.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/error.h"
+#include "mocap/model/sample_patch.h"
+#include "mocap/evaluation/spike_evaluation.h"
+#include "mocap/io/trc_io.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/swap_detection.h"
-#include "mocap/take_io.h"
-#include "mocap/tracking_evaluation.h"
+#include "mocap/base/error.h"
+#include "mocap/tracking/swap_detection.h"
+#include "mocap/io/take_io.h"
+#include "mocap/evaluation/tracking_evaluation.h"
 
 #include <gtest/gtest.h>
 

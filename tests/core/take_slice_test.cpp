@@ -1,6 +1,6 @@
 // sliceFrames: the slice holds exactly the chosen frames of every per-sample array.
-#include "mocap/error.h"
-#include "mocap/take_slice.h"
+#include "mocap/base/error.h"
+#include "mocap/model/take_slice.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "mocap/error.h"
-#include "mocap/gaps.h"
-#include "mocap/take.h"
+#include "mocap/base/error.h"
+#include "mocap/model/gaps.h"
+#include "mocap/model/take.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 #include "test_support.h"
 
-#include "mocap/error.h"
-#include "mocap/fragment_joining.h"
-#include "mocap/take_io.h"
-#include "mocap/template_labelling.h"
-#include "mocap/tracking_evaluation.h"
+#include "mocap/base/error.h"
+#include "mocap/tracking/fragment_joining.h"
+#include "mocap/io/take_io.h"
+#include "mocap/tracking/template_labelling.h"
+#include "mocap/evaluation/tracking_evaluation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // libFuzzer entry for the C3D reader: any input must load or raise mocap::Error.
-#include "mocap/c3d_reader.h"
-#include "mocap/error.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/error.h"
 
 #include <cstdint>
 

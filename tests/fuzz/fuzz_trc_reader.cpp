@@ -1,6 +1,6 @@
 // libFuzzer entry for the TRC reader: any input must load or raise mocap::Error.
-#include "mocap/error.h"
-#include "mocap/trc_io.h"
+#include "mocap/base/error.h"
+#include "mocap/io/trc_io.h"
 
 #include <cstdint>
 #include <string_view>

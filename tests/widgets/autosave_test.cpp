@@ -6,7 +6,7 @@
 #include "document/autosave.h"
 #include "document/take_document.h"
 
-#include "mocap/take_io.h"
+#include "mocap/io/take_io.h"
 
 #include <QFile>
 #include <QUndoStack>

@@ -10,8 +10,8 @@
 #include "panels/gap_fill_step.h"
 #include "panels/spike_step.h"
 
-#include "mocap/gap_fill.h"
-#include "mocap/gaps.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/model/gaps.h"
 
 #include <QApplication>
 #include <QCheckBox>

@@ -1,5 +1,5 @@
 // The curve view as a technician reads it (ticks, range, read-out, colours, following the current
-// frame), the 3D view's colours, follow-head camera and stabilised indicator, and the smoothing
+// frame), the 3D view's colours, follow-head camera and stabilized indicator, and the smoothing
 // step's summary.
 #include "../core/test_support.h"
 
@@ -14,7 +14,7 @@
 #include "views/sample_colors.h"
 #include "views/selection_palette.h"
 
-#include "mocap/sample_patch.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QAction>
 #include <QApplication>
@@ -90,7 +90,7 @@ TEST(CurveView, TheValueRangeHoldsAPreviewFarOutsideTheCurve)
   const auto before = view.valueRange(2);
   ASSERT_TRUE(before);
   ASSERT_LT(before->second, 200.0);  // z of marker 1 stays within 20..70 mm
-  // A fill proposal 500 mm away, as a stabilisation preview can be.
+  // A fill proposal 500 mm away, as a stabilization preview can be.
   doc.setPreview({makePatch(1, {600, 601, 602}, Eigen::Matrix<double, 3, 3>::Constant(500.0), SampleState::Filled)});
   const auto after = view.valueRange(2);
   ASSERT_TRUE(after);
@@ -317,11 +317,11 @@ TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsL
   EXPECT_EQ(*view->markerColor(droppedMarker), ui::stateColor(take.state(doc.currentFrame(), droppedMarker)));
 }
 
-TEST_F(StudioViews, CtrlBShowsTheStabilisedIndicatorUntilTheLabFrameIsBack)
+TEST_F(StudioViews, CtrlBShowsTheStabilizedIndicatorUntilTheLabFrameIsBack)
 {
   ui::MarkerView3d* view = window->markerView();
-  QAction* stabilise = actionWithShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-  ASSERT_NE(stabilise, nullptr);
+  QAction* stabilize = actionWithShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+  ASSERT_NE(stabilize, nullptr);
   EXPECT_TRUE(view->statusText().isEmpty());
   auto* indicator = view->findChild<QLabel*>(QStringLiteral("viewStatus"));
   // Ctrl+B asks for the reference markers (the head markers are proposed): accept them.
@@ -334,14 +334,14 @@ TEST_F(StudioViews, CtrlBShowsTheStabilisedIndicatorUntilTheLabFrameIsBack)
     }
   });
   accept.start();
-  stabilise->trigger();
+  stabilize->trigger();
   accept.stop();
   ASSERT_FALSE(view->headReference().empty());
-  EXPECT_TRUE(view->statusText().contains(QStringLiteral("Head-stabilised"))) << view->statusText().toStdString();
+  EXPECT_TRUE(view->statusText().contains(QStringLiteral("Head-stabilized"))) << view->statusText().toStdString();
   ASSERT_NE(indicator, nullptr);
   EXPECT_TRUE(indicator->isVisible());
   EXPECT_EQ(indicator->text(), view->statusText());
-  stabilise->trigger();  // back to the lab frame
+  stabilize->trigger();  // back to the lab frame
   EXPECT_TRUE(view->headReference().empty());
   EXPECT_TRUE(view->statusText().isEmpty());
   EXPECT_FALSE(indicator->isVisible());

@@ -6,9 +6,9 @@
 #include "document/take_document.h"
 #include "main_window.h"
 
-#include "mocap/file_io.h"
-#include "mocap/obj_io.h"
-#include "mocap/pc2_io.h"
+#include "mocap/base/file_io.h"
+#include "mocap/io/obj_io.h"
+#include "mocap/io/pc2_io.h"
 
 #include <QAction>
 #include <QApplication>

@@ -15,9 +15,9 @@
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
 
-#include "mocap/face_rig.h"
-#include "mocap/file_io.h"
-#include "mocap/pc2_io.h"
+#include "mocap/deform/face_rig.h"
+#include "mocap/base/file_io.h"
+#include "mocap/io/pc2_io.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -235,7 +235,7 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   EXPECT_LT(document().undoStack()->count(), before);
 }
 
-TEST_F(FaceMeshPanelTest, TheMeshStaysOnTheMarkersInTheHeadStabilisedView)
+TEST_F(FaceMeshPanelTest, TheMeshStaysOnTheMarkersInTheHeadStabilizedView)
 {
   ui::MarkerView3d* view = window->markerView();
   std::vector<Eigen::Index> reference;
@@ -257,7 +257,7 @@ TEST_F(FaceMeshPanelTest, TheMeshStaysOnTheMarkersInTheHeadStabilisedView)
   const Eigen::Index first = rig.markers()[0];
   ASSERT_GT((view->displayPosition(frame, first) - document().take().position(frame, first)).norm(), 2.0 * worst)
       << "the head should have moved, or this checks nothing";
-  // The stabilised frame differs from the lab frame by the head pose, so the placement changed.
+  // The stabilized frame differs from the lab frame by the head pose, so the placement changed.
   ASSERT_EQ(view->setHeadReference({}), QString());
   document().setCurrentFrame(frame + 1);
   document().setCurrentFrame(frame);

@@ -11,9 +11,9 @@
 #include "views/curve_view.h"
 #include "views/timeline_widget.h"
 
-#include "mocap/gap_fill.h"
-#include "mocap/gaps.h"
-#include "mocap/sample_patch.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/model/gaps.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QElapsedTimer>
 #include <QLineEdit>

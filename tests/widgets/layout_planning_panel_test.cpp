@@ -9,9 +9,9 @@
 #include "views/layout_error_plot.h"
 #include "views/marker_view_3d.h"
 
-#include "mocap/file_io.h"
-#include "mocap/marker_set_io.h"
-#include "mocap/take_io.h"
+#include "mocap/base/file_io.h"
+#include "mocap/io/marker_set_io.h"
+#include "mocap/io/take_io.h"
 
 #include <QDockWidget>
 #include <QSettings>

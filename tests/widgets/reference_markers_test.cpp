@@ -12,11 +12,11 @@
 #include "main_window.h"
 #include "sample_window.h"
 #include "panels/cleaning_panel.h"
-#include "panels/head_stabilisation_step.h"
+#include "panels/head_stabilization_step.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/reference_markers_row.h"
 
-#include "mocap/file_io.h"
+#include "mocap/base/file_io.h"
 
 #include <QAction>
 #include <QApplication>
@@ -91,13 +91,13 @@ TEST_F(ReferenceMarkers, TheSampleOpensWithItsRootMarkersAsTheReference)
   // Every panel shows that one set.
   for (const ui::ReferenceMarkersRow* row : window->findChildren<ui::ReferenceMarkersRow*>())
     EXPECT_TRUE(row->text().startsWith(QStringLiteral("root-1, root-2"))) << row->text().toStdString();
-  EXPECT_GE(window->findChildren<ui::ReferenceMarkersRow*>().size(), 3u) << "layout, face mesh, stabilise head";
+  EXPECT_GE(window->findChildren<ui::ReferenceMarkersRow*>().size(), 3u) << "layout, face mesh, stabilize head";
   // A new take gets its own guess.
   doc().setTake(Take({"a", "b", "c"}, 5, 100.0));
   EXPECT_TRUE(doc().referenceMarkers().empty());
 }
 
-TEST_F(ReferenceMarkers, LayoutPlanningStabilisesWithThemAndLeavesThemOut)
+TEST_F(ReferenceMarkers, LayoutPlanningStabilizesWithThemAndLeavesThemOut)
 {
   window->findChild<QDockWidget*>(QStringLiteral("layoutPlanningDock"))->raise();
   ui::LayoutPlanningPanel* panel = window->layoutPlanningPanel();
@@ -195,7 +195,7 @@ TEST_F(ReferenceMarkers, EditingTheSetInTheDialogIsOneUndoStep)
   EXPECT_FALSE(doc().isModified());
 }
 
-TEST_F(ReferenceMarkers, HeadStabilisationCoversEveryMarkerAndFrameEvenWithSelectedOnly)
+TEST_F(ReferenceMarkers, HeadStabilizationCoversEveryMarkerAndFrameEvenWithSelectedOnly)
 {
   ui::CleaningPanel* panel = window->cleaningPanel();
   for (QCheckBox* box : panel->findChildren<QCheckBox*>())
@@ -203,7 +203,7 @@ TEST_F(ReferenceMarkers, HeadStabilisationCoversEveryMarkerAndFrameEvenWithSelec
       box->setChecked(true);
   window->selectLabels({QStringLiteral("section7-1"), QStringLiteral("section7-2")});
   doc().setRange(100, 199);
-  auto* step = panel->step<ui::HeadStabilisationStep>();
+  auto* step = panel->step<ui::HeadStabilizationStep>();
   ASSERT_NE(step, nullptr);
   panel->setCurrentStep(step);
   panel->waitForPreview();

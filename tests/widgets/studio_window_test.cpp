@@ -13,18 +13,18 @@
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
 #include "panels/gap_fill_step.h"
-#include "panels/head_stabilisation_step.h"
+#include "panels/head_stabilization_step.h"
 #include "views/curve_view.h"
 #include "views/marker_view_3d.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
 #include "views/vtk_viewport.h"
 
-#include "mocap/c3d_reader.h"
-#include "mocap/file_io.h"
-#include "mocap/gaps.h"
-#include "mocap/marker_links.h"
-#include "mocap/marker_set.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/base/file_io.h"
+#include "mocap/model/gaps.h"
+#include "mocap/model/marker_links.h"
+#include "mocap/model/marker_set.h"
 
 #include <QAction>
 #include <QApplication>
@@ -309,7 +309,7 @@ TEST_F(StudioWindow, DraggingASampleOnTheCurvesEditsOneCoordinateUndoably)
   EXPECT_EQ(doc.take().state(520, marker), original.state(520, marker));
 }
 
-TEST_F(StudioWindow, HeadStabilisedViewHoldsTheHeadMarkersStillWithoutTouchingTheTake)
+TEST_F(StudioWindow, HeadStabilizedViewHoldsTheHeadMarkersStillWithoutTouchingTheTake)
 {
   TakeDocument& doc = window->document();
   const Take original = doc.take();
@@ -318,7 +318,7 @@ TEST_F(StudioWindow, HeadStabilisedViewHoldsTheHeadMarkersStillWithoutTouchingTh
   for (const char* label : {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"})
     roots.push_back(*doc.take().markerIndex(label));
   ASSERT_EQ(view->setHeadReference(roots), QString());
-  // The head moves 20-30 mm over the take; stabilised, its markers stay within the rigid body's
+  // The head moves 20-30 mm over the take; stabilized, its markers stay within the rigid body's
   // own jitter (about 2 mm).
   const Eigen::Index root = roots.front();
   double labSpread = 0.0, stableSpread = 0.0;
@@ -335,12 +335,12 @@ TEST_F(StudioWindow, HeadStabilisedViewHoldsTheHeadMarkersStillWithoutTouchingTh
   EXPECT_EQ(view->displayPosition(500, root), original.position(500, root));
 }
 
-TEST_F(StudioWindow, StabiliseHeadStepMovesTheTakeIntoTheHeadFrameUndoably)
+TEST_F(StudioWindow, StabilizeHeadStepMovesTheTakeIntoTheHeadFrameUndoably)
 {
   TakeDocument& doc = window->document();
   const Take original = doc.take();
   ui::CleaningPanel* panel = window->cleaningPanel();
-  auto* step = panel->step<ui::HeadStabilisationStep>();
+  auto* step = panel->step<ui::HeadStabilizationStep>();
   ASSERT_NE(step, nullptr);
   panel->setCurrentStep(step);
   panel->waitForPreview();

@@ -17,11 +17,11 @@
 #include "views/marker_view_3d.h"
 #include "views/wheel_guard.h"
 
-#include "mocap/c3d_writer.h"
-#include "mocap/file_io.h"
-#include "mocap/gap_fill.h"
-#include "mocap/provenance.h"
-#include "mocap/take_io.h"
+#include "mocap/io/c3d_writer.h"
+#include "mocap/base/file_io.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/model/provenance.h"
+#include "mocap/io/take_io.h"
 
 #include <QAction>
 #include <QApplication>

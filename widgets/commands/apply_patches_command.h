@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/sample_patch.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QUndoCommand>
 

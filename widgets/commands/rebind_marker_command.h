@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/mesh_binding.h"
+#include "mocap/deform/mesh_binding.h"
 
 #include <QUndoCommand>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "mocap/processing_step.h"
-#include "mocap/sample_patch.h"
+#include "mocap/model/processing_step.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QUndoCommand>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/take.h"
+#include "mocap/model/take.h"
 
 #include <QUndoCommand>
 

@@ -11,7 +11,7 @@ namespace mocap::ui {
 class TakeDocument;
 
 /// Replaces the take's head reference markers (TakeDocument::referenceMarkers): undoable, since
-/// the set decides what head stabilisation, layout planning and the face mesh do. Redo and undo
+/// the set decides what head stabilization, layout planning and the face mesh do. Redo and undo
 /// swap the stored set with the document's.
 class SetReferenceMarkersCommand final : public QUndoCommand
 {

@@ -1,9 +1,9 @@
 #include "dialogs/animation_export_job.h"
 
-#include "mocap/bvh_writer.h"
-#include "mocap/error.h"
-#include "mocap/file_io.h"
-#include "mocap/mesh_sequence_writer.h"
+#include "mocap/io/bvh_writer.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/io/mesh_sequence_writer.h"
 
 #include <cstdio>
 #include <system_error>

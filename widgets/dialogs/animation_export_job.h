@@ -1,7 +1,7 @@
 #pragma once
 
-#include "mocap/mesh.h"
-#include "mocap/take.h"
+#include "mocap/model/mesh.h"
+#include "mocap/model/take.h"
 
 #include <atomic>
 #include <filesystem>

@@ -2,7 +2,7 @@
 
 #include "document/take_document.h"
 
-#include "mocap/take_slice.h"
+#include "mocap/model/take_slice.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

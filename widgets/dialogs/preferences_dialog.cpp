@@ -9,7 +9,7 @@
 #include <QSettings>
 #include <QSpinBox>
 
-#include "mocap/length_unit.h"
+#include "mocap/base/length_unit.h"
 
 #include <algorithm>
 

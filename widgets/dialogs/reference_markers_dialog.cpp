@@ -2,7 +2,7 @@
 
 #include "document/take_document.h"
 
-#include "mocap/head_stabilization.h"
+#include "mocap/cleaning/head_stabilization.h"
 
 #include <QDialogButtonBox>
 #include <QHBoxLayout>
@@ -22,7 +22,7 @@ ReferenceMarkersDialog::ReferenceMarkersDialog(const TakeDocument& document, QWi
   setWindowTitle(tr("Reference Markers"));
   auto* layout = new QVBoxLayout(this);
   auto* intro = new QLabel(tr("Head-mounted markers that move only with the head (at least three). Head "
-                              "stabilisation, the head-stabilised view, layout planning and the face mesh "
+                              "stabilization, the head-stabilized view, layout planning and the face mesh "
                               "remove the head's motion with them; layout planning leaves them out."),
                            this);
   intro->setWordWrap(true);

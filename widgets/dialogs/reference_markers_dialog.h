@@ -18,7 +18,7 @@ class TakeDocument;
 /// and chosen — every marker with a check box, checked when it is in the set. Guess proposes
 /// guessHeadReferenceMarkers again, Use Selection takes the selected markers, Clear empties the
 /// set. OK is refused for one or two markers (a head pose needs three, or none for no
-/// stabilisation). The caller pushes the result as a command; the dialog changes nothing itself.
+/// stabilization). The caller pushes the result as a command; the dialog changes nothing itself.
 class ReferenceMarkersDialog final : public QDialog
 {
   Q_OBJECT

@@ -1,6 +1,6 @@
 #include "dialogs/swap_review_dialog.h"
 
-#include "mocap/length_unit.h"
+#include "mocap/base/length_unit.h"
 
 #include <QDialogButtonBox>
 #include <QLabel>

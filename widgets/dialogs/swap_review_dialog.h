@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/swap_detection.h"
+#include "mocap/tracking/swap_detection.h"
 
 #include <QDialog>
 

@@ -10,7 +10,7 @@
 #include <QStandardPaths>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "mocap/take_io.h"
+#include "mocap/io/take_io.h"
 
 #include <algorithm>
 

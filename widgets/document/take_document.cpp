@@ -1,8 +1,8 @@
 #include "document/take_document.h"
 
-#include "mocap/error.h"
-#include "mocap/head_stabilization.h"
-#include "mocap/take_io.h"
+#include "mocap/base/error.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/io/take_io.h"
 
 #include <algorithm>
 

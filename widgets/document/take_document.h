@@ -1,7 +1,7 @@
 #pragma once
 
-#include "mocap/sample_patch.h"
-#include "mocap/take.h"
+#include "mocap/model/sample_patch.h"
+#include "mocap/model/take.h"
 
 #include <QObject>
 #include <QString>
@@ -101,7 +101,7 @@ public:
   void setFlags(std::vector<std::pair<Eigen::Index, Eigen::Index>> flags);
 
   /// The head-mounted reference markers of the take (indices, ascending): the one set that head
-  /// stabilisation, the head-stabilised view, layout planning and the face mesh use. Guessed
+  /// stabilization, the head-stabilized view, layout planning and the face mesh use. Guessed
   /// once when a take is set (guessHeadReferenceMarkers: root*/head* labels, else the most rigid
   /// cluster); removing, inserting or exchanging markers keeps it on the same labels.
   [[nodiscard]] const std::vector<Eigen::Index>& referenceMarkers() const { return m_referenceMarkers; }

@@ -2,7 +2,7 @@
 
 #include "document/take_document.h"
 
-#include "mocap/valid_runs.h"
+#include "mocap/model/valid_runs.h"
 
 #include <QColor>
 

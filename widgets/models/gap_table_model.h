@@ -1,7 +1,7 @@
 #pragma once
 
-#include "mocap/gap_fill.h"
-#include "mocap/gaps.h"
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/model/gaps.h"
 
 #include <QAbstractTableModel>
 #include <QString>

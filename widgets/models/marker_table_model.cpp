@@ -6,7 +6,7 @@
 #include <QColor>
 #include <QUndoStack>
 
-#include "mocap/gaps.h"
+#include "mocap/model/gaps.h"
 
 namespace mocap::ui {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "mocap/job_control.h"
-#include "mocap/sample_patch.h"
+#include "mocap/base/job_control.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QString>
 #include <QWidget>
@@ -74,7 +74,7 @@ public:
     (void)take;
     return result.patches;
   }
-  /// True for a step that changes the whole take or nothing (head stabilisation is a change of
+  /// True for a step that changes the whole take or nothing (head stabilization is a change of
   /// coordinates): the panel's "selected markers only" and "frame range only" do not apply to it.
   [[nodiscard]] virtual bool wholeTake() const { return false; }
   /// Shows a finished result (e.g. a list of flags to review). Called on the UI thread.

@@ -8,10 +8,10 @@
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
 
-#include "mocap/face_rig.h"
-#include "mocap/file_io.h"
-#include "mocap/marker_set.h"
-#include "mocap/mesh_io.h"
+#include "mocap/deform/face_rig.h"
+#include "mocap/base/file_io.h"
+#include "mocap/model/marker_set.h"
+#include "mocap/io/mesh_io.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/face_rig.h"
+#include "mocap/deform/face_rig.h"
 
 #include <QPoint>
 #include <QString>

@@ -3,7 +3,7 @@
 #include "document/take_document.h"
 #include "models/gap_table_model.h"
 
-#include "mocap/gap_fill.h"
+#include "mocap/cleaning/fill/gap_fill.h"
 
 #include <QCheckBox>
 #include <QComboBox>

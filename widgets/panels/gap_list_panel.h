@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/gap_fill.h"
+#include "mocap/cleaning/fill/gap_fill.h"
 
 #include <QFutureWatcher>
 #include <QWidget>

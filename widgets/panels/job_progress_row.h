@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/job_control.h"
+#include "mocap/base/job_control.h"
 
 #include <QElapsedTimer>
 #include <QWidget>

@@ -4,12 +4,12 @@
 #include "panels/reference_markers_row.h"
 #include "views/layout_error_plot.h"
 
-#include "mocap/file_io.h"
-#include "mocap/layout_symmetry.h"
-#include "mocap/marker_edits.h"
-#include "mocap/marker_set.h"
-#include "mocap/marker_set_io.h"
-#include "mocap/take_io.h"
+#include "mocap/base/file_io.h"
+#include "mocap/layout/layout_symmetry.h"
+#include "mocap/model/marker_edits.h"
+#include "mocap/model/marker_set.h"
+#include "mocap/io/marker_set_io.h"
+#include "mocap/io/take_io.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "mocap/layout_frames.h"
-#include "mocap/marker_pairs.h"
-#include "mocap/marker_selection.h"
+#include "mocap/layout/layout_frames.h"
+#include "mocap/model/marker_pairs.h"
+#include "mocap/layout/marker_selection.h"
 
 #include <QFutureWatcher>
 #include <QString>

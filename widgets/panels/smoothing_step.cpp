@@ -2,7 +2,7 @@
 
 #include "views/display_units.h"
 
-#include "mocap/smoothing.h"
+#include "mocap/cleaning/smoothing.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -2,7 +2,7 @@
 
 #include "panels/cleaning_step.h"
 
-#include "mocap/length_unit.h"
+#include "mocap/base/length_unit.h"
 
 class QComboBox;
 class QDoubleSpinBox;

@@ -2,7 +2,7 @@
 
 #include "document/take_document.h"
 
-#include "mocap/spike_detection.h"
+#include "mocap/cleaning/spike_detection.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -8,8 +8,8 @@
 #include "views/axis_ticks.h"
 #include "views/selection_palette.h"
 
-#include "mocap/gaps.h"
-#include "mocap/sample_patch.h"
+#include "mocap/model/gaps.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QKeyEvent>
 #include <QUndoStack>
@@ -136,7 +136,7 @@ std::optional<std::pair<double, double>> CurveView::valueRange(int axis) const
         hi = std::max(hi, values(f));
       }
   }
-  // The preview belongs in the range: a fill or stabilisation proposal far from the curve is
+  // The preview belongs in the range: a fill or stabilization proposal far from the curve is
   // exactly what there is to judge.
   for (const SamplePatch& patch : m_document.preview()) {
     if (!std::binary_search(selection.begin(), selection.end(), patch.marker))

@@ -3,8 +3,8 @@
 #include <QString>
 #include <QWidget>
 
-#include "mocap/length_unit.h"
-#include "mocap/sample_patch.h"
+#include "mocap/base/length_unit.h"
+#include "mocap/model/sample_patch.h"
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/length_unit.h"
+#include "mocap/base/length_unit.h"
 
 #include <QString>
 

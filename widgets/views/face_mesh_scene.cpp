@@ -5,7 +5,7 @@
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
 
-#include "mocap/retarget.h"
+#include "mocap/deform/retarget.h"
 
 #include <QElapsedTimer>
 #include <QGuiApplication>
@@ -65,7 +65,7 @@ FaceMeshScene::FaceMeshScene(TakeDocument& document, MarkerView3d& view, QObject
     rebuild();
   });
   connect(&document, &TakeDocument::currentFrameChanged, this, &FaceMeshScene::updateFrame);
-  // The view's head-stabilised frame can change without a document signal (Ctrl+B).
+  // The view's head-stabilized frame can change without a document signal (Ctrl+B).
   connect(view.viewport(), &VtkViewport::aboutToRender, this, &FaceMeshScene::updatePlacement);
 }
 
@@ -177,7 +177,7 @@ void FaceMeshScene::restabilize()
     m_stabilized = std::move(stabilized);
     m_headMotion = std::move(motion);
   } catch (const std::exception& e) {
-    m_stabilizationError = tr("Head stabilisation: %1").arg(QString::fromStdString(e.what()));
+    m_stabilizationError = tr("Head stabilization: %1").arg(QString::fromStdString(e.what()));
   }
 }
 

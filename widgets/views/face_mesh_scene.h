@@ -1,9 +1,9 @@
 #pragma once
 
-#include "mocap/face_rig.h"
-#include "mocap/head_stabilization.h"
-#include "mocap/mesh.h"
-#include "mocap/mesh_binding.h"
+#include "mocap/deform/face_rig.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/model/mesh.h"
+#include "mocap/deform/mesh_binding.h"
 
 #include <QObject>
 #include <QPoint>
@@ -26,10 +26,10 @@ class TakeDocument;
 /// A face mesh in the 3D view, driven by the open take: holds the mesh, its marker binding and
 /// the rig settings, keeps a FaceRig (and, when comparing, a second rig with the other method,
 /// drawn beside the first) set up for the take, and deforms the mesh whenever the current frame
-/// changes. Head stabilisation: when reference labels are given, the rigs see a copy of the take
+/// changes. Head stabilization: when reference labels are given, the rigs see a copy of the take
 /// with head motion removed (the frame bindings are made in), and the mesh is put back on the
 /// head each frame, so it lines up with the markers in the lab frame and in the view's
-/// head-stabilised frame alike. Rig set-up is synchronous (a few milliseconds for a face of
+/// head-stabilized frame alike. Rig set-up is synchronous (a few milliseconds for a face of
 /// hundreds of vertices); a frame costs the rigs' deform (O(#vertices · #controls)).
 class FaceMeshScene final : public QObject
 {
@@ -68,7 +68,7 @@ public:
   [[nodiscard]] const QString& error() const { return m_error; }
   [[nodiscard]] const FaceRig* rig() const { return m_rig.get(); }
   [[nodiscard]] const FaceRig* compareRig() const { return m_compareRig.get(); }
-  /// The take the rigs see (head motion removed when stabilising).
+  /// The take the rigs see (head motion removed when stabilizing).
   [[nodiscard]] const Take& rigTake() const;
   [[nodiscard]] MeshLayer& layer() const { return *m_layer; }
   [[nodiscard]] MeshLayer& compareLayer() const { return *m_compareLayer; }
@@ -105,7 +105,7 @@ private:
   std::vector<std::string> m_stabilization;
   FaceRigOptions m_options;
   bool m_compare = false;
-  std::optional<Take> m_stabilized;  // the take without head motion, when stabilising
+  std::optional<Take> m_stabilized;  // the take without head motion, when stabilizing
   QString m_stabilizationError;
   std::optional<HeadMotion> m_headMotion;
   std::vector<Eigen::Index> m_viewReference;  // the view's reference markers m_viewMotion is for

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/marker_selection.h"
+#include "mocap/layout/marker_selection.h"
 
 #include <QWidget>
 

@@ -5,9 +5,9 @@
 #include "views/sample_colors.h"
 #include "views/selection_palette.h"
 
-#include "mocap/head_stabilization.h"
-#include "mocap/marker_links.h"
-#include "mocap/marker_set.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/model/marker_links.h"
+#include "mocap/model/marker_set.h"
 #include "views/vtk_viewport.h"
 
 #include <QLabel>
@@ -335,7 +335,7 @@ QString MarkerView3d::statusText() const
 {
   QStringList parts;
   if (m_headMotion)
-    parts << tr("Head-stabilised on %n marker(s) — Ctrl+B for the lab frame", nullptr,
+    parts << tr("Head-stabilized on %n marker(s) — Ctrl+B for the lab frame", nullptr,
                 static_cast<int>(m_headReference.size()));
   if (m_followHead)
     parts << tr("Camera follows the head");

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/head_stabilization.h"
+#include "mocap/cleaning/head_stabilization.h"
 
 #include <QColor>
 #include <QWidget>
@@ -34,7 +34,7 @@ class VtkViewport;
 /// The 3D viewport: the current frame's markers as spheres coloured by sample state
 /// (original, filled, smoothed, edited, flagged as a bad point); selected markers in their curve
 /// colours (selection_palette.h) and labelled, with trails over ±trailFrames frames in the same
-/// colours; an axes marker in the corner and, while the view is head-stabilised or follows the
+/// colours; an axes marker in the corner and, while the view is head-stabilized or follows the
 /// head, a line of text saying so in the top-left corner.
 /// Missing samples are not drawn. Click picks the nearest marker, Ctrl+drag a rubber band picks all inside it (Ctrl/Shift adds to the
 /// selection); the camera faces the take's markers from the side they protrude to.
@@ -67,13 +67,13 @@ public:
   void resetCamera();
   /// Redraws with the current colorScheme() (sample_colors.h), background included.
   void refreshColors();
-  /// Head-stabilised view: draws every marker relative to the head pose estimated from these
+  /// Head-stabilized view: draws every marker relative to the head pose estimated from these
   /// reference markers (head_stabilization.h), so only facial motion remains; empty = lab frame.
   /// A view setting: the take is not changed. Returns an error message (the view is then
   /// unchanged) or an empty string. Dropped when markers are added or removed.
   QString setHeadReference(std::vector<Eigen::Index> referenceMarkers);
   [[nodiscard]] const std::vector<Eigen::Index>& headReference() const { return m_headReference; }
-  /// Where marker `marker` is drawn in `frame` (stabilised when the view is).
+  /// Where marker `marker` is drawn in `frame` (stabilized when the view is).
   [[nodiscard]] Eigen::Vector3d displayPosition(Eigen::Index frame, Eigen::Index marker) const;
   /// The marker drawn nearest to `position` (widget coordinates), within `radius` pixels.
   [[nodiscard]] Eigen::Index markerAt(QPoint position, int radius = 12) const;
@@ -93,11 +93,11 @@ public:
   [[nodiscard]] std::optional<Eigen::Vector3d> followTarget(Eigen::Index frame) const;
   /// The markers the camera follows.
   [[nodiscard]] const std::vector<Eigen::Index>& followedMarkers() const { return m_followMarkers; }
-  /// The camera's focal point (lab or stabilised coordinates, as drawn).
+  /// The camera's focal point (lab or stabilized coordinates, as drawn).
   [[nodiscard]] Eigen::Vector3d cameraFocalPoint() const;
   /// The colour `marker` is drawn in at the current frame; nullopt when it is not drawn.
   [[nodiscard]] std::optional<QColor> markerColor(Eigen::Index marker) const;
-  /// The corner text shown (head-stabilised, following the head); empty when none is shown.
+  /// The corner text shown (head-stabilized, following the head); empty when none is shown.
   [[nodiscard]] QString statusText() const;
   /// A planned marker layout over the take: while set, markers are drawn kept (white, labelled)
   /// or dropped (dim grey), and the head reference markers the plan leaves out in blue, instead

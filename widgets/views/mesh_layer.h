@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mocap/mesh.h"
+#include "mocap/model/mesh.h"
 
 #include <Eigen/Geometry>
 

@@ -3,7 +3,7 @@
 #include "document/take_document.h"
 #include "views/sample_colors.h"
 
-#include "mocap/gaps.h"
+#include "mocap/model/gaps.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/cleaning/smoothing.h"
+#include "mocap/cleaning/spike_detection.h"
+#include "mocap/model/take.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mocap {
+
+/// Which cleaning steps run, in the fixed order stabilize → spikes → fill → smooth.
+/// A step whose options are empty is skipped. The fill defaults (FillOptions) leave gaps longer
+/// than 0.5 s, edge gaps and rarely seen markers open; CleanReport::gaps says which and why.
+struct CleanOptions
+{
+  std::vector<std::string> stabilizeLabels;  ///< head reference markers; empty: no stabilization
+  bool keepStabilized = false;               ///< false: head motion is put back after cleaning
+  std::optional<SpikeOptions> spikes = SpikeOptions{};
+  std::optional<FillOptions> fill = FillOptions{};
+  std::optional<SmoothOptions> smooth = SmoothOptions{};
+};
+
+/// What the pipeline did, for the `--report` JSON and the studio's review lists.
+struct CleanReport
+{
+  std::vector<Eigen::Index> stabilizeMarkers;
+  Eigen::Index unknownHeadPoses = 0;     ///< frames where the head pose had to be interpolated or was unknown
+  std::optional<HeadMotion> headMotion;  ///< when stabilized (e.g. for the BVH root)
+  std::vector<SpikeFlag> spikes;
+  std::vector<GapFillReport> gaps;
+  Eigen::Index filledSamples = 0;
+  Eigen::Index smoothedSamples = 0;
+};
+
+/// Runs the steps on `take` in place. Throws InvalidArgument for an unknown stabilization label.
+/// Cost: the sum of the steps (each O(#frames · #markers) up to its neighbour search).
+CleanReport cleanTake(Take& take, const CleanOptions& options);
+
+} // namespace mocap

@@ -1,0 +1,69 @@
+#pragma once
+
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/math/similarity_transform.h"
+#include "mocap/model/take.h"
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace mocap {
+
+/// How source (take) displacements are scaled to the target mesh.
+enum class RetargetScale
+{
+  Uniform,  ///< the similarity transform's single scale
+  PerAxis,  ///< one scale per mesh axis: the bound points' spread over the rotated markers' spread
+};
+
+[[nodiscard]] std::string_view retargetScaleName(RetargetScale scale);
+[[nodiscard]] std::optional<RetargetScale> parseRetargetScale(std::string_view name);
+
+/// Maps a marker displacement from the neutral frame into a control displacement on the mesh:
+/// Δ_mesh = diag(axisScale)·R·Δ_take. The paper adjusts displacements by model size (§3); the
+/// rotation R takes the take's axes to the mesh's.
+struct Retarget
+{
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d axisScale = Eigen::Vector3d::Ones();
+  double uniformScale = 1.0;  ///< the similarity scale, also for converting mesh errors to take units
+
+  [[nodiscard]] Eigen::Vector3d map(const Eigen::Vector3d& displacement) const
+  {
+    return axisScale.cwiseProduct(rotation * displacement);
+  }
+};
+
+/// Fits the retarget from the neutral markers (#controls × 3, take units) to their bound points
+/// on the rest mesh (#controls × 3, mesh units) by fitSimilarity; per-axis scales are the RMS
+/// spreads of the bound points over those of the rotated markers along each mesh axis (the uniform
+/// scale where an axis is flat). Throws as fitSimilarity. O(#controls).
+[[nodiscard]] Retarget fitRetarget(const Eigen::Ref<const PointSet>& neutral, const Eigen::Ref<const PointSet>& bound,
+                                   RetargetScale scale);
+
+/// Positions of `markers` in `frame` (#markers × 3). O(#markers).
+[[nodiscard]] PointSet markerPositions(const Take& take, Eigen::Index frame, const std::vector<Eigen::Index>& markers);
+
+/// The neutral frame index: `frameNumber` as the take counts frames (firstFrame-based) when given,
+/// otherwise the first frame in which every marker of `markers` is valid. Throws InvalidArgument
+/// for a frame outside the take, a marker invalid in the chosen frame, or no complete frame.
+/// O(#frames · #markers).
+[[nodiscard]] Eigen::Index chooseNeutralFrame(const Take& take, const std::vector<Eigen::Index>& markers,
+                                              std::optional<long long> frameNumber);
+
+/// Removes head motion estimated from the reference markers `labels` (head_stabilization.h) when
+/// `labels` is not empty, and returns their indices. Throws as markerIndices and estimateHeadMotion.
+std::vector<Eigen::Index> stabilizeTake(Take& take, const std::vector<std::string>& labels);
+
+/// Per frame the retargeted control displacements of the markers, and which are present (valid
+/// and finite in that frame), from the neutral frame's positions. O(#markers).
+void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& markers, Eigen::Index neutralFrame,
+                          const Retarget& retarget, Eigen::Index frame, PointSet& displacements,
+                          std::vector<bool>& present);
+
+/// The bound points' rest positions (#points × 3). O(#points).
+[[nodiscard]] PointSet boundPositions(const Eigen::Ref<const MeshVertices>& vertices,
+                                      const std::vector<MeshPoint>& points);
+
+} // namespace mocap

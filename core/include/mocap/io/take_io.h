@@ -1,0 +1,38 @@
+#pragma once
+
+#include "mocap/model/take.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mocap {
+
+/// File formats the studio reads or writes, chosen by extension.
+enum class TakeFormat
+{
+  C3d,  ///< read and write
+  Trc,  ///< read and write
+  Csv,  ///< write only
+  Bvh,  ///< write only
+};
+
+/// The format named by `path`'s extension (case-insensitive). Throws InvalidArgument for an
+/// unknown extension, listing the known ones.
+[[nodiscard]] TakeFormat formatFromPath(const std::filesystem::path& path);
+[[nodiscard]] std::string_view formatName(TakeFormat format);
+
+/// Reads a take in the format its extension names; tolerated file quirks go to `warnings`, and
+/// those that mean declared data is missing (truncation) to `dataLoss` as well. A TRC file's
+/// sample states and history come from its provenance sidecar when there is one.
+/// Throws IoError, FormatError, or InvalidArgument for a format that cannot be read.
+[[nodiscard]] Take readTake(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
+                            std::vector<std::string>* dataLoss = nullptr);
+
+/// Writes `take` atomically in the format its extension names. TRC and CSV cannot hold sample
+/// states or history, so a take that has them also gets the sidecar provenanceSidecarPath(path)
+/// (a stale sidecar of a take without them is removed).
+void writeTake(const Take& take, const std::filesystem::path& path);
+
+} // namespace mocap

@@ -1,0 +1,195 @@
+#pragma once
+
+#include "mocap/layout/blendshape_basis.h"
+#include "mocap/math/kmeans.h"
+#include "mocap/layout/layout_frames.h"
+#include "mocap/model/marker_pairs.h"
+#include "mocap/layout/subset_error.h"
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace mocap {
+
+/// How a marker layout of a given size is chosen.
+enum class SelectionMethod
+{
+  Pfa,     ///< Principal Feature Analysis with the most stable of many k-means restarts (the paper)
+  Greedy,  ///< greedy forward selection + exchange on the reconstruction (and blend-weight) error
+};
+
+/// "pfa" or "greedy". O(1).
+[[nodiscard]] std::string_view selectionMethodName(SelectionMethod method);
+/// The method named "pfa" or "greedy"; nullopt otherwise. O(1).
+[[nodiscard]] std::optional<SelectionMethod> parseSelectionMethod(std::string_view name);
+
+/// Threads, progress and cancellation of a long run. The studio calls it from a worker thread.
+struct RunControl
+{
+  int threads = 0;  ///< 0: std::thread::hardware_concurrency()
+  /// Called on the calling thread with the fraction done (0…1), at most every ~50 ms and at the end.
+  std::function<void(double)> progress;
+  /// Polled between k-means restarts; when it becomes true the run stops and returns what is complete.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct PfaOptions
+{
+  double varianceFraction = 0.98;  ///< PCA components kept (Wellein et al. 2007 §2: 98 %)
+  int restarts = 1000;             ///< k-means initialisations per k (§2: 1000)
+  /// Cluster counts to sweep; both 0: all useful values, k = 1 … #markers, stopping after the first
+  /// k whose stable selection holds every marker.
+  Eigen::Index minK = 0;
+  Eigen::Index maxK = 0;
+  std::uint64_t seed = 1;  ///< restart r of k uses seed mixSeed(seed, k, r): the same on any thread count
+  KMeansOptions kMeans;
+};
+
+/// The PFA result for one k.
+struct PfaSelection
+{
+  Eigen::Index k = 0;
+  std::vector<Eigen::Index> markers;  ///< the most stable selection, symmetric, sorted
+  /// Per unit of the symmetry (MarkerSymmetry::units()), the fraction of restarts selecting it.
+  std::vector<double> unitFrequency;
+  double stability = 0.0;  ///< Σ unitFrequency over the selection's units (§2's criterion)
+};
+
+struct PfaSweep
+{
+  std::vector<PfaSelection> selections;  ///< one per completed k, ascending
+  Eigen::Index components = 0;           ///< PCA components kept
+  double explainedVariance = 0.0;        ///< their share of the variance
+  bool cancelled = false;
+};
+
+/// Principal Feature Analysis over a sweep of k (Cohen et al. 2002 / Lu et al. 2007 as adapted by
+/// Wellein et al. 2007 §2): PCA of the 3·#markers coordinates keeping `varianceFraction`; each
+/// coordinate is a row Vᵢ of the eigenvector matrix, clustered as |Vᵢ| (Lu et al.'s step 4: the
+/// sign of an eigenvector is arbitrary, and coordinates moving against each other are as redundant
+/// as coordinates moving together); per k, `restarts` k-means runs (k-means++ seeding) each select
+/// the coordinate nearest every cluster mean; coordinates → markers, closed under `symmetry`; over the
+/// restarts each unit's selection frequency is counted, and the selection with the highest sum of
+/// unit frequencies is kept. Restarts run on RunControl::threads threads sharing one distance
+/// matrix; results do not depend on the thread count.
+/// O(n·d² + d³ + Σ_k restarts · d·k·(1 + q·iterations)) for n training frames, d = 3·#markers,
+/// q kept components.
+/// Throws InvalidArgument for fewer than two markers, a symmetry of another size, fewer frames than
+/// d + 1, a non-finite value, restarts < 1, or k outside 1 … d (or minK > maxK).
+[[nodiscard]] PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training,
+                                const MarkerSymmetry& symmetry, const PfaOptions& options = {},
+                                const RunControl& control = {});
+
+/// Greedy selection of exactly `size` markers in whole units of `symmetry`, minimising
+/// errors.trainingObjective() (held-out reconstruction error plus a share of the blendshape-weight
+/// error, training frames only): forward steps add the unit that lowers it most (keeping the size
+/// reachable), then exchange passes swap a selected unit for an unselected one of the same width
+/// while that lowers it. Beyond the paper: PFA keeps mutually uncorrelated coordinates; this keeps
+/// the markers that best predict the others and the blend weights. Ties go to the lower unit.
+/// nullopt when no symmetric set of that size exists.
+/// O((size + passes · size) · #units · cost of trainingObjective), with at most 2 exchange passes.
+/// Throws InvalidArgument for a symmetry of another size or a size outside 1 … #markers.
+[[nodiscard]] std::optional<std::vector<Eigen::Index>>
+selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry, Eigen::Index size);
+
+/// selectGreedy for each of `sizes` (entry i for sizes[i]), in parallel on RunControl::threads,
+/// sharing the objective values of the forward steps the sizes have in common; then, in ascending
+/// size, a set is replaced by the set one smaller plus a single unit (or two smaller plus a pair)
+/// when that scores better, so no size is worse on the objective than a smaller one allows.
+/// `starts` (by size; e.g. the PFA sets) are improved by the same exchange passes and replace the
+/// greedy set of their size when they end better, so the result never scores worse on the
+/// objective than a start. Returns an empty vector when cancelled. Throws as selectGreedy.
+[[nodiscard]] std::vector<std::optional<std::vector<Eigen::Index>>>
+selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry,
+             const std::vector<Eigen::Index>& sizes, const RunControl& control = {},
+             const std::map<Eigen::Index, std::vector<Eigen::Index>>& starts = {});
+
+/// A uniformly shuffled symmetric set of exactly `size` markers (units added in random order
+/// while they fit), the baseline both methods must beat; nullopt when none exists. O(#markers).
+[[nodiscard]] std::optional<std::vector<Eigen::Index>> selectRandom(const MarkerSymmetry& symmetry,
+                                                                    Eigen::Index size, std::uint64_t seed);
+
+/// The knee of an error curve ("low error, few markers"): both error curves are scaled by their
+/// largest value and averaged, sizes scaled to [0, 1], and the knee is the point farthest below the
+/// straight line from the first point to the last (Satopää et al. 2011, "Kneedle"). The paper picks
+/// its set by eye from the same curve (Fig. 2). Returns an index into `sizes`. O(#sizes).
+/// Throws InvalidArgument for no points, sizes of different lengths or a non-finite error.
+[[nodiscard]] std::size_t chooseKnee(const std::vector<Eigen::Index>& sizes,
+                                     const std::vector<double>& errorA, const std::vector<double>& errorB);
+
+struct LayoutPlanOptions
+{
+  SelectionMethod method = SelectionMethod::Pfa;  ///< the method whose sets the plan recommends
+  PfaOptions pfa;
+  bool compare = true;                  ///< also score the other method and random sets at every size
+  int randomSubsets = 20;               ///< random sets per size for the baseline mean
+  Eigen::Index keyPoseCount = 10;       ///< automatic key poses (extreme frames)
+  std::vector<Eigen::Index> keyFrames;  ///< rows of LayoutFrames::frames as key poses; empty: automatic
+  SubsetErrorOptions errors;            ///< the reconstruction model and the greedy objective
+};
+
+/// One scored marker set.
+struct ScoredLayout
+{
+  std::vector<Eigen::Index> markers;  ///< sorted indices into LayoutFrames::labels
+  Eigen::Index k = 0;                 ///< PFA: the cluster count that produced it; 0 otherwise
+  std::vector<double> unitFrequency;  ///< PFA: as PfaSelection
+  double stability = 0.0;             ///< PFA: as PfaSelection
+  double blendshapeError = 0.0;       ///< SubsetErrors::blendshapeError
+  double reconstructionRmse = 0.0;    ///< SubsetErrors::reconstructionRmse, mm
+};
+
+/// One point of the error-vs-marker-count curve (Wellein et al. 2007 Fig. 2).
+struct LayoutSize
+{
+  Eigen::Index markerCount = 0;
+  std::optional<ScoredLayout> pfa;
+  std::optional<ScoredLayout> greedy;
+  int randomCount = 0;                 ///< random sets scored
+  double randomBlendshapeError = 0.0;  ///< means over the random sets
+  double randomReconstructionRmse = 0.0;
+
+  /// The layout `method` chose at this size, or nullptr. O(1).
+  [[nodiscard]] const ScoredLayout* layout(SelectionMethod method) const;
+};
+
+struct LayoutPlan
+{
+  SelectionMethod method = SelectionMethod::Pfa;
+  std::vector<LayoutSize> sizes;       ///< ascending marker count; sizes no method reached are left out
+  std::vector<PfaSelection> pfaSweep;  ///< the PFA result of every k (empty when PFA did not run)
+  Eigen::Index pcaComponents = 0;
+  double explainedVariance = 0.0;
+  BlendshapeBasis basis;             ///< neutral and key-pose rows of the frames
+  double motionRms = 0.0;            ///< SubsetErrors::motionRms
+  Eigen::Index recommendedSize = 0;  ///< marker count at the knee of `method`'s curve; 0 if none
+  std::string recommendationRule;    ///< how it was chosen, in words
+  bool cancelled = false;
+
+  /// The entry for `markerCount`, or nullptr. O(#sizes).
+  [[nodiscard]] const LayoutSize* size(Eigen::Index markerCount) const;
+};
+
+/// The whole issue: PFA sweep over k (when the method is PFA or compare is on), each size's PFA set
+/// being the k with the smallest training residual among those giving that size; greedy and random
+/// sets (mean of randomSubsets) at every size (when the method is greedy or compare is on); both
+/// errors of every set on the test frames against the full set (blendshape basis from the full set
+/// with automatic or given key poses); the knee of the chosen method's curve (with the full set as
+/// its last point). Progress covers the whole run; on cancellation the PFA selections done so far
+/// are returned, without sizes, and cancelled = true.
+/// Cost: sweepPfa + selectGreedy over all sizes + #sizes · (randomSubsets + 2) subset scorings,
+/// each stage in parallel.
+/// Throws InvalidArgument as sweepPfa and SubsetErrors, and for a key frame out of range.
+[[nodiscard]] LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& symmetry,
+                                          const LayoutPlanOptions& options = {},
+                                          const RunControl& control = {});
+
+} // namespace mocap

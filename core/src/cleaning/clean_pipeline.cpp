@@ -1,0 +1,50 @@
+#include "mocap/cleaning/clean_pipeline.h"
+
+#include "mocap/base/error.h"
+#include "mocap/model/sample_patch.h"
+
+namespace mocap {
+
+namespace {
+
+Eigen::Index patchSamples(const std::vector<SamplePatch>& patches)
+{
+  Eigen::Index count = 0;
+  for (const SamplePatch& p : patches)
+    count += static_cast<Eigen::Index>(p.size());
+  return count;
+}
+
+} // namespace
+
+CleanReport cleanTake(Take& take, const CleanOptions& options)
+{
+  CleanReport report;
+  if (!options.stabilizeLabels.empty()) {
+    report.stabilizeMarkers = markerIndices(take, options.stabilizeLabels);
+    report.headMotion = estimateHeadMotion(take, report.stabilizeMarkers);
+    for (bool known : report.headMotion->known)
+      report.unknownHeadPoses += known ? 0 : 1;
+    removeHeadMotion(take, *report.headMotion);
+  }
+  if (options.spikes) {
+    report.spikes = detectSpikes(take, *options.spikes);
+    applyPatches(take, replaceSpikes(take, report.spikes));
+  }
+  if (options.fill) {
+    FillResult filled = fillGaps(take, *options.fill);
+    report.filledSamples = patchSamples(filled.patches);
+    report.gaps = std::move(filled.gaps);
+    applyPatches(take, std::move(filled.patches));
+  }
+  if (options.smooth) {
+    std::vector<SamplePatch> smoothed = smoothTake(take, *options.smooth);
+    report.smoothedSamples = patchSamples(smoothed);
+    applyPatches(take, std::move(smoothed));
+  }
+  if (report.headMotion && !options.keepStabilized)
+    restoreHeadMotion(take, *report.headMotion);
+  return report;
+}
+
+} // namespace mocap

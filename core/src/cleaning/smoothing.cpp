@@ -1,0 +1,224 @@
+#include "mocap/cleaning/smoothing.h"
+
+#include "mocap/cleaning/bspline_fit.h"
+#include "mocap/cleaning/butterworth_filter.h"
+#include "mocap/base/error.h"
+#include "mocap/base/number_text.h"
+#include "mocap/cleaning/savitzky_golay.h"
+#include "mocap/model/valid_runs.h"
+#include "mocap/cleaning/winter_cutoff.h"
+
+#include <cmath>
+#include <map>
+
+namespace mocap {
+
+namespace {
+
+using Trajectory = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+
+// Rows whose three coordinates are finite; column by column, so each test runs over contiguous memory.
+ValidMask finiteRows(const Eigen::Ref<const Trajectory>& xyz)
+{
+  return xyz.col(0).array().isFinite() && xyz.col(1).array().isFinite() && xyz.col(2).array().isFinite();
+}
+
+SmoothingSplineOptions splineOptions(const SmoothOptions& options)
+{
+  return {options.gcvsplDegree, options.gcvsplMode, options.errorVariance, options.cutoffHz};
+}
+
+// Smooths trajectories with one set of options, keeping B-spline factorisations by run length so
+// that a take whose markers share run lengths (the usual case) factorises once.
+class TrajectorySmoother
+{
+public:
+  TrajectorySmoother(const SmoothOptions& options, double frameRate)
+      : m_options(options), m_frameRate(frameRate)
+  {
+    checkSmoothOptions(options, frameRate);
+  }
+
+  // The samples a filter may use: valid ones with finite coordinates (a valid sample holding a
+  // NaN or infinity is treated as a gap and never enters a filter).
+  static ValidMask usableSamples(const Eigen::Ref<const Trajectory>& xyz,
+                                 const Eigen::Ref<const ValidMask>& valid)
+  {
+    if (xyz.rows() != valid.size())
+      throw InvalidArgument("smoothing: " + std::to_string(xyz.rows()) + " positions but " +
+                            std::to_string(valid.size()) + " validity flags");
+    return valid && finiteRows(xyz);
+  }
+
+  // Rows outside `usable` come back as they are.
+  Trajectory smooth(const Eigen::Ref<const Trajectory>& xyz, const ValidMask& usable)
+  {
+    Trajectory result = xyz;
+    double cutoff = m_options.cutoffHz;
+    if (m_options.method == SmoothMethod::Butterworth && m_options.winterCutoff)
+      cutoff = winterCutoff(xyz, usable, m_frameRate).cutoffHz;
+    const Eigen::Index minLength = minSmoothRunLength(m_options);
+    for (const ValidRun& run : findValidRuns(usable)) {
+      if (run.length < minLength)
+        continue;
+      const auto samples = xyz.middleRows(run.first, run.length);
+      auto out = result.middleRows(run.first, run.length);
+      switch (m_options.method) {
+      case SmoothMethod::BSpline: fitter(run.length).fit(samples, out); break;
+      case SmoothMethod::Butterworth: out = butterworthFilter(samples, m_frameRate, cutoff); break;
+      case SmoothMethod::Gcvspl:
+        out = smoothingSpline(samples, m_frameRate, splineOptions(m_options)).smoothed;
+        break;
+      case SmoothMethod::SavGol:
+        out = savitzkyGolay(samples, {m_options.savgolWindow, m_options.savgolDegree});
+        break;
+      }
+    }
+    return result;
+  }
+
+private:
+  const BSplineFitter& fitter(Eigen::Index length)
+  {
+    auto it = m_fitters.find(length);
+    if (it == m_fitters.end())
+      it = m_fitters.emplace(length, BSplineFitter(length, {m_options.degree, m_options.knotSpacing})).first;
+    return it->second;
+  }
+
+  SmoothOptions m_options;
+  double m_frameRate;
+  std::map<Eigen::Index, BSplineFitter> m_fitters;
+};
+
+std::string number(double value)
+{
+  std::string text;
+  appendNumber(text, value);
+  return text;
+}
+
+} // namespace
+
+std::optional<SmoothMethod> parseSmoothMethod(std::string_view name)
+{
+  for (SmoothMethod method :
+       {SmoothMethod::BSpline, SmoothMethod::Butterworth, SmoothMethod::Gcvspl, SmoothMethod::SavGol})
+    if (name == smoothMethodName(method))
+      return method;
+  return std::nullopt;
+}
+
+std::string_view smoothMethodName(SmoothMethod method)
+{
+  switch (method) {
+  case SmoothMethod::BSpline: return "bspline";
+  case SmoothMethod::Butterworth: return "butterworth";
+  case SmoothMethod::Gcvspl: return "gcvspl";
+  case SmoothMethod::SavGol: return "savgol";
+  }
+  return "bspline";
+}
+
+bool operator==(const SmoothOptions& a, const SmoothOptions& b)
+{
+  return a.method == b.method && a.degree == b.degree && a.knotSpacing == b.knotSpacing &&
+         a.cutoffHz == b.cutoffHz && a.winterCutoff == b.winterCutoff && a.gcvsplMode == b.gcvsplMode &&
+         a.gcvsplDegree == b.gcvsplDegree && a.errorVariance == b.errorVariance &&
+         a.savgolWindow == b.savgolWindow && a.savgolDegree == b.savgolDegree;
+}
+
+void checkSmoothOptions(const SmoothOptions& options, double frameRate)
+{
+  if (!std::isfinite(frameRate) || frameRate <= 0.0)
+    throw InvalidArgument("smoothing: frame rate must be finite and positive, not " +
+                          std::to_string(frameRate));
+  switch (options.method) {
+  case SmoothMethod::BSpline: checkBSplineFitOptions({options.degree, options.knotSpacing}); break;
+  case SmoothMethod::Butterworth:
+    if (!options.winterCutoff)
+      (void)butterworthLowPass(frameRate, options.cutoffHz);
+    break;
+  case SmoothMethod::Gcvspl:
+    checkSmoothingSplineOptions(splineOptions(options));
+    if (options.gcvsplMode == SmoothingSplineMode::Cutoff)
+      (void)smoothingSplineLambda(options.gcvsplDegree, frameRate, options.cutoffHz);
+    break;
+  case SmoothMethod::SavGol: checkSavitzkyGolayOptions({options.savgolWindow, options.savgolDegree}); break;
+  }
+}
+
+std::string describeSmoothOptions(const SmoothOptions& options)
+{
+  switch (options.method) {
+  case SmoothMethod::BSpline:
+    return "degree=" + std::to_string(options.degree) + " knot_spacing=" + number(options.knotSpacing);
+  case SmoothMethod::Butterworth:
+    return options.winterCutoff ? std::string("cutoff=winter") : "cutoff_hz=" + number(options.cutoffHz);
+  case SmoothMethod::Gcvspl: {
+    std::string text = std::string(options.gcvsplDegree == 5 ? "quintic" : "cubic") +
+                       " mode=" + std::string(smoothingSplineModeName(options.gcvsplMode));
+    if (options.gcvsplMode == SmoothingSplineMode::ErrorVariance)
+      text += " variance=" + number(options.errorVariance);
+    if (options.gcvsplMode == SmoothingSplineMode::Cutoff)
+      text += " cutoff_hz=" + number(options.cutoffHz);
+    return text;
+  }
+  case SmoothMethod::SavGol:
+    return "window=" + std::to_string(options.savgolWindow) +
+           " degree=" + std::to_string(options.savgolDegree);
+  }
+  return {};
+}
+
+Eigen::Index minSmoothRunLength(const SmoothOptions& options)
+{
+  switch (options.method) {
+  case SmoothMethod::BSpline: return minBSplineRunLength(options.degree);
+  case SmoothMethod::Butterworth: return kMinButterworthRunLength;
+  case SmoothMethod::Gcvspl: return minSmoothingSplineRunLength(options.gcvsplDegree);
+  case SmoothMethod::SavGol: return options.savgolWindow;
+  }
+  return 0;
+}
+
+Eigen::Matrix<double, Eigen::Dynamic, 3>
+smoothTrajectory(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& xyz,
+                 const Eigen::Ref<const ValidMask>& valid, double frameRate, const SmoothOptions& options)
+{
+  TrajectorySmoother smoother(options, frameRate);
+  return smoother.smooth(xyz, TrajectorySmoother::usableSamples(xyz, valid));
+}
+
+std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options, const JobControl& job)
+{
+  TrajectorySmoother smoother(options, take.frameRate());
+  std::vector<SamplePatch> patches;
+  patches.reserve(static_cast<std::size_t>(take.markerCount()));
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
+    const auto xyz = take.trajectory(m);
+    const ValidMask usable = TrajectorySmoother::usableSamples(xyz, take.valid().col(m));
+    const Trajectory smoothed = smoother.smooth(xyz, usable);
+    // Column-wise comparison (contiguous) rather than row by row.
+    const ValidMask changed = usable && ((smoothed.col(0).array() != xyz.col(0).array()) ||
+                                         (smoothed.col(1).array() != xyz.col(1).array()) ||
+                                         (smoothed.col(2).array() != xyz.col(2).array()));
+    std::vector<Eigen::Index> frames;
+    frames.reserve(static_cast<std::size_t>(changed.count()));
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      if (changed(f))
+        frames.push_back(f);
+    SamplePatch patch;
+    patch.marker = m;
+    patch.positions = smoothed(frames, Eigen::all);
+    patch.valid = ValidMask::Constant(patch.positions.rows(), true);
+    patch.residuals = take.residuals().col(m)(frames);
+    patch.states.assign(frames.size(), SampleState::Smoothed);
+    patch.frames = std::move(frames);
+    patches.push_back(std::move(patch));
+  }
+  return patches;
+}
+
+} // namespace mocap

@@ -1,0 +1,625 @@
+#include "mocap/cleaning/spike_detection.h"
+
+#include "mocap/base/error.h"
+#include "mocap/base/length_unit.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <string>
+
+namespace mocap {
+
+namespace {
+
+using Trajectory = Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>;
+
+// Median length of a 3-D vector of independent unit normals: turns a median residual length
+// into a per-axis standard deviation.
+constexpr double kMedianLengthPerSigma = 1.5382;
+
+struct Run
+{
+  Eigen::Index first = 0;
+  Eigen::Index last = 0;  // inclusive
+  [[nodiscard]] Eigen::Index size() const { return last - first + 1; }
+};
+
+std::vector<Run> validRuns(const Eigen::Ref<const ValidMask>& valid)
+{
+  std::vector<Run> runs;
+  const Eigen::Index frames = valid.size();
+  Eigen::Index f = 0;
+  while (f < frames) {
+    if (!valid(f)) {
+      ++f;
+      continue;
+    }
+    const Eigen::Index first = f;
+    while (f < frames && valid(f))
+      ++f;
+    runs.push_back({first, f - 1});
+  }
+  return runs;
+}
+
+// Median of [begin, end) of a sorted range; the mean of the two middle values for an even count.
+double sortedMedian(const double* begin, const double* end)
+{
+  const auto n = end - begin;
+  return n % 2 == 1 ? begin[n / 2] : 0.5 * (begin[n / 2 - 1] + begin[n / 2]);
+}
+
+// Compare-exchange without a branch (minsd/maxsd): sorting networks do not stall on mispredictions.
+void order(double& a, double& b)
+{
+  const double low = std::min(a, b);
+  b = std::max(a, b);
+  a = low;
+}
+
+// Medians of 6 and 7 values through optimal sorting networks (12 and 16 compare-exchanges).
+double median6(double* v)
+{
+  order(v[0], v[5]), order(v[1], v[3]), order(v[2], v[4]);
+  order(v[1], v[2]), order(v[3], v[4]);
+  order(v[0], v[3]), order(v[2], v[5]);
+  order(v[0], v[1]), order(v[2], v[3]), order(v[4], v[5]);
+  order(v[1], v[2]), order(v[3], v[4]);
+  return 0.5 * (v[2] + v[3]);
+}
+
+double median7(double* v)
+{
+  order(v[0], v[6]), order(v[2], v[3]), order(v[4], v[5]);
+  order(v[0], v[2]), order(v[1], v[4]), order(v[3], v[6]);
+  order(v[0], v[1]), order(v[2], v[5]), order(v[3], v[4]);
+  order(v[1], v[2]), order(v[4], v[6]);
+  order(v[2], v[3]), order(v[4], v[5]);
+  order(v[1], v[2]), order(v[3], v[4]), order(v[5], v[6]);
+  return v[3];
+}
+
+// Median of 11 values: the comparators of Batcher's odd-even merge sort (16 inputs) that reach
+// the middle output, 32 compare-exchanges.
+double median11(double* v)
+{
+  order(v[0], v[1]), order(v[2], v[3]), order(v[4], v[5]), order(v[6], v[7]), order(v[8], v[9]);
+  order(v[0], v[2]), order(v[1], v[3]), order(v[4], v[6]), order(v[5], v[7]), order(v[8], v[10]);
+  order(v[1], v[2]), order(v[5], v[6]), order(v[9], v[10]);
+  order(v[0], v[4]), order(v[1], v[5]), order(v[2], v[6]), order(v[3], v[7]);
+  order(v[2], v[4]), order(v[3], v[5]);
+  order(v[1], v[2]), order(v[3], v[4]), order(v[5], v[6]), order(v[9], v[10]);
+  order(v[0], v[8]), order(v[1], v[9]), order(v[2], v[10]);
+  order(v[4], v[8]), order(v[5], v[9]), order(v[6], v[10]);
+  order(v[3], v[5]), order(v[6], v[8]);
+  order(v[5], v[6]);
+  return v[5];
+}
+
+// Median of a few values (reorders them): insertion sort beats selection below ~16 values.
+double smallMedian(double* begin, double* end)
+{
+  for (double* a = begin + 1; a < end; ++a) {
+    const double value = *a;
+    double* b = a;
+    for (; b > begin && *(b - 1) > value; --b)
+      *b = *(b - 1);
+    *b = value;
+  }
+  return sortedMedian(begin, end);
+}
+
+// The window of `width` samples around `i` inside `run`, shifted inward at the run's ends so it
+// keeps its width (a sample at a run end is judged by extrapolation from one side).
+Run windowAround(const Run& run, Eigen::Index i, Eigen::Index halfWidth)
+{
+  const Eigen::Index width = 2 * halfWidth + 1;
+  if (run.size() <= width)
+    return run;
+  const Eigen::Index first = std::clamp(i - halfWidth, run.first, run.last - width + 1);
+  return {first, first + width - 1};
+}
+
+} // namespace
+
+void checkSpikeOptions(const SpikeOptions& options)
+{
+  if (!(std::isfinite(options.factor) && options.factor > 0.0))
+    throw InvalidArgument("spike factor must be a finite number > 0, not " + std::to_string(options.factor));
+  if (!(std::isfinite(options.threshold) && options.threshold > 0.0))
+    throw InvalidArgument("spike threshold must be a finite number > 0, not " +
+                          std::to_string(options.threshold));
+  if (!(std::isfinite(options.noiseFloor) && options.noiseFloor >= 0.0))
+    throw InvalidArgument("spike noise floor must be a finite number >= 0, not " +
+                          std::to_string(options.noiseFloor));
+  if (options.maxPasses < 1 || options.maxPasses > 100)
+    throw InvalidArgument("spike detection passes must be in 1..100, not " + std::to_string(options.maxPasses));
+}
+
+namespace {
+
+// Eqs 8-9 on one run P_0..P_n.
+void detectPaper(const Trajectory& xyz, const Run& run, double factor, std::vector<Eigen::Index>& flags)
+{
+  if (run.size() < 3)
+    return;
+  const Eigen::Index n = run.size() - 1;  // segments
+  Eigen::VectorXd segment(n);
+  for (Eigen::Index s = 0; s < n; ++s)
+    segment(s) = (xyz.row(run.first + s + 1) - xyz.row(run.first + s)).norm();
+  const double k = segment.sum() / static_cast<double>(n);  // eq 8
+  if (!(k > 0.0))
+    return;  // a still marker: no segment can stand out
+  const double limit = factor * k;
+  for (Eigen::Index i = 1; i < n; ++i)
+    if (segment(i - 1) >= limit && segment(i) >= limit)  // eq 9
+      flags.push_back(run.first + i);
+}
+
+// The robust detector's fixed windows and cut-offs, chosen on the three real takes named in the
+// header: a wider fit window follows fast facial motion worse, a narrower one keeps too few
+// samples once a block of 3 is left out.
+constexpr Eigen::Index kLineHalfWidth = 3;       // stage 1: 7 samples; a block of 3 cannot move a median
+constexpr Eigen::Index kQuadraticHalfWidth = 4;  // stage 2: 9 samples
+constexpr Eigen::Index kScaleHalfWidth = 5;      // robust scale: median over 11 samples
+constexpr double kSuspectThreshold = 3.0;        // stage 1 cut-off, in robust standard deviations
+constexpr std::size_t kMaxLeftOut = 4;           // suspects left out of one stage-2 fit
+constexpr double kRunEndScaleWeight = 0.5;       // see runEndSigma
+constexpr Eigen::Index kMinRobustRun = 5;        // shorter runs have too few samples to judge one
+
+// Buffers reused across the runs of a trajectory.
+struct RobustWork
+{
+  Eigen::VectorXd lineResidual;
+  Eigen::VectorXd fitResidual;
+  Eigen::VectorXd sigma;
+  std::vector<char> suspect;
+};
+
+// Stage 1: a local line fitted by medians per axis over 7 samples (slope: median of the first
+// differences; level at i: median of the samples detrended to i). Up to 3 bad samples in the
+// window cannot move it, so they stand out, but it rounds off sharp turns, which stage 2 undoes.
+void medianLineResiduals(const Trajectory& xyz, const Run& run, Eigen::VectorXd& r)
+{
+  std::array<double, 2 * kLineHalfWidth + 1> values{};
+  for (Eigen::Index i = run.first; i <= run.last; ++i) {
+    const Run w = windowAround(run, i, kLineHalfWidth);
+    const auto count = static_cast<std::size_t>(w.size());
+    Eigen::RowVector3d level;
+    for (Eigen::Index c = 0; c < 3; ++c) {
+      for (Eigen::Index j = w.first; j < w.last; ++j)
+        values[static_cast<std::size_t>(j - w.first)] = xyz(j + 1, c) - xyz(j, c);
+      const double slope =
+          count == 7 ? median6(values.data()) : smallMedian(values.data(), values.data() + count - 1);
+      for (Eigen::Index j = w.first; j <= w.last; ++j)
+        values[static_cast<std::size_t>(j - w.first)] = xyz(j, c) - slope * static_cast<double>(j - i);
+      level(c) = count == 7 ? median7(values.data()) : smallMedian(values.data(), values.data() + count);
+    }
+    r(i - run.first) = (xyz.row(i) - level).norm();
+  }
+}
+
+// Tricube-weighted quadratic fits over a window of 9 samples that leave out the sample at `centre`
+// (window index 0..8; off the middle only near a run end). The sums and the prediction filter
+// without suspects depend on nothing but the centre, so they are computed once.
+constexpr int kWindow = 2 * kQuadraticHalfWidth + 1;
+
+struct LeaveOneOutFit
+{
+  std::array<double, kWindow> weight{};              // 0 at the centre
+  std::array<Eigen::Vector3d, kWindow> phi{};        // (1, t, t²), t = index − centre
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();  // Σ w φφ'
+  Eigen::Matrix3d noise = Eigen::Matrix3d::Zero();   // Σ w² φφ'
+  std::array<double, kWindow> filter{};              // prediction = Σ filter · sample
+  double variance = 0.0;                             // of the prediction, for unit noise
+};
+
+double tricube(double u)
+{
+  const double a = 1.0 - u * u * u;
+  return a * a * a;
+}
+
+// The value at t = 0 of the weighted least-squares quadratic with these sums is g'·Σ wφx with
+// g = N⁻¹e0, and its variance for unit noise is g'Qg (sandwich form: the weights are not inverse
+// variances). Returns g.
+Eigen::Vector3d leaveOutGain(const Eigen::Matrix3d& n)
+{
+  // First column of the inverse of the symmetric 3×3 N by cofactors: a fixed handful of flops.
+  const Eigen::Vector3d cofactor(n(1, 1) * n(2, 2) - n(1, 2) * n(1, 2), n(0, 2) * n(1, 2) - n(0, 1) * n(2, 2),
+                                 n(0, 1) * n(1, 2) - n(0, 2) * n(1, 1));
+  return cofactor / n.col(0).dot(cofactor);
+}
+
+const std::array<LeaveOneOutFit, kWindow>& leaveOneOutFits()
+{
+  static const std::array<LeaveOneOutFit, kWindow> fits = [] {
+    std::array<LeaveOneOutFit, kWindow> all{};
+    for (int centre = 0; centre < kWindow; ++centre) {
+      LeaveOneOutFit& fit = all[static_cast<std::size_t>(centre)];
+      const double reach = static_cast<double>(std::max(centre, kWindow - 1 - centre) + 1);
+      for (int k = 0; k < kWindow; ++k) {
+        const auto kk = static_cast<std::size_t>(k);
+        const double t = static_cast<double>(k - centre);
+        fit.phi[kk] = Eigen::Vector3d(1.0, t, t * t);
+        fit.weight[kk] = k == centre ? 0.0 : tricube(std::abs(t) / reach);
+        fit.normal += fit.weight[kk] * fit.phi[kk] * fit.phi[kk].transpose();
+        fit.noise += fit.weight[kk] * fit.weight[kk] * fit.phi[kk] * fit.phi[kk].transpose();
+      }
+      const Eigen::Vector3d g = leaveOutGain(fit.normal);
+      for (std::size_t k = 0; k < fit.filter.size(); ++k)
+        fit.filter[k] = fit.weight[k] * g.dot(fit.phi[k]);
+      fit.variance = g.dot(fit.noise * g);
+    }
+    return all;
+  }();
+  return fits;
+}
+
+// Prediction of sample `i` from the samples of window `w` that are neither `i` nor in `leftOut`
+// (at least 3 remain), by a tricube-weighted quadratic; returns the prediction's variance for unit
+// noise. For the windows of runs shorter than 9 samples.
+double predictFromScratch(const Trajectory& xyz, const Run& w, Eigen::Index i, const Eigen::Index* leftOut,
+                          std::size_t leftOutCount, Eigen::RowVector3d& value)
+{
+  const double reach = static_cast<double>(std::max(i - w.first, w.last - i) + 1);
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d noise = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d rhs = Eigen::Matrix3d::Zero();
+  for (Eigen::Index j = w.first; j <= w.last; ++j) {
+    if (j == i || std::find(leftOut, leftOut + leftOutCount, j) != leftOut + leftOutCount)
+      continue;
+    const double t = static_cast<double>(j - i);
+    const double weight = tricube(std::abs(t) / reach);
+    const Eigen::Vector3d phi(1.0, t, t * t);
+    normal += weight * phi * phi.transpose();
+    noise += weight * weight * phi * phi.transpose();
+    rhs += weight * phi * xyz.row(j);
+  }
+  const Eigen::Vector3d g = leaveOutGain(normal);
+  value = g.transpose() * rhs;
+  return g.dot(noise * g);
+}
+
+// Stage 2 for sample `i` and window `w` (9 samples, or the whole of a shorter run): the sample
+// predicted by a tricube-weighted local quadratic without itself and without the (at most 4)
+// worst stage-1 suspects of the window. The prediction error is divided by its standard
+// deviation relative to the noise, sqrt(1 + var(prediction)), so extrapolations compare fairly.
+double predictionResidual(const Trajectory& xyz, const Run& run, Eigen::Index i, const Run& w,
+                          const RobustWork& work)
+{
+  std::array<Eigen::Index, kWindow> leftOut{};
+  // Keep at least 3 samples, enough for the quadratic.
+  const auto others = static_cast<std::size_t>(w.size() - 1);
+  const std::size_t maxLeftOut = std::min(kMaxLeftOut, others > 3 ? others - 3 : 0);
+  std::size_t leftOutCount = 0;
+  for (Eigen::Index j = w.first; j <= w.last; ++j)
+    if (j != i && work.suspect[static_cast<std::size_t>(j - run.first)])
+      leftOut[leftOutCount++] = j;
+  if (leftOutCount > maxLeftOut) {
+    const auto byResidual = [&](Eigen::Index a, Eigen::Index b) {
+      return work.lineResidual(a - run.first) > work.lineResidual(b - run.first);
+    };
+    std::partial_sort(leftOut.begin(), leftOut.begin() + static_cast<std::ptrdiff_t>(maxLeftOut),
+                      leftOut.begin() + static_cast<std::ptrdiff_t>(leftOutCount), byResidual);
+    leftOutCount = maxLeftOut;
+  }
+  Eigen::RowVector3d value = Eigen::RowVector3d::Zero();
+  double variance = 0.0;
+  if (w.size() < kWindow) {
+    variance = predictFromScratch(xyz, w, i, leftOut.data(), leftOutCount, value);
+  } else {
+    const LeaveOneOutFit& fit = leaveOneOutFits()[static_cast<std::size_t>(i - w.first)];
+    if (leftOutCount == 0) {
+      for (std::size_t k = 0; k < fit.filter.size(); ++k)
+        value += fit.filter[k] * xyz.row(w.first + static_cast<Eigen::Index>(k));
+      variance = fit.variance;
+    } else {
+      // Remove the left-out samples from the precomputed sums (at least 4 samples remain).
+      Eigen::Matrix3d normal = fit.normal;
+      Eigen::Matrix3d noise = fit.noise;
+      std::array<double, kWindow> weight = fit.weight;
+      for (std::size_t l = 0; l < leftOutCount; ++l) {
+        const auto k = static_cast<std::size_t>(leftOut[l] - w.first);
+        const Eigen::Matrix3d outer = fit.phi[k] * fit.phi[k].transpose();
+        normal -= weight[k] * outer;
+        noise -= weight[k] * weight[k] * outer;
+        weight[k] = 0.0;
+      }
+      const Eigen::Vector3d g = leaveOutGain(normal);
+      for (std::size_t k = 0; k < weight.size(); ++k)
+        if (weight[k] != 0.0)
+          value += (weight[k] * g.dot(fit.phi[k])) * xyz.row(w.first + static_cast<Eigen::Index>(k));
+      variance = g.dot(noise * g);
+    }
+  }
+  return (xyz.row(i) - value).norm() / std::sqrt(1.0 + variance);
+}
+
+// Stage 2 for every sample of the run, each with its window shifted inward at the run ends.
+void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
+{
+  for (Eigen::Index i = run.first; i <= run.last; ++i)
+    work.fitResidual(i - run.first) =
+        predictionResidual(xyz, run, i, windowAround(run, i, kQuadraticHalfWidth), work);
+}
+
+// Within 4 samples of a run end the prediction extrapolates, and in fast motion its error grows
+// far beyond that of the interior samples the local scale comes from. So the same lopsided
+// prediction is also made for the sample's (up to 8) inward neighbours, and the median of those
+// residuals, at half weight, is a floor for its scale. Full weight leaves clean run ends alone in
+// any motion but hides more real spikes next to gaps; half weight keeps fast swings of a few mm per
+// frame unflagged while losing few spikes (measured on the takes named in the header).
+void runEndSigma(const Trajectory& xyz, const Run& run, RobustWork& work)
+{
+  const Eigen::Index n = run.size();
+  const Eigen::Index references = std::min<Eigen::Index>(kWindow - 1, n - kWindow);
+  if (references < 1)
+    return;
+  std::array<double, kWindow - 1> residual{};
+  for (Eigen::Index offset = 0; offset < kQuadraticHalfWidth; ++offset) {
+    for (const bool atStart : {true, false}) {
+      const Eigen::Index i = atStart ? run.first + offset : run.last - offset;
+      for (Eigen::Index k = 1; k <= references; ++k) {
+        const Eigen::Index j = atStart ? i + k : i - k;
+        const Run w = atStart ? Run{run.first + k, run.first + k + kWindow - 1}
+                              : Run{run.last - k - kWindow + 1, run.last - k};
+        residual[static_cast<std::size_t>(k - 1)] = predictionResidual(xyz, run, j, w, work);
+      }
+      const double scale = kRunEndScaleWeight * smallMedian(residual.data(), residual.data() + references) /
+                           kMedianLengthPerSigma;
+      double& sigma = work.sigma(i - run.first);
+      sigma = std::max(sigma, scale);
+    }
+  }
+}
+
+// Robust standard deviation around each sample: the median of `r` over 11 samples (shifted
+// inward at the ends) divided by the median length of a 3-D unit normal vector, at least `floor`.
+void localSigma(const Eigen::VectorXd& r, double floor, Eigen::VectorXd& sigma)
+{
+  constexpr Eigen::Index width = 2 * kScaleHalfWidth + 1;
+  const auto toSigma = [floor](double median) { return std::max(floor, median / kMedianLengthPerSigma); };
+  const Eigen::Index n = r.size();
+  std::array<double, width> values{};
+  if (n < width) {  // one window for the whole run
+    std::copy(r.data(), r.data() + n, values.data());
+    sigma.setConstant(n, toSigma(smallMedian(values.data(), values.data() + n)));
+    return;
+  }
+  sigma.resize(n);
+  for (Eigen::Index centre = kScaleHalfWidth; centre < n - kScaleHalfWidth; ++centre) {
+    std::copy(r.data() + centre - kScaleHalfWidth, r.data() + centre + kScaleHalfWidth + 1, values.data());
+    sigma(centre) = toSigma(median11(values.data()));
+  }
+  sigma.head(kScaleHalfWidth).setConstant(sigma(kScaleHalfWidth));
+  sigma.tail(kScaleHalfWidth).setConstant(sigma(n - 1 - kScaleHalfWidth));
+}
+
+void detectRobust(const Trajectory& xyz, const Run& run, double threshold, double floor, RobustWork& work,
+                  std::vector<Eigen::Index>& flags)
+{
+  const Eigen::Index n = run.size();
+  if (n < kMinRobustRun)
+    return;
+  work.lineResidual.resize(n);
+  work.fitResidual.resize(n);
+  work.suspect.assign(static_cast<std::size_t>(n), 0);
+  medianLineResiduals(xyz, run, work.lineResidual);
+  localSigma(work.lineResidual, floor, work.sigma);
+  for (Eigen::Index i = 0; i < n; ++i)
+    work.suspect[static_cast<std::size_t>(i)] =
+        work.lineResidual(i) > kSuspectThreshold * work.sigma(i) ? 1 : 0;
+  quadraticResiduals(xyz, run, work);
+  localSigma(work.fitResidual, floor, work.sigma);
+  runEndSigma(xyz, run, work);
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (work.fitResidual(i) > threshold * work.sigma(i))
+      flags.push_back(run.first + i);
+}
+
+// Least-squares line through (t, p) evaluated at `at`; a single point is held constant.
+Eigen::RowVector3d extrapolate(const std::vector<Eigen::Index>& frames, const Trajectory& xyz,
+                               Eigen::Index at)
+{
+  const auto count = static_cast<double>(frames.size());
+  double meanT = 0.0;
+  Eigen::RowVector3d meanP = Eigen::RowVector3d::Zero();
+  for (Eigen::Index f : frames) {
+    meanT += static_cast<double>(f);
+    meanP += xyz.row(f);
+  }
+  meanT /= count;
+  meanP /= count;
+  double stt = 0.0;
+  Eigen::RowVector3d stp = Eigen::RowVector3d::Zero();
+  for (Eigen::Index f : frames) {
+    const double dt = static_cast<double>(f) - meanT;
+    stt += dt * dt;
+    stp += dt * (xyz.row(f) - meanP);
+  }
+  if (stt <= 0.0)
+    return meanP;
+  return meanP + (static_cast<double>(at) - meanT) * (stp / stt);
+}
+
+// The replacements of replaceSpikes for one trajectory: `flagged` holds valid frames, ascending
+// and unique; appends the replaced frames and their positions. O(#flags · log #flags).
+void replaceFlagged(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
+                    const std::vector<Eigen::Index>& flagged, std::vector<Eigen::Index>& frames,
+                    std::vector<Eigen::RowVector3d>& positions)
+{
+  const Eigen::Index frameCount = xyz.rows();
+  auto isFlagged = [&](Eigen::Index f) { return std::binary_search(flagged.begin(), flagged.end(), f); };
+  auto usable = [&](Eigen::Index f) { return f >= 0 && f < frameCount && valid(f) && !isFlagged(f); };
+  std::size_t i = 0;
+  while (i < flagged.size()) {
+    // A block of consecutive flagged frames [first, last].
+    const Eigen::Index first = flagged[i];
+    Eigen::Index last = first;
+    while (i + 1 < flagged.size() && flagged[i + 1] == last + 1)
+      last = flagged[++i];
+    ++i;
+    const bool left = usable(first - 1);
+    const bool right = usable(last + 1);
+    std::vector<Eigen::Index> support;
+    if (!left && right) {
+      for (Eigen::Index f = last + 1; f < frameCount && valid(f) && support.size() < 4; ++f)
+        if (!isFlagged(f))
+          support.push_back(f);
+    } else if (left && !right) {
+      for (Eigen::Index f = first - 1; f >= 0 && valid(f) && support.size() < 4; --f)
+        if (!isFlagged(f))
+          support.push_back(f);
+    }
+    if (!left && !right)
+      continue;  // the block is a whole run: nothing to rebuild it from
+    for (Eigen::Index f = first; f <= last; ++f) {
+      frames.push_back(f);
+      if (left && right) {
+        const double u = static_cast<double>(f - first + 1) / static_cast<double>(last - first + 2);
+        positions.push_back((1.0 - u) * xyz.row(first - 1) + u * xyz.row(last + 1));  // eq 10 for one sample
+      } else {
+        positions.push_back(extrapolate(support, xyz, f));
+      }
+    }
+  }
+}
+
+// One pass of the detector over every valid run of a trajectory whose samples are checked.
+std::vector<Eigen::Index> detectOnce(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
+                                     const SpikeOptions& options, double floor)
+{
+  std::vector<Eigen::Index> flags;
+  RobustWork work;
+  for (const Run& run : validRuns(valid)) {
+    if (options.method == SpikeMethod::Paper)
+      detectPaper(xyz, run, options.factor, flags);
+    else
+      detectRobust(xyz, run, options.threshold, floor, work, flags);
+  }
+  return flags;
+}
+
+std::vector<Eigen::Index> detectIn(const Trajectory& xyz, const Eigen::Ref<const ValidMask>& valid,
+                                   const SpikeOptions& options, double floor)
+{
+  if (xyz.rows() != valid.size())
+    throw InvalidArgument("trajectory has " + std::to_string(xyz.rows()) + " frames but its validity mask " +
+                          std::to_string(valid.size()));
+  for (Eigen::Index f = 0; f < xyz.rows(); ++f)
+    if (valid(f) && !xyz.row(f).allFinite())
+      throw InvalidArgument("valid sample at frame " + std::to_string(f) + " is not a finite position");
+  std::vector<Eigen::Index> flags = detectOnce(xyz, valid, options, floor);
+  if (options.method == SpikeMethod::Paper)
+    return flags;  // eq 9 as written: one pass
+  // A spike can hide a smaller one beside it (it widens the local scale); once it is replaced,
+  // the neighbour stands out. So the detector judges the trajectory again with its flags so far
+  // replaced exactly as replaceSpikes will, until a pass adds nothing: repairing the flags and
+  // detecting again with the same settings then finds nothing new.
+  Eigen::Matrix<double, Eigen::Dynamic, 3> repaired;
+  std::vector<Eigen::Index> frames;
+  std::vector<Eigen::RowVector3d> positions;
+  for (int pass = 1; pass < options.maxPasses && !flags.empty(); ++pass) {
+    repaired = xyz;
+    frames.clear();
+    positions.clear();
+    replaceFlagged(xyz, valid, flags, frames, positions);
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      repaired.row(frames[k]) = positions[k];
+    const std::vector<Eigen::Index> again = detectOnce(repaired, valid, options, floor);
+    std::vector<Eigen::Index> merged;
+    merged.reserve(flags.size() + again.size());
+    std::set_union(flags.begin(), flags.end(), again.begin(), again.end(), std::back_inserter(merged));
+    if (merged.size() == flags.size())
+      break;
+    flags = std::move(merged);
+  }
+  return flags;
+}
+
+} // namespace
+
+std::optional<SpikeMethod> parseSpikeMethod(std::string_view name)
+{
+  if (name == "paper")
+    return SpikeMethod::Paper;
+  if (name == "robust")
+    return SpikeMethod::Robust;
+  return std::nullopt;
+}
+
+std::string_view spikeMethodName(SpikeMethod method)
+{
+  return method == SpikeMethod::Paper ? "paper" : "robust";
+}
+
+std::vector<Eigen::Index> detectSpikes(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& xyz,
+                                       const Eigen::Ref<const ValidMask>& valid, const SpikeOptions& options)
+{
+  checkSpikeOptions(options);
+  return detectIn(xyz, valid, options, options.noiseFloor);
+}
+
+std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& options, const JobControl& job)
+{
+  checkSpikeOptions(options);
+  const double floor = options.noiseFloor / millimetresPer(take.units());
+  std::vector<SpikeFlag> flags;
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
+    std::vector<Eigen::Index> frames;
+    try {
+      frames = detectIn(take.trajectory(m), take.valid().col(m), options, floor);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("marker " + take.label(m) + ": " + e.what());
+    }
+    for (Eigen::Index f : frames)
+      flags.push_back({m, f});
+  }
+  return flags;
+}
+
+std::vector<SamplePatch> replaceSpikes(const Take& take, const std::vector<SpikeFlag>& flags)
+{
+  for (const SpikeFlag& flag : flags)
+    if (flag.marker < 0 || flag.marker >= take.markerCount() || flag.frame < 0 ||
+        flag.frame >= take.frameCount())
+      throw InvalidArgument("spike flag (marker " + std::to_string(flag.marker) + ", frame " +
+                            std::to_string(flag.frame) + ") lies outside the take");
+  std::vector<SpikeFlag> sorted;
+  sorted.reserve(flags.size());
+  for (const SpikeFlag& flag : flags)
+    if (take.isValid(flag.frame, flag.marker))
+      sorted.push_back(flag);
+  std::sort(sorted.begin(), sorted.end(), [](const SpikeFlag& a, const SpikeFlag& b) {
+    return a.marker != b.marker ? a.marker < b.marker : a.frame < b.frame;
+  });
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+
+  std::vector<SamplePatch> patches;
+  std::size_t b = 0;
+  std::vector<Eigen::Index> flagged;
+  while (b < sorted.size()) {
+    const Eigen::Index marker = sorted[b].marker;
+    flagged.clear();
+    for (; b < sorted.size() && sorted[b].marker == marker; ++b)
+      flagged.push_back(sorted[b].frame);
+    std::vector<Eigen::Index> frames;
+    std::vector<Eigen::RowVector3d> positions;
+    replaceFlagged(take.trajectory(marker), take.valid().col(marker), flagged, frames, positions);
+    if (!frames.empty()) {
+      Eigen::Matrix<double, Eigen::Dynamic, 3> matrix(static_cast<Eigen::Index>(positions.size()), 3);
+      for (std::size_t r = 0; r < positions.size(); ++r)
+        matrix.row(static_cast<Eigen::Index>(r)) = positions[r];
+      patches.push_back(makePatch(marker, std::move(frames), std::move(matrix), SampleState::Edited));
+    }
+  }
+  return patches;
+}
+
+} // namespace mocap

@@ -1,0 +1,113 @@
+#include "mocap/deform/retarget.h"
+
+#include "mocap/base/error.h"
+#include "mocap/cleaning/head_stabilization.h"
+
+#include <cmath>
+#include <string>
+
+namespace mocap {
+
+std::string_view retargetScaleName(RetargetScale scale)
+{
+  return scale == RetargetScale::Uniform ? "uniform" : "per-axis";
+}
+
+std::optional<RetargetScale> parseRetargetScale(std::string_view name)
+{
+  if (name == "uniform")
+    return RetargetScale::Uniform;
+  if (name == "per-axis")
+    return RetargetScale::PerAxis;
+  return std::nullopt;
+}
+
+Retarget fitRetarget(const Eigen::Ref<const PointSet>& neutral, const Eigen::Ref<const PointSet>& bound,
+                     RetargetScale scale)
+{
+  const Similarity similarity = fitSimilarity(neutral, bound);
+  Retarget retarget;
+  retarget.rotation = similarity.rotation;
+  retarget.uniformScale = similarity.scale;
+  retarget.axisScale.setConstant(similarity.scale);
+  if (scale == RetargetScale::PerAxis) {
+    const PointSet rotated = neutral * similarity.rotation.transpose();
+    const Eigen::RowVector3d rotatedSpread = (rotated.rowwise() - rotated.colwise().mean()).colwise().norm();
+    const Eigen::RowVector3d boundSpread = (bound.rowwise() - bound.colwise().mean()).colwise().norm();
+    for (int a = 0; a < 3; ++a)
+      if (rotatedSpread(a) > 1e-3 * rotatedSpread.maxCoeff() && boundSpread(a) > 0.0)
+        retarget.axisScale(a) = boundSpread(a) / rotatedSpread(a);
+  }
+  return retarget;
+}
+
+PointSet markerPositions(const Take& take, Eigen::Index frame, const std::vector<Eigen::Index>& markers)
+{
+  PointSet positions(static_cast<Eigen::Index>(markers.size()), 3);
+  for (std::size_t i = 0; i < markers.size(); ++i)
+    positions.row(static_cast<Eigen::Index>(i)) = take.position(frame, markers[i]).transpose();
+  return positions;
+}
+
+Eigen::Index chooseNeutralFrame(const Take& take, const std::vector<Eigen::Index>& markers,
+                                std::optional<long long> frameNumber)
+{
+  const auto complete = [&](Eigen::Index f) {
+    for (const Eigen::Index m : markers)
+      if (!take.isValid(f, m) || !take.position(f, m).allFinite())
+        return false;
+    return true;
+  };
+  if (frameNumber) {
+    const long long index = *frameNumber - take.firstFrame();
+    if (index < 0 || index >= take.frameCount())
+      throw InvalidArgument("neutral frame " + std::to_string(*frameNumber) + " is outside the take (frames " +
+                            std::to_string(take.firstFrame()) + "…" +
+                            std::to_string(take.firstFrame() + take.frameCount() - 1) + ")");
+    const auto frame = static_cast<Eigen::Index>(index);
+    for (const Eigen::Index m : markers)
+      if (!take.isValid(frame, m))
+        throw InvalidArgument("neutral frame " + std::to_string(*frameNumber) + ": marker " + take.label(m) +
+                              " is missing there");
+    return frame;
+  }
+  for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+    if (complete(f))
+      return f;
+  throw InvalidArgument("no frame has every bound marker; give --neutral FRAME");
+}
+
+std::vector<Eigen::Index> stabilizeTake(Take& take, const std::vector<std::string>& labels)
+{
+  if (labels.empty())
+    return {};
+  std::vector<Eigen::Index> reference = markerIndices(take, labels);
+  removeHeadMotion(take, estimateHeadMotion(take, reference));
+  return reference;
+}
+
+void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& markers, Eigen::Index neutralFrame,
+                          const Retarget& retarget, Eigen::Index frame, PointSet& displacements,
+                          std::vector<bool>& present)
+{
+  displacements.setZero(static_cast<Eigen::Index>(markers.size()), 3);
+  present.assign(markers.size(), false);
+  for (std::size_t i = 0; i < markers.size(); ++i) {
+    const Eigen::Index m = markers[i];
+    const Eigen::Vector3d delta = take.position(frame, m) - take.position(neutralFrame, m);
+    if (!take.isValid(frame, m) || !delta.allFinite())
+      continue;
+    present[i] = true;
+    displacements.row(static_cast<Eigen::Index>(i)) = retarget.map(delta).transpose();
+  }
+}
+
+PointSet boundPositions(const Eigen::Ref<const MeshVertices>& vertices, const std::vector<MeshPoint>& points)
+{
+  PointSet positions(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    positions.row(static_cast<Eigen::Index>(i)) = points[i].on(vertices).transpose();
+  return positions;
+}
+
+} // namespace mocap

@@ -1,0 +1,96 @@
+#include "mocap/io/take_io.h"
+
+#include "mocap/io/bvh_writer.h"
+#include "mocap/io/c3d_reader.h"
+#include "mocap/io/c3d_writer.h"
+#include "mocap/io/csv_writer.h"
+#include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
+#include "mocap/model/provenance.h"
+#include "mocap/io/trc_io.h"
+
+namespace mocap {
+
+TakeFormat formatFromPath(const std::filesystem::path& path)
+{
+  const std::string ext = lowerExtension(path);
+  if (ext == "c3d")
+    return TakeFormat::C3d;
+  if (ext == "trc")
+    return TakeFormat::Trc;
+  if (ext == "csv")
+    return TakeFormat::Csv;
+  if (ext == "bvh")
+    return TakeFormat::Bvh;
+  throw InvalidArgument(path.string() + ": unknown file type '" + ext + "' (expected .c3d, .trc, .csv or .bvh)");
+}
+
+std::string_view formatName(TakeFormat format)
+{
+  switch (format) {
+  case TakeFormat::C3d: return "c3d";
+  case TakeFormat::Trc: return "trc";
+  case TakeFormat::Csv: return "csv";
+  case TakeFormat::Bvh: return "bvh";
+  }
+  return "unknown";
+}
+
+namespace {
+
+/// Puts the sidecar's provenance into a TRC take; an unreadable sidecar is a warning, not a
+/// failure to open the take.
+void readSidecar(Take& take, const std::filesystem::path& path, std::vector<std::string>* warnings)
+{
+  const std::filesystem::path sidecar = provenanceSidecarPath(path);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(sidecar, error))
+    return;
+  try {
+    applyProvenanceJson(take, readFileBytes(sidecar), sidecar.string(), warnings);
+  } catch (const Error& e) {
+    if (warnings)
+      warnings->push_back(std::string("provenance sidecar ignored: ") + e.what());
+  }
+}
+
+void writeSidecar(const Take& take, const std::filesystem::path& path)
+{
+  const std::filesystem::path sidecar = provenanceSidecarPath(path);
+  if (hasProvenance(take)) {
+    writeFileAtomically(sidecar, provenanceJson(take));
+  } else {
+    std::error_code ignored;
+    std::filesystem::remove(sidecar, ignored);
+  }
+}
+
+} // namespace
+
+Take readTake(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
+{
+  switch (formatFromPath(path)) {
+  case TakeFormat::C3d: return readC3d(path, warnings, dataLoss);
+  case TakeFormat::Trc: {
+    Take take = readTrc(path, warnings, dataLoss);
+    readSidecar(take, path, warnings);
+    return take;
+  }
+  case TakeFormat::Csv:
+  case TakeFormat::Bvh: break;
+  }
+  throw InvalidArgument(path.string() + ": reading ." + lowerExtension(path) +
+                        " files is not supported (read .c3d or .trc)");
+}
+
+void writeTake(const Take& take, const std::filesystem::path& path)
+{
+  switch (formatFromPath(path)) {
+  case TakeFormat::C3d: writeC3d(take, path); return;
+  case TakeFormat::Trc: writeTrc(take, path); writeSidecar(take, path); return;
+  case TakeFormat::Csv: writeCsv(take, path); writeSidecar(take, path); return;
+  case TakeFormat::Bvh: writeBvh(take, path); return;
+  }
+}
+
+} // namespace mocap

@@ -1,0 +1,190 @@
+#include "mocap/math/bounded_least_squares.h"
+
+#include "mocap/base/error.h"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mocap {
+
+namespace {
+
+enum class Bound : std::uint8_t
+{
+  Free,
+  Lower,
+  Upper
+};
+
+} // namespace
+
+BoundedLeastSquares::BoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                         const Eigen::Ref<const Eigen::VectorXd>& lower,
+                                         const Eigen::Ref<const Eigen::VectorXd>& upper)
+    : m_a(a), m_lower(lower), m_upper(upper)
+{
+  const Eigen::Index k = a.cols();
+  if (k < 1)
+    throw InvalidArgument("bounded least squares needs at least one weight");
+  if (lower.size() != k || upper.size() != k)
+    throw InvalidArgument("bounded least squares: " + std::to_string(k) + " weights but " +
+                          std::to_string(lower.size()) + " lower and " + std::to_string(upper.size()) +
+                          " upper bounds");
+  if (!a.allFinite())
+    throw InvalidArgument("bounded least squares: the matrix has a non-finite entry");
+  if (!lower.allFinite() || !upper.allFinite())
+    throw InvalidArgument("bounded least squares: the bounds must be finite");
+  if ((lower.array() > upper.array()).any())
+    throw InvalidArgument("bounded least squares: a lower bound exceeds its upper bound");
+  m_gram = a.transpose() * a;
+  const double ridge = 1e-12 * std::max(m_gram.trace() / static_cast<double>(k), 1e-300);
+  m_gram.diagonal().array() += ridge;
+}
+
+Eigen::VectorXd BoundedLeastSquares::solve(const Eigen::Ref<const Eigen::VectorXd>& b,
+                                           const Eigen::VectorXd* start) const
+{
+  if (b.size() != m_a.rows())
+    throw InvalidArgument("bounded least squares: expected " + std::to_string(m_a.rows()) + " values, got " +
+                          std::to_string(b.size()));
+  if (!b.allFinite())
+    throw InvalidArgument("bounded least squares: the right-hand side has a non-finite entry");
+  return solveNormal(m_a.transpose() * b, start);
+}
+
+Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb,
+                                                 const Eigen::VectorXd* start) const
+{
+  const Eigen::Index k = weightCount();
+  if (atb.size() != k || !atb.allFinite())
+    throw InvalidArgument("bounded least squares: Aᵀb must hold " + std::to_string(k) + " finite values");
+  if (start && start->size() != k)
+    throw InvalidArgument("bounded least squares: the start has the wrong size");
+
+  // Minimise ½wᵀHw − gᵀw over the box; every iterate is feasible. Buffers are sized once per
+  // call: with a handful of weights, allocation would otherwise cost more than the arithmetic.
+  const Eigen::MatrixXd& h = m_gram;
+  std::vector<Bound> state(static_cast<std::size_t>(k), Bound::Lower);
+  Eigen::VectorXd w = m_lower;
+  if (start) {
+    w = start->cwiseMax(m_lower).cwiseMin(m_upper);
+    for (Eigen::Index i = 0; i < k; ++i)
+      state[static_cast<std::size_t>(i)] =
+          w(i) <= m_lower(i) ? Bound::Lower : (w(i) >= m_upper(i) ? Bound::Upper : Bound::Free);
+  }
+  const double boundScale = std::max(m_lower.cwiseAbs().maxCoeff(), m_upper.cwiseAbs().maxCoeff());
+  const double tolerance = 1e-11 * std::max({atb.cwiseAbs().maxCoeff(),
+                                             h.cwiseAbs().maxCoeff() * std::max(boundScale, 1.0), 1e-300});
+  const int maxSteps = 10 * static_cast<int>(k) + 20;
+
+  std::vector<Eigen::Index> freeSet;
+  freeSet.reserve(static_cast<std::size_t>(k));
+  Eigen::MatrixXd block(k, k);
+  Eigen::VectorXd rhs(k), z(k), fixed(k), gradient(k);
+  for (int step = 0; step < maxSteps; ++step) {
+    // Make the free weights optimal with the bound ones held, stepping back to the box when the
+    // optimum leaves it and binding the weight that blocked the step.
+    while (true) {
+      freeSet.clear();
+      for (Eigen::Index i = 0; i < k; ++i) {
+        const bool isFree = state[static_cast<std::size_t>(i)] == Bound::Free;
+        fixed(i) = isFree ? 0.0 : w(i);
+        if (isFree)
+          freeSet.push_back(i);
+      }
+      if (freeSet.empty())
+        break;
+      const auto nf = static_cast<Eigen::Index>(freeSet.size());
+      for (Eigen::Index a = 0; a < nf; ++a) {
+        const Eigen::Index fa = freeSet[static_cast<std::size_t>(a)];
+        for (Eigen::Index b = 0; b <= a; ++b)
+          block(a, b) = h(fa, freeSet[static_cast<std::size_t>(b)]);
+        rhs(a) = atb(fa) - h.row(fa).dot(fixed);
+      }
+      Eigen::Ref<Eigen::MatrixXd> view = block.topLeftCorner(nf, nf);
+      z.head(nf) = rhs.head(nf);
+      const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(view);
+      if (llt.info() == Eigen::Success) {
+        llt.solveInPlace(z.head(nf));
+      } else {  // numerically semi-definite: the pivoting factorisation copes
+        Eigen::MatrixXd copy(nf, nf);
+        for (Eigen::Index a = 0; a < nf; ++a)
+          for (Eigen::Index b = 0; b < nf; ++b)
+            copy(a, b) = h(freeSet[static_cast<std::size_t>(a)], freeSet[static_cast<std::size_t>(b)]);
+        z.head(nf) = copy.ldlt().solve(rhs.head(nf));
+      }
+      double alpha = 1.0;
+      Eigen::Index blocking = -1;
+      for (Eigen::Index j = 0; j < nf; ++j) {
+        const Eigen::Index i = freeSet[static_cast<std::size_t>(j)];
+        double t = 1.0;
+        if (z(j) < m_lower(i))
+          t = (m_lower(i) - w(i)) / (z(j) - w(i));
+        else if (z(j) > m_upper(i))
+          t = (m_upper(i) - w(i)) / (z(j) - w(i));
+        else
+          continue;
+        t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+        if (blocking < 0 || t < alpha) {
+          alpha = t;
+          blocking = j;
+        }
+      }
+      if (blocking < 0) {
+        for (Eigen::Index j = 0; j < nf; ++j)
+          w(freeSet[static_cast<std::size_t>(j)]) = z(j);
+        break;
+      }
+      for (Eigen::Index j = 0; j < nf; ++j) {
+        const Eigen::Index i = freeSet[static_cast<std::size_t>(j)];
+        w(i) = std::clamp(w(i) + alpha * (z(j) - w(i)), m_lower(i), m_upper(i));
+        const double span = 1e-14 * std::max(1.0, m_upper(i) - m_lower(i));
+        const bool hitLower = z(j) < m_lower(i) && (j == blocking || w(i) <= m_lower(i) + span);
+        const bool hitUpper = z(j) > m_upper(i) && (j == blocking || w(i) >= m_upper(i) - span);
+        if (hitLower) {
+          w(i) = m_lower(i);
+          state[static_cast<std::size_t>(i)] = Bound::Lower;
+        } else if (hitUpper) {
+          w(i) = m_upper(i);
+          state[static_cast<std::size_t>(i)] = Bound::Upper;
+        }
+      }
+      if (++step >= maxSteps)
+        return w;
+    }
+    // KKT: a bound weight whose gradient points into the box is freed (the most violating one).
+    gradient.noalias() = h * w;
+    gradient -= atb;
+    Eigen::Index worst = -1;
+    double worstViolation = tolerance;
+    for (Eigen::Index i = 0; i < k; ++i) {
+      const Bound s = state[static_cast<std::size_t>(i)];
+      if (s == Bound::Free || m_lower(i) == m_upper(i))
+        continue;
+      const double violation = s == Bound::Lower ? -gradient(i) : gradient(i);
+      if (violation > worstViolation) {
+        worstViolation = violation;
+        worst = i;
+      }
+    }
+    if (worst < 0)
+      return w;
+    state[static_cast<std::size_t>(worst)] = Bound::Free;
+  }
+  return w;
+}
+
+Eigen::VectorXd solveBoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                         const Eigen::Ref<const Eigen::VectorXd>& b,
+                                         const Eigen::Ref<const Eigen::VectorXd>& lower,
+                                         const Eigen::Ref<const Eigen::VectorXd>& upper)
+{
+  return BoundedLeastSquares(a, lower, upper).solve(b);
+}
+
+} // namespace mocap

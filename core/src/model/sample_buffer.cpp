@@ -1,0 +1,122 @@
+#include "mocap/model/sample_buffer.h"
+
+#include <cstdlib>
+#include <mutex>
+#include <new>
+#include <unordered_map>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace mocap {
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+constexpr std::size_t kHugeThreshold = std::size_t{4} << 20;
+} // namespace
+
+namespace {
+
+/// Large blocks freed recently, kept for the next take of similar size: a fresh block costs a
+/// kernel page clear per page, which is more than decoding a C3D file into it. At most
+/// kRetainedBytes stay cached; anything else goes back to the system.
+class LargeBlockCache
+{
+public:
+  void* take(std::size_t bytes)
+  {
+    std::lock_guard lock(m_mutex);
+    for (std::size_t i = 0; i < m_free.size(); ++i) {
+      if (m_free[i].bytes >= bytes && m_free[i].bytes <= 2 * bytes) {
+        void* data = m_free[i].data;
+        m_retained -= m_free[i].bytes;
+        m_sizes[data] = m_free[i].bytes;
+        m_free.erase(m_free.begin() + static_cast<std::ptrdiff_t>(i));
+        return data;
+      }
+    }
+    return nullptr;
+  }
+
+  void remember(void* data, std::size_t bytes)
+  {
+    std::lock_guard lock(m_mutex);
+    m_sizes[data] = bytes;
+  }
+
+  /// True when `data` is a large block (now cached or released); false for small blocks.
+  bool give(void* data)
+  {
+    std::lock_guard lock(m_mutex);
+    const auto it = m_sizes.find(data);
+    if (it == m_sizes.end())
+      return false;
+    const std::size_t bytes = it->second;
+    m_sizes.erase(it);
+    while (!m_free.empty() && m_retained + bytes > kRetainedBytes) {
+      std::free(m_free.front().data);
+      m_retained -= m_free.front().bytes;
+      m_free.erase(m_free.begin());
+    }
+    if (bytes <= kRetainedBytes) {
+      m_free.push_back({data, bytes});
+      m_retained += bytes;
+    } else {
+      std::free(data);
+    }
+    return true;
+  }
+
+private:
+  static constexpr std::size_t kRetainedBytes = std::size_t{256} << 20;
+  struct Block
+  {
+    void* data;
+    std::size_t bytes;
+  };
+  std::mutex m_mutex;
+  std::vector<Block> m_free;                       // oldest first
+  std::unordered_map<void*, std::size_t> m_sizes;  // large blocks handed out
+  std::size_t m_retained = 0;
+};
+
+LargeBlockCache& largeBlocks()
+{
+  static LargeBlockCache* cache = new LargeBlockCache;  // never destroyed: buffers may outlive statics
+  return *cache;
+}
+
+} // namespace
+
+void* allocateSamples(std::size_t bytes)
+{
+  if (bytes == 0)
+    return nullptr;
+  if (bytes < kHugeThreshold) {
+    void* small = std::malloc(bytes);
+    if (!small)
+      throw std::bad_alloc();
+    return small;
+  }
+  const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+  if (void* reused = largeBlocks().take(rounded))
+    return reused;
+  void* large = std::aligned_alloc(kHugePage, rounded);
+  if (!large)
+    throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  madvise(large, rounded, MADV_HUGEPAGE);  // a hint: failure only costs speed
+#endif
+  largeBlocks().remember(large, rounded);
+  return large;
+}
+
+void freeSamples(void* data) noexcept
+{
+  if (data && !largeBlocks().give(data))
+    std::free(data);
+}
+
+} // namespace mocap
