@@ -31,6 +31,13 @@ JobProgressRow::JobProgressRow(QWidget* parent) : QWidget(parent)
   m_estimate = new QLabel(this);
   m_cancelButton = new QPushButton(tr("Cancel"), this);
   m_cancelButton->setToolTip(tr("Stop the computation (Esc)"));
+  // Hidden between jobs, the bar and estimate keep their room: Cancel stays a button at the
+  // right, and the dock does not jump when a preview starts.
+  for (QWidget* part : {static_cast<QWidget*>(m_bar), static_cast<QWidget*>(m_estimate)}) {
+    QSizePolicy policy = part->sizePolicy();
+    policy.setRetainSizeWhenHidden(true);
+    part->setSizePolicy(policy);
+  }
   layout->addWidget(m_bar, 1);
   layout->addWidget(m_estimate);
   layout->addWidget(m_cancelButton);
