@@ -99,6 +99,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   createDocks();
   createActions();
   m_status = new QLabel(this);
+  m_status->setObjectName(QStringLiteral("frameStatus"));
   statusBar()->addPermanentWidget(m_status);
   m_warningsButton = new QToolButton(this);
   m_warningsButton->setObjectName(QStringLiteral("readWarningsButton"));
@@ -113,13 +114,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(m_document, &ui::TakeDocument::filePathChanged, this, &MainWindow::updateTitle);
   connect(m_document, &ui::TakeDocument::selectionChanged, this, &MainWindow::syncTableSelection);
-  connect(m_document, &ui::TakeDocument::currentFrameChanged, this, [this](Eigen::Index frame) {
+  // The status line follows both the frame and the selection it names.
+  auto updateStatusLine = [this] {
     const Take& take = m_document->take();
     m_status->setText(tr("Frame %1 of %2 — %3 markers selected")
-                          .arg(static_cast<qlonglong>(take.firstFrame() + frame))
+                          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->currentFrame()))
                           .arg(static_cast<qlonglong>(take.frameCount()))
                           .arg(m_document->selection().size()));
-  });
+  };
+  connect(m_document, &ui::TakeDocument::currentFrameChanged, this, updateStatusLine);
+  connect(m_document, &ui::TakeDocument::selectionChanged, this, updateStatusLine);
   m_autosave = new ui::Autosave(*m_document, {}, this);
   connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
     statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 10000);

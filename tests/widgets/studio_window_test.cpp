@@ -34,6 +34,7 @@
 #include <QMouseEvent>
 #include <QSettings>
 #include <QCheckBox>
+#include <QLabel>
 #include <QTableView>
 #include <QToolTip>
 #include <QTest>
@@ -101,6 +102,10 @@ TEST_F(StudioWindow, TableSelectionReachesTheDocumentAndBack)
   const auto selected = table->selectionModel()->selectedRows();
   ASSERT_EQ(selected.size(), 2);
   EXPECT_EQ(selected[0].data().toString() + "," + selected[1].data().toString(), "root-2,section14-2");
+  // The status line names the selection as soon as it changes, not at the next frame.
+  auto* status = window->findChild<QLabel*>(QStringLiteral("frameStatus"));
+  ASSERT_NE(status, nullptr);
+  EXPECT_TRUE(status->text().contains(QStringLiteral("2 markers selected"))) << status->text().toStdString();
 }
 
 TEST_F(StudioWindow, FillChangesOnlyTheGapAndUndoRestoresBitForBit)
