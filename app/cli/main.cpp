@@ -5,6 +5,7 @@
 
 #include "mocap/base/error.h"
 
+#include <algorithm>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -17,7 +18,7 @@ constexpr const char* kUsage =
     "  info FILE [--json]   markers, frames, rate, units, analog channels, valid fraction and every gap\n"
     "  convert IN OUT [--units mm|cm|m]\n"
     "                       convert between .c3d .trc (read/write) and .csv .bvh (write)\n"
-    "  clean IN -o OUT [--spikes paper|robust|off] [--spike-factor F] [--fill METHOD|off]\n"
+    "  clean IN -o OUT [--spikes paper|robust|off] [--spike-factor F] [--spike-threshold T] [--fill METHOD|off]\n"
     "      [--max-gap-seconds S (0.5) | --max-gap N (frames; 0 = unlimited)] [--extrapolate] [--min-valid F (0.2)]\n"
     "      [--neighbours N] [--smooth bspline|butterworth|gcvspl|savgol|off] [--order K]\n"
     "      [--knot-spacing N] [--cutoff HZ] [--stabilize LABEL,...] [--keep-stabilized] [--report FILE.json]\n"
@@ -32,7 +33,8 @@ constexpr const char* kUsage =
     "                       the paper's Table 1: smoothness per B-spline order\n"
     "  pfa TAKE [TAKE...] [--method pfa|greedy] [--variance 0.98] [--restarts 1000] [--k MIN:MAX]\n"
     "      [--seed S] [--pairs FILE] [--stabilize LABELS] [--keyposes auto|F1,F2,...] [--json]\n"
-    "      [--curve OUT.csv] [--export-subset K OUT.c3d]\n"
+    "      [--curve OUT.csv] [--export-subset K OUT.c3d] [--markers PATTERNS] [--exclude PATTERNS]\n"
+    "      [--random N] [--threads N] [--progress]\n"
     "                       marker layout planning: error vs marker count, recommended size\n"
     "  track IN -o OUT [--template TAKE_OR_MARKERSET] [--max-speed MM_PER_FRAME] [--keep-fragments]\n"
     "      [--rate HZ] [--save-marker-set FILE.json] [--json]\n"
@@ -50,6 +52,31 @@ constexpr const char* kUsage =
     "      [--scale uniform|per-axis] [--frames FIRST:LAST] [--leave-out FRACTION] [--seed S] [--ply]\n"
     "      -o OUT.pc2|OUTDIR [--json]\n"
     "                       deform a face mesh by the take; PC2 cache or one mesh per frame\n";
+
+/// The lines of kUsage about `command`: its synopsis, continuation and description lines (a
+/// command's block starts with two spaces and its name and runs to the next such line).
+std::string commandUsage(const std::string& command)
+{
+  std::string block;
+  bool inside = false;
+  const std::string text = kUsage;
+  for (std::size_t begin = 0; begin < text.size();) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    const std::string line = text.substr(begin, end - begin);
+    begin = end + 1;
+    const bool starts = line.size() > 2 && line.compare(0, 2, "  ") == 0 && line[2] != ' ';
+    if (starts)
+      inside = line.compare(2, command.size() + 1, command + " ") == 0;
+    if (inside)
+      block += line + '\n';
+  }
+  return "usage: mocap " + (block.size() > 2 ? block.substr(2) : command + " [arguments]\n");
+}
+
+bool asksForHelp(const std::vector<std::string>& args)
+{
+  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
+}
 
 } // namespace
 
@@ -83,10 +110,14 @@ int main(int argc, char** argv)
               << kUsage;
     return kExitBadUsage;
   }
+  if (asksForHelp(args)) {
+    std::cout << commandUsage(command);
+    return kExitOk;
+  }
   try {
     return it->second(args);
   } catch (const UsageError& e) {
-    std::cerr << "mocap " << command << ": " << e.what() << '\n' << kUsage;
+    std::cerr << "mocap " << command << ": " << e.what() << '\n' << commandUsage(command);
     return kExitBadUsage;
   } catch (const mocap::InvalidArgument& e) {
     std::cerr << e.what() << '\n';

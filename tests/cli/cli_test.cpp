@@ -142,6 +142,28 @@ TEST(Cli, BadUsageGivesExitTwo)
   EXPECT_EQ(runMocap("--help", dir).exitCode, 0);
 }
 
+// Every command answers --help with its own usage (from the one usage text), and lists the options
+// it accepts; a usage error shows that command's usage, not every command's.
+TEST(Cli, EveryCommandAnswersHelpWithItsOwnUsage)
+{
+  test::TempDir dir;
+  for (const char* command : {"info", "convert", "clean", "eval-fill", "eval-spikes", "eval-smooth", "smooth-table",
+                              "pfa", "track", "fix-swaps", "eval-track", "bind", "deform"}) {
+    const CommandResult help = runMocap(std::string(command) + " --help", dir);
+    EXPECT_EQ(help.exitCode, 0) << command;
+    EXPECT_EQ(help.out.rfind(std::string("usage: mocap ") + command + " ", 0), 0u) << help.out;
+    EXPECT_EQ(help.out.find("commands:"), std::string::npos) << command;
+  }
+  const CommandResult pfa = runMocap("pfa --help", dir);
+  for (const char* option : {"--markers", "--exclude", "--threads", "--random", "--progress", "--curve"})
+    EXPECT_NE(pfa.out.find(option), std::string::npos) << option;
+  EXPECT_NE(runMocap("clean -h", dir).out.find("--spike-threshold"), std::string::npos);
+  const CommandResult bad = runMocap("info", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("usage: mocap info FILE"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.err.find("commands:"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, ConvertWritesEveryFormatAndTrcReadsBack)
 {
   test::TempDir dir;
