@@ -1,6 +1,7 @@
 #include "mocap/cleaning/spike_detection.h"
 
 #include "mocap/base/error.h"
+#include "mocap/model/valid_runs.h"
 #include "mocap/base/length_unit.h"
 
 #include <Eigen/Dense>
@@ -28,21 +29,12 @@ struct Run
   [[nodiscard]] Eigen::Index size() const { return last - first + 1; }
 };
 
+// The valid runs (findValidRuns) as inclusive windows, the form the detectors work on.
 std::vector<Run> validRuns(const Eigen::Ref<const ValidMask>& valid)
 {
   std::vector<Run> runs;
-  const Eigen::Index frames = valid.size();
-  Eigen::Index f = 0;
-  while (f < frames) {
-    if (!valid(f)) {
-      ++f;
-      continue;
-    }
-    const Eigen::Index first = f;
-    while (f < frames && valid(f))
-      ++f;
-    runs.push_back({first, f - 1});
-  }
+  for (const ValidRun& run : findValidRuns(valid))
+    runs.push_back({run.first, run.first + run.length - 1});
   return runs;
 }
 

@@ -2,11 +2,11 @@
 
 #include "mocap/base/error.h"
 #include "mocap/math/kabsch.h"
+#include "mocap/math/union_find.h"
 
 #include <Eigen/Cholesky>
 
 #include <cmath>
-#include <numeric>
 #include <string>
 
 namespace mocap {
@@ -16,19 +16,13 @@ namespace {
 // Component label of every vertex (union-find over the triangles' edges).
 std::vector<Eigen::Index> components(Eigen::Index vertexCount, const std::vector<Triangle>& triangles)
 {
-  std::vector<Eigen::Index> parent(static_cast<std::size_t>(vertexCount));
-  std::iota(parent.begin(), parent.end(), Eigen::Index{0});
-  const auto root = [&](Eigen::Index v) {
-    while (parent[static_cast<std::size_t>(v)] != v)
-      v = parent[static_cast<std::size_t>(v)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(v)])];
-    return v;
-  };
+  UnionFind sets(vertexCount);
   for (const Triangle& t : triangles)
     for (int e = 1; e < 3; ++e)
-      parent[static_cast<std::size_t>(root(t[static_cast<std::size_t>(e)]))] = root(t[0]);
-  std::vector<Eigen::Index> label(parent.size());
+      sets.unite(t[static_cast<std::size_t>(e)], t[0]);
+  std::vector<Eigen::Index> label(static_cast<std::size_t>(vertexCount));
   for (Eigen::Index v = 0; v < vertexCount; ++v)
-    label[static_cast<std::size_t>(v)] = root(v);
+    label[static_cast<std::size_t>(v)] = sets.find(v);
   return label;
 }
 

@@ -1,9 +1,9 @@
 #include "mocap/math/hungarian_assignment.h"
 
 #include "mocap/base/error.h"
+#include "mocap/math/union_find.h"
 
 #include <cmath>
-#include <numeric>
 
 namespace mocap {
 
@@ -17,28 +17,6 @@ void checkInput(const Eigen::Ref<const Eigen::MatrixXd>& cost, double gate)
     throw InvalidArgument("assignment: every cost must be finite and ≥ 0");
 }
 
-// Union-find over rows (0..n-1) and columns (n..n+m-1) of the gated graph.
-class Components
-{
-public:
-  explicit Components(Eigen::Index size) : m_parent(static_cast<std::size_t>(size))
-  {
-    std::iota(m_parent.begin(), m_parent.end(), Eigen::Index{0});
-  }
-  Eigen::Index find(Eigen::Index i)
-  {
-    while (at(i) != i) {
-      at(i) = at(at(i));
-      i = at(i);
-    }
-    return i;
-  }
-  void unite(Eigen::Index a, Eigen::Index b) { at(find(a)) = find(b); }
-
-private:
-  Eigen::Index& at(Eigen::Index i) { return m_parent[static_cast<std::size_t>(i)]; }
-  std::vector<Eigen::Index> m_parent;
-};
 
 // Hungarian method with potentials on a dense n × m matrix, n ≤ m: the column of each row.
 // O(n² · m).
@@ -138,7 +116,7 @@ std::vector<Eigen::Index> assignMinimumCost(const Eigen::Ref<const Eigen::Matrix
     return result;
   if (std::isinf(gate))  // above any solution with one more row unassigned: maximum cardinality first
     gate = (cost.maxCoeff() + 1.0) * static_cast<double>(std::min(n, m) + 1);
-  Components components(n + m);
+  UnionFind components(n + m);
   for (Eigen::Index c = 0; c < m; ++c)
     for (Eigen::Index r = 0; r < n; ++r)
       if (cost(r, c) <= gate)
