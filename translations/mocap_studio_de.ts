@@ -122,7 +122,7 @@
 <context>
     <name>QProgressDialog</name>
     <message>
-        <location filename="../widgets/dialogs/job_dialog.cpp" line="+25"/>
+        <location filename="../widgets/dialogs/job_dialog.cpp" line="+43"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -206,12 +206,12 @@
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Autosave failed: %1</source>
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
@@ -779,6 +779,11 @@
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
+    <message>
+        <location line="+44"/>
+        <source>Cancel the running job before closing</source>
+        <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
+    </message>
     <message numerus="yes">
         <source>%n warning(s) while reading; the first: %1</source>
         <translation type="vanished">
@@ -787,7 +792,7 @@
         </translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-202"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -888,7 +893,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-863"/>
+        <location line="-867"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>

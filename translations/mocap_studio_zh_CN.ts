@@ -114,7 +114,7 @@
 <context>
     <name>QProgressDialog</name>
     <message>
-        <location filename="../widgets/dialogs/job_dialog.cpp" line="+25"/>
+        <location filename="../widgets/dialogs/job_dialog.cpp" line="+43"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -196,12 +196,12 @@
         <translation>时间轴</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
@@ -765,6 +765,11 @@
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
+    <message>
+        <location line="+44"/>
+        <source>Cancel the running job before closing</source>
+        <translation>请先取消正在运行的任务再关闭</translation>
+    </message>
     <message numerus="yes">
         <source>%n warning(s) while reading; the first: %1</source>
         <translation type="vanished">
@@ -772,7 +777,7 @@
         </translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-202"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -873,7 +878,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-863"/>
+        <location line="-867"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>

@@ -1024,6 +1024,11 @@ void MainWindow::syncTableSelection()
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+  if (ui::jobRunning()) {  // the worker reads the document: it must end before the window does
+    statusBar()->showMessage(tr("Cancel the running job before closing"), 5000);
+    event->ignore();
+    return;
+  }
   if (!confirmDiscard()) {
     event->ignore();
     return;

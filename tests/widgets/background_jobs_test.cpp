@@ -4,11 +4,15 @@
 #include "../core/test_support.h"
 #include "sample_window.h"
 
+#include "dialogs/job_dialog.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "panels/cleaning_panel.h"
 #include "panels/cleaning_step.h"
 #include "panels/job_progress_row.h"
+
+#include "mocap/io/c3d_reader.h"
+#include "mocap/io/c3d_writer.h"
 
 #include <QElapsedTimer>
 #include <QPushButton>
@@ -41,20 +45,43 @@ private:
   int m_ticks = 0;
 };
 
+constexpr Eigen::Index kLongFrames = 30000;
+
+/// The sample repeated to 30 000 frames, written to `dir`: long enough that reading or
+/// searching it outlasts a timer tick on any machine.
+QString writeLongTake(const test::TempDir& dir)
+{
+  const Take sample = readC3d(test::sampleTake());
+  Take take(sample.labels(), kLongFrames, sample.frameRate());
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < kLongFrames; ++f) {
+      const Eigen::Index from = f % sample.frameCount();
+      take.setPosition(f, m, sample.position(from, m));
+      take.valid()(f, m) = sample.valid()(from, m);
+      take.residuals()(f, m) = sample.residuals()(from, m);
+    }
+  writeC3d(take, dir.file("long.c3d"));
+  return QString::fromStdString(dir.file("long.c3d").string());
+}
+
 TEST(BackgroundJobs, OpeningATakeKeepsTheEventLoopServed)
 {
   auto window = test::openSampleWindow();
   ASSERT_TRUE(window);
+  test::TempDir dir;
+  const QString path = writeLongTake(dir);
   TickCounter counter;
-  ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());
+  ASSERT_EQ(window->openFile(path, true), QString());
   EXPECT_GT(counter.ticks(), 0) << "the file was read on the UI thread";
-  EXPECT_EQ(window->document().take().frameCount(), 3000);
+  EXPECT_EQ(window->document().take().frameCount(), kLongFrames);
 }
 
 TEST(BackgroundJobs, TrackAndLabelAndTheSwapSearchKeepTheEventLoopServed)
 {
   auto window = test::openSampleWindow();
   ASSERT_TRUE(window);
+  test::TempDir dir;
+  ASSERT_EQ(window->openFile(writeLongTake(dir), true), QString());
   {
     TickCounter counter;
     window->trackAndLabel();
@@ -115,6 +142,28 @@ TEST(BackgroundJobs, CancelStopsTheComputationItselfAndProgressShowsTimeLeft)
   EXPECT_TRUE(*step->m_ended);
   EXPECT_LT(clock.elapsed(), 1000) << "Cancel left the computation running";
   EXPECT_FALSE(row->cancelButton()->isEnabled());
+}
+
+// While a worker reads the document, the window refuses to close (it would free what is read).
+TEST(BackgroundJobs, TheWindowDoesNotCloseUnderARunningJob)
+{
+  auto window = test::openSampleWindow();
+  ASSERT_TRUE(window);
+  bool closed = true, running = false;
+  QTimer::singleShot(50, window.get(), [&] {  // served by runJob's event loop
+    running = ui::jobRunning();
+    closed = window->close();
+  });
+  EXPECT_TRUE(ui::runJob(window.get(), QStringLiteral("waiting"), [](const JobControl& control) {
+    for (int i = 0; i < 30; ++i) {
+      control.checkpoint(i / 30.0);
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }));
+  EXPECT_TRUE(running);
+  EXPECT_FALSE(closed);
+  EXPECT_TRUE(window->isVisible());
+  EXPECT_FALSE(ui::jobRunning());
 }
 
 TEST(BackgroundJobs, TimeLeftAssumesAnEvenPaceAndWaitsUntilItCanTell)

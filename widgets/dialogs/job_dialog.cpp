@@ -19,6 +19,24 @@
 
 namespace mocap::ui {
 
+namespace {
+int runningJobs = 0;  // runJob calls in progress (UI thread only)
+
+// Counts one running job for its lifetime, however runJob returns.
+struct RunningJob
+{
+  RunningJob() { ++runningJobs; }
+  ~RunningJob() { --runningJobs; }
+  RunningJob(const RunningJob&) = delete;
+  RunningJob& operator=(const RunningJob&) = delete;
+};
+} // namespace
+
+bool jobRunning()
+{
+  return runningJobs > 0;
+}
+
 bool runJob(QWidget* parent, const QString& label, const std::function<void(const JobControl&)>& work)
 {
   auto cancel = std::make_shared<std::atomic<bool>>(false);
@@ -49,6 +67,7 @@ bool runJob(QWidget* parent, const QString& label, const std::function<void(cons
 
   bool cancelled = false;
   std::exception_ptr failure;
+  const RunningJob running;
   QEventLoop loop;
   QFutureWatcher<void> watcher;
   QObject::connect(&watcher, &QFutureWatcher<void>::finished, &loop, &QEventLoop::quit);

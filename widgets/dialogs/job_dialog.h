@@ -17,4 +17,7 @@ namespace mocap::ui {
 /// call returns (the call waits for the worker to end).
 bool runJob(QWidget* parent, const QString& label, const std::function<void(const JobControl&)>& work);
 
+/// True while a runJob call is running its work (a window should not close then). O(1).
+[[nodiscard]] bool jobRunning();
+
 } // namespace mocap::ui
