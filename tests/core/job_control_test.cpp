@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <thread>
 #include <vector>
 
@@ -40,11 +41,14 @@ TEST(JobControl, PartMapsProgressIntoItsShareAndThrottles)
 {
   std::vector<double> reported;
   const JobControl job([&](double f) { reported.push_back(f); }, nullptr);
+  const auto start = std::chrono::steady_clock::now();
   job.part(0.5, 1.0).checkpoint(0.5);
   ASSERT_EQ(reported.size(), 1u);
   EXPECT_DOUBLE_EQ(reported.back(), 0.75);
   job.checkpoint(0.9);  // within 50 ms of the last report: throttled
-  EXPECT_EQ(reported.size(), 1u);
+  if (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(40)) {  // unless this thread stalled
+    EXPECT_EQ(reported.size(), 1u);
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(60));
   job.part(0.0, 0.5).part(0.5, 1.0).checkpoint(2.0);  // clamped to the part's end
   ASSERT_EQ(reported.size(), 2u);
