@@ -21,4 +21,8 @@ namespace mocap {
 /// Splits on `separator`, keeping empty fields ("a,,b" gives 3 fields).
 [[nodiscard]] std::vector<std::string_view> split(std::string_view text, char separator);
 
+/// Whether `text` matches the glob `pattern`: `*` any run of characters, `?` any one, others
+/// themselves. O(|pattern| · |text|) worst case.
+[[nodiscard]] bool globMatch(std::string_view pattern, std::string_view text);
+
 } // namespace mocap
