@@ -2137,12 +2137,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+86"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>Aufnahmedateien, die zusammen mit der geöffneten Aufnahme geplant werden (sie müssen deren Marker enthalten)</translation>
     </message>
@@ -2227,6 +2227,31 @@
         <translation>Startwert:</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>Random marker sets scored at every size, the baseline a plan must beat</source>
+        <translation>Zufällige Markersätze, bei jeder Größe bewertet: die Messlatte, die ein Plan schlagen muss</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Random sets:</source>
+        <translation>Zufallssätze:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Key poses of the blendshape basis: frame numbers, comma-separated (TAKE:FRAME for a further take, TAKE from 1); blank: the most extreme frames</source>
+        <translation>Schlüsselposen der Blendshape-Basis: Bildnummern, durch Kommas getrennt (TAKE:BILD für eine weitere Aufnahme, TAKE ab 1); leer: die extremsten Bilder</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Key poses:</source>
+        <translation>Schlüsselposen:</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>detected automatically</source>
         <translation>automatisch erkannt</translation>
@@ -2267,12 +2292,31 @@
         <translation>Mit diesen Markern wird die Kopfbewegung vor der Planung entfernt, und sie werden nicht wegoptimiert (auch eine reduzierte Aufnahme braucht sie).</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
-        <translation>Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte und die Referenzmarker sind es immer)</translation>
+        <location line="+8"/>
+        <source>all but the reference markers</source>
+        <translation>alle außer den Referenzmarkern</translation>
     </message>
     <message>
-        <location line="+218"/>
+        <location line="+1"/>
+        <source>Markers to plan over, comma-separated; * and ? match any run and any character (e.g. section1-*, lip?)</source>
+        <translation>Zu planende Marker, durch Kommas getrennt; * und ? stehen für beliebig viele bzw. ein beliebiges Zeichen (z. B. section1-*, lip?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plan markers:</source>
+        <translation>Marker planen:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Markers left out of the plan, comma-separated; * and ? match any run and any character (unlabelled points and the reference markers always are)</source>
+        <translation>Aus dem Plan ausgelassene Marker, durch Kommas getrennt; * und ? stehen für beliebig viele bzw. ein beliebiges Zeichen (unbenannte Punkte und die Referenzmarker werden immer ausgelassen)</translation>
+    </message>
+    <message>
+        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
+        <translation type="vanished">Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte und die Referenzmarker sind es immer)</translation>
+    </message>
+    <message>
+        <location line="+253"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
@@ -2298,12 +2342,13 @@
         <translation type="vanished">Kopf-Referenzmarker, durch Kommas getrennt: Mit ihnen wird die Kopfbewegung entfernt, und sie werden nicht mit eingeplant</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-272"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-32"/>
+        <location line="+41"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
@@ -2392,7 +2437,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+83"/>
         <source>A plan is already running.</source>
         <translation>Eine Planung läuft bereits.</translation>
     </message>
@@ -2412,9 +2457,8 @@
         <translation>Die Paardatei %1 existiert nicht.</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>The open take has no marker &apos;%1&apos;.</source>
-        <translation>Die geöffnete Aufnahme hat keinen Marker „%1“.</translation>
+        <translation type="vanished">Die geöffnete Aufnahme hat keinen Marker „%1“.</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2422,17 +2466,37 @@
         <translation>Zum Entfernen der Kopfbewegung sind mindestens drei Referenzmarker nötig (Marker ▸ Referenzmarker…).</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>Planning…</source>
         <translation>Planung läuft…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>Key poses</source>
+        <translation>Schlüsselposen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Plan markers</source>
+        <translation>Marker planen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Leave out</source>
+        <translation>Auslassen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Planning failed: %1</source>
         <translation>Planung fehlgeschlagen: %1</translation>
     </message>
@@ -2451,12 +2515,12 @@
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+47"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+24"/>
         <location line="+16"/>
         <location line="+26"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>

@@ -2114,12 +2114,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+86"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>与已打开的拍摄数据一起规划的拍摄数据文件（必须包含其标记点）</translation>
     </message>
@@ -2204,6 +2204,31 @@
         <translation>随机种子：</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>Random marker sets scored at every size, the baseline a plan must beat</source>
+        <translation>在每个数量下评估的随机标记集：方案必须超越的基准</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Random sets:</source>
+        <translation>随机集：</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>automatic</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Key poses of the blendshape basis: frame numbers, comma-separated (TAKE:FRAME for a further take, TAKE from 1); blank: the most extreme frames</source>
+        <translation>混合形状基的关键姿势：帧号，以逗号分隔（其他录制用 录制:帧，录制从 1 开始）；留空：最极端的帧</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Key poses:</source>
+        <translation>关键姿势：</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>detected automatically</source>
         <translation>自动检测</translation>
@@ -2244,12 +2269,31 @@
         <translation>在规划之前用这些标记点去除头部运动，且它们不参与规划（精简后的捕捉仍需要它们）。</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
-        <translation>不参与规划的标记点，以逗号分隔（未标注的点和参考标记点始终不参与）</translation>
+        <location line="+8"/>
+        <source>all but the reference markers</source>
+        <translation>除参考标记外的全部</translation>
     </message>
     <message>
-        <location line="+218"/>
+        <location line="+1"/>
+        <source>Markers to plan over, comma-separated; * and ? match any run and any character (e.g. section1-*, lip?)</source>
+        <translation>要规划的标记，以逗号分隔；* 和 ? 分别匹配任意长度和任意一个字符（例如 section1-*、lip?）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plan markers:</source>
+        <translation>规划标记：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Markers left out of the plan, comma-separated; * and ? match any run and any character (unlabelled points and the reference markers always are)</source>
+        <translation>不参与规划的标记，以逗号分隔；* 和 ? 分别匹配任意长度和任意一个字符（未标注的点和参考标记总是不参与）</translation>
+    </message>
+    <message>
+        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
+        <translation type="vanished">不参与规划的标记点，以逗号分隔（未标注的点和参考标记点始终不参与）</translation>
+    </message>
+    <message>
+        <location line="+253"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
@@ -2274,12 +2318,13 @@
         <translation type="vanished">头部参考标记点，以逗号分隔：用于去除头部运动，且不参与规划</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-272"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-32"/>
+        <location line="+41"/>
         <source>none</source>
         <translation>无</translation>
     </message>
@@ -2368,7 +2413,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+83"/>
         <source>A plan is already running.</source>
         <translation>已有规划正在运行。</translation>
     </message>
@@ -2388,9 +2433,8 @@
         <translation>配对文件 %1 不存在。</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>The open take has no marker &apos;%1&apos;.</source>
-        <translation>已打开的拍摄数据中没有标记点“%1”。</translation>
+        <translation type="vanished">已打开的拍摄数据中没有标记点“%1”。</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2398,17 +2442,37 @@
         <translation>去除头部运动至少需要三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>Planning…</source>
         <translation>正在规划…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>Key poses</source>
+        <translation>关键姿势</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Plan markers</source>
+        <translation>规划标记</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Leave out</source>
+        <translation>排除</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Planning failed: %1</source>
         <translation>规划失败：%1</translation>
     </message>
@@ -2427,12 +2491,12 @@
         <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+47"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+24"/>
         <location line="+16"/>
         <location line="+26"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>

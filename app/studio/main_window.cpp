@@ -210,7 +210,7 @@ void MainWindow::createDocks()
     }
     std::vector<bool> reference(kept.size(), false);
     if (const ui::LayoutPlanResult* result = m_layoutPlanning->result())
-      for (const std::string& label : result->referenceLabels)
+      for (const std::string& label : result->stabilizeLabels)
         if (const auto m = m_document->take().markerIndex(label); m && static_cast<std::size_t>(*m) < kept.size())
           reference[static_cast<std::size_t>(*m)] = true;
     m_view3d->setLayoutHighlight(kept, std::move(reference));

@@ -221,7 +221,7 @@ TEST_F(LayoutPlanning, RefusesBadInputWithAMessage)
   EXPECT_NE(panel->run(), QString());
   EXPECT_FALSE(panel->busy());
   p = quick();
-  p.excludeLabels = {QStringLiteral("no-such-marker")};
+  p.excludePatterns = {QStringLiteral("no-such-marker")};
   panel->setParameters(p);
   EXPECT_TRUE(panel->run().contains(QStringLiteral("no-such-marker")));
   p = quick();
@@ -231,6 +231,44 @@ TEST_F(LayoutPlanning, RefusesBadInputWithAMessage)
   panel->waitForRun();
   EXPECT_EQ(panel->result(), nullptr);
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("take.c3d"))) << panel->statusText().toStdString();
+}
+
+// The panel asks what `mocap pfa` asks: globs, key poses and the random baseline reach the plan.
+TEST_F(LayoutPlanning, GlobsKeyPosesAndRandomSetsReachThePlan)
+{
+  ui::LayoutPlanParameters p = quick();
+  p.excludePatterns = {QStringLiteral("section1-*"), QStringLiteral("section2-?")};
+  p.randomSubsets = 0;
+  p.keyPoses = QStringLiteral("lots");
+  panel->setParameters(p);
+  EXPECT_TRUE(panel->run().contains(QStringLiteral("lots"))) << "a malformed key pose is refused at once";
+  EXPECT_FALSE(panel->busy());
+
+  p.keyPoses.clear();
+  panel->setParameters(p);
+  ASSERT_EQ(panel->run(), QString());
+  panel->waitForRun();
+  ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
+  const LayoutResult& result = *panel->result();
+  for (const std::string& label : result.frames.labels)
+    EXPECT_TRUE(label.rfind("section1-", 0) != 0 && label.rfind("section2-", 0) != 0) << label;
+  for (const LayoutSize& size : result.plan.sizes)
+    EXPECT_EQ(size.randomCount, 0) << "no random sets were asked for";
+
+  // Key poses by frame number: the plan's basis uses exactly those frames.
+  std::vector<Eigen::Index> rows;
+  QStringList frames;
+  for (const std::size_t at : {result.frames.training.size() / 4, result.frames.training.size() / 2}) {
+    const Eigen::Index row = result.frames.training[at];
+    rows.push_back(row);
+    frames << QString::number(result.frames.origin[static_cast<std::size_t>(row)].second + window->document().take().firstFrame());
+  }
+  p.keyPoses = frames.join(QStringLiteral(","));
+  panel->setParameters(p);
+  ASSERT_EQ(panel->run(), QString());
+  panel->waitForRun();
+  ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
+  EXPECT_EQ(panel->result()->plan.basis.keyFrames, rows);
 }
 
 TEST_F(LayoutPlanning, ScrollsRatherThanForcingTheWindowTaller)
@@ -248,12 +286,18 @@ TEST_F(LayoutPlanning, RemembersItsParameters)
   p.variance = 0.95;
   p.minK = 3;
   p.maxK = 4;
+  p.randomSubsets = 2;
+  p.markerPatterns = {QStringLiteral("section*")};
+  p.excludePatterns = {QStringLiteral("section14-*")};
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
   panel->waitForRun();
   LayoutPlanningPanel fresh(window->document());
   const ui::LayoutPlanParameters remembered = fresh.parameters();
   EXPECT_EQ(remembered.method, SelectionMethod::Greedy);
+  EXPECT_EQ(remembered.randomSubsets, 2);
+  EXPECT_EQ(remembered.markerPatterns, p.markerPatterns);
+  EXPECT_EQ(remembered.excludePatterns, p.excludePatterns);
   EXPECT_DOUBLE_EQ(remembered.variance, 0.95);
   EXPECT_EQ(remembered.restarts, 5);
   EXPECT_EQ(remembered.minK, 3);

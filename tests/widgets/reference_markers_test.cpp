@@ -112,7 +112,7 @@ TEST_F(ReferenceMarkers, LayoutPlanningStabilizesWithThemAndLeavesThemOut)
   ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
   const ui::LayoutPlanResult& result = *panel->result();
   EXPECT_TRUE(result.frames.stabilized);
-  EXPECT_EQ(result.referenceLabels, kRoots);
+  EXPECT_EQ(result.stabilizeLabels, kRoots);
   EXPECT_EQ(result.frames.markerCount(), 31) << "38 less the 6 reference markers and Unlabeled1";
   for (const std::string& label : result.frames.labels)
     EXPECT_NE(label.rfind("root-", 0), 0u) << label << " was planned as a face marker";

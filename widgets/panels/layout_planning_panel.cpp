@@ -5,7 +5,6 @@
 #include "views/layout_error_plot.h"
 
 #include "mocap/base/file_io.h"
-#include "mocap/layout/layout_symmetry.h"
 #include "mocap/model/marker_edits.h"
 #include "mocap/model/marker_set.h"
 #include "mocap/io/marker_set_io.h"
@@ -60,47 +59,28 @@ QStringList splitLabels(const QString& text)
   return labels;
 }
 
-// The worker: the open take (a copy) and the extra take files, planned as `mocap pfa --stabilize
-// REFERENCE` plans them. Never throws: a failure is the result's error.
-std::shared_ptr<LayoutPlanResult> planLayout(Take openTake, const LayoutPlanParameters& parameters,
-                                             const std::vector<std::string>& reference,
-                                             const std::shared_ptr<std::atomic<bool>>& cancel,
-                                             const std::shared_ptr<std::atomic<int>>& progress)
+// The worker: the open take (a copy) and the extra take files, planned as `mocap pfa` plans them.
+// Never throws: a failure is the result's error.
+std::shared_ptr<LayoutPlanResult> planInBackground(Take openTake, const QStringList& extraTakes,
+                                                   const LayoutRequest& request,
+                                                   const std::shared_ptr<std::atomic<bool>>& cancel,
+                                                   const std::shared_ptr<std::atomic<int>>& progress)
 {
   auto result = std::make_shared<LayoutPlanResult>();
   try {
     std::vector<Take> takes;
     takes.push_back(std::move(openTake));
-    for (const QString& path : parameters.extraTakes)
+    for (const QString& path : extraTakes)
       takes.push_back(readTake(path.toStdString()));
-    LayoutFramesOptions frameOptions;
-    frameOptions.stabilizeLabels = reference;
-    result->referenceLabels = reference;
-    std::vector<std::string> excluded = reference;
-    for (const std::string& label : toStd(parameters.excludeLabels))
-      excluded.push_back(label);
-    frameOptions.markers = defaultPlannedLabels(takes.front(), excluded);
-    result->frames = collectLayoutFrames(takes, frameOptions);
-    if (parameters.pairsFile.isEmpty()) {
-      result->symmetry = detectLayoutPairs(result->frames).symmetry;
-      result->pairSource = QCoreApplication::translate("mocap::ui::LayoutPlanningPanel", "detected");
-    } else {
-      result->symmetry = readMarkerPairs(parameters.pairsFile.toStdString(), result->frames.labels);
-      result->pairSource = QFileInfo(parameters.pairsFile).fileName();
-    }
-    LayoutPlanOptions options;
-    options.method = parameters.method;
-    options.pfa.varianceFraction = parameters.variance;
-    options.pfa.restarts = parameters.restarts;
-    options.pfa.minK = parameters.minK;
-    options.pfa.maxK = parameters.maxK;
-    options.pfa.seed = static_cast<std::uint64_t>(parameters.seed);
     RunControl control;
     control.cancel = cancel.get();
     control.progress = [progress](double fraction) {
       progress->store(static_cast<int>(std::lround(1000.0 * std::clamp(fraction, 0.0, 1.0))));
     };
-    result->plan = planMarkerLayout(result->frames, result->symmetry, options, control);
+    static_cast<LayoutResult&>(*result) = planLayout(takes, request, control);
+    result->pairSource = request.pairsFile.empty()
+                             ? QCoreApplication::translate("mocap::ui::LayoutPlanningPanel", "detected")
+                             : QFileInfo(QString::fromStdString(request.pairsFile)).fileName();
   } catch (const std::exception& e) {  // nothing may throw across the event loop
     result->error = QString::fromStdString(e.what());
   }
@@ -108,6 +88,24 @@ std::shared_ptr<LayoutPlanResult> planLayout(Take openTake, const LayoutPlanPara
 }
 
 } // namespace
+
+LayoutRequest layoutRequest(const LayoutPlanParameters& parameters, const std::vector<std::string>& referenceLabels)
+{
+  LayoutRequest request;
+  request.stabilizeLabels = referenceLabels;
+  request.markerPatterns = toStd(parameters.markerPatterns);
+  request.excludePatterns = toStd(parameters.excludePatterns);
+  request.keyPoses = parseKeyPoses(parameters.keyPoses.toStdString());
+  request.pairsFile = parameters.pairsFile.toStdString();
+  request.plan.method = parameters.method;
+  request.plan.pfa.varianceFraction = parameters.variance;
+  request.plan.pfa.restarts = parameters.restarts;
+  request.plan.pfa.minK = parameters.minK;
+  request.plan.pfa.maxK = parameters.maxK;
+  request.plan.pfa.seed = static_cast<std::uint64_t>(parameters.seed);
+  request.plan.randomSubsets = parameters.randomSubsets;
+  return request;
+}
 
 LayoutPlanningPanel::LayoutPlanningPanel(TakeDocument& document, QWidget* parent)
     : QWidget(parent), m_document(document)
@@ -208,6 +206,18 @@ void LayoutPlanningPanel::buildForm()
   m_seed->setRange(0, 2147483647);
   form->addRow(tr("Seed:"), m_seed);
 
+  m_randomSubsets = new QSpinBox(this);
+  m_randomSubsets->setRange(0, 100000);
+  m_randomSubsets->setSpecialValueText(tr("none"));
+  m_randomSubsets->setToolTip(tr("Random marker sets scored at every size, the baseline a plan must beat"));
+  form->addRow(tr("Random sets:"), m_randomSubsets);
+
+  m_keyPoses = new QLineEdit(this);
+  m_keyPoses->setPlaceholderText(tr("automatic"));
+  m_keyPoses->setToolTip(tr("Key poses of the blendshape basis: frame numbers, comma-separated (TAKE:FRAME for a "
+                            "further take, TAKE from 1); blank: the most extreme frames"));
+  form->addRow(tr("Key poses:"), m_keyPoses);
+
   m_pairs = new QLineEdit(this);
   m_pairs->setPlaceholderText(tr("detected automatically"));
   m_pairs->setToolTip(tr("Mirror pairs: a text file (two labels a line) or a marker-set file (.json)"));
@@ -232,10 +242,16 @@ void LayoutPlanningPanel::buildForm()
           &LayoutPlanningPanel::editReferenceMarkersRequested);
   form->addRow(tr("Reference markers:"), m_reference);
 
+  m_markerPatterns = new QLineEdit(this);
+  m_markerPatterns->setPlaceholderText(tr("all but the reference markers"));
+  m_markerPatterns->setToolTip(tr("Markers to plan over, comma-separated; * and ? match any run and any character "
+                                  "(e.g. section1-*, lip?)"));
+  form->addRow(tr("Plan markers:"), m_markerPatterns);
+
   m_exclude = new QLineEdit(this);
   m_exclude->setPlaceholderText(tr("none"));
-  m_exclude->setToolTip(
-      tr("Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)"));
+  m_exclude->setToolTip(tr("Markers left out of the plan, comma-separated; * and ? match any run and any character "
+                           "(unlabelled points and the reference markers always are)"));
   form->addRow(tr("Leave out:"), m_exclude);
   layout->addLayout(form);
 
@@ -303,8 +319,11 @@ LayoutPlanParameters LayoutPlanningPanel::parameters() const
   p.minK = m_minK->value();
   p.maxK = m_maxK->value();
   p.seed = m_seed->value();
+  p.randomSubsets = m_randomSubsets->value();
+  p.keyPoses = m_keyPoses->text().trimmed();
   p.pairsFile = m_pairs->text().trimmed();
-  p.excludeLabels = splitLabels(m_exclude->text());
+  p.markerPatterns = splitLabels(m_markerPatterns->text());
+  p.excludePatterns = splitLabels(m_exclude->text());
   return p;
 }
 
@@ -318,8 +337,11 @@ void LayoutPlanningPanel::setParameters(const LayoutPlanParameters& p)
   m_minK->setValue(p.minK);
   m_maxK->setValue(p.maxK);
   m_seed->setValue(p.seed);
+  m_randomSubsets->setValue(p.randomSubsets);
+  m_keyPoses->setText(p.keyPoses);
   m_pairs->setText(p.pairsFile);
-  m_exclude->setText(p.excludeLabels.join(QStringLiteral(", ")));
+  m_markerPatterns->setText(p.markerPatterns.join(QStringLiteral(", ")));
+  m_exclude->setText(p.excludePatterns.join(QStringLiteral(", ")));
 }
 
 void LayoutPlanningPanel::readSettings()
@@ -333,8 +355,11 @@ void LayoutPlanningPanel::readSettings()
   p.minK = settings.value(kGroup + QStringLiteral("minK"), p.minK).toInt();
   p.maxK = settings.value(kGroup + QStringLiteral("maxK"), p.maxK).toInt();
   p.seed = settings.value(kGroup + QStringLiteral("seed"), p.seed).toInt();
+  p.randomSubsets = settings.value(kGroup + QStringLiteral("randomSubsets"), p.randomSubsets).toInt();
+  p.keyPoses = settings.value(kGroup + QStringLiteral("keyPoses")).toString();
   p.pairsFile = settings.value(kGroup + QStringLiteral("pairsFile")).toString();
-  p.excludeLabels = settings.value(kGroup + QStringLiteral("exclude")).toStringList();
+  p.markerPatterns = settings.value(kGroup + QStringLiteral("markers")).toStringList();
+  p.excludePatterns = settings.value(kGroup + QStringLiteral("exclude")).toStringList();
   p.extraTakes = settings.value(kGroup + QStringLiteral("extraTakes")).toStringList();
   setParameters(p);
 }
@@ -351,8 +376,11 @@ void LayoutPlanningPanel::writeSettings() const
   settings.setValue(kGroup + QStringLiteral("minK"), p.minK);
   settings.setValue(kGroup + QStringLiteral("maxK"), p.maxK);
   settings.setValue(kGroup + QStringLiteral("seed"), p.seed);
+  settings.setValue(kGroup + QStringLiteral("randomSubsets"), p.randomSubsets);
+  settings.setValue(kGroup + QStringLiteral("keyPoses"), p.keyPoses);
   settings.setValue(kGroup + QStringLiteral("pairsFile"), p.pairsFile);
-  settings.setValue(kGroup + QStringLiteral("exclude"), p.excludeLabels);
+  settings.setValue(kGroup + QStringLiteral("markers"), p.markerPatterns);
+  settings.setValue(kGroup + QStringLiteral("exclude"), p.excludePatterns);
   settings.setValue(kGroup + QStringLiteral("extraTakes"), p.extraTakes);
 }
 
@@ -368,12 +396,12 @@ QString LayoutPlanningPanel::run()
     problem = tr("The smallest cluster count (%1) is larger than the largest (%2).").arg(p.minK).arg(p.maxK);
   else if (!p.pairsFile.isEmpty() && !QFileInfo(p.pairsFile).isFile())
     problem = tr("The pairs file %1 does not exist.").arg(p.pairsFile);
-  for (const QString& label : p.excludeLabels)
-    if (problem.isEmpty() && !m_document.take().markerIndex(label.toStdString()))
-      problem = tr("The open take has no marker '%1'.").arg(label);
   const std::vector<std::string> reference = m_document.referenceLabels();
   if (problem.isEmpty() && !reference.empty() && reference.size() < 3)
     problem = tr("Head motion needs at least three reference markers (Marker ▸ Reference Markers…).");
+  LayoutRequest request;
+  if (problem.isEmpty())
+    problem = checkedRequest(p, reference, request);
   if (!problem.isEmpty()) {
     showError(problem);
     return problem;
@@ -387,8 +415,29 @@ QString LayoutPlanningPanel::run()
   m_status->setText(tr("Planning…"));
   setIdle(false);
   m_progressTimer->start();
-  m_watcher.setFuture(
-      QtConcurrent::run(planLayout, m_document.take(), p, reference, m_cancelFlag, m_progressValue));
+  m_watcher.setFuture(QtConcurrent::run(planInBackground, m_document.take(), p.extraTakes, std::move(request),
+                                        m_cancelFlag, m_progressValue));
+  return {};
+}
+
+QString LayoutPlanningPanel::checkedRequest(const LayoutPlanParameters& parameters,
+                                            const std::vector<std::string>& reference, LayoutRequest& request) const
+{
+  using Field = LayoutRequestError::Field;
+  const auto fieldName = [this](Field field) {
+    return field == Field::KeyPoses ? tr("Key poses") : field == Field::Markers ? tr("Plan markers") : tr("Leave out");
+  };
+  try {
+    request = layoutRequest(parameters, reference);
+    // The patterns are checked here too, so a typo is answered at once rather than after the take files are read.
+    const std::vector<std::string>& labels = m_document.take().labels();
+    if (!request.markerPatterns.empty())
+      (void)labelsMatching(labels, request.markerPatterns, Field::Markers);
+    if (!request.excludePatterns.empty())
+      (void)labelsMatching(labels, request.excludePatterns, Field::Exclude);
+  } catch (const LayoutRequestError& e) {
+    return tr("%1: %2").arg(fieldName(e.field()), QString::fromStdString(e.what()));
+  }
   return {};
 }
 
@@ -425,7 +474,8 @@ void LayoutPlanningPanel::setIdle(bool idle)
   m_exportSet->setEnabled(exportable);
   m_exportTake->setEnabled(exportable);
   for (QWidget* w : std::initializer_list<QWidget*>{m_takes, m_addTake, m_removeTake, m_method, m_variance,
-                                                    m_restarts, m_minK, m_maxK, m_seed, m_pairs, m_reference,
+                                                    m_restarts, m_minK, m_maxK, m_seed, m_randomSubsets,
+                                                    m_keyPoses, m_pairs, m_reference, m_markerPatterns,
                                                     m_exclude})
     w->setEnabled(idle);
 }
@@ -461,7 +511,7 @@ void LayoutPlanningPanel::onFinished()
                           .arg(static_cast<qlonglong>(plan.pcaComponents))
                           .arg(static_cast<qlonglong>(plan.recommendedSize))
                           .arg(frames.stabilized ? tr("head motion removed with %n reference marker(s)", nullptr,
-                                                      static_cast<int>(m_result->referenceLabels.size()))
+                                                      static_cast<int>(m_result->stabilizeLabels.size()))
                                                  : tr("head motion not removed: no reference markers")));
     m_status->setToolTip(tr("%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; "
                             "recommended by the %3")
@@ -478,17 +528,13 @@ const ScoredLayout* LayoutPlanningPanel::selectedLayout() const
 {
   if (!m_result)
     return nullptr;
-  const LayoutSize* entry = m_result->plan.size(m_plot->selectedSize());
-  return entry ? entry->layout(m_result->plan.method) : nullptr;
+  return m_result->layout(m_plot->selectedSize());
 }
 
 std::vector<std::string> LayoutPlanningPanel::selectedLabels() const
 {
-  std::vector<std::string> labels;
-  if (const ScoredLayout* layout = selectedLayout())
-    for (const Eigen::Index m : layout->markers)
-      labels.push_back(m_result->frames.labels[static_cast<std::size_t>(m)]);
-  return labels;
+  const ScoredLayout* layout = selectedLayout();
+  return layout ? m_result->labelsOf(*layout) : std::vector<std::string>{};
 }
 
 void LayoutPlanningPanel::showSelectedSize()
@@ -530,10 +576,8 @@ void LayoutPlanningPanel::showSelectedSize()
 
 std::vector<std::string> LayoutPlanningPanel::captureLabels() const
 {
-  std::vector<std::string> labels = selectedLabels();
-  if (!labels.empty())
-    labels.insert(labels.end(), m_result->referenceLabels.begin(), m_result->referenceLabels.end());
-  return labels;
+  const ScoredLayout* layout = selectedLayout();
+  return layout ? m_result->captureLabels(layout) : std::vector<std::string>{};
 }
 
 QString LayoutPlanningPanel::exportLabelList(const QString& path) const

@@ -1,8 +1,6 @@
 #pragma once
 
-#include "mocap/layout/layout_frames.h"
-#include "mocap/model/marker_pairs.h"
-#include "mocap/layout/marker_selection.h"
+#include "mocap/layout/layout_planning.h"
 
 #include <QFutureWatcher>
 #include <QString>
@@ -41,23 +39,29 @@ struct LayoutPlanParameters
   int minK = 0;            ///< 0 with maxK 0: every useful k
   int maxK = 0;
   int seed = 1;
+  int randomSubsets = 20;  ///< random marker sets per size for the baseline (0: none)
+  QString keyPoses;        ///< empty or "auto": automatic; else frame numbers (TAKE:FRAME for a further take)
   QString pairsFile;       ///< empty: pairs detected automatically
-  QStringList excludeLabels;  ///< markers left out of the plan (unlabelled points and the take's
-                              ///< reference markers always are)
+  QStringList markerPatterns;   ///< globs of the markers to plan; empty: every marker but unlabelled
+                                ///< points and the take's reference markers
+  QStringList excludePatterns;  ///< globs of markers left out of the plan
 };
 
-/// A finished (or failed) planning run: everything the panel shows and exports.
-struct LayoutPlanResult
+/// The core request (layout_planning.h) the parameters and the take's reference markers make, as
+/// `mocap pfa` makes it from its options. Throws LayoutRequestError for malformed key poses.
+[[nodiscard]] LayoutRequest layoutRequest(const LayoutPlanParameters& parameters,
+                                          const std::vector<std::string>& referenceLabels);
+
+/// A finished (or failed) planning run: the core result (planned frames, pairs, plan, the head
+/// reference markers it was planned with) and what the panel shows beside it.
+struct LayoutPlanResult : LayoutResult
 {
-  LayoutFrames frames;
-  MarkerSymmetry symmetry;
-  LayoutPlan plan;
-  std::vector<std::string> referenceLabels;  ///< head reference markers the plan was made with
   QString pairSource;  ///< where the pairs came from, in words
   QString error;       ///< non-empty when the run failed
 };
 
-/// The marker layout planning dock (Wellein et al. 2007 via marker_selection.h): the open take
+/// The marker layout planning dock (Wellein et al. 2007 via layout_planning.h, the planning `mocap pfa`
+/// runs): the open take
 /// plus optional take files, method and parameters; Run plans on a worker thread with progress and
 /// Cancel; the error-vs-marker-count plot; the selected size's markers with their pair frequencies,
 /// sent to the 3D view as a kept/dropped highlight; export of the reduced label list, marker-set
@@ -117,6 +121,10 @@ private:
   void exportWithDialog(const QString& title, const QString& filter,
                         QString (LayoutPlanningPanel::*write)(const QString&) const);
   [[nodiscard]] std::vector<std::string> captureLabels() const;
+  /// Builds the request into `request` and checks it against the open take: an error message, or
+  /// an empty string.
+  QString checkedRequest(const LayoutPlanParameters& parameters, const std::vector<std::string>& reference,
+                         LayoutRequest& request) const;
   [[nodiscard]] const ScoredLayout* selectedLayout() const;
 
   TakeDocument& m_document;
@@ -131,7 +139,10 @@ private:
   QSpinBox* m_seed = nullptr;
   QLineEdit* m_pairs = nullptr;
   ReferenceMarkersRow* m_reference = nullptr;
+  QLineEdit* m_markerPatterns = nullptr;
   QLineEdit* m_exclude = nullptr;
+  QLineEdit* m_keyPoses = nullptr;
+  QSpinBox* m_randomSubsets = nullptr;
   QPushButton* m_run = nullptr;
   QPushButton* m_cancel = nullptr;
   QProgressBar* m_progress = nullptr;
