@@ -3,13 +3,6 @@
 <TS version="2.1" language="de_DE">
 <context>
     <name>GapFillStep</name>
-    <message numerus="yes">
-        <source>, %n left open</source>
-        <translation type="vanished">
-            <numerusform>, %n offen geblieben</numerusform>
-            <numerusform>, %n offen geblieben</numerusform>
-        </translation>
-    </message>
     <message>
         <location filename="../widgets/panels/gap_fill_step.cpp" line="+32"/>
         <source>%1 s</source>
@@ -105,10 +98,6 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <source>There is no marker &apos;%1&apos;.</source>
-        <translation type="vanished">Es gibt keinen Marker „%1“.</translation>
-    </message>
-    <message>
         <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>Keine Referenzmarker: Wählen Sie sie unter Marker ▸ Referenzmarker… aus</translation>
@@ -201,12 +190,12 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+94"/>
+        <location filename="../app/studio/main_window.cpp" line="+88"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+31"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
     </message>
@@ -229,10 +218,6 @@
         <location line="+11"/>
         <source>History</source>
         <translation>Verlauf</translation>
-    </message>
-    <message>
-        <source>&lt;opened take&gt;</source>
-        <translation type="vanished">&lt;geöffnete Aufnahme&gt;</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -397,10 +382,6 @@
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <source>&amp;Head-Stabilized View…</source>
-        <translation type="vanished">&amp;Kopfstabilisierte Ansicht…</translation>
-    </message>
-    <message>
         <location line="-56"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
@@ -416,10 +397,6 @@
         <translation>Über Mocap Studio</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized view.&lt;/p&gt;</source>
-        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Fehlpunkt, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <location line="+64"/>
         <source>3D view in the lab frame</source>
         <translation>3D-Ansicht im Laborkoordinatensystem</translation>
@@ -428,18 +405,6 @@
         <location line="+8"/>
         <source>Head-Stabilized View</source>
         <translation>Kopfstabilisierte Ansicht</translation>
-    </message>
-    <message>
-        <source>Head-mounted reference markers (at least three, comma separated):</source>
-        <translation type="vanished">Am Kopf befestigte Referenzmarker (mindestens drei, durch Kommas getrennt):</translation>
-    </message>
-    <message>
-        <source>There is no marker &apos;%1&apos;.</source>
-        <translation type="vanished">Es gibt keinen Marker „%1“.</translation>
-    </message>
-    <message>
-        <source>3D view stabilized on the head (Ctrl+B again for the lab frame)</source>
-        <translation type="vanished">3D-Ansicht auf den Kopf stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
     </message>
     <message>
         <location line="-106"/>
@@ -502,7 +467,7 @@
         <translation>Marker &amp;löschen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Remove the selected markers from the take (undoable)</source>
         <translation>Die ausgewählten Marker aus der Aufnahme entfernen (rückgängig machbar)</translation>
     </message>
@@ -567,7 +532,7 @@
         <translation>&amp;Verfolgen und beschriften</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
         <translation>Die unbeschrifteten Punkte neu verfolgen und ihnen die Namen der beschrifteten Marker der Aufnahme geben</translation>
     </message>
@@ -577,7 +542,7 @@
         <translation>&amp;Vertauschungen beheben…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Find frames where two labels exchange and repair the ones you accept</source>
         <translation>Bilder finden, in denen zwei Namen vertauscht sind, und die bestätigten reparieren</translation>
     </message>
@@ -597,149 +562,7 @@
         <translation>Beschriften: einen Marker in der Tabelle wählen, dann den Punkt anklicken, der er ist</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Tracking and labelling…</source>
-        <translation>Verfolgen und Beschriften…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Track and Label cancelled; the take is unchanged</source>
-        <translation>Verfolgen und Beschriften abgebrochen; die Aufnahme ist unverändert</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Track and Label</source>
-        <translation>Verfolgen und beschriften</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Nothing to label: every marker has a label</source>
-        <translation>Nichts zu beschriften: Jeder Marker hat einen Namen</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>Nothing to label: none of the %n unlabelled fragment(s) matches a marker</source>
-        <translation>
-            <numerusform>Nichts zu beschriften: %n unbeschriftetes Fragment passt zu keinem Marker</numerusform>
-            <numerusform>Nichts zu beschriften: Keines der %n unbeschrifteten Fragmente passt zu einem Marker</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Track and label (%1 of %2 fragments labelled)</source>
-        <translation>Verfolgen und beschriften (%1 von %2 Fragmenten beschriftet)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
-        <translation>%1 von %2 Fragmenten beschriftet; %3 Abtastwerte unbeschriftet</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Looking for label swaps…</source>
-        <translation>Suche nach Namensvertauschungen…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Swap search cancelled</source>
-        <translation>Suche nach Vertauschungen abgebrochen</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Fix Swaps</source>
-        <translation>Vertauschungen beheben</translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>No label swaps found</source>
-        <translation>Keine vertauschten Namen gefunden</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>No swap accepted; the take is unchanged</source>
-        <translation>Keine Vertauschung übernommen; die Aufnahme ist unverändert</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+8"/>
-        <source>Repair %n label swap(s)</source>
-        <translation>
-            <numerusform>%n Namensvertauschung reparieren</numerusform>
-            <numerusform>%n Namensvertauschungen reparieren</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Select the one marker whose label the point gets, then click the point</source>
-        <translation>Den einen Marker wählen, dessen Namen der Punkt erhält, dann den Punkt anklicken</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Label %1 as %2</source>
-        <translation>%1 als %2 beschriften</translation>
-    </message>
-    <message>
         <location line="+13"/>
-        <source>Select the markers to delete first</source>
-        <translation>Wählen Sie zuerst die zu löschenden Marker aus</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Select the markers to average first</source>
-        <translation>Wählen Sie zuerst die zu mittelnden Marker aus</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+7"/>
-        <source>Add Averaged Marker</source>
-        <translation>Gemittelten Marker hinzufügen</translation>
-    </message>
-    <message>
-        <location line="-6"/>
-        <source>Label of the marker at the mean of %1:</source>
-        <translation>Name des Markers im Mittel von %1:</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>&apos;%1&apos; is empty or already a marker label; choose another.</source>
-        <translation>„%1“ ist leer oder bereits ein Markername; wählen Sie einen anderen.</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Add averaged marker %1</source>
-        <translation>Gemittelten Marker %1 hinzufügen</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Select exactly two markers and Shift-drag a frame range on the curves first</source>
-        <translation>Wählen Sie genau zwei Marker aus und ziehen Sie zuerst mit Umschalt einen Bildbereich in den Kurven auf</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Nothing to swap: both markers are gaps over the selected range</source>
-        <translation>Nichts zu tauschen: Beide Marker sind im ausgewählten Bereich Lücken</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Swap %1 and %2 over frames %3–%4</source>
-        <translation>%1 und %2 in den Bildern %3–%4 tauschen</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Select markers and Shift-drag a frame range on the curves first</source>
-        <translation>Zuerst Marker auswählen und auf den Kurven per Umschalt-Ziehen einen Frame-Bereich markieren</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Nothing to delete: the selected range is already a gap</source>
-        <translation>Nichts zu löschen: Der ausgewählte Bereich ist bereits eine Lücke</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Delete frames %1–%2</source>
-        <translation>Frames %1–%2 löschen</translation>
-    </message>
-    <message>
-        <location line="+11"/>
         <source>Opening %1…</source>
         <translation>%1 wird geöffnet…</translation>
     </message>
@@ -783,13 +606,6 @@
         <location line="+44"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n warning(s) while reading; the first: %1</source>
-        <translation type="vanished">
-            <numerusform>%n Warnung beim Lesen: %1</numerusform>
-            <numerusform>%n Warnungen beim Lesen; die erste: %1</numerusform>
-        </translation>
     </message>
     <message>
         <location line="-202"/>
@@ -893,7 +709,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-867"/>
+        <location line="-681"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -927,10 +743,6 @@
         <location line="+2"/>
         <source>Change only the frames selected on the curves (Shift+drag)</source>
         <translation>Nur die in den Kurven ausgewählten Bilder ändern (Umschalt+Ziehen)</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="vanished">Abbrechen</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -1289,14 +1101,6 @@
         <translation>Verformung</translation>
     </message>
     <message>
-        <source>Head-mounted reference markers (comma separated) whose motion is removed before binding and deforming; empty: none</source>
-        <translation type="vanished">Am Kopf befestigte Referenzmarker (durch Kommas getrennt), deren Bewegung vor dem Binden und Verformen entfernt wird; leer: keine</translation>
-    </message>
-    <message>
-        <source>Head markers:</source>
-        <translation type="vanished">Kopfmarker:</translation>
-    </message>
-    <message>
         <location line="+3"/>
         <source>Head motion is removed with these markers before binding and deforming; they are not bound.</source>
         <translation>Mit diesen Markern wird die Kopfbewegung vor dem Binden und Verformen entfernt; sie selbst werden nicht gebunden.</translation>
@@ -1535,42 +1339,6 @@
 </context>
 <context>
     <name>mocap::ui::GapFillStep</name>
-    <message>
-        <source>Auto (best blend)</source>
-        <translation type="vanished">Automatisch (beste Überblendung)</translation>
-    </message>
-    <message>
-        <source>Rigid neighbours</source>
-        <translation type="vanished">Starre Nachbarn</translation>
-    </message>
-    <message>
-        <source>PCA (marker correlations)</source>
-        <translation type="vanished">PCA (Marker-Korrelationen)</translation>
-    </message>
-    <message>
-        <source>Cubic spline</source>
-        <translation type="vanished">Kubischer Spline</translation>
-    </message>
-    <message>
-        <source>Linear</source>
-        <translation type="vanished">Linear</translation>
-    </message>
-    <message>
-        <source>Paper: three neighbours (eqs 3–5)</source>
-        <translation type="vanished">Paper: drei Nachbarn (Gl. 3–5)</translation>
-    </message>
-    <message>
-        <source>Paper: n neighbours (eqs 6–7)</source>
-        <translation type="vanished">Paper: n Nachbarn (Gl. 6–7)</translation>
-    </message>
-    <message>
-        <source>Neighbour average (Guenter)</source>
-        <translation type="vanished">Nachbarmittelwert (Guenter)</translation>
-    </message>
-    <message>
-        <source>Distance-weighted neighbours (Lin–Ouhyoung)</source>
-        <translation type="vanished">Distanzgewichtete Nachbarn (Lin–Ouhyoung)</translation>
-    </message>
     <message>
         <location filename="../widgets/panels/gap_fill_step.cpp" line="+16"/>
         <source>Method</source>
@@ -1961,14 +1729,6 @@
 <context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
-        <translation type="vanished">Am Kopf befestigte Marker (mindestens drei, durch Kommas getrennt), die sich nur mit dem Kopf bewegen</translation>
-    </message>
-    <message>
-        <source>Use Selection</source>
-        <translation type="vanished">Auswahl verwenden</translation>
-    </message>
-    <message>
         <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>Am Kopf befestigte Marker, die sich nur mit dem Kopf bewegen: An ihnen wird die Kopfhaltung jedes Bildes gemessen.</translation>
@@ -2084,6 +1844,80 @@
         <location line="+1"/>
         <source>Stop the computation (Esc)</source>
         <translation>Berechnung abbrechen (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LabellingActions</name>
+    <message>
+        <location filename="../widgets/actions/labelling_actions.cpp" line="+38"/>
+        <source>Tracking and labelling…</source>
+        <translation>Verfolgen und Beschriften…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Track and Label cancelled; the take is unchanged</source>
+        <translation>Verfolgen und Beschriften abgebrochen; die Aufnahme ist unverändert</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Track and Label</source>
+        <translation>Verfolgen und beschriften</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Nothing to label: every marker has a label</source>
+        <translation>Nichts zu beschriften: Jeder Marker hat einen Namen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Nothing to label: none of the %n unlabelled fragment(s) matches a marker</source>
+        <translation>
+            <numerusform>Nichts zu beschriften: %n unbeschriftetes Fragment passt zu keinem Marker</numerusform>
+            <numerusform>Nichts zu beschriften: Keines der %n unbeschrifteten Fragmente passt zu einem Marker</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Track and label (%1 of %2 fragments labelled)</source>
+        <translation>Verfolgen und beschriften (%1 von %2 Fragmenten beschriftet)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
+        <translation>%1 von %2 Fragmenten beschriftet; %3 Abtastwerte unbeschriftet</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Looking for label swaps…</source>
+        <translation>Suche nach Namensvertauschungen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Swap search cancelled</source>
+        <translation>Suche nach Vertauschungen abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Fix Swaps</source>
+        <translation>Vertauschungen beheben</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>No label swaps found</source>
+        <translation>Keine vertauschten Namen gefunden</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No swap accepted; the take is unchanged</source>
+        <translation>Keine Vertauschung übernommen; die Aufnahme ist unverändert</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>Repair %n label swap(s)</source>
+        <translation>
+            <numerusform>%n Namensvertauschung reparieren</numerusform>
+            <numerusform>%n Namensvertauschungen reparieren</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2312,10 +2146,6 @@
         <translation>Aus dem Plan ausgelassene Marker, durch Kommas getrennt; * und ? stehen für beliebig viele bzw. ein beliebiges Zeichen (unbenannte Punkte und die Referenzmarker werden immer ausgelassen)</translation>
     </message>
     <message>
-        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
-        <translation type="vanished">Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte und die Referenzmarker sind es immer)</translation>
-    </message>
-    <message>
         <location line="+253"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
@@ -2334,14 +2164,6 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <source>e.g. root-1, root-2, root-3</source>
-        <translation type="vanished">z. B. root-1, root-2, root-3</translation>
-    </message>
-    <message>
-        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
-        <translation type="vanished">Kopf-Referenzmarker, durch Kommas getrennt: Mit ihnen wird die Kopfbewegung entfernt, und sie werden nicht mit eingeplant</translation>
-    </message>
-    <message>
         <location line="-272"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
@@ -2351,10 +2173,6 @@
         <location line="+41"/>
         <source>none</source>
         <translation>keine</translation>
-    </message>
-    <message>
-        <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
-        <translation type="vanished">Von der Planung ausgenommene Marker, durch Kommas getrennt (unbeschriftete Punkte sind es immer)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2457,10 +2275,6 @@
         <translation>Die Paardatei %1 existiert nicht.</translation>
     </message>
     <message>
-        <source>The open take has no marker &apos;%1&apos;.</source>
-        <translation type="vanished">Die geöffnete Aufnahme hat keinen Marker „%1“.</translation>
-    </message>
-    <message>
         <location line="+3"/>
         <source>Head motion needs at least three reference markers (Marker ▸ Reference Markers…).</source>
         <translation>Zum Entfernen der Kopfbewegung sind mindestens drei Referenzmarker nötig (Marker ▸ Referenzmarker…).</translation>
@@ -2506,10 +2320,6 @@
         <translation>Abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
-        <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
-        <translation type="vanished">%1 Marker, %2 Bilder, %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
-    </message>
-    <message>
         <location line="+15"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
@@ -2537,6 +2347,80 @@
         <location line="+2"/>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::MarkerEditActions</name>
+    <message>
+        <location filename="../widgets/actions/marker_edit_actions.cpp" line="+35"/>
+        <source>Select the markers to delete first</source>
+        <translation>Wählen Sie zuerst die zu löschenden Marker aus</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Select the markers to average first</source>
+        <translation>Wählen Sie zuerst die zu mittelnden Marker aus</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+7"/>
+        <source>Add Averaged Marker</source>
+        <translation>Gemittelten Marker hinzufügen</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Label of the marker at the mean of %1:</source>
+        <translation>Name des Markers im Mittel von %1:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; is empty or already a marker label; choose another.</source>
+        <translation>„%1“ ist leer oder bereits ein Markername; wählen Sie einen anderen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add averaged marker %1</source>
+        <translation>Gemittelten Marker %1 hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Select exactly two markers and Shift-drag a frame range on the curves first</source>
+        <translation>Wählen Sie genau zwei Marker aus und ziehen Sie zuerst mit Umschalt einen Bildbereich in den Kurven auf</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Nothing to swap: both markers are gaps over the selected range</source>
+        <translation>Nichts zu tauschen: Beide Marker sind im ausgewählten Bereich Lücken</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Swap %1 and %2 over frames %3–%4</source>
+        <translation>%1 und %2 in den Bildern %3–%4 tauschen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Select markers and Shift-drag a frame range on the curves first</source>
+        <translation>Zuerst Marker auswählen und auf den Kurven per Umschalt-Ziehen einen Frame-Bereich markieren</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Nothing to delete: the selected range is already a gap</source>
+        <translation>Nichts zu löschen: Der ausgewählte Bereich ist bereits eine Lücke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Delete frames %1–%2</source>
+        <translation>Frames %1–%2 löschen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Select the one marker whose label the point gets, then click the point</source>
+        <translation>Den einen Marker wählen, dessen Namen der Punkt erhält, dann den Punkt anklicken</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Label %1 as %2</source>
+        <translation>%1 als %2 beschriften</translation>
     </message>
 </context>
 <context>
@@ -2841,14 +2725,6 @@
 <context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <source>Smoothing spline (GCV)</source>
-        <translation type="vanished">Glättungsspline (GCV)</translation>
-    </message>
-    <message>
-        <source>B-spline (eqs 11–12)</source>
-        <translation type="vanished">B-Spline (Gl. 11–12)</translation>
-    </message>
-    <message>
         <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV-Glättungsspline (Woltring)</translation>
@@ -2921,10 +2797,6 @@
         <location filename="../widgets/panels/spike_step.cpp" line="-72"/>
         <source>Robust (local fit + MAD)</source>
         <translation>Robust (lokale Anpassung + MAD)</translation>
-    </message>
-    <message>
-        <source>Paper (eqs 8–10)</source>
-        <translation type="vanished">Paper (Gl. 8–10)</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -3,12 +3,6 @@
 <TS version="2.1" language="zh_CN">
 <context>
     <name>GapFillStep</name>
-    <message numerus="yes">
-        <source>, %n left open</source>
-        <translation type="vanished">
-            <numerusform>，%n 个未填补</numerusform>
-        </translation>
-    </message>
     <message>
         <location filename="../widgets/panels/gap_fill_step.cpp" line="+32"/>
         <source>%1 s</source>
@@ -96,10 +90,6 @@
 </context>
 <context>
     <name>HeadStabilizationStep</name>
-    <message>
-        <source>There is no marker &apos;%1&apos;.</source>
-        <translation type="vanished">没有标记点“%1”。</translation>
-    </message>
     <message>
         <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
@@ -191,12 +181,12 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+94"/>
+        <location filename="../app/studio/main_window.cpp" line="+88"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+31"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
     </message>
@@ -219,10 +209,6 @@
         <location line="+11"/>
         <source>History</source>
         <translation>历史记录</translation>
-    </message>
-    <message>
-        <source>&lt;opened take&gt;</source>
-        <translation type="vanished">&lt;已打开的拍摄&gt;</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -387,10 +373,6 @@
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <source>&amp;Head-Stabilized View…</source>
-        <translation type="vanished">头部稳定视图(&amp;H)…</translation>
-    </message>
-    <message>
         <location line="-56"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
@@ -406,10 +388,6 @@
         <translation>关于 Mocap Studio</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;&lt;p&gt;Keys: Space play/pause, ←/→ step (Shift: 10), Home/End, PgUp/PgDn previous/next gap, Ctrl+PgUp/PgDn previous/next bad point, Ctrl+R reset camera, L marker links, H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized view.&lt;/p&gt;</source>
-        <translation type="vanished">&lt;b&gt;Mocap Studio&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图。&lt;/p&gt;</translation>
-    </message>
-    <message>
         <location line="+64"/>
         <source>3D view in the lab frame</source>
         <translation>三维视图使用实验室坐标系</translation>
@@ -418,18 +396,6 @@
         <location line="+8"/>
         <source>Head-Stabilized View</source>
         <translation>头部稳定视图</translation>
-    </message>
-    <message>
-        <source>Head-mounted reference markers (at least three, comma separated):</source>
-        <translation type="vanished">头戴参考标记点（至少三个，以逗号分隔）：</translation>
-    </message>
-    <message>
-        <source>There is no marker &apos;%1&apos;.</source>
-        <translation type="vanished">没有标记点“%1”。</translation>
-    </message>
-    <message>
-        <source>3D view stabilized on the head (Ctrl+B again for the lab frame)</source>
-        <translation type="vanished">三维视图已按头部稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
     </message>
     <message>
         <location line="-106"/>
@@ -492,7 +458,7 @@
         <translation>删除标记点(&amp;D)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Remove the selected markers from the take (undoable)</source>
         <translation>从拍摄中移除所选标记点（可撤销）</translation>
     </message>
@@ -557,7 +523,7 @@
         <translation>跟踪并标注(&amp;T)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
         <translation>重新跟踪未标注的点，并赋予它们拍摄中已标注标记点的名称</translation>
     </message>
@@ -567,7 +533,7 @@
         <translation>修复交换(&amp;S)…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Find frames where two labels exchange and repair the ones you accept</source>
         <translation>查找两个名称互换的帧，并修复您接受的那些</translation>
     </message>
@@ -587,147 +553,7 @@
         <translation>标注：在表格中选择一个标记点，然后点击对应的点</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Tracking and labelling…</source>
-        <translation>正在跟踪并标注…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Track and Label cancelled; the take is unchanged</source>
-        <translation>跟踪并标注已取消，动捕片段未更改</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Track and Label</source>
-        <translation>跟踪并标注</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Nothing to label: every marker has a label</source>
-        <translation>没有可标注的内容：每个标记点都已有名称</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>Nothing to label: none of the %n unlabelled fragment(s) matches a marker</source>
-        <translation>
-            <numerusform>没有可标注的内容：%n 个未标注片段均无法与标记点匹配</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Track and label (%1 of %2 fragments labelled)</source>
-        <translation>跟踪并标注（已标注 %2 个片段中的 %1 个）</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
-        <translation>已标注 %2 个片段中的 %1 个；%3 个采样未标注</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Looking for label swaps…</source>
-        <translation>正在查找名称交换…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Swap search cancelled</source>
-        <translation>交换查找已取消</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Fix Swaps</source>
-        <translation>修复交换</translation>
-    </message>
-    <message>
-        <location line="+16"/>
-        <source>No label swaps found</source>
-        <translation>未发现名称交换</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>No swap accepted; the take is unchanged</source>
-        <translation>未接受任何交换，动捕片段未更改</translation>
-    </message>
-    <message numerus="yes">
-        <location line="+8"/>
-        <source>Repair %n label swap(s)</source>
-        <translation>
-            <numerusform>修复 %n 处名称交换</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Select the one marker whose label the point gets, then click the point</source>
-        <translation>请选择一个标记点作为该点的名称，然后点击该点</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Label %1 as %2</source>
-        <translation>将 %1 标注为 %2</translation>
-    </message>
-    <message>
         <location line="+13"/>
-        <source>Select the markers to delete first</source>
-        <translation>请先选择要删除的标记点</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Select the markers to average first</source>
-        <translation>请先选择要平均的标记点</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+7"/>
-        <source>Add Averaged Marker</source>
-        <translation>添加平均标记点</translation>
-    </message>
-    <message>
-        <location line="-6"/>
-        <source>Label of the marker at the mean of %1:</source>
-        <translation>位于 %1 平均位置的标记点名称：</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>&apos;%1&apos; is empty or already a marker label; choose another.</source>
-        <translation>“%1”为空或已是标记点名称，请另选一个。</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Add averaged marker %1</source>
-        <translation>添加平均标记点 %1</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Select exactly two markers and Shift-drag a frame range on the curves first</source>
-        <translation>请先选择恰好两个标记点，并在曲线上按住 Shift 拖动选择帧范围</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Nothing to swap: both markers are gaps over the selected range</source>
-        <translation>没有可交换的内容：两个标记点在所选范围内均为缺口</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Swap %1 and %2 over frames %3–%4</source>
-        <translation>在第 %3–%4 帧交换 %1 和 %2</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Select markers and Shift-drag a frame range on the curves first</source>
-        <translation>请先选择标记点，并在曲线上按住 Shift 拖动选取帧范围</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Nothing to delete: the selected range is already a gap</source>
-        <translation>没有可删除的内容：所选范围已是缺口</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Delete frames %1–%2</source>
-        <translation>删除第 %1–%2 帧</translation>
-    </message>
-    <message>
-        <location line="+11"/>
         <source>Opening %1…</source>
         <translation>正在打开 %1…</translation>
     </message>
@@ -769,12 +595,6 @@
         <location line="+44"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n warning(s) while reading; the first: %1</source>
-        <translation type="vanished">
-            <numerusform>读取时出现 %n 条警告；第一条：%1</numerusform>
-        </translation>
     </message>
     <message>
         <location line="-202"/>
@@ -878,7 +698,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-867"/>
+        <location line="-681"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -912,10 +732,6 @@
         <location line="+2"/>
         <source>Change only the frames selected on the curves (Shift+drag)</source>
         <translation>仅更改在曲线上选中的帧（Shift+拖动）</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="vanished">取消</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -1269,14 +1085,6 @@
         <translation>变形</translation>
     </message>
     <message>
-        <source>Head-mounted reference markers (comma separated) whose motion is removed before binding and deforming; empty: none</source>
-        <translation type="vanished">头戴参考标记点（以逗号分隔），在绑定和变形之前去除其运动；留空：无</translation>
-    </message>
-    <message>
-        <source>Head markers:</source>
-        <translation type="vanished">头部标记点：</translation>
-    </message>
-    <message>
         <location line="+3"/>
         <source>Head motion is removed with these markers before binding and deforming; they are not bound.</source>
         <translation>在绑定和变形之前用这些标记点去除头部运动；它们本身不参与绑定。</translation>
@@ -1513,42 +1321,6 @@
 </context>
 <context>
     <name>mocap::ui::GapFillStep</name>
-    <message>
-        <source>Auto (best blend)</source>
-        <translation type="vanished">自动（最佳混合）</translation>
-    </message>
-    <message>
-        <source>Rigid neighbours</source>
-        <translation type="vanished">刚性邻近点</translation>
-    </message>
-    <message>
-        <source>PCA (marker correlations)</source>
-        <translation type="vanished">PCA（标记点相关性）</translation>
-    </message>
-    <message>
-        <source>Cubic spline</source>
-        <translation type="vanished">三次样条</translation>
-    </message>
-    <message>
-        <source>Linear</source>
-        <translation type="vanished">线性</translation>
-    </message>
-    <message>
-        <source>Paper: three neighbours (eqs 3–5)</source>
-        <translation type="vanished">论文：三个邻近点（式 3–5）</translation>
-    </message>
-    <message>
-        <source>Paper: n neighbours (eqs 6–7)</source>
-        <translation type="vanished">论文：n 个邻近点（式 6–7）</translation>
-    </message>
-    <message>
-        <source>Neighbour average (Guenter)</source>
-        <translation type="vanished">邻近点平均（Guenter）</translation>
-    </message>
-    <message>
-        <source>Distance-weighted neighbours (Lin–Ouhyoung)</source>
-        <translation type="vanished">距离加权邻近点（Lin–Ouhyoung）</translation>
-    </message>
     <message>
         <location filename="../widgets/panels/gap_fill_step.cpp" line="+16"/>
         <source>Method</source>
@@ -1938,14 +1710,6 @@
 <context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <source>Head-mounted markers (at least three, comma separated) that move only with the head</source>
-        <translation type="vanished">仅随头部运动的头戴标记点（至少三个，以逗号分隔）</translation>
-    </message>
-    <message>
-        <source>Use Selection</source>
-        <translation type="vanished">使用所选</translation>
-    </message>
-    <message>
         <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>仅随头部运动的头戴标记点：每一帧的头部姿态都基于它们测得。</translation>
@@ -2061,6 +1825,78 @@
         <location line="+1"/>
         <source>Stop the computation (Esc)</source>
         <translation>停止计算（Esc）</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LabellingActions</name>
+    <message>
+        <location filename="../widgets/actions/labelling_actions.cpp" line="+38"/>
+        <source>Tracking and labelling…</source>
+        <translation>正在跟踪并标注…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Track and Label cancelled; the take is unchanged</source>
+        <translation>跟踪并标注已取消，动捕片段未更改</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Track and Label</source>
+        <translation>跟踪并标注</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Nothing to label: every marker has a label</source>
+        <translation>没有可标注的内容：每个标记点都已有名称</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>Nothing to label: none of the %n unlabelled fragment(s) matches a marker</source>
+        <translation>
+            <numerusform>没有可标注的内容：%n 个未标注片段均无法与标记点匹配</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Track and label (%1 of %2 fragments labelled)</source>
+        <translation>跟踪并标注（已标注 %2 个片段中的 %1 个）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 of %2 fragments labelled; %3 samples left unlabelled</source>
+        <translation>已标注 %2 个片段中的 %1 个；%3 个采样未标注</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Looking for label swaps…</source>
+        <translation>正在查找名称交换…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Swap search cancelled</source>
+        <translation>交换查找已取消</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Fix Swaps</source>
+        <translation>修复交换</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>No label swaps found</source>
+        <translation>未发现名称交换</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No swap accepted; the take is unchanged</source>
+        <translation>未接受任何交换，动捕片段未更改</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>Repair %n label swap(s)</source>
+        <translation>
+            <numerusform>修复 %n 处名称交换</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2289,10 +2125,6 @@
         <translation>不参与规划的标记，以逗号分隔；* 和 ? 分别匹配任意长度和任意一个字符（未标注的点和参考标记总是不参与）</translation>
     </message>
     <message>
-        <source>Markers left out of the plan, comma-separated (unlabelled points and the reference markers always are)</source>
-        <translation type="vanished">不参与规划的标记点，以逗号分隔（未标注的点和参考标记点始终不参与）</translation>
-    </message>
-    <message>
         <location line="+253"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
@@ -2310,14 +2142,6 @@
         <translation>未去除头部运动：没有参考标记点</translation>
     </message>
     <message>
-        <source>e.g. root-1, root-2, root-3</source>
-        <translation type="vanished">例如 root-1, root-2, root-3</translation>
-    </message>
-    <message>
-        <source>Head reference markers, comma-separated: head motion is removed with them and they are not planned over</source>
-        <translation type="vanished">头部参考标记点，以逗号分隔：用于去除头部运动，且不参与规划</translation>
-    </message>
-    <message>
         <location line="-272"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
@@ -2327,10 +2151,6 @@
         <location line="+41"/>
         <source>none</source>
         <translation>无</translation>
-    </message>
-    <message>
-        <source>Markers left out of the plan, comma-separated (unlabelled points always are)</source>
-        <translation type="vanished">不参与规划的标记点，以逗号分隔（未标注的点始终不参与）</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2433,10 +2253,6 @@
         <translation>配对文件 %1 不存在。</translation>
     </message>
     <message>
-        <source>The open take has no marker &apos;%1&apos;.</source>
-        <translation type="vanished">已打开的拍摄数据中没有标记点“%1”。</translation>
-    </message>
-    <message>
         <location line="+3"/>
         <source>Head motion needs at least three reference markers (Marker ▸ Reference Markers…).</source>
         <translation>去除头部运动至少需要三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
@@ -2482,10 +2298,6 @@
         <translation>已取消，保留先前的结果。</translation>
     </message>
     <message>
-        <source>%1 markers, %2 frames, %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
-        <translation type="vanished">%1 个标记点，%2 帧，%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
-    </message>
-    <message>
         <location line="+15"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
@@ -2513,6 +2325,80 @@
         <location line="+2"/>
         <source>Wrote %1</source>
         <translation>已写入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::MarkerEditActions</name>
+    <message>
+        <location filename="../widgets/actions/marker_edit_actions.cpp" line="+35"/>
+        <source>Select the markers to delete first</source>
+        <translation>请先选择要删除的标记点</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Select the markers to average first</source>
+        <translation>请先选择要平均的标记点</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+7"/>
+        <source>Add Averaged Marker</source>
+        <translation>添加平均标记点</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Label of the marker at the mean of %1:</source>
+        <translation>位于 %1 平均位置的标记点名称：</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;%1&apos; is empty or already a marker label; choose another.</source>
+        <translation>“%1”为空或已是标记点名称，请另选一个。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Add averaged marker %1</source>
+        <translation>添加平均标记点 %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Select exactly two markers and Shift-drag a frame range on the curves first</source>
+        <translation>请先选择恰好两个标记点，并在曲线上按住 Shift 拖动选择帧范围</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Nothing to swap: both markers are gaps over the selected range</source>
+        <translation>没有可交换的内容：两个标记点在所选范围内均为缺口</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Swap %1 and %2 over frames %3–%4</source>
+        <translation>在第 %3–%4 帧交换 %1 和 %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Select markers and Shift-drag a frame range on the curves first</source>
+        <translation>请先选择标记点，并在曲线上按住 Shift 拖动选取帧范围</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Nothing to delete: the selected range is already a gap</source>
+        <translation>没有可删除的内容：所选范围已是缺口</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Delete frames %1–%2</source>
+        <translation>删除第 %1–%2 帧</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Select the one marker whose label the point gets, then click the point</source>
+        <translation>请选择一个标记点作为该点的名称，然后点击该点</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Label %1 as %2</source>
+        <translation>将 %1 标注为 %2</translation>
     </message>
 </context>
 <context>
@@ -2814,14 +2700,6 @@
 <context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <source>Smoothing spline (GCV)</source>
-        <translation type="vanished">平滑样条（GCV）</translation>
-    </message>
-    <message>
-        <source>B-spline (eqs 11–12)</source>
-        <translation type="vanished">B 样条（式 11–12）</translation>
-    </message>
-    <message>
         <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV 平滑样条（Woltring）</translation>
@@ -2894,10 +2772,6 @@
         <location filename="../widgets/panels/spike_step.cpp" line="-72"/>
         <source>Robust (local fit + MAD)</source>
         <translation>稳健（局部拟合 + MAD）</translation>
-    </message>
-    <message>
-        <source>Paper (eqs 8–10)</source>
-        <translation type="vanished">论文（式 8–10）</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -2,16 +2,14 @@
 
 #include "language.h"
 
-#include "commands/apply_patches_command.h"
+#include "actions/labelling_actions.h"
+#include "actions/marker_edit_actions.h"
+
 #include "commands/record_step_command.h"
-#include "commands/insert_marker_command.h"
-#include "commands/remove_markers_command.h"
-#include "commands/replace_take_command.h"
 #include "commands/set_reference_markers_command.h"
 #include "dialogs/export_dialog.h"
 #include "dialogs/reference_markers_dialog.h"
 #include "dialogs/job_dialog.h"
-#include "dialogs/swap_review_dialog.h"
 #include "dialogs/preferences_dialog.h"
 #include "dialogs/read_warnings_dialog.h"
 #include "document/autosave.h"
@@ -43,7 +41,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLocale>
 #include <QLabel>
 #include <QMenuBar>
@@ -69,12 +66,9 @@
 #include "mocap/deform/face_rig.h"
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/base/length_unit.h"
-#include "mocap/model/marker_edits.h"
 #include "mocap/model/marker_set.h"
 #include "mocap/deform/mesh_binding.h"
-#include "mocap/tracking/swap_detection.h"
 #include "mocap/io/take_io.h"
-#include "mocap/tracking/take_tracking.h"
 
 namespace mocap::studio {
 
@@ -96,6 +90,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   timelineBar->addWidget(m_timeline);
   timelineBar->setMovable(false);
   addToolBar(Qt::BottomToolBarArea, timelineBar);
+  m_markerEdits = new ui::MarkerEditActions(*m_document, *this, this);
+  m_labelling = new ui::LabellingActions(*m_document, *this, this);
+  const auto showMessage = [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); };
+  connect(m_markerEdits, &ui::MarkerEditActions::message, this, showMessage);
+  connect(m_labelling, &ui::LabellingActions::message, this, showMessage);
   createDocks();
   createActions();
   m_status = new QLabel(this);
@@ -304,7 +303,7 @@ void MainWindow::createActions()
   edit->addAction(undo);
   edit->addAction(redo);
   edit->addSeparator();
-  QAction* deleteRange = edit->addAction(tr("&Delete Range"), QKeySequence::Delete, this, &MainWindow::deleteRange);
+  QAction* deleteRange = edit->addAction(tr("&Delete Range"), QKeySequence::Delete, m_markerEdits, &ui::MarkerEditActions::deleteRange);
   deleteRange->setToolTip(tr("Make the selected frame range of the selected markers a gap (Shift-drag on the curves)"));
   edit->addAction(tr("&Rename Marker…"), QKeySequence(Qt::Key_F2), this, [this] {
     const QModelIndex current = m_table->currentIndex();
@@ -532,13 +531,14 @@ void MainWindow::setSelectedAsReferenceMarkers()
 void MainWindow::createMarkerMenu()
 {
   QMenu* markers = menuBar()->addMenu(tr("&Marker"));
-  markers->addAction(tr("&Delete Markers"), QKeySequence(Qt::CTRL | Qt::Key_Delete), this, &MainWindow::deleteMarkers)
+  markers->addAction(tr("&Delete Markers"), QKeySequence(Qt::CTRL | Qt::Key_Delete), m_markerEdits,
+                     &ui::MarkerEditActions::deleteMarkers)
       ->setToolTip(tr("Remove the selected markers from the take (undoable)"));
-  markers->addAction(tr("Add &Averaged Marker…"), QKeySequence(Qt::CTRL | Qt::Key_M), this,
-                     &MainWindow::addAveragedMarker)
+  markers->addAction(tr("Add &Averaged Marker…"), QKeySequence(Qt::CTRL | Qt::Key_M), m_markerEdits,
+                     &ui::MarkerEditActions::addAveragedMarker)
       ->setToolTip(tr("A virtual marker at the mean of the selected markers"));
-  markers->addAction(tr("&Swap Over Range"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X), this,
-                     &MainWindow::swapOverRange)
+  markers->addAction(tr("&Swap Over Range"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X), m_markerEdits,
+                     &ui::MarkerEditActions::swapOverRange)
       ->setToolTip(tr("Exchange the data of the two selected markers over the selected frame range"));
   markers->addSeparator();
   QAction* reference = markers->addAction(tr("&Reference Markers…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
@@ -557,9 +557,11 @@ void MainWindow::createMarkerMenu()
 void MainWindow::createLabelMenu()
 {
   QMenu* label = menuBar()->addMenu(tr("&Label"));
-  label->addAction(tr("&Track and Label"), QKeySequence(Qt::CTRL | Qt::Key_T), this, &MainWindow::trackAndLabel)
+  label->addAction(tr("&Track and Label"), QKeySequence(Qt::CTRL | Qt::Key_T), m_labelling,
+                   &ui::LabellingActions::trackAndLabel)
       ->setToolTip(tr("Re-track the unlabelled points and give them the labels of the take's labelled markers"));
-  label->addAction(tr("Fix &Swaps…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), this, &MainWindow::reviewSwaps)
+  label->addAction(tr("Fix &Swaps…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), m_labelling,
+                   &ui::LabellingActions::reviewSwaps)
       ->setToolTip(tr("Find frames where two labels exchange and repair the ones you accept"));
   QAction* assign = label->addAction(tr("&Assign Label by Clicking"));
   assign->setShortcut(QKeySequence(Qt::Key_A));
@@ -571,201 +573,7 @@ void MainWindow::createLabelMenu()
                                 : QString(),
                              on ? 0 : 1);
   });
-  connect(m_view3d, &ui::MarkerView3d::labelPointClicked, this, &MainWindow::assignLabel);
-}
-
-void MainWindow::trackAndLabel()
-{
-  const Take& take = m_document->take();
-  if (take.empty())
-    return;
-  TrackReport report;
-  Take tracked;
-  try {
-    if (!ui::runJob(this, tr("Tracking and labelling…"),
-                    [&](const JobControl& job) { tracked = trackTake(take, nullptr, {}, &report, job); })) {
-      statusBar()->showMessage(tr("Track and Label cancelled; the take is unchanged"), 5000);
-      return;
-    }
-  } catch (const std::exception& e) {
-    QMessageBox::warning(this, tr("Track and Label"), QString::fromStdString(e.what()));
-    return;
-  }
-  const auto labelled = static_cast<int>(report.labelledFragments);
-  const auto fragments = static_cast<int>(report.fragments);
-  if (labelled == 0) {
-    // Re-tracking alone would only repack the unlabelled points: a change of nothing, so no step.
-    statusBar()->showMessage(report.unlabelledMarkers == 0
-                                 ? tr("Nothing to label: every marker has a label")
-                                 : tr("Nothing to label: none of the %n unlabelled fragment(s) matches a marker",
-                                      nullptr, fragments),
-                             10000);
-    return;
-  }
-  ProcessingStep step = ui::studioStep(*m_document, "track and label",
-                                       {{"fragments labelled", std::to_string(labelled) + " of " + std::to_string(fragments)}},
-                                       {}, 0, -1, 0);
-  m_document->undoStack()->push(new ui::ReplaceTakeCommand(
-      *m_document, std::move(tracked), tr("Track and label (%1 of %2 fragments labelled)").arg(labelled).arg(fragments),
-      std::move(step)));
-  statusBar()->showMessage(tr("%1 of %2 fragments labelled; %3 samples left unlabelled")
-                               .arg(labelled)
-                               .arg(fragments)
-                               .arg(static_cast<qlonglong>(report.unlabelledSamples)),
-                           10000);
-}
-
-std::optional<std::vector<LabelSwap>> MainWindow::findSwaps()
-{
-  std::vector<LabelSwap> swaps;
-  try {
-    if (!ui::runJob(this, tr("Looking for label swaps…"),
-                    [&](const JobControl& job) { swaps = detectSwaps(m_document->take(), {}, job); })) {
-      statusBar()->showMessage(tr("Swap search cancelled"), 5000);
-      return std::nullopt;
-    }
-  } catch (const std::exception& e) {
-    QMessageBox::warning(this, tr("Fix Swaps"), QString::fromStdString(e.what()));
-    return std::nullopt;
-  }
-  return swaps;
-}
-
-void MainWindow::reviewSwaps()
-{
-  const Take& take = m_document->take();
-  if (take.empty())
-    return;
-  std::optional<std::vector<LabelSwap>> found = findSwaps();
-  if (!found)
-    return;
-  std::vector<LabelSwap> swaps = std::move(*found);
-  if (swaps.empty()) {
-    statusBar()->showMessage(tr("No label swaps found"), 5000);
-    return;
-  }
-  ui::SwapReviewDialog dialog(take, std::move(swaps), this);
-  connect(&dialog, &ui::SwapReviewDialog::frameRequested, m_document, &ui::TakeDocument::setCurrentFrame);
-  if (dialog.exec() != QDialog::Accepted)
-    return;
-  const std::vector<LabelSwap> accepted = dialog.acceptedSwaps();
-  if (accepted.empty()) {
-    statusBar()->showMessage(tr("No swap accepted; the take is unchanged"), 5000);
-    return;
-  }
-  Take repaired = take;
-  for (const LabelSwap& swap : accepted)  // in frame order, as found
-    exchangeMarkersFrom(repaired, swap.first, swap.second, swap.frame);
-  const int count = static_cast<int>(accepted.size());
-  m_document->undoStack()->push(new ui::ReplaceTakeCommand(
-      *m_document, std::move(repaired), tr("Repair %n label swap(s)", nullptr, count),
-      ui::studioStep(*m_document, "repair label swaps", {{"swaps", std::to_string(count)}}, {}, 0, -1, 0)));
-}
-
-void MainWindow::assignLabel(Eigen::Index point)
-{
-  const Take& take = m_document->take();
-  const auto& selection = m_document->selection();
-  if (selection.size() != 1 || selection.front() == point) {
-    statusBar()->showMessage(tr("Select the one marker whose label the point gets, then click the point"), 5000);
-    return;
-  }
-  const Eigen::Index target = selection.front();
-  auto* command = new QUndoCommand(tr("Label %1 as %2")
-                                       .arg(QString::fromStdString(take.label(point)),
-                                            QString::fromStdString(take.label(target))));
-  // The fragment's samples go to the marker, then the fragment goes; undo runs the children
-  // backwards, so the fragment is back before the marker's samples are.
-  new ui::ApplyPatchesCommand(*m_document, {validSamplesPatch(take, point, target)}, QString(), command);
-  new ui::RemoveMarkersCommand(*m_document, {point}, command);
-  m_document->undoStack()->push(command);
-}
-
-void MainWindow::deleteMarkers()
-{
-  if (m_document->selection().empty()) {
-    statusBar()->showMessage(tr("Select the markers to delete first"), 5000);
-    return;
-  }
-  m_document->undoStack()->push(new ui::RemoveMarkersCommand(*m_document, m_document->selection()));
-}
-
-void MainWindow::addAveragedMarker()
-{
-  const auto& selection = m_document->selection();
-  if (selection.empty()) {
-    statusBar()->showMessage(tr("Select the markers to average first"), 5000);
-    return;
-  }
-  const Take& take = m_document->take();
-  QStringList sources;
-  for (Eigen::Index m : selection)
-    sources << QString::fromStdString(take.label(m));
-  bool ok = false;
-  const QString label = QInputDialog::getText(this, tr("Add Averaged Marker"),
-                                              tr("Label of the marker at the mean of %1:").arg(sources.join(", ")),
-                                              QLineEdit::Normal, QStringLiteral("avg_") + sources.join('_'), &ok)
-                            .trimmed();
-  if (!ok)
-    return;
-  if (label.isEmpty() || take.markerIndex(label.toStdString())) {
-    QMessageBox::warning(this, tr("Add Averaged Marker"),
-                         tr("'%1' is empty or already a marker label; choose another.").arg(label));
-    return;
-  }
-  MarkerColumn column = averagedMarker(take, selection, label.toStdString());
-  m_document->undoStack()->push(new ui::InsertMarkerCommand(*m_document, std::move(column),
-                                                            tr("Add averaged marker %1").arg(label)));
-  m_document->setSelection({m_document->take().markerCount() - 1});
-}
-
-void MainWindow::swapOverRange()
-{
-  const auto& selection = m_document->selection();
-  if (selection.size() != 2 || !m_document->hasRange()) {
-    statusBar()->showMessage(tr("Select exactly two markers and Shift-drag a frame range on the curves first"), 5000);
-    return;
-  }
-  const Take& take = m_document->take();
-  const Eigen::Index length = m_document->rangeLast() - m_document->rangeFirst() + 1;
-  if (!take.valid().col(selection[0]).segment(m_document->rangeFirst(), length).any() &&
-      !take.valid().col(selection[1]).segment(m_document->rangeFirst(), length).any()) {
-    statusBar()->showMessage(tr("Nothing to swap: both markers are gaps over the selected range"), 5000);
-    return;
-  }
-  auto patches = swapMarkersOverRange(take, selection[0], selection[1], m_document->rangeFirst(),
-                                      m_document->rangeLast());
-  m_document->undoStack()->push(ui::makeRecordedEdit(
-      *m_document, std::move(patches),
-      tr("Swap %1 and %2 over frames %3–%4")
-          .arg(QString::fromStdString(take.label(selection[0])), QString::fromStdString(take.label(selection[1])))
-          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeFirst()))
-          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast())),
-      "swap markers", {{"markers", take.label(selection[0]) + ", " + take.label(selection[1])}}));
-}
-
-void MainWindow::deleteRange()
-{
-  if (!m_document->hasRange() || m_document->selection().empty()) {
-    statusBar()->showMessage(tr("Select markers and Shift-drag a frame range on the curves first"), 5000);
-    return;
-  }
-  std::vector<SamplePatch> patches;
-  for (Eigen::Index m : m_document->selection()) {
-    SamplePatch patch = deleteSamples(m_document->take(), m, m_document->rangeFirst(), m_document->rangeLast());
-    if (!patch.empty())
-      patches.push_back(std::move(patch));
-  }
-  if (patches.empty()) {
-    statusBar()->showMessage(tr("Nothing to delete: the selected range is already a gap"), 5000);
-    return;
-  }
-  const Take& take = m_document->take();
-  m_document->undoStack()->push(ui::makeRecordedEdit(
-      *m_document, std::move(patches),
-      tr("Delete frames %1–%2").arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeFirst()))
-          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->rangeLast())),
-      "delete samples", {}));
+  connect(m_view3d, &ui::MarkerView3d::labelPointClicked, m_markerEdits, &ui::MarkerEditActions::assignLabel);
 }
 
 QString MainWindow::openFile(const QString& path, bool quiet)

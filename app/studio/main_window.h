@@ -4,12 +4,9 @@
 #include <QStringList>
 #include <QVariantMap>
 
-#include "mocap/tracking/swap_detection.h"
-
 #include <Eigen/Core>
 
 #include <functional>
-#include <optional>
 #include <vector>
 
 class QAction;
@@ -23,6 +20,8 @@ class QToolButton;
 
 namespace mocap::ui {
 class Autosave;
+class LabellingActions;
+class MarkerEditActions;
 struct Preferences;
 class CleaningPanel;
 class FaceMeshPanel;
@@ -76,12 +75,8 @@ public:
   void editReferenceMarkers();
   /// Pushes SetReferenceMarkersCommand unless `markers` is the current set. Returns whether it did.
   bool changeReferenceMarkers(std::vector<Eigen::Index> markers);
-  /// Label ▸ Track and Label: re-tracks the unlabelled points on a worker (progress, Cancel) and
-  /// pushes the labelled take as one undoable step; a run that labels nothing pushes nothing.
-  void trackAndLabel();
-  /// The label swaps in the take, found on a worker (progress, Cancel); nullopt when cancelled
-  /// or failed (the failure is shown).
-  std::optional<std::vector<LabelSwap>> findSwaps();
+  /// The Label menu's Track and Label and swap search (on workers, undoable).
+  [[nodiscard]] ui::LabellingActions* labellingActions() const { return m_labelling; }
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -100,14 +95,8 @@ private:
   /// File ▸ Export Animation: BVH of the markers, and the face mesh deformed by the take when
   /// one is loaded.
   void exportAnimation();
-  void deleteRange();
   void createMarkerMenu();
   void createLabelMenu();
-  void reviewSwaps();
-  void assignLabel(Eigen::Index point);
-  void deleteMarkers();
-  void addAveragedMarker();
-  void swapOverRange();
   void editPreferences();
   void applyPreferences(const ui::Preferences& preferences);
   void changePreferences(const std::function<void(ui::Preferences&)>& change);
@@ -137,6 +126,8 @@ private:
   ui::TakeDocument* m_document = nullptr;
   ui::Autosave* m_autosave = nullptr;
   ui::MarkerView3d* m_view3d = nullptr;
+  ui::MarkerEditActions* m_markerEdits = nullptr;
+  ui::LabellingActions* m_labelling = nullptr;
   ui::CurveView* m_curves = nullptr;
   ui::TimelineWidget* m_timeline = nullptr;
   ui::CleaningPanel* m_cleaning = nullptr;

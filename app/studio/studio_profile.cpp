@@ -3,6 +3,7 @@
 #include "main_window.h"
 #include "ui_stall_meter.h"
 
+#include "actions/labelling_actions.h"
 #include "document/take_document.h"
 #include "panels/cleaning_panel.h"
 #include "panels/cleaning_step.h"
@@ -120,11 +121,11 @@ int profileStudio(MainWindow& window, const OpenFigures& open, Eigen::Index maxF
   UiStallMeter meter;
   const int start = document.undoStack()->index();
   meter.start();
-  window.trackAndLabel();
+  window.labellingActions()->trackAndLabel();
   std::cout << ", \"track_stall_ms\": " << meter.stop();
   undoBackTo(document, start);
   meter.start();
-  const auto swaps = window.findSwaps();
+  const auto swaps = window.labellingActions()->findSwaps();
   std::cout << ", \"swaps_stall_ms\": " << meter.stop() << ", \"swaps\": " << (swaps ? swaps->size() : 0);
   profilePreviews(window, meter);
 

@@ -4,6 +4,7 @@
 #include "../core/test_support.h"
 #include "sample_window.h"
 
+#include "actions/labelling_actions.h"
 #include "dialogs/job_dialog.h"
 #include "document/take_document.h"
 #include "main_window.h"
@@ -84,11 +85,11 @@ TEST(BackgroundJobs, TrackAndLabelAndTheSwapSearchKeepTheEventLoopServed)
   ASSERT_EQ(window->openFile(writeLongTake(dir), true), QString());
   {
     TickCounter counter;
-    window->trackAndLabel();
+    window->labellingActions()->trackAndLabel();
     EXPECT_GT(counter.ticks(), 0) << "Track and Label ran on the UI thread";
   }
   TickCounter counter;
-  const auto swaps = window->findSwaps();
+  const auto swaps = window->labellingActions()->findSwaps();
   ASSERT_TRUE(swaps.has_value());
   EXPECT_GT(counter.ticks(), 0) << "the swap search ran on the UI thread";
 }
