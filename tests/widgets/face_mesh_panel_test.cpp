@@ -307,6 +307,28 @@ TEST_F(FaceMeshPanelTest, RendersTheMeshOverTheMarkersLikeTheBaseline)
     }
   EXPECT_GT(grey, image.width() * image.height() / 20);
   EXPECT_TRUE(test::matchesBaseline(image, QStringLiteral("FaceMeshView")));
+  // The comparison misses no marker, not even one drawn white on the light-grey mesh: hiding any
+  // one changes its disc, and nothing else, by more than the comparison allows.
+  const ui::MarkerView3d* view = window->markerView();
+  int hidden = 0;
+  qsizetype fewest = image.width() * image.height();
+  for (Eigen::Index m = 0; m < document().take().markerCount(); ++m) {
+    const auto centre = view->screenPosition(m);
+    if (!centre)
+      continue;
+    document().setHidden({m}, true);
+    const test::ImageDifference difference = test::compareImages(viewport->grabFramebuffer(), image);
+    document().setHidden({m}, false);
+    const std::string label = document().take().label(m);
+    EXPECT_FALSE(difference.matches()) << label << ": only " << difference.differing << " pixels differ";
+    EXPECT_TRUE(QRectF(*centre - QPointF(12.0, 12.0), QSizeF(24.0, 24.0)).contains(QRectF(difference.bounds))) << label;
+    fewest = std::min(fewest, difference.differing);
+    ++hidden;
+  }
+  EXPECT_GE(hidden, 30);
+  std::cout << "[ measured ] hiding one of " << hidden << " markers over the mesh changes at least " << fewest
+            << " pixels\n";
+  EXPECT_TRUE(test::compareImages(viewport->grabFramebuffer(), image).matches()) << "shown again, as it was";
 }
 
 TEST_F(FaceMeshPanelTest, ExportAnimationWritesTheDeformedMeshOfTheLoadedFace)

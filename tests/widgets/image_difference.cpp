@@ -75,25 +75,41 @@ QImage highlightDifferences(const QImage& actual, const QImage& expected)
   return image;
 }
 
-::testing::AssertionResult matchesBaseline(const QImage& actual, const QString& name)
+QString actualImagePath(const QString& name)
 {
-  const QString actualPath = QDir(QStringLiteral(MOCAP_BUILD_DIR)).filePath(name + QStringLiteral(".actual.png"));
-  const QString diffPath = QDir(QStringLiteral(MOCAP_BUILD_DIR)).filePath(name + QStringLiteral(".diff.png"));
+  return QDir(QStringLiteral(MOCAP_BUILD_DIR)).filePath(name + QStringLiteral(".actual.png"));
+}
+
+QString differenceImagePath(const QString& name)
+{
+  return QDir(QStringLiteral(MOCAP_BUILD_DIR)).filePath(name + QStringLiteral(".diff.png"));
+}
+
+::testing::AssertionResult matchesImage(const QImage& actual, const QImage& expected, const QString& name)
+{
+  const QString actualPath = actualImagePath(name), diffPath = differenceImagePath(name);
   QFile::remove(diffPath);  // a diff left from an earlier failure would mislead
   if (!actual.save(actualPath))
     return ::testing::AssertionFailure() << "cannot write " << actualPath.toStdString();
-  const QString baselinePath = QDir(QStringLiteral(MOCAP_BASELINE_DIR)).filePath(name + QStringLiteral(".png"));
-  const QImage expected(baselinePath);
-  if (expected.isNull())
-    return ::testing::AssertionFailure() << "missing baseline " << baselinePath.toStdString()
-                                         << "; the rendered image is at " << actualPath.toStdString();
   const ImageDifference difference = compareImages(actual, expected);
   if (difference.matches())
     return ::testing::AssertionSuccess() << describe(difference).toStdString();
   highlightDifferences(actual, expected).save(diffPath);
-  return ::testing::AssertionFailure() << "the render does not match " << baselinePath.toStdString() << ": "
+  return ::testing::AssertionFailure() << "the render of " << name.toStdString() << " does not match: "
                                        << describe(difference).toStdString() << "\n  actual: " << actualPath.toStdString()
                                        << "\n  differences (magenta): " << diffPath.toStdString();
+}
+
+::testing::AssertionResult matchesBaseline(const QImage& actual, const QString& name)
+{
+  const QString baselinePath = QDir(QStringLiteral(MOCAP_BASELINE_DIR)).filePath(name + QStringLiteral(".png"));
+  const QImage expected(baselinePath);
+  if (expected.isNull()) {
+    (void)actual.save(actualImagePath(name));
+    return ::testing::AssertionFailure() << "missing baseline " << baselinePath.toStdString()
+                                         << "; the rendered image is at " << actualImagePath(name).toStdString();
+  }
+  return matchesImage(actual, expected, name);
 }
 
 } // namespace mocap::test

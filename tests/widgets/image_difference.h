@@ -35,10 +35,17 @@ struct ImageDifference
 /// `actual` dimmed to grey with the pixels that differ from `expected` in magenta, to look at.
 [[nodiscard]] QImage highlightDifferences(const QImage& actual, const QImage& expected);
 
-/// Whether `actual` matches the committed baseline MOCAP_BASELINE_DIR/`name`.png. The render is
-/// always written to MOCAP_BUILD_DIR/`name`.actual.png (to refresh the baseline from); on a
-/// mismatch the highlighted difference goes to `name`.diff.png beside it and the message names
-/// both files and says how many pixels differ.
+/// Whether `actual` matches `expected`. The render is always written to
+/// MOCAP_BUILD_DIR/`name`.actual.png; on a mismatch the highlighted difference goes to
+/// `name`.diff.png beside it and the message names both files and says how many pixels differ.
+[[nodiscard]] ::testing::AssertionResult matchesImage(const QImage& actual, const QImage& expected, const QString& name);
+
+/// matchesImage against the committed baseline MOCAP_BASELINE_DIR/`name`.png (refresh a baseline
+/// deliberately by copying `name`.actual.png over it).
 [[nodiscard]] ::testing::AssertionResult matchesBaseline(const QImage& actual, const QString& name);
+
+/// Where matchesImage writes `name`'s render and its highlighted difference.
+[[nodiscard]] QString actualImagePath(const QString& name);
+[[nodiscard]] QString differenceImagePath(const QString& name);
 
 } // namespace mocap::test
