@@ -8,12 +8,13 @@
 
 namespace mocap::test {
 
-/// A pixel differs when one of its colour channels differs by more than this (0–255). Renders of
-/// one scene under llvmpipe differ by at most a few levels on anti-aliased edges; an erased
-/// marker changes its disc by well over a hundred.
+/// A pixel differs when one of its colour channels differs by more than this (0–255): room for
+/// rounding between renderer builds (llvmpipe under Xvfb renders one scene identically run after
+/// run) and small shade changes, while a marker's white disc stands 90–200 levels off the
+/// background or the grey mesh behind it.
 inline constexpr int kChannelTolerance = 24;
-/// Two renders match when at most this fraction of their pixels differ: 0.01 % is 17 pixels of a
-/// 480 × 360 view, where the smallest marker disc covers about 80.
+/// Two renders match when at most this fraction of their pixels differ: 0.01 % is 17 pixels of
+/// a 480 × 360 view, where erasing a marker changes at least 53 (one half under a label).
 inline constexpr double kMaxDifferingFraction = 0.0001;
 
 /// How two renders differ, pixel by pixel.
