@@ -1028,9 +1028,27 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::FaceMeshModel</name>
+    <message>
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+101"/>
+        <source>Load a mesh first.</source>
+        <translation>Laden Sie zuerst ein Netz.</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Head stabilization: %1</source>
+        <translation>Kopfstabilisierung: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No marker is bound to the mesh: auto-bind, load a binding or pick vertices.</source>
+        <translation>Kein Marker ist an das Netz gebunden: Binden Sie automatisch, laden Sie eine Bindung oder wählen Sie Scheitelpunkte.</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+91"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+93"/>
         <source>Mesh and binding</source>
         <translation>Netz und Bindung</translation>
     </message>
@@ -1317,24 +1335,6 @@
         <location line="+1"/>
         <source>Bindings (*.json)</source>
         <translation>Bindungen (*.json)</translation>
-    </message>
-</context>
-<context>
-    <name>mocap::ui::FaceMeshScene</name>
-    <message>
-        <location filename="../widgets/views/face_mesh_scene.cpp" line="+126"/>
-        <source>Load a mesh first.</source>
-        <translation>Laden Sie zuerst ein Netz.</translation>
-    </message>
-    <message>
-        <location line="+54"/>
-        <source>Head stabilization: %1</source>
-        <translation>Kopfstabilisierung: %1</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>No marker is bound to the mesh: auto-bind, load a binding or pick vertices.</source>
-        <translation>Kein Marker ist an das Netz gebunden: Binden Sie automatisch, laden Sie eine Bindung oder wählen Sie Scheitelpunkte.</translation>
     </message>
 </context>
 <context>

@@ -1012,9 +1012,27 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::FaceMeshModel</name>
+    <message>
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+101"/>
+        <source>Load a mesh first.</source>
+        <translation>请先加载网格。</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Head stabilization: %1</source>
+        <translation>头部稳定：%1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No marker is bound to the mesh: auto-bind, load a binding or pick vertices.</source>
+        <translation>没有标记点绑定到网格：请自动绑定、加载绑定或拾取顶点。</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+91"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+93"/>
         <source>Mesh and binding</source>
         <translation>网格与绑定</translation>
     </message>
@@ -1299,24 +1317,6 @@
         <location line="+1"/>
         <source>Bindings (*.json)</source>
         <translation>绑定 (*.json)</translation>
-    </message>
-</context>
-<context>
-    <name>mocap::ui::FaceMeshScene</name>
-    <message>
-        <location filename="../widgets/views/face_mesh_scene.cpp" line="+126"/>
-        <source>Load a mesh first.</source>
-        <translation>请先加载网格。</translation>
-    </message>
-    <message>
-        <location line="+54"/>
-        <source>Head stabilization: %1</source>
-        <translation>头部稳定：%1</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>No marker is bound to the mesh: auto-bind, load a binding or pick vertices.</source>
-        <translation>没有标记点绑定到网格：请自动绑定、加载绑定或拾取顶点。</translation>
     </message>
 </context>
 <context>

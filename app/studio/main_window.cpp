@@ -25,7 +25,7 @@
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
-#include "views/face_mesh_scene.h"
+#include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
@@ -264,15 +264,15 @@ QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& binding
 void MainWindow::exportAnimation()
 {
   ui::ExportDialog dialog(*m_document, this);
-  const ui::FaceMeshScene& scene = m_faceMesh->scene();
-  if (scene.rig()) {
+  const ui::FaceMeshModel& mesh = m_faceMesh->model();
+  if (mesh.rig()) {
     // The export runs on a worker thread: it gets its own rig and copy of the take, since the
     // panel's rig follows every edit and option change.
     try {
-      auto take = std::make_shared<const Take>(scene.rigTake());
-      auto rig = std::make_shared<FaceRig>(scene.mesh(), scene.binding(), *take, scene.options());
+      auto take = std::make_shared<const Take>(mesh.rigTake());
+      auto rig = std::make_shared<FaceRig>(mesh.mesh(), mesh.binding(), *take, mesh.options());
       dialog.setMeshSource(
-          scene.mesh(), [take, rig](Eigen::Index frame, MeshVertices& out) { (void)rig->deform(*take, frame, out); },
+          mesh.mesh(), [take, rig](Eigen::Index frame, MeshVertices& out) { (void)rig->deform(*take, frame, out); },
           QStringLiteral("face"));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export Animation"),
@@ -766,10 +766,10 @@ QVariantMap MainWindow::recoverySession() const
 {
   QVariantMap session;
   session.insert(QStringLiteral("windowState"), saveState());
-  const ui::FaceMeshScene& scene = m_faceMesh->scene();
-  if (scene.hasMesh()) {
+  const ui::FaceMeshModel& mesh = m_faceMesh->model();
+  if (mesh.hasMesh()) {
     session.insert(QStringLiteral("mesh"), m_faceMesh->meshPath());
-    session.insert(QStringLiteral("binding"), QString::fromStdString(bindingJson(scene.binding())));
+    session.insert(QStringLiteral("binding"), QString::fromStdString(bindingJson(mesh.binding())));
   }
   return session;
 }

@@ -10,6 +10,7 @@
 #include "main_window.h"
 #include "sample_window.h"
 #include "panels/face_mesh_panel.h"
+#include "document/face_mesh_model.h"
 #include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
@@ -36,6 +37,7 @@ namespace mocap {
 namespace {
 
 using studio::MainWindow;
+using ui::FaceMeshModel;
 using ui::FaceMeshScene;
 
 const QString kMesh = QStringLiteral(MOCAP_SAMPLE_DIR "/canonical_face_model.obj");
@@ -54,6 +56,7 @@ protected:
   }
 
   [[nodiscard]] FaceMeshScene& scene() const { return panel->scene(); }
+  [[nodiscard]] FaceMeshModel& model() const { return panel->model(); }
   [[nodiscard]] ui::TakeDocument& document() const { return window->document(); }
 
   /// Steps the document through frames kStart … kStart + 10, as playback does, and returns the
@@ -75,12 +78,12 @@ protected:
 
 TEST_F(FaceMeshPanelTest, PlayingMovesBoundVerticesWithTheirMarkersAndFarVerticesLittle)
 {
-  const FaceRig* rig = scene().rig();
-  ASSERT_NE(rig, nullptr) << scene().error().toStdString();
+  const FaceRig* rig = model().rig();
+  ASSERT_NE(rig, nullptr) << model().error().toStdString();
   ASSERT_EQ(rig->markers().size(), 31u);
   const auto [before, after] = playTenFrames();
   ASSERT_EQ(after.rows(), 468);
-  const Take& take = scene().rigTake();
+  const Take& take = model().rigTake();
   double largest = 0.0, error = 0.0, motion = 0.0;
   std::vector<double> controlMotion;
   for (std::size_t k = 0; k < rig->markers().size(); ++k) {
@@ -125,12 +128,12 @@ TEST_F(FaceMeshPanelTest, LaplacianFollowsTheMarkersAndCompareDrawsBothMethods)
   auto* method = panel->findChild<QComboBox*>(QStringLiteral("method"));
   ASSERT_NE(method, nullptr);
   method->setCurrentIndex(1);
-  ASSERT_NE(scene().rig(), nullptr) << scene().error().toStdString();
-  EXPECT_EQ(scene().rig()->options().method, DeformMethod::Laplacian);
+  ASSERT_NE(model().rig(), nullptr) << model().error().toStdString();
+  EXPECT_EQ(model().rig()->options().method, DeformMethod::Laplacian);
   EXPECT_EQ(QSettings().value(QStringLiteral("faceMesh/method")).toInt(), static_cast<int>(DeformMethod::Laplacian));
   const auto [before, after] = playTenFrames();
-  const FaceRig& rig = *scene().rig();
-  const Take& take = scene().rigTake();
+  const FaceRig& rig = *model().rig();
+  const Take& take = model().rigTake();
   double error = 0.0, motion = 0.0;
   for (std::size_t k = 0; k < rig.markers().size(); ++k) {
     const Eigen::Index m = rig.markers()[k];
@@ -141,9 +144,9 @@ TEST_F(FaceMeshPanelTest, LaplacianFollowsTheMarkersAndCompareDrawsBothMethods)
   // Soft constraints: the bound points follow most of the way.
   EXPECT_LT(error, 0.5 * motion);
 
-  scene().setCompare(true);
-  ASSERT_NE(scene().compareRig(), nullptr);
-  EXPECT_EQ(scene().compareRig()->options().method, DeformMethod::Rbf);
+  model().setCompare(true);
+  ASSERT_NE(model().compareRig(), nullptr);
+  EXPECT_EQ(model().compareRig()->options().method, DeformMethod::Rbf);
   document().setCurrentFrame(kStart + 20);
   EXPECT_TRUE(scene().compareLayer().isVisible());
   EXPECT_GE(scene().lastCompareMs(), 0.0);
@@ -162,9 +165,9 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   document().setCurrentFrame(kStart);
   QTest::qWait(200);  // a render, so the camera is set up
   const Eigen::Index marker = *document().take().markerIndex("section7-1");
-  const MeshBinding original = scene().binding();
+  const MeshBinding original = model().binding();
   const auto bindingOf = [this](const std::string& label) {
-    for (const MarkerBinding& b : scene().binding().markers)
+    for (const MarkerBinding& b : model().binding().markers)
       if (b.label == label)
         return b.point;
     return MeshPoint{};
@@ -191,9 +194,9 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   EXPECT_TRUE(now.isVertex());
   EXPECT_EQ(now.vertices[0], target);
   EXPECT_EQ(document().selection(), std::vector<Eigen::Index>{marker});  // the click did not deselect it
-  EXPECT_EQ(scene().binding().markers.size(), original.markers.size());
+  EXPECT_EQ(model().binding().markers.size(), original.markers.size());
   EXPECT_EQ(panel->undoStack()->count(), 1);
-  ASSERT_NE(scene().rig(), nullptr);  // set up again with the new binding
+  ASSERT_NE(model().rig(), nullptr);  // set up again with the new binding
   // The pick says where and how well: the vertex, and the marker's new residual beside the old.
   const QString status = panel->statusText();
   EXPECT_TRUE(status.contains(QStringLiteral("vertex %1").arg(target))) << status.toStdString();
@@ -227,7 +230,7 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   ASSERT_EQ(panel->saveBinding(saved), QString());
   ASSERT_EQ(panel->loadBinding(saved), QString());
   EXPECT_EQ(bindingOf("section7-1").vertices[0], target);
-  EXPECT_EQ(scene().binding().markers.size(), original.markers.size());
+  EXPECT_EQ(model().binding().markers.size(), original.markers.size());
   // The edit was for the binding now replaced: undoing it changes nothing and drops it.
   const int before = document().undoStack()->count();
   document().undoStack()->undo();  // the binding edit (the take edit after it was undone above)
@@ -243,7 +246,7 @@ TEST_F(FaceMeshPanelTest, TheMeshStaysOnTheMarkersInTheHeadStabilizedView)
     reference.push_back(*document().take().markerIndex(label));
   ASSERT_EQ(view->setHeadReference(reference), QString());
   document().setCurrentFrame(kStart + 500);
-  const FaceRig& rig = *scene().rig();
+  const FaceRig& rig = *model().rig();
   const Eigen::Index frame = kStart + 500;
   double worst = 0.0;
   for (std::size_t k = 0; k < rig.markers().size(); ++k) {
@@ -271,12 +274,12 @@ TEST_F(FaceMeshPanelTest, BadFilesGiveClearErrorsAndKeepTheMesh)
   const std::string notAMesh = dir.file("broken.obj").string();
   writeFileAtomically(notAMesh, "v 1 2\nf 1 2 3\n");
   EXPECT_FALSE(panel->loadMesh(QString::fromStdString(notAMesh)).isEmpty());
-  EXPECT_EQ(scene().mesh().vertexCount(), 468);  // the loaded mesh stays
+  EXPECT_EQ(model().mesh().vertexCount(), 468);  // the loaded mesh stays
   const std::string stranger = dir.file("stranger.json").string();
   writeFileAtomically(stranger, R"({"markers": {"chin_tip": 1, "section1-1": 5, "section2-1": 9}})");
   const QString error = panel->loadBinding(QString::fromStdString(stranger));
   EXPECT_TRUE(error.contains(QStringLiteral("chin_tip"))) << error.toStdString();
-  EXPECT_EQ(scene().rig(), nullptr);
+  EXPECT_EQ(model().rig(), nullptr);
   document().setCurrentFrame(kStart + 3);  // no rig: nothing deforms and nothing crashes
   EXPECT_LT(scene().lastDeformMs(), 0.0);
   const std::string offMesh = dir.file("off.json").string();
@@ -284,8 +287,8 @@ TEST_F(FaceMeshPanelTest, BadFilesGiveClearErrorsAndKeepTheMesh)
   EXPECT_TRUE(panel->loadBinding(QString::fromStdString(offMesh)).contains(QStringLiteral("bound off the mesh")));
   // Auto-bind gets the face back: every face marker, the head references left out.
   EXPECT_EQ(panel->autoBind(), QString());
-  ASSERT_NE(scene().rig(), nullptr);
-  EXPECT_EQ(scene().binding().markers.size(), 31u);
+  ASSERT_NE(model().rig(), nullptr);
+  EXPECT_EQ(model().binding().markers.size(), 31u);
 }
 
 TEST_F(FaceMeshPanelTest, RendersTheMeshOverTheMarkersLikeTheBaseline)
@@ -358,9 +361,9 @@ TEST_F(FaceMeshPanelTest, ExportAnimationWritesTheDeformedMeshOfTheLoadedFace)
   const PointCache written = readPc2(cache);
   ASSERT_EQ(written.samples.size(), 10u);
   // The same rig, set up independently, gives the cached vertices (float precision).
-  FaceRig rig(scene().mesh(), scene().binding(), scene().rigTake(), scene().options());
+  FaceRig rig(model().mesh(), model().binding(), model().rigTake(), model().options());
   MeshVertices expected;
-  (void)rig.deform(scene().rigTake(), kStart + 5, expected);
+  (void)rig.deform(model().rigTake(), kStart + 5, expected);
   EXPECT_LT((written.samples[5].cast<double>() - expected).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_GT((written.samples[9] - written.samples[0]).cwiseAbs().maxCoeff(), 0.01f) << "the face moves";
 }

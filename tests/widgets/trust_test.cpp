@@ -7,6 +7,7 @@
 #include "commands/record_step_command.h"
 #include "dialogs/read_warnings_dialog.h"
 #include "document/autosave.h"
+#include "document/face_mesh_model.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "sample_window.h"
@@ -181,8 +182,8 @@ TEST_F(Trust, TheStudioRecoversTheFaceMeshAndBinding)
   ASSERT_TRUE(window->offerRecovery());
   EXPECT_GT(filledCount(window->document().take()), 0);
   EXPECT_EQ(window->document().take().history().size(), 1u);
-  EXPECT_TRUE(window->faceMeshPanel()->scene().hasMesh());
-  EXPECT_GT(window->faceMeshPanel()->scene().binding().markers.size(), 0u);
+  EXPECT_TRUE(window->faceMeshPanel()->model().hasMesh());
+  EXPECT_GT(window->faceMeshPanel()->model().binding().markers.size(), 0u);
   QDir(folder).removeRecursively();
 }
 

@@ -1,13 +1,13 @@
 #include "commands/rebind_marker_command.h"
 
-#include "views/face_mesh_scene.h"
+#include "document/face_mesh_model.h"
 
 #include <QCoreApplication>
 
 namespace mocap::ui {
 
-RebindMarkerCommand::RebindMarkerCommand(FaceMeshScene& scene, std::string label, std::optional<MarkerBinding> binding)
-    : m_scene(scene), m_label(std::move(label)), m_binding(std::move(binding)), m_generation(scene.bindingGeneration())
+RebindMarkerCommand::RebindMarkerCommand(FaceMeshModel& model, std::string label, std::optional<MarkerBinding> binding)
+    : m_model(model), m_label(std::move(label)), m_binding(std::move(binding)), m_generation(model.bindingGeneration())
 {
   const QString name = QString::fromStdString(m_label);
   if (!m_binding)
@@ -22,11 +22,11 @@ RebindMarkerCommand::RebindMarkerCommand(FaceMeshScene& scene, std::string label
 
 void RebindMarkerCommand::swap()
 {
-  if (m_scene.bindingGeneration() != m_generation) {
+  if (m_model.bindingGeneration() != m_generation) {
     setObsolete(true);
     return;
   }
-  m_binding = m_scene.rebind(m_label, std::move(m_binding));
+  m_binding = m_model.rebind(m_label, std::move(m_binding));
 }
 
 } // namespace mocap::ui

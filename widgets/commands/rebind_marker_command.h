@@ -9,16 +9,16 @@
 
 namespace mocap::ui {
 
-class FaceMeshScene;
+class FaceMeshModel;
 
 /// Binds one marker to another mesh point (or unbinds it); undo puts the old binding back (the
-/// binding is swapped each time, FaceMeshScene::rebind). It lives on the document's undo stack
+/// binding is swapped each time, FaceMeshModel::rebind). It lives on the document's undo stack
 /// with every other edit; once the whole binding has been replaced (another mesh, binding file or
 /// auto-bind) it no longer applies and becomes obsolete, so the stack drops it.
 class RebindMarkerCommand final : public QUndoCommand
 {
 public:
-  RebindMarkerCommand(FaceMeshScene& scene, std::string label, std::optional<MarkerBinding> binding);
+  RebindMarkerCommand(FaceMeshModel& model, std::string label, std::optional<MarkerBinding> binding);
 
   void redo() override { swap(); }
   void undo() override { swap(); }
@@ -26,7 +26,7 @@ public:
 private:
   void swap();
 
-  FaceMeshScene& m_scene;
+  FaceMeshModel& m_model;
   std::string m_label;
   std::optional<MarkerBinding> m_binding;
   int m_generation;

@@ -20,6 +20,7 @@ class QUndoStack;
 
 namespace mocap::ui {
 
+class FaceMeshModel;
 class FaceMeshScene;
 class MarkerView3d;
 class ReferenceMarkersRow;
@@ -29,8 +30,9 @@ class TakeDocument;
 /// edit the binding by picking (select a marker, then click the mesh vertex it belongs to; each
 /// edit undoable on the document's stack, and the status says the marker's new residual), choose
 /// RBF (kernel, radius, regions) or Laplacian (weights, constraint weight, rotations) deformation
-/// or both side by side, and read the per-frame deform time. The mesh itself lives in
-/// FaceMeshScene. Settings are remembered (QSettings, "faceMesh/…").
+/// or both side by side, and read the per-frame deform time. The mesh, binding and rigs live in
+/// FaceMeshModel (document/), drawn by FaceMeshScene (views/). Settings are remembered
+/// (QSettings, "faceMesh/…").
 class FaceMeshPanel final : public QWidget
 {
   Q_OBJECT
@@ -44,6 +46,9 @@ public:
   /// The panel's status line (the last pick: vertex and residual, or what to do next).
   [[nodiscard]] QString statusText() const;
 
+  /// The mesh, binding and rigs the take drives.
+  [[nodiscard]] FaceMeshModel& model() const { return *m_model; }
+  /// Their drawing in the 3D view.
   [[nodiscard]] FaceMeshScene& scene() const { return *m_scene; }
   [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }
 
@@ -93,6 +98,7 @@ private:
 
   TakeDocument& m_document;
   MarkerView3d& m_view;
+  FaceMeshModel* m_model = nullptr;
   FaceMeshScene* m_scene = nullptr;
   QString m_meshPath;
   QUndoStack* m_undo = nullptr;  // the document's: binding edits undo in order with every other edit
