@@ -18,10 +18,11 @@ std::string numberText(double value)
 
 namespace {
 
-CLI::Option* withCheck(CLI::Option* option, CLI::Validator check, const std::string& allowed)
+// A transform rather than a check when `check` rewrites the value (CLI11 hands checks a copy).
+CLI::Option* withCheck(CLI::Option* option, CLI::Validator check, const std::string& allowed, bool rewrites)
 {
   option->description(option->get_description() + " (" + allowed + ")");
-  return option->check(std::move(check));
+  return rewrites ? option->transform(std::move(check)) : option->check(std::move(check));
 }
 
 } // namespace
@@ -45,7 +46,7 @@ CLI::Option* numberIn(CLI::Option* option, double min, double max)
         return {};
       },
       "", "number");
-  return withCheck(option, check, "in " + range);
+  return withCheck(option, check, "in " + range, false);
 }
 
 CLI::Option* wholeNumberIn(CLI::Option* option, long long min, long long max)
@@ -68,7 +69,7 @@ CLI::Option* wholeNumberIn(CLI::Option* option, long long min, long long max)
         return {};
       },
       "", "whole number");
-  return withCheck(option, check, "whole number in " + range);
+  return withCheck(option, check, "whole number in " + range, true);
 }
 
 CLI::Option* oneOf(CLI::Option* option, const std::vector<std::string>& names)

@@ -38,29 +38,31 @@ std::vector<const CLI::Option*> userOptions(const CLI::App& command)
   return command.get_options([&command](const CLI::Option* option) { return option != command.get_help_ptr(); });
 }
 
-// `first` followed by the tokens, wrapped to kWidth with kContinuation before every further line.
-std::string wrapped(std::string line, const std::vector<std::string>& tokens)
+// The tokens wrapped to kWidth columns (not counting `prefix`, so a synopsis breaks at the same
+// places after "usage: mocap " as in the command list), kContinuation before every further line.
+std::string wrapped(const std::string& prefix, const std::vector<std::string>& tokens)
 {
-  std::string text;
+  std::string text, line;
   for (const std::string& token : tokens) {
-    if (line.size() + 1 + token.size() > kWidth && line != kContinuation) {
-      text += line + '\n';
-      line = kContinuation;
+    if (line.empty()) {
+      line = token;
+    } else if (line.size() + 1 + token.size() > kWidth) {
+      text += (text.empty() ? prefix : "") + line + '\n';
+      line = kContinuation + token;
     } else {
-      line += ' ';
+      line += ' ' + token;
     }
-    line += token;
   }
-  return text + line + '\n';
+  return text + (text.empty() ? prefix : "") + line + '\n';
 }
 
 // "info FILE [--json]", wrapped, after `prefix` on the first line.
 std::string synopsis(const CLI::App& command, const std::string& prefix)
 {
-  std::vector<std::string> tokens;
+  std::vector<std::string> tokens{command.get_name()};
   for (const CLI::Option* option : userOptions(command))
     tokens.push_back(synopsisToken(*option));
-  return wrapped(prefix + command.get_name(), tokens);
+  return wrapped(prefix, tokens);
 }
 
 std::string commandList(const CLI::App& mocap)
