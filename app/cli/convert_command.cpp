@@ -1,4 +1,3 @@
-#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 

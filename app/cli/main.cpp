@@ -63,7 +63,7 @@ int main(int argc, char** argv)
       addEvalSmooth(mocap), addSmoothTable(mocap), addPfa(mocap),   addTrack(mocap),    addFixSwaps(mocap),
       addEvalTrack(mocap), addBind(mocap),    addDeform(mocap),
   };
-  if (argc == 2 && std::string(argv[1]) == "help") {
+  if (argc >= 2 && std::string(argv[1]) == "help") {
     std::cout << mocap.help();
     return kExitOk;
   }
