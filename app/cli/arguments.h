@@ -1,41 +1,28 @@
 #pragma once
 
-#include <map>
-#include <optional>
-#include <set>
+#include <CLI/CLI.hpp>
+
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace mocap::cli {
 
-/// One command's arguments split into positionals, `--flag` switches and `--option VALUE`
-/// (or `--option=VALUE`) pairs; a known option may also be a short `-o VALUE`. Unknown flags, a missing value and a wrong number of
-/// positionals raise UsageError.
-class Arguments
-{
-public:
-  Arguments(const std::vector<std::string>& args, const std::set<std::string>& knownFlags,
-            const std::set<std::string>& knownOptions = {});
+// Checks that restrict an option's value; each adds the range or the choices to the option's help
+// (so they are stated once, here) and returns the option. A bad value is a usage error naming the
+// option, as in "--noise: -1 not in [0, 10000]".
 
-  [[nodiscard]] bool has(const std::string& flag) const { return m_flags.count(flag) != 0; }
-  [[nodiscard]] std::optional<std::string> value(const std::string& option) const;
-  /// The option's value as a number in [min, max]; UsageError when it is not one.
-  [[nodiscard]] std::optional<double> number(const std::string& option, double min, double max) const;
-  /// The option's value as an integer in [min, max]; UsageError when it is not one.
-  [[nodiscard]] std::optional<long long> integer(const std::string& option, long long min, long long max) const;
-  [[nodiscard]] const std::vector<std::string>& positionals() const { return m_positionals; }
-  /// Throws UsageError unless there are exactly `count` positionals, naming them in `what`.
-  void expectPositionals(std::size_t count, const std::string& what) const;
-  /// The one input file and `-o`/`--output` of an IN -o OUT command, whose format OUT's extension
-  /// must name; UsageError otherwise.
-  [[nodiscard]] std::pair<std::string, std::string> inputAndOutput() const;
+/// A number in [min, max].
+CLI::Option* numberIn(CLI::Option* option, double min, double max);
 
-private:
-  std::vector<std::string> m_positionals;
-  std::set<std::string> m_flags;
-  std::map<std::string, std::string> m_values;
-};
+/// A decimal whole number in [min, max], handed on in plain decimal so "010" is ten (CLI11
+/// alone would read it as octal).
+CLI::Option* wholeNumberIn(CLI::Option* option, long long min, long long max);
+
+/// One of `names`, which the usage shows as `a|b|c`.
+CLI::Option* oneOf(CLI::Option* option, const std::vector<std::string>& names);
+
+/// `value` as the shortest text that reads back to it, for defaults shown in the usage.
+[[nodiscard]] std::string numberText(double value);
 
 /// `value` with `decimals` decimals for text tables; "-" when it is not finite.
 [[nodiscard]] std::string fixedNumber(double value, int decimals);

@@ -2,6 +2,7 @@
 // `mocap deform` reads.
 #include "arguments.h"
 #include "cli_error.h"
+#include "commands.h"
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
@@ -13,13 +14,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 namespace mocap::cli {
-
-/// `mocap bind --mesh FACE.obj --take TAKE [--pairs LABEL=VERTEX,...] [--neutral FRAME]
-/// [--stabilize LABELS] [--markers LABELS] [--vertices FIRST:LAST] -o BIND.json [--json]`.
-/// Returns the exit code.
-int runBind(const std::vector<std::string>& args);
 
 namespace {
 
@@ -56,31 +54,32 @@ std::vector<Eigen::Index> vertexRange(const std::string& text, Eigen::Index vert
   return range;
 }
 
-} // namespace
-
-int runBind(const std::vector<std::string>& args)
+struct BindArguments
 {
-  const Arguments arguments(args, {"--json"},
-                            {"--mesh", "--take", "--pairs", "--neutral", "--stabilize", "--markers", "--vertices", "-o"});
-  arguments.expectPositionals(0, "no positional arguments (--mesh, --take and -o)");
-  const auto meshPath = arguments.value("--mesh");
-  const auto takePath = arguments.value("--take");
-  const auto out = arguments.value("-o");
-  if (!meshPath || !takePath || !out)
-    throw UsageError("--mesh, --take and -o are required");
-  const auto neutralNumber = arguments.integer("--neutral", -(1LL << 40), 1LL << 40);
+  std::string meshPath, takePath, out;
+  std::optional<std::string> pairs, stabilize, markers, vertices;
+  std::optional<long long> neutral;
+  bool json = false;
+};
 
-  const Mesh mesh = readMesh(*meshPath);
+int runBind(const BindArguments& arguments)
+{
+  const std::string& meshPath = arguments.meshPath;
+  const std::string& takePath = arguments.takePath;
+  const std::string& out = arguments.out;
+  const std::optional<long long>& neutralNumber = arguments.neutral;
+
+  const Mesh mesh = readMesh(meshPath);
   std::vector<std::string> warnings;
-  Take take = readTake(*takePath, &warnings);
+  Take take = readTake(takePath, &warnings);
   for (const auto& w : warnings)
-    std::cerr << *takePath << ": warning: " << w << '\n';
+    std::cerr << takePath << ": warning: " << w << '\n';
   const std::vector<std::string> reference =
-      arguments.value("--stabilize") ? splitList(*arguments.value("--stabilize"), "--stabilize") : std::vector<std::string>{};
+      arguments.stabilize ? splitList(*arguments.stabilize, "--stabilize") : std::vector<std::string>{};
   (void)stabilizeTake(take, reference);
   std::vector<std::string> labels;
-  if (const auto list = arguments.value("--markers")) {
-    labels = splitList(*list, "--markers");
+  if (arguments.markers) {
+    labels = splitList(*arguments.markers, "--markers");
   } else {
     for (const std::string& label : take.labels())
       if (std::find(reference.begin(), reference.end(), label) == reference.end())
@@ -89,21 +88,21 @@ int runBind(const std::vector<std::string>& args)
   const std::vector<Eigen::Index> markers = markerIndices(take, labels);
   const Eigen::Index neutral = chooseNeutralFrame(take, markers, neutralNumber);
   AutoBindOptions options;
-  if (const auto pairs = arguments.value("--pairs"))
-    options.pairs = parsePairs(*pairs, labels);
-  if (const auto range = arguments.value("--vertices"))
-    options.vertexSubset = vertexRange(*range, mesh.vertexCount());
+  if (arguments.pairs)
+    options.pairs = parsePairs(*arguments.pairs, labels);
+  if (arguments.vertices)
+    options.vertexSubset = vertexRange(*arguments.vertices, mesh.vertexCount());
   const MeshBinding binding = autoBind(mesh, labels, markerPositions(take, neutral, markers), options);
   const std::string json = bindingJson(binding);
-  writeFileAtomically(*out, json);
+  writeFileAtomically(out, json);
 
-  if (arguments.has("--json")) {
+  if (arguments.json) {
     std::cout << json;
     return kExitOk;
   }
   double sum = 0.0, worst = 0.0;
   std::cout << "bound " << binding.markers.size() << " markers of frame " << take.firstFrame() + neutral << " to "
-            << *meshPath << " (scale " << fixedNumber(binding.alignment.scale, 5) << " mesh units per take unit, "
+            << meshPath << " (scale " << fixedNumber(binding.alignment.scale, 5) << " mesh units per take unit, "
             << (options.pairs.empty() ? "aligned by ICP" : "aligned on the given pairs") << ")\n";
   for (const MarkerBinding& marker : binding.markers) {
     std::cout << "  " << marker.label << "  "
@@ -116,8 +115,31 @@ int runBind(const std::vector<std::string>& args)
     worst = std::max(worst, marker.residual);
   }
   std::cout << "residual mean " << fixedNumber(sum / static_cast<double>(binding.markers.size()), 2) << " mm, max "
-            << fixedNumber(worst, 2) << " mm\nwrote " << *out << '\n';
+            << fixedNumber(worst, 2) << " mm\nwrote " << out << '\n';
   return kExitOk;
+}
+
+} // namespace
+
+Command addBind(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand("bind", "bind markers to mesh points; per-marker residuals");
+  const auto a = std::make_shared<BindArguments>();
+  command->add_option("--mesh", a->meshPath, "the face mesh (.obj, .ply)")->required()->type_name("FACE.obj");
+  command->add_option("--take", a->takePath, "the take whose neutral frame is bound")->required()->type_name("TAKE");
+  command->add_option("--pairs", a->pairs, "at least 3 marker-vertex correspondences (default: ICP)")
+      ->type_name("LABEL=VERTEX,...");
+  wholeNumberIn(command->add_option("--neutral", a->neutral, "the neutral frame (default: the first complete one)")
+                    ->type_name("FRAME"),
+                -(1LL << 40), 1LL << 40);
+  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+      ->type_name("LABELS");
+  command->add_option("--markers", a->markers, "the markers bound (default: all but --stabilize)")
+      ->type_name("LABELS");
+  command->add_option("--vertices", a->vertices, "align to these mesh vertices only")->type_name("FIRST:LAST");
+  command->add_option("-o", a->out, "the binding JSON that mocap deform reads")->required()->type_name("BIND.json");
+  command->add_flag("--json", a->json, "print the binding JSON");
+  return {command, [a] { return runBind(*a); }};
 }
 
 } // namespace mocap::cli

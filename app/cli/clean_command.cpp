@@ -9,77 +9,61 @@
 #include "mocap/io/take_io.h"
 
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace mocap::cli {
 
 namespace {
 
-std::optional<SpikeOptions> spikeOptions(const Arguments& arguments)
+/// The options of `mocap clean`; the core's option structs hold the defaults the usage shows.
+struct CleanArguments
 {
-  SpikeOptions options;
-  if (const auto name = arguments.value("--spikes")) {
-    if (*name == "off")
-      return std::nullopt;
-    const auto method = parseSpikeMethod(*name);
-    if (!method)
-      throw UsageError("--spikes must be paper, robust or off, not '" + *name + "'");
-    options.method = *method;
-  }
-  if (const auto factor = arguments.number("--spike-factor", 1e-6, 1e6))
-    options.factor = *factor;
-  if (const auto threshold = arguments.number("--spike-threshold", 1e-6, 1e6))
-    options.threshold = *threshold;
+  std::string input, output;
+  std::string spikes = std::string(spikeMethodName(SpikeOptions{}.method));
+  SpikeOptions spikeOptions;
+  std::string fill = std::string(fillMethodName(FillOptions{}.method));
+  FillOptions fillOptions;
+  std::optional<Eigen::Index> maxGap;
+  std::optional<double> maxGapSeconds;
+  std::string smooth = std::string(smoothMethodName(SmoothOptions{}.method));
+  SmoothOptions smoothOptions;
+  std::optional<std::string> stabilize;
+  bool keepStabilized = false;
+  std::optional<std::string> report;
+};
+
+std::optional<SpikeOptions> spikeOptions(const CleanArguments& arguments)
+{
+  if (arguments.spikes == "off")
+    return std::nullopt;
+  SpikeOptions options = arguments.spikeOptions;
+  options.method = parseSpikeMethod(arguments.spikes).value();
   return options;
 }
 
-std::optional<FillOptions> fillOptions(const Arguments& arguments)
+std::optional<FillOptions> fillOptions(const CleanArguments& arguments)
 {
-  FillOptions options;
-  if (const auto name = arguments.value("--fill")) {
-    if (*name == "off")
-      return std::nullopt;
-    const auto method = parseFillMethod(*name);
-    if (!method)
-      throw UsageError("--fill: unknown method '" + *name + "'");
-    options.method = *method;
-  }
-  const auto maxGap = arguments.integer("--max-gap", 0, 1LL << 40);
-  const auto maxGapSeconds = arguments.number("--max-gap-seconds", 0.0, 1e9);
-  if (maxGap && maxGapSeconds)
-    throw UsageError("give the longest gap as --max-gap N (frames) or --max-gap-seconds S, not both");
-  if (maxGap) {
-    options.maxGap = static_cast<Eigen::Index>(*maxGap);
-    if (*maxGap == 0)
+  if (arguments.fill == "off")
+    return std::nullopt;
+  FillOptions options = arguments.fillOptions;
+  options.method = parseFillMethod(arguments.fill).value();
+  if (arguments.maxGap) {
+    options.maxGap = *arguments.maxGap;
+    if (*arguments.maxGap == 0)
       options.maxGapSeconds = 0.0;  // --max-gap 0: unlimited, as before
   }
-  if (maxGapSeconds)
-    options.maxGapSeconds = *maxGapSeconds;
-  options.extrapolate = arguments.has("--extrapolate");
-  if (const auto minValid = arguments.number("--min-valid", 0.0, 1.0))
-    options.minValidFraction = *minValid;
-  if (const auto neighbours = arguments.integer("--neighbours", 1, 1000))
-    options.neighbours = static_cast<int>(*neighbours);
+  if (arguments.maxGapSeconds)
+    options.maxGapSeconds = *arguments.maxGapSeconds;
   return options;
 }
 
-std::optional<SmoothOptions> smoothOptions(const Arguments& arguments)
+std::optional<SmoothOptions> smoothOptions(const CleanArguments& arguments)
 {
-  SmoothOptions options;
-  if (const auto name = arguments.value("--smooth")) {
-    if (*name == "off")
-      return std::nullopt;
-    const auto method = parseSmoothMethod(*name);
-    if (!method)
-      throw UsageError("--smooth must be bspline, butterworth, gcvspl, savgol or off, not '" + *name + "'");
-    options.method = *method;
-  }
-  if (const auto order = arguments.integer("--order", 2, 7))
-    options.degree = static_cast<int>(*order);
-  if (const auto spacing = arguments.number("--knot-spacing", 1.0, 1e6))
-    options.knotSpacing = *spacing;
-  if (const auto cutoff = arguments.number("--cutoff", 1e-6, 1e6))
-    options.cutoffHz = *cutoff;
+  if (arguments.smooth == "off")
+    return std::nullopt;
+  SmoothOptions options = arguments.smoothOptions;
+  options.method = parseSmoothMethod(arguments.smooth).value();
   return options;
 }
 
@@ -170,10 +154,6 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   return json.str() + "\n";
 }
 
-} // namespace
-
-namespace {
-
 /// One history step per pipeline step that ran, so the written take says how it was cleaned.
 void appendHistory(Take& take, const CleanOptions& options, const CleanReport& report)
 {
@@ -221,22 +201,18 @@ void appendHistory(Take& take, const CleanOptions& options, const CleanReport& r
          static_cast<std::int64_t>(report.smoothedSamples));
 }
 
-} // namespace
-
-int runClean(const std::vector<std::string>& args)
+int runClean(const CleanArguments& arguments)
 {
-  const Arguments arguments(args, {"--keep-stabilized", "--extrapolate"},
-                            {"-o", "--output", "--spikes", "--spike-factor", "--spike-threshold", "--fill", "--max-gap",
-                             "--max-gap-seconds", "--min-valid", "--neighbours", "--smooth", "--order",
-                             "--knot-spacing", "--cutoff", "--stabilize", "--report"});
-  const auto [input, output] = arguments.inputAndOutput();
+  const std::string& input = arguments.input;
+  const std::string& output = arguments.output;
+  (void)formatFromPath(output);  // reject an unknown output type before the read
   CleanOptions options;
   options.spikes = spikeOptions(arguments);
   options.fill = fillOptions(arguments);
   options.smooth = smoothOptions(arguments);
-  if (const auto labels = arguments.value("--stabilize"))
-    options.stabilizeLabels = splitList(*labels, "--stabilize");
-  options.keepStabilized = arguments.has("--keep-stabilized");
+  if (arguments.stabilize)
+    options.stabilizeLabels = splitList(*arguments.stabilize, "--stabilize");
+  options.keepStabilized = arguments.keepStabilized;
 
   std::vector<std::string> warnings;
   Take take = readTake(input, &warnings);
@@ -251,9 +227,85 @@ int runClean(const std::vector<std::string>& args)
   } else {
     writeTake(take, output);
   }
-  if (const auto reportFile = arguments.value("--report"))
-    writeFileAtomically(*reportFile, reportJson(input, output, take, options, report));
+  if (arguments.report)
+    writeFileAtomically(*arguments.report, reportJson(input, output, take, options, report));
   return kExitOk;
+}
+
+std::vector<std::string> fillChoices()
+{
+  std::vector<std::string> names;
+  for (const FillMethod method : allFillMethods())
+    names.emplace_back(fillMethodName(method));
+  names.emplace_back("off");
+  return names;
+}
+
+} // namespace
+
+Command addClean(CLI::App& mocap)
+{
+  CLI::App* command =
+      mocap.add_subcommand("clean", "stabilize, remove spikes, fill gaps, smooth; write OUT and a JSON report");
+  const auto a = std::make_shared<CleanArguments>();
+  command->add_option("IN", a->input, "the take to clean")->required();
+  command->add_option("-o,--output", a->output, "the cleaned take; its extension names the format")
+      ->required()
+      ->type_name("OUT");
+  oneOf(command->add_option("--spikes", a->spikes, "spike detector"), {"paper", "robust", "off"})
+      ->capture_default_str();
+  numberIn(command->add_option("--spike-factor", a->spikeOptions.factor, "spike detection factor")->type_name("F"),
+           1e-6, 1e6)
+      ->capture_default_str();
+  numberIn(command->add_option("--spike-threshold", a->spikeOptions.threshold, "spike detection threshold")
+               ->type_name("T"),
+           1e-6, 1e6)
+      ->capture_default_str();
+  const std::vector<std::string> fills = fillChoices();
+  std::string fillList;
+  for (const std::string& name : fills)
+    fillList += (fillList.empty() ? "" : ", ") + name;
+  oneOf(command->add_option("--fill", a->fill, "gap-fill method: " + fillList), fills)
+      ->type_name("METHOD|off")
+      ->capture_default_str();
+  CLI::Option* maxGapSeconds =
+      numberIn(command->add_option("--max-gap-seconds", a->maxGapSeconds, "longest gap filled, in seconds")
+                   ->type_name("S"),
+               0.0, 1e9)
+          ->default_str(numberText(FillOptions{}.maxGapSeconds));
+  wholeNumberIn(command->add_option("--max-gap", a->maxGap, "longest gap filled, in frames; 0: unlimited")
+                    ->type_name("N")
+                    ->excludes(maxGapSeconds),
+                0, 1LL << 40);
+  command->add_flag("--extrapolate", a->fillOptions.extrapolate, "also fill gaps at the start and end");
+  numberIn(command->add_option("--min-valid", a->fillOptions.minValidFraction,
+                               "fill only markers valid in at least this fraction of the take")
+               ->type_name("F"),
+           0.0, 1.0)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--neighbours", a->fillOptions.neighbours, "neighbour markers a fill may use")
+                    ->type_name("N"),
+                1, 1000)
+      ->capture_default_str();
+  oneOf(command->add_option("--smooth", a->smooth, "smoothing method"),
+        {"bspline", "butterworth", "gcvspl", "savgol", "off"})
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--order", a->smoothOptions.degree, "B-spline order")->type_name("K"), 2, 7)
+      ->capture_default_str();
+  numberIn(command->add_option("--knot-spacing", a->smoothOptions.knotSpacing, "B-spline knot spacing, in frames")
+               ->type_name("N"),
+           1.0, 1e6)
+      ->capture_default_str();
+  numberIn(command->add_option("--cutoff", a->smoothOptions.cutoffHz, "Butterworth cut-off frequency")
+               ->type_name("HZ"),
+           1e-6, 1e6)
+      ->capture_default_str();
+  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+      ->type_name("LABEL,...");
+  command->add_flag("--keep-stabilized", a->keepStabilized, "write the markers in head space");
+  command->add_option("--report", a->report, "write a JSON report of every step and every gap")
+      ->type_name("FILE.json");
+  return {command, [a] { return runClean(*a); }};
 }
 
 } // namespace mocap::cli

@@ -1,31 +1,34 @@
-#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
 #include "mocap/io/take_io.h"
 
 #include <filesystem>
-#include <optional>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 namespace mocap::cli {
 
-int runConvert(const std::vector<std::string>& args)
+namespace {
+
+struct ConvertArguments
 {
-  const Arguments arguments(args, {}, {"--units"});
-  arguments.expectPositionals(2, "IN and OUT");
-  const std::string& input = arguments.positionals()[0];
-  const std::string& output = arguments.positionals()[1];
+  std::string input, output;
+  std::optional<std::string> units;
+};
+
+int runConvert(const ConvertArguments& arguments)
+{
+  const std::string& input = arguments.input;
+  const std::string& output = arguments.output;
   (void)formatFromPath(output);  // reject an unknown output type before the read
   std::error_code ec;
   if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
     throw UsageError("IN and OUT are the same file; write to a new file");
   std::optional<LengthUnit> units;
-  if (const auto text = arguments.value("--units")) {
-    units = parseLengthUnit(*text);
-    if (!units)
-      throw UsageError("--units must be mm, cm or m, not '" + *text + "'");
-  }
+  if (arguments.units)
+    units = parseLengthUnit(*arguments.units);
   std::vector<std::string> warnings;
   Take take = readTake(input, &warnings);
   if (units)
@@ -34,6 +37,26 @@ int runConvert(const std::vector<std::string>& args)
     std::cerr << input << ": warning: " << w << '\n';
   writeTake(take, output);
   return kExitOk;
+}
+
+} // namespace
+
+Command addConvert(CLI::App& mocap)
+{
+  CLI::App* command =
+      mocap.add_subcommand("convert", "convert between .c3d .trc (read/write) and .csv .bvh (write)");
+  const auto arguments = std::make_shared<ConvertArguments>();
+  command->add_option("IN", arguments->input, "the take to read")->required();
+  command->add_option("OUT", arguments->output, "the file to write; its extension names the format")->required();
+  // parseLengthUnit also reads "metres", "Centimeter", ...: it is the check.
+  command->add_option("--units", arguments->units, "rescale the positions to these units")
+      ->type_name("mm|cm|m")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            return parseLengthUnit(text) ? "" : "'" + text + "' is not mm, cm or m";
+          },
+          "", "length unit"));
+  return {command, [arguments] { return runConvert(*arguments); }};
 }
 
 } // namespace mocap::cli

@@ -2,6 +2,7 @@
 // deformation) and writes a PC2 point cache or one mesh per frame.
 #include "arguments.h"
 #include "cli_error.h"
+#include "commands.h"
 
 #include "mocap/evaluation/deformation_evaluation.h"
 #include "mocap/base/error.h"
@@ -19,15 +20,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 namespace mocap::cli {
-
-/// `mocap deform --mesh FACE.obj --binding BIND.json --take TAKE [--neutral FRAME]
-/// [--method rbf|laplacian] [--kernel exp|gaussian|biharmonic|thin-plate] [--radius C] [--regions]
-/// [--no-affine] [--up x|y|z] [--weights uniform|cotangent|mean-value] [--constraint-weight W]
-/// [--stabilize LABELS] [--scale uniform|per-axis] [--frames FIRST:LAST] [--leave-out FRACTION]
-/// [--seed S] [--ply] -o OUT.pc2|OUTDIR [--json]`. Returns the exit code.
-int runDeform(const std::vector<std::string>& args);
 
 namespace {
 
@@ -38,61 +34,39 @@ double secondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::string required(const Arguments& arguments, const std::string& option)
+/// The options of `mocap deform`; FaceRigOptions and LeaveOutOptions hold the defaults the usage shows.
+struct DeformArguments
 {
-  const auto value = arguments.value(option);
-  if (!value)
-    throw UsageError(option + " is required");
-  return *value;
-}
-
-FaceRigOptions parseSettings(const Arguments& arguments)
-{
+  std::string meshPath, bindingPath, takePath, out;
   FaceRigOptions settings;
-  const std::string method = arguments.value("--method").value_or("rbf");
-  const auto parsedMethod = parseDeformMethod(method);
-  if (!parsedMethod)
-    throw UsageError("--method must be rbf or laplacian, not '" + method + "'");
-  settings.method = *parsedMethod;
-  if (const auto kernel = arguments.value("--kernel")) {
-    const auto parsed = parseRbfKernel(*kernel);
-    if (!parsed)
-      throw UsageError("--kernel must be exp, gaussian, biharmonic or thin-plate, not '" + *kernel + "'");
-    settings.rbf.kernel = *parsed;
-  }
-  if (const auto radius = arguments.number("--radius", 1e-9, 1e9))
-    settings.rbf.radius = *radius;
-  settings.rbf.regions = arguments.has("--regions");
-  settings.rbf.affine = !arguments.has("--no-affine");
-  if (const auto up = arguments.value("--up")) {
-    if (*up != "x" && *up != "y" && *up != "z")
-      throw UsageError("--up must be x, y or z");
-    settings.rbf.upAxis = (*up)[0] - 'x';
-  }
-  if (const auto weights = arguments.value("--weights")) {
-    const auto parsed = parseLaplacianWeights(*weights);
-    if (!parsed)
-      throw UsageError("--weights must be uniform, cotangent or mean-value, not '" + *weights + "'");
-    settings.laplacian.weights = *parsed;
-  }
-  if (const auto w = arguments.number("--constraint-weight", 1e-6, 1e6))
-    settings.laplacian.constraintWeight = *w;
-  settings.rotations = static_cast<int>(arguments.integer("--rotations", 0, 100).value_or(0));
+  std::string method = std::string(deformMethodName(FaceRigOptions{}.method));
+  std::string kernel = std::string(rbfKernelName(RbfOptions{}.kernel));
+  bool noAffine = false;
+  std::string up = std::string(1, static_cast<char>('x' + RbfOptions{}.upAxis));
+  std::string weights = std::string(laplacianWeightsName(LaplacianOptions{}.weights));
+  std::string scale = std::string(retargetScaleName(FaceRigOptions{}.scale));
+  std::optional<std::string> stabilize, frames;
+  LeaveOutOptions leaveOut;
+  bool ply = false;
+  bool json = false;
+};
+
+FaceRigOptions parseSettings(const DeformArguments& arguments)
+{
+  FaceRigOptions settings = arguments.settings;
+  settings.method = parseDeformMethod(arguments.method).value();
+  settings.rbf.kernel = parseRbfKernel(arguments.kernel).value();
+  settings.rbf.affine = !arguments.noAffine;
+  settings.rbf.upAxis = arguments.up[0] - 'x';
+  settings.laplacian.weights = parseLaplacianWeights(arguments.weights).value();
   if (settings.rotations > 0 && settings.method != DeformMethod::Laplacian)
     throw UsageError("--rotations needs --method laplacian");
-  if (const auto text = arguments.value("--scale")) {
-    const auto parsed = parseRetargetScale(*text);
-    if (!parsed)
-      throw UsageError("--scale must be uniform or per-axis, not '" + *text + "'");
-    settings.scale = *parsed;
-  }
-  settings.neutralFrame = arguments.integer("--neutral", -(1LL << 40), 1LL << 40);
+  settings.scale = parseRetargetScale(arguments.scale).value();
   return settings;
 }
 
-std::pair<Eigen::Index, Eigen::Index> frameRange(const Arguments& arguments, const Take& take)
+std::pair<Eigen::Index, Eigen::Index> frameRange(const std::optional<std::string>& text, const Take& take)
 {
-  const auto text = arguments.value("--frames");
   if (!text)
     return {0, take.frameCount()};
   const std::size_t colon = text->find(':');
@@ -105,23 +79,14 @@ std::pair<Eigen::Index, Eigen::Index> frameRange(const Arguments& arguments, con
   return {static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(end)};
 }
 
-} // namespace
-
-int runDeform(const std::vector<std::string>& args)
+int runDeform(const DeformArguments& arguments)
 {
-  const Arguments arguments(args, {"--json", "--regions", "--ply", "--no-affine"},
-                            {"--mesh", "--binding", "--take", "--neutral", "--method", "--kernel", "--radius",
-                             "--weights", "--constraint-weight", "--stabilize", "--scale", "-o", "--leave-out",
-                             "--seed", "--frames", "--up", "--rotations"});
-  arguments.expectPositionals(0, "no positional arguments (--mesh, --binding, --take and -o)");
-  const std::string meshPath = required(arguments, "--mesh");
-  const std::string bindingPath = required(arguments, "--binding");
-  const std::string takePath = required(arguments, "--take");
-  const std::filesystem::path out = required(arguments, "-o");
+  const std::string& meshPath = arguments.meshPath;
+  const std::string& bindingPath = arguments.bindingPath;
+  const std::string& takePath = arguments.takePath;
+  const std::filesystem::path out = arguments.out;
   const FaceRigOptions settings = parseSettings(arguments);
-  LeaveOutOptions leaveOut;
-  leaveOut.fraction = arguments.number("--leave-out", 0.0, 0.9).value_or(0.2);
-  leaveOut.seed = static_cast<std::uint64_t>(arguments.integer("--seed", 0, 1LL << 62).value_or(1));
+  LeaveOutOptions leaveOut = arguments.leaveOut;
   leaveOut.rotations = settings.rotations;
 
   const Mesh mesh = readMesh(meshPath);
@@ -129,8 +94,8 @@ int runDeform(const std::vector<std::string>& args)
   Take take = readTake(takePath, &warnings);
   for (const auto& w : warnings)
     std::cerr << takePath << ": warning: " << w << '\n';
-  if (const auto labels = arguments.value("--stabilize"))
-    (void)stabilizeTake(take, splitList(*labels, "--stabilize"));
+  if (arguments.stabilize)
+    (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
   FaceRig rig(mesh, readBinding(bindingPath, mesh.vertexCount()), take, settings);
   const bool laplacian = settings.method == DeformMethod::Laplacian;
   const std::vector<Eigen::Index>& markers = rig.markers();
@@ -138,9 +103,9 @@ int runDeform(const std::vector<std::string>& args)
   const Retarget& retarget = rig.retarget();
   const double setupSeconds = rig.setupSeconds();
 
-  const auto [begin, end] = frameRange(arguments, take);
+  const auto [begin, end] = frameRange(arguments.frames, take);
   const MeshSequenceFormat format = lowerExtension(out) == "pc2" ? MeshSequenceFormat::ObjPlusPc2
-                                     : arguments.has("--ply")    ? MeshSequenceFormat::PlySequence
+                                     : arguments.ply            ? MeshSequenceFormat::PlySequence
                                                                  : MeshSequenceFormat::ObjSequence;
   MeshSequenceWriter sink(out, mesh, format, std::filesystem::path(meshPath).stem().string(),
                           static_cast<float>(take.firstFrame() + begin));
@@ -166,7 +131,7 @@ int runDeform(const std::vector<std::string>& args)
   const double p95 = sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(sorted.size())))];
   const std::string variant = laplacian ? std::string(laplacianWeightsName(settings.laplacian.weights))
                                                  : std::string(rbfKernelName(settings.rbf.kernel));
-  if (arguments.has("--json")) {
+  if (arguments.json) {
     JsonWriter json;
     json.beginObject();
     json.key("vertices").value(static_cast<std::int64_t>(mesh.vertexCount()));
@@ -225,6 +190,65 @@ int runDeform(const std::vector<std::string>& args)
     std::cout << "wrote " << out.string() << '\n';
   }
   return kExitOk;
+}
+
+} // namespace
+
+Command addDeform(CLI::App& mocap)
+{
+  CLI::App* command =
+      mocap.add_subcommand("deform", "deform a face mesh by the take; PC2 cache or one mesh per frame");
+  const auto a = std::make_shared<DeformArguments>();
+  FaceRigOptions& settings = a->settings;
+  command->add_option("--mesh", a->meshPath, "the face mesh (.obj, .ply)")->required()->type_name("FACE.obj");
+  command->add_option("--binding", a->bindingPath, "the binding mocap bind wrote")->required()->type_name("BIND.json");
+  command->add_option("--take", a->takePath, "the take that drives the mesh")->required()->type_name("TAKE");
+  wholeNumberIn(command->add_option("--neutral", settings.neutralFrame,
+                                    "the neutral frame (default: the first with every bound marker)")
+                    ->type_name("FRAME"),
+                -(1LL << 40), 1LL << 40);
+  oneOf(command->add_option("--method", a->method, "deformation"), {"rbf", "laplacian"})->capture_default_str();
+  oneOf(command->add_option("--kernel", a->kernel, "RBF kernel"), {"exp", "gaussian", "biharmonic", "thin-plate"})
+      ->capture_default_str();
+  numberIn(command->add_option("--radius", settings.rbf.radius, "RBF radius c, in mesh units")->type_name("C"), 1e-9,
+           1e9)
+      ->capture_default_str();
+  command->add_flag("--regions", settings.rbf.regions, "RBF per top/middle/bottom region, blended at the borders");
+  command->add_flag("--no-affine", a->noAffine, "RBF without the affine term");
+  oneOf(command->add_option("--up", a->up, "the mesh's up axis, for --regions"), {"x", "y", "z"})
+      ->capture_default_str();
+  oneOf(command->add_option("--weights", a->weights, "Laplacian weights"), {"uniform", "cotangent", "mean-value"})
+      ->capture_default_str();
+  numberIn(command->add_option("--constraint-weight", settings.laplacian.constraintWeight,
+                               "Laplacian weight of the marker constraints")
+               ->type_name("W"),
+           1e-6, 1e6)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--rotations", settings.rotations,
+                                    "Laplacian rotation-aware iterations per frame (needs --method laplacian)")
+                    ->type_name("N"),
+                0, 100)
+      ->capture_default_str();
+  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+      ->type_name("LABELS");
+  oneOf(command->add_option("--scale", a->scale, "marker displacements to mesh scale"), {"uniform", "per-axis"})
+      ->capture_default_str();
+  command->add_option("--frames", a->frames, "the frames deformed, as the take numbers them (default: all)")
+      ->type_name("FIRST:LAST");
+  numberIn(command->add_option("--leave-out", a->leaveOut.fraction,
+                               "share of markers hidden to measure the error; 0: no measurement")
+               ->type_name("FRACTION"),
+           0.0, 0.9)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--seed", a->leaveOut.seed, "which markers are left out")->type_name("S"), 0,
+                1LL << 62)
+      ->capture_default_str();
+  command->add_flag("--ply", a->ply, "write PLY frames (with a folder output)");
+  command->add_option("-o", a->out, "a .pc2 point cache (plus OUT.obj), or a folder of one mesh per frame")
+      ->required()
+      ->type_name("OUT.pc2|OUTDIR");
+  command->add_flag("--json", a->json, "print JSON: timing and the leave-markers-out error");
+  return {command, [a] { return runDeform(*a); }};
 }
 
 } // namespace mocap::cli

@@ -20,6 +20,8 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <memory>
+#include <optional>
 
 namespace mocap::cli {
 
@@ -122,34 +124,29 @@ void writeJson(const std::string& file, const FillEvaluation& evaluation)
   std::cout << json.str() << '\n';
 }
 
-} // namespace
-
-int runEvalFill(const std::vector<std::string>& args)
+/// The options of `mocap eval-fill`; FillEvaluationOptions holds the defaults the usage shows.
+struct EvalFillArguments
 {
-  const Arguments arguments(
-      args, {"--json", "--keep-jumps"},
-      {"--lengths", "--copies", "--seed", "--methods", "--neighbours", "--gaps-per-copy", "--stabilize"});
-  arguments.expectPositionals(1, "one TAKE");
+  std::string file;
   FillEvaluationOptions options;
-  if (const auto text = arguments.value("--lengths"))
-    options.gapLengths = parseLengths(*text);
-  if (const auto text = arguments.value("--copies"))
-    options.copies = static_cast<int>(parseNumber("--copies", *text, 1, 100000));
-  if (const auto text = arguments.value("--seed"))
-    options.seed =
-        parseNumber("--seed", *text, 0, static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()));
-  if (const auto text = arguments.value("--methods"))
-    options.methods = parseMethods(*text);
-  if (const auto text = arguments.value("--neighbours"))
-    options.neighbours = static_cast<int>(parseNumber("--neighbours", *text, 1, 1000));
-  options.skipJumps = !arguments.has("--keep-jumps");
-  if (const auto text = arguments.value("--gaps-per-copy"))
-    options.gapsPerCopy = static_cast<int>(parseNumber("--gaps-per-copy", *text, 0, 100000));
+  std::optional<std::string> lengths, methods, stabilize;
+  bool keepJumps = false;
+  bool json = false;
+};
 
-  const std::string& file = arguments.positionals()[0];
+int runEvalFill(const EvalFillArguments& arguments)
+{
+  FillEvaluationOptions options = arguments.options;
+  if (arguments.lengths)
+    options.gapLengths = parseLengths(*arguments.lengths);
+  if (arguments.methods)
+    options.methods = parseMethods(*arguments.methods);
+  options.skipJumps = !arguments.keepJumps;
+
+  const std::string& file = arguments.file;
   Take take = readTake(file);
-  if (const auto text = arguments.value("--stabilize"))
-    removeHeadMotion(take, estimateHeadMotion(take, parseMarkers(take, *text)));
+  if (arguments.stabilize)
+    removeHeadMotion(take, estimateHeadMotion(take, parseMarkers(take, *arguments.stabilize)));
   if (options.gapsPerCopy > take.markerCount())
     throw UsageError("--gaps-per-copy exceeds the take's " + std::to_string(take.markerCount()) + " markers");
   for (const Eigen::Index length : options.gapLengths)
@@ -157,11 +154,52 @@ int runEvalFill(const std::vector<std::string>& args)
       throw UsageError("--lengths: a gap of " + std::to_string(length) +
                        " frames does not fit in the take's " + std::to_string(take.frameCount()) + " frames");
   const FillEvaluation evaluation = evaluateFill(take, options);
-  if (arguments.has("--json"))
+  if (arguments.json)
     writeJson(file, evaluation);
   else
     writeText(file, evaluation);
   return kExitOk;
+}
+
+std::string lengthsText(const std::vector<Eigen::Index>& lengths)
+{
+  std::string text;
+  for (const Eigen::Index length : lengths)
+    text += (text.empty() ? "" : ",") + std::to_string(length);
+  return text;
+}
+
+} // namespace
+
+Command addEvalFill(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand(
+      "eval-fill", "gap-filling methods against hidden truth (Gloersen & Federolf protocol)");
+  const auto a = std::make_shared<EvalFillArguments>();
+  command->add_option("TAKE", a->file, "the take whose valid samples are hidden and filled")->required();
+  command->add_option("--lengths", a->lengths, "gap lengths in frames")
+      ->type_name(lengthsText(a->options.gapLengths));
+  wholeNumberIn(command->add_option("--copies", a->options.copies, "corrupted copies per gap length")
+                    ->type_name("N"),
+                1, 100000)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--seed", a->options.seed, "random seed")->type_name("S"), 0,
+                std::numeric_limits<long long>::max())
+      ->capture_default_str();
+  command->add_option("--methods", a->methods, "the fill methods to score (default: all)")->type_name("a,b,...");
+  wholeNumberIn(command->add_option("--neighbours", a->options.neighbours, "neighbour markers a fill may use")
+                    ->type_name("N"),
+                1, 1000)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--gaps-per-copy", a->options.gapsPerCopy, "gaps hidden in each copy")
+                    ->type_name("N"),
+                0, 100000)
+      ->capture_default_str();
+  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+      ->type_name("LABEL,...");
+  command->add_flag("--keep-jumps", a->keepJumps, "also hide (and score) stretches where the take jumps");
+  command->add_flag("--json", a->json, "print JSON");
+  return {command, [a] { return runEvalFill(*a); }};
 }
 
 } // namespace mocap::cli

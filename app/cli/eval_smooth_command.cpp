@@ -8,6 +8,8 @@
 
 #include <cstdio>
 #include <iostream>
+#include <limits>
+#include <memory>
 
 namespace mocap::cli {
 
@@ -62,25 +64,40 @@ void writeText(const std::string& file, const SmoothingEvaluation& evaluation)
   std::cout << "* default (SmoothOptions{})\n";
 }
 
-} // namespace
-
-int runEvalSmooth(const std::vector<std::string>& args)
+struct EvalSmoothArguments
 {
-  const Arguments arguments(args, {"--json"}, {"--noise", "--seed"});
-  arguments.expectPositionals(1, "one TAKE");
-  const std::string& file = arguments.positionals()[0];
+  std::string file;
   SmoothingEvaluationOptions options;
-  if (const auto noise = arguments.number("--noise", 0.0, 1e4))
-    options.noiseMm = *noise;
-  if (const auto seed = arguments.integer("--seed", 0, std::numeric_limits<long long>::max()))
-    options.seed = static_cast<std::uint64_t>(*seed);
+  bool json = false;
+};
+
+int runEvalSmooth(const EvalSmoothArguments& arguments)
+{
+  const std::string& file = arguments.file;
   const Take take = readTake(file);
-  const SmoothingEvaluation evaluation = evaluateSmoothing(take, options);
-  if (arguments.has("--json"))
+  const SmoothingEvaluation evaluation = evaluateSmoothing(take, arguments.options);
+  if (arguments.json)
     writeJson(file, evaluation);
   else
     writeText(file, evaluation);
   return kExitOk;
+}
+
+} // namespace
+
+Command addEvalSmooth(CLI::App& mocap)
+{
+  CLI::App* command =
+      mocap.add_subcommand("eval-smooth", "add noise, report position and acceleration RMSE per smoother");
+  const auto a = std::make_shared<EvalSmoothArguments>();
+  command->add_option("TAKE", a->file, "the clean take noise is added to")->required();
+  numberIn(command->add_option("--noise", a->options.noiseMm, "noise per axis")->type_name("MM"), 0.0, 1e4)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--seed", a->options.seed, "random seed")->type_name("S"), 0,
+                std::numeric_limits<long long>::max())
+      ->capture_default_str();
+  command->add_flag("--json", a->json, "print JSON");
+  return {command, [a] { return runEvalSmooth(*a); }};
 }
 
 } // namespace mocap::cli

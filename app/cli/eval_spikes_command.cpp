@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <memory>
 
 namespace mocap::cli {
 
@@ -66,37 +67,55 @@ void writeText(const std::string& file, const SpikeEvaluationOptions& options,
   }
 }
 
-} // namespace
-
-int runEvalSpikes(const std::vector<std::string>& args)
+struct EvalSpikesArguments
 {
-  const Arguments arguments(args, {"--json"},
-                            {"--count", "--amplitude", "--seed", "--factor", "--threshold", "--passes"});
-  arguments.expectPositionals(1, "one TAKE");
-  const std::string& file = arguments.positionals()[0];
+  std::string file;
   SpikeEvaluationOptions options;
-  if (const auto count = arguments.integer("--count", 1, 1000000))
-    options.count = static_cast<int>(*count);
-  if (const auto amplitude = arguments.number("--amplitude", 1e-6, 1e6))
-    options.amplitude = *amplitude;
-  if (const auto seed = arguments.integer("--seed", 0, std::numeric_limits<long long>::max()))
-    options.seed = static_cast<std::uint64_t>(*seed);
-  if (const auto factor = arguments.number("--factor", 1e-6, 1e6))
-    options.detector.factor = *factor;
-  if (const auto threshold = arguments.number("--threshold", 1e-6, 1e6))
-    options.detector.threshold = *threshold;
-  if (const auto passes = arguments.integer("--passes", 1, 1000))
-    options.detector.maxPasses = static_cast<int>(*passes);
+  bool json = false;
+};
+
+int runEvalSpikes(const EvalSpikesArguments& arguments)
+{
+  const std::string& file = arguments.file;
+  const SpikeEvaluationOptions& options = arguments.options;
   std::vector<std::string> warnings;
   const Take take = readTake(file, &warnings);
   for (const auto& w : warnings)
     std::cerr << file << ": warning: " << w << '\n';
   const std::vector<SpikeEvaluation> results = evaluateSpikes(take, options);
-  if (arguments.has("--json"))
+  if (arguments.json)
     writeJson(file, options, results);
   else
     writeText(file, options, results);
   return kExitOk;
+}
+
+} // namespace
+
+Command addEvalSpikes(CLI::App& mocap)
+{
+  CLI::App* command =
+      mocap.add_subcommand("eval-spikes", "inject spikes, report recall and false alarms per detector");
+  const auto a = std::make_shared<EvalSpikesArguments>();
+  SpikeEvaluationOptions& options = a->options;
+  command->add_option("TAKE", a->file, "the take spikes are injected into")->required();
+  wholeNumberIn(command->add_option("--count", options.count, "spikes injected")->type_name("N"), 1, 1000000)
+      ->capture_default_str();
+  numberIn(command->add_option("--amplitude", options.amplitude, "spike size")->type_name("MM"), 1e-6, 1e6)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--seed", options.seed, "random seed")->type_name("S"), 0,
+                std::numeric_limits<long long>::max())
+      ->capture_default_str();
+  numberIn(command->add_option("--factor", options.detector.factor, "detection factor")->type_name("F"), 1e-6, 1e6)
+      ->capture_default_str();
+  numberIn(command->add_option("--threshold", options.detector.threshold, "detection threshold")->type_name("T"),
+           1e-6, 1e6)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--passes", options.detector.maxPasses, "detection passes")->type_name("N"), 1,
+                1000)
+      ->capture_default_str();
+  command->add_flag("--json", a->json, "print JSON");
+  return {command, [a] { return runEvalSpikes(*a); }};
 }
 
 } // namespace mocap::cli

@@ -11,6 +11,7 @@
 #include "mocap/evaluation/tracking_evaluation.h"
 
 #include <iostream>
+#include <memory>
 
 namespace mocap::cli {
 
@@ -43,27 +44,23 @@ std::string evaluationJson(const std::string& file, const TrackingEvaluation& e)
   return json.str() + "\n";
 }
 
-} // namespace
-
-int runEvalTrack(const std::vector<std::string>& args)
+struct EvalTrackArguments
 {
-  const Arguments arguments(args, {"--json", "--keep-fragments"}, {"--seed", "--fragment-length", "--cut-gap", "--swaps"});
-  arguments.expectPositionals(1, "one labelled take");
-  const std::string file = arguments.positionals()[0];
+  std::string file;
   TrackingEvaluationOptions options;
-  if (const auto seed = arguments.integer("--seed", 0, 1LL << 53))
-    options.seed = static_cast<std::uint64_t>(*seed);
-  if (const auto length = arguments.integer("--fragment-length", 1, 1000000))
-    options.meanFragmentLength = static_cast<Eigen::Index>(*length);
-  if (const auto gap = arguments.integer("--cut-gap", 0, 1000))
-    options.maxCutGap = static_cast<Eigen::Index>(*gap);
-  if (const auto swaps = arguments.integer("--swaps", 0, 1000))
-    options.swaps = static_cast<int>(*swaps);
-  options.track.retrack = !arguments.has("--keep-fragments");
+  bool keepFragments = false;
+  bool json = false;
+};
+
+int runEvalTrack(const EvalTrackArguments& arguments)
+{
+  const std::string& file = arguments.file;
+  TrackingEvaluationOptions options = arguments.options;
+  options.track.retrack = !arguments.keepFragments;
   std::vector<std::string> warnings;
   const Take take = readTake(file, &warnings);
   const TrackingEvaluation e = evaluateTracking(take, options);
-  if (arguments.has("--json")) {
+  if (arguments.json) {
     std::cout << evaluationJson(file, e);
     return kExitOk;
   }
@@ -78,6 +75,32 @@ int runEvalTrack(const std::vector<std::string>& args)
             << fixedNumber(100.0 * e.swappedAgreement, 3) << " % -> " << fixedNumber(100.0 * e.repairedAgreement, 3)
             << " %\n";
   return kExitOk;
+}
+
+} // namespace
+
+Command addEvalTrack(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand(
+      "eval-track", "label recovery of a fragmented unlabelled copy; injected swaps found");
+  const auto a = std::make_shared<EvalTrackArguments>();
+  TrackingEvaluationOptions& options = a->options;
+  command->add_option("TAKE", a->file, "a labelled take")->required();
+  wholeNumberIn(command->add_option("--seed", options.seed, "random seed")->type_name("S"), 0, 1LL << 53)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--fragment-length", options.meanFragmentLength, "mean fragment length, in frames")
+                    ->type_name("N"),
+                1, 1000000)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--cut-gap", options.maxCutGap, "longest gap cut between fragments, in frames")
+                    ->type_name("N"),
+                0, 1000)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--swaps", options.swaps, "label swaps injected")->type_name("N"), 0, 1000)
+      ->capture_default_str();
+  command->add_flag("--keep-fragments", a->keepFragments, "label the fragments as cut, without re-tracking");
+  command->add_flag("--json", a->json, "print JSON");
+  return {command, [a] { return runEvalTrack(*a); }};
 }
 
 } // namespace mocap::cli

@@ -11,6 +11,8 @@
 #include "mocap/io/take_io.h"
 
 #include <iostream>
+#include <memory>
+#include <optional>
 
 namespace mocap::cli {
 
@@ -39,15 +41,20 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   return json.str() + "\n";
 }
 
-} // namespace
-
-int runFixSwaps(const std::vector<std::string>& args)
+struct FixSwapsArguments
 {
-  const Arguments arguments(args, {"--json"}, {"-o", "--output", "--report", "--jump-factor"});
-  const auto [input, output] = arguments.inputAndOutput();
+  std::string input, output;
+  std::optional<std::string> report;
   SwapOptions options;
-  if (const auto factor = arguments.number("--jump-factor", 2.0, 1000.0))
-    options.jumpFactor = *factor;
+  bool json = false;
+};
+
+int runFixSwaps(const FixSwapsArguments& arguments)
+{
+  const std::string& input = arguments.input;
+  const std::string& output = arguments.output;
+  (void)formatFromPath(output);  // reject an unknown output type before the read
+  SwapOptions options = arguments.options;
   std::vector<std::string> warnings;
   Take take = readTake(input, &warnings);
   for (const auto& w : warnings)
@@ -55,9 +62,9 @@ int runFixSwaps(const std::vector<std::string>& args)
   const std::vector<LabelSwap> swaps = repairSwaps(take, options);
   writeTake(take, output);
   const std::string report = reportJson(input, output, take, swaps);
-  if (const auto reportFile = arguments.value("--report"))
-    writeFileAtomically(*reportFile, report);
-  if (arguments.has("--json")) {
+  if (arguments.report)
+    writeFileAtomically(*arguments.report, report);
+  if (arguments.json) {
     std::cout << report;
   } else {
     std::cout << output << ": " << swaps.size() << " label swaps repaired\n";
@@ -66,6 +73,25 @@ int runFixSwaps(const std::vector<std::string>& args)
                 << take.label(swap.second) << '\n';
   }
   return kExitOk;
+}
+
+} // namespace
+
+Command addFixSwaps(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand("fix-swaps", "find and repair frames where two labels exchange");
+  const auto a = std::make_shared<FixSwapsArguments>();
+  command->add_option("IN", a->input, "the labelled take")->required();
+  command->add_option("-o,--output", a->output, "the repaired take; its extension names the format")
+      ->required()
+      ->type_name("OUT");
+  command->add_option("--report", a->report, "write every swap found as JSON")->type_name("FILE.json");
+  numberIn(command->add_option("--jump-factor", a->options.jumpFactor, "how far a jump must stand out")
+               ->type_name("F"),
+           2.0, 1000.0)
+      ->capture_default_str();
+  command->add_flag("--json", a->json, "print the report as JSON");
+  return {command, [a] { return runFixSwaps(*a); }};
 }
 
 } // namespace mocap::cli

@@ -1,4 +1,3 @@
-#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
@@ -9,6 +8,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 namespace mocap::cli {
 
@@ -120,22 +120,37 @@ void writeText(const std::string& file, TakeFormat format, const Take& take, con
   writeProvenanceText(take);
 }
 
-} // namespace
-
-int runInfo(const std::vector<std::string>& args)
+struct InfoArguments
 {
-  const Arguments arguments(args, {"--json"});
-  arguments.expectPositionals(1, "one FILE");
-  const std::string& file = arguments.positionals()[0];
+  std::string file;
+  bool json = false;
+};
+
+int runInfo(const InfoArguments& arguments)
+{
+  const std::string& file = arguments.file;
   const TakeFormat format = formatFromPath(file);
   std::vector<std::string> warnings, dataLoss;
   const Take take = readTake(file, &warnings, &dataLoss);
   const std::vector<Gap> gaps = findGaps(take);
-  if (arguments.has("--json"))
+  if (arguments.json)
     writeJson(file, format, take, gaps, warnings, dataLoss);
   else
     writeText(file, format, take, gaps, warnings);
   return kExitOk;
+}
+
+} // namespace
+
+Command addInfo(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand(
+      "info", "markers, frames, rate, units, analog channels, valid fraction, every gap and the history");
+  const auto arguments = std::make_shared<InfoArguments>();
+  command->add_option("FILE", arguments->file, "the take (.c3d, .trc)")->required();
+  command->add_flag("--json", arguments->json,
+                    "print JSON, with per marker the filled/smoothed/edited sample counts and \"data_loss\"");
+  return {command, [arguments] { return runInfo(*arguments); }};
 }
 
 } // namespace mocap::cli

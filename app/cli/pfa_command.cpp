@@ -2,6 +2,7 @@
 // error-vs-marker-count curve of PFA, greedy selection and random sets.
 #include "arguments.h"
 #include "cli_error.h"
+#include "commands.h"
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
@@ -17,20 +18,30 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
 namespace mocap::cli {
 
-/// `mocap pfa TAKE [TAKE…] [--method pfa|greedy] [--variance 0.98] [--restarts 1000] [--k MIN:MAX]
-/// [--seed S] [--pairs FILE] [--stabilize LABELS] [--keyposes auto|F1,F2,…] [--markers PATTERNS]
-/// [--exclude PATTERNS] [--threads N] [--random N] [--progress] [--json] [--curve OUT.csv]
-/// [--export-subset K OUT.c3d]`: plans a marker layout and prints the error curve. Key-pose frames
-/// are numbered as the first take counts them (TAKE:FRAME for another take); PATTERNS are
-/// comma-separated globs (`*`, `?`). Returns the exit code.
-int runPfa(const std::vector<std::string>& args);
-
 namespace {
+
+/// The options of `mocap pfa`; LayoutPlanOptions and RunControl hold the defaults the usage shows.
+/// Key-pose frames are numbered as the first take counts them (TAKE:FRAME for another take);
+/// PATTERNS are comma-separated globs (`*`, `?`).
+struct PfaArguments
+{
+  std::vector<std::string> takes;
+  std::string method = std::string(selectionMethodName(LayoutPlanOptions{}.method));
+  LayoutPlanOptions options;
+  std::optional<std::string> k, pairs, stabilize, keyposes, curve, markers, exclude;
+  std::optional<std::pair<std::string, std::string>> exportSubset;
+  int threads = RunControl{}.threads;
+  bool progress = false;
+  bool json = false;
+};
 
 // Glob match with `*` (any run) and `?` (any one character).
 bool globMatch(const std::string& pattern, const std::string& text)
@@ -418,57 +429,22 @@ void printText(const Report& report)
   std::cout << out.str();
 }
 
-} // namespace
-
-int runPfa(const std::vector<std::string>& args)
+int runPfa(const PfaArguments& arguments)
 {
-  // --export-subset takes two values (K OUT), which Arguments cannot express: take it out first.
-  std::vector<std::string> rest;
-  std::optional<std::pair<std::string, std::string>> exportRequest;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--export-subset") {
-      if (i + 2 >= args.size())
-        throw UsageError("--export-subset needs K and OUT");
-      exportRequest = std::make_pair(args[i + 1], args[i + 2]);
-      i += 2;
-    } else {
-      rest.push_back(args[i]);
-    }
-  }
-  const Arguments arguments(rest, {"--json", "--progress"},
-                            {"--method", "--variance", "--restarts", "--k", "--seed", "--pairs",
-                             "--stabilize", "--keyposes", "--curve", "--markers", "--exclude", "--threads",
-                             "--random"});
-  if (arguments.positionals().empty())
-    throw UsageError("expected one or more takes");
-
-  LayoutPlanOptions options;
-  if (const auto method = arguments.value("--method")) {
-    const auto parsed = parseSelectionMethod(*method);
-    if (!parsed)
-      throw UsageError("--method must be pfa or greedy, not '" + *method + "'");
-    options.method = *parsed;
-  }
-  if (const auto variance = arguments.number("--variance", 1e-6, 1.0))
-    options.pfa.varianceFraction = *variance;
-  if (const auto restarts = arguments.integer("--restarts", 1, 1000000))
-    options.pfa.restarts = static_cast<int>(*restarts);
-  if (const auto seed = arguments.integer("--seed", 0, std::numeric_limits<long long>::max()))
-    options.pfa.seed = static_cast<std::uint64_t>(*seed);
-  if (const auto k = arguments.value("--k"))
+  LayoutPlanOptions options = arguments.options;
+  options.method = parseSelectionMethod(arguments.method).value();
+  if (const auto& k = arguments.k)
     std::tie(options.pfa.minK, options.pfa.maxK) = parseKRange(*k);
-  if (const auto random = arguments.integer("--random", 0, 100000))
-    options.randomSubsets = static_cast<int>(*random);
   RunControl control;
-  if (const auto threads = arguments.integer("--threads", 1, 256))
-    control.threads = static_cast<int>(*threads);
-  if (arguments.has("--progress"))
+  control.threads = arguments.threads;
+  if (arguments.progress)
     control.progress = [](double fraction) {
       std::cerr << "\rpfa: " << static_cast<int>(std::lround(100.0 * fraction)) << " %" << std::flush;
       if (fraction >= 1.0)
         std::cerr << '\n';
     };
   std::optional<Eigen::Index> exportSize;
+  const auto& exportRequest = arguments.exportSubset;
   if (exportRequest) {
     const std::string& text = exportRequest->first;
     if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 9)
@@ -478,23 +454,23 @@ int runPfa(const std::vector<std::string>& args)
   }
 
   std::vector<Take> takes;
-  for (const std::string& input : arguments.positionals()) {
+  for (const std::string& input : arguments.takes) {
     std::vector<std::string> warnings;
     takes.push_back(readTake(input, &warnings));
     for (const auto& w : warnings)
       std::cerr << input << ": warning: " << w << '\n';
   }
   LayoutFramesOptions frameOptions;
-  if (const auto labels = arguments.value("--stabilize"))
+  if (const auto& labels = arguments.stabilize)
     frameOptions.stabilizeLabels = splitList(*labels, "--stabilize");
   const std::vector<std::string>& allLabels = takes.front().labels();
   std::vector<std::string> planned;
-  if (const auto patterns = arguments.value("--markers")) {
+  if (const auto& patterns = arguments.markers) {
     planned = matching(allLabels, *patterns, "--markers");
   } else {
     planned = defaultPlannedLabels(takes.front(), frameOptions.stabilizeLabels);
   }
-  if (const auto patterns = arguments.value("--exclude")) {
+  if (const auto& patterns = arguments.exclude) {
     const std::vector<std::string> excluded = matching(allLabels, *patterns, "--exclude");
     planned.erase(std::remove_if(planned.begin(), planned.end(),
                                  [&](const std::string& label) {
@@ -505,13 +481,13 @@ int runPfa(const std::vector<std::string>& args)
   }
   frameOptions.markers = planned;
   const LayoutFrames frames = collectLayoutFrames(takes, frameOptions);
-  if (const auto keyposes = arguments.value("--keyposes"); keyposes && *keyposes != "auto")
+  if (const auto& keyposes = arguments.keyposes; keyposes && *keyposes != "auto")
     options.keyFrames = keyFrameRows(*keyposes, takes, frames);
 
   std::optional<PairDetection> detection;
   std::string pairSource;
   MarkerSymmetry symmetry;
-  if (const auto pairsFile = arguments.value("--pairs")) {
+  if (const auto& pairsFile = arguments.pairs) {
     symmetry = readMarkerPairs(*pairsFile, frames.labels);
     pairSource = "file " + *pairsFile;
   } else {
@@ -521,12 +497,12 @@ int runPfa(const std::vector<std::string>& args)
   }
 
   const LayoutPlan plan = planMarkerLayout(frames, symmetry, options, control);
-  const Report report{arguments.positionals(), frames, plan, symmetry, detection, pairSource};
-  if (arguments.has("--json"))
+  const Report report{arguments.takes, frames, plan, symmetry, detection, pairSource};
+  if (arguments.json)
     std::cout << jsonReport(report);
   else
     printText(report);
-  if (const auto curve = arguments.value("--curve"))
+  if (const auto& curve = arguments.curve)
     writeFileAtomically(*curve, curveCsv(plan));
   if (exportSize) {
     const LayoutSize* entry = plan.size(*exportSize);
@@ -546,6 +522,53 @@ int runPfa(const std::vector<std::string>& args)
     writeTake(subsetTake(takes.front(), labels), exportRequest->second);
   }
   return plan.cancelled ? kExitBadInput : kExitOk;
+}
+
+} // namespace
+
+Command addPfa(CLI::App& mocap)
+{
+  CLI::App* command =
+      mocap.add_subcommand("pfa", "marker layout planning: error vs marker count, recommended size");
+  const auto a = std::make_shared<PfaArguments>();
+  LayoutPlanOptions& options = a->options;
+  command->add_option("TAKE", a->takes, "the takes planned on, all with the same markers")
+      ->required()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  oneOf(command->add_option("--method", a->method, "how markers are chosen"), {"pfa", "greedy"})
+      ->capture_default_str();
+  numberIn(command->add_option("--variance", options.pfa.varianceFraction, "variance the PCA components explain")
+               ->type_name(numberText(options.pfa.varianceFraction)),
+           1e-6, 1.0);
+  wholeNumberIn(command->add_option("--restarts", options.pfa.restarts, "k-means restarts")
+                    ->type_name(std::to_string(options.pfa.restarts)),
+                1, 1000000);
+  command->add_option("--k", a->k, "the PCA components tried: MIN:MAX or K")->type_name("MIN:MAX");
+  wholeNumberIn(command->add_option("--seed", options.pfa.seed, "random seed")->type_name("S"), 0,
+                std::numeric_limits<long long>::max())
+      ->capture_default_str();
+  command->add_option("--pairs", a->pairs, "left/right marker pairs: a marker-set JSON file (default: detected)")
+      ->type_name("FILE");
+  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+      ->type_name("LABELS");
+  command->add_option("--keyposes", a->keyposes, "the blendshape key poses: frame numbers or TAKE:FRAME")
+      ->type_name("auto|F1,F2,...");
+  command->add_flag("--json", a->json, "print JSON");
+  command->add_option("--curve", a->curve, "write the error curve as CSV")->type_name("OUT.csv");
+  command->add_option("--export-subset", a->exportSubset, "write the take with only the K-marker layout")
+      ->type_name("K OUT.c3d");
+  command->add_option("--markers", a->markers, "the markers planned (default: all but --stabilize)")
+      ->type_name("PATTERNS");
+  command->add_option("--exclude", a->exclude, "markers left out of the plan")->type_name("PATTERNS");
+  wholeNumberIn(command->add_option("--random", options.randomSubsets, "random layouts scored per size")
+                    ->type_name("N"),
+                0, 100000)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--threads", a->threads, "worker threads (default: one per core)")
+                    ->type_name("N"),
+                1, 256);
+  command->add_flag("--progress", a->progress, "show the progress on stderr");
+  return {command, [a] { return runPfa(*a); }};
 }
 
 } // namespace mocap::cli

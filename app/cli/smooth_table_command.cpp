@@ -10,6 +10,8 @@
 
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
 
 namespace mocap::cli {
 
@@ -63,26 +65,24 @@ void writeText(const std::string& file, const SmoothnessTable& table, double kno
   }
 }
 
-} // namespace
-
-int runSmoothTable(const std::vector<std::string>& args)
+struct SmoothTableArguments
 {
-  const Arguments arguments(args, {"--json"}, {"--markers", "--knot-spacing", "--spikes"});
-  arguments.expectPositionals(1, "one TAKE");
-  const std::string& file = arguments.positionals()[0];
+  std::string file;
+  std::optional<std::string> markers;
   SmoothnessTableOptions options;
-  if (const auto spacing = arguments.number("--knot-spacing", 1.0, 1e6))
-    options.knotSpacing = *spacing;
   // The paper's preprocessing is its own spike test (eqs 8-10); "robust" uses our default detector.
-  std::optional<SpikeMethod> spikes = SpikeMethod::Paper;
-  if (const auto name = arguments.value("--spikes")) {
-    spikes = *name == "off" ? std::nullopt : parseSpikeMethod(*name);
-    if (!spikes && *name != "off")
-      throw UsageError("--spikes must be paper, robust or off, not '" + *name + "'");
-  }
+  std::string spikes = std::string(spikeMethodName(SpikeMethod::Paper));
+  bool json = false;
+};
+
+int runSmoothTable(const SmoothTableArguments& arguments)
+{
+  const std::string& file = arguments.file;
+  SmoothnessTableOptions options = arguments.options;
+  const std::optional<SpikeMethod> spikes = parseSpikeMethod(arguments.spikes);  // none for "off"
   const Take take = readTake(file);
-  if (const auto list = arguments.value("--markers"))
-    options.markers = markerIndices(take, splitList(*list, "--markers"));
+  if (arguments.markers)
+    options.markers = markerIndices(take, splitList(*arguments.markers, "--markers"));
   if (spikes) {
     SpikeOptions spikeOptions;
     spikeOptions.method = *spikes;
@@ -92,11 +92,29 @@ int runSmoothTable(const std::vector<std::string>& args)
     };
   }
   const SmoothnessTable table = smoothnessTable(take, options);
-  if (arguments.has("--json"))
+  if (arguments.json)
     writeJson(file, take, table, options.knotSpacing);
   else
     writeText(file, table, options.knotSpacing);
   return kExitOk;
+}
+
+} // namespace
+
+Command addSmoothTable(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand("smooth-table", "the paper's Table 1: smoothness per B-spline order");
+  const auto a = std::make_shared<SmoothTableArguments>();
+  command->add_option("TAKE", a->file, "the take")->required();
+  command->add_option("--markers", a->markers, "the markers measured (default: all)")->type_name("A,B,...");
+  numberIn(command->add_option("--knot-spacing", a->options.knotSpacing, "B-spline knot spacing, in frames")
+               ->type_name("N"),
+           1.0, 1e6)
+      ->capture_default_str();
+  oneOf(command->add_option("--spikes", a->spikes, "spike repair before smoothing"), {"paper", "robust", "off"})
+      ->capture_default_str();
+  command->add_flag("--json", a->json, "print JSON");
+  return {command, [a] { return runSmoothTable(*a); }};
 }
 
 } // namespace mocap::cli

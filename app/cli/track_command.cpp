@@ -13,6 +13,7 @@
 #include "mocap/tracking/take_tracking.h"
 
 #include <iostream>
+#include <memory>
 #include <optional>
 
 namespace mocap::cli {
@@ -51,24 +52,32 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   return json.str() + "\n";
 }
 
-} // namespace
-
-int runTrack(const std::vector<std::string>& args)
+struct TrackArguments
 {
-  const Arguments arguments(args, {"--json", "--keep-fragments"},
-                            {"-o", "--output", "--template", "--max-speed", "--rate", "--save-marker-set"});
-  const auto [input, output] = arguments.inputAndOutput();
+  std::string input, output;
+  std::optional<std::string> templ, saveMarkerSet;
+  double maxSpeedMm = 0.0;  // 0: the tracker's own gate
+  bool keepFragments = false;
+  double rate = 100.0;  // of a CSV, which does not say
+  bool json = false;
+};
+
+int runTrack(const TrackArguments& arguments)
+{
+  const std::string& input = arguments.input;
+  const std::string& output = arguments.output;
+  (void)formatFromPath(output);  // reject an unknown output type before the read
   TrackOptions options;
-  const double maxSpeedMm = arguments.number("--max-speed", 1e-6, 1e6).value_or(0.0);
-  options.retrack = !arguments.has("--keep-fragments");
+  const double maxSpeedMm = arguments.maxSpeedMm;
+  options.retrack = !arguments.keepFragments;
   std::optional<MarkerSet> set;
-  if (const auto templ = arguments.value("--template"))
-    set = loadTemplate(*templ);
+  if (arguments.templ)
+    set = loadTemplate(*arguments.templ);
 
   Take result;
   TrackReport report;
   if (lowerExtension(input) == "csv") {
-    const double rate = arguments.number("--rate", 1e-3, 1e6).value_or(100.0);
+    const double rate = arguments.rate;
     const LengthUnit units = set ? set->units : LengthUnit::Millimetre;
     options.tracker.maxSpeed = maxSpeedMm / millimetresPer(units);
     result = trackPointCloud(readPointCloudCsv(input, rate), set ? &*set : nullptr, options, &report);
@@ -81,9 +90,9 @@ int runTrack(const std::vector<std::string>& args)
     result = trackTake(take, set ? &*set : nullptr, options, &report);
   }
   writeTake(result, output);
-  if (const auto markerSetFile = arguments.value("--save-marker-set"))
-    writeMarkerSet(markerSetFromTake(result), *markerSetFile);
-  if (arguments.has("--json")) {
+  if (arguments.saveMarkerSet)
+    writeMarkerSet(markerSetFromTake(result), *arguments.saveMarkerSet);
+  if (arguments.json) {
     std::cout << reportJson(input, output, result, report);
   } else {
     std::cout << output << ": " << report.labelledFragments << " of " << report.fragments
@@ -91,6 +100,31 @@ int runTrack(const std::vector<std::string>& args)
               << " left unlabelled (" << report.unlabelledSamples << " samples)\n";
   }
   return kExitOk;
+}
+
+} // namespace
+
+Command addTrack(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand(
+      "track", "unlabelled points (C3D/TRC fragments or CSV frame,x,y,z) into labelled trajectories");
+  const auto a = std::make_shared<TrackArguments>();
+  command->add_option("IN", a->input, "unlabelled points: a C3D/TRC of fragments or a CSV of frame,x,y,z")->required();
+  command->add_option("-o,--output", a->output, "the labelled take; its extension names the format")
+      ->required()
+      ->type_name("OUT");
+  command->add_option("--template", a->templ, "the labels: a labelled take or a marker-set JSON file")
+      ->type_name("TAKE_OR_MARKERSET");
+  numberIn(command->add_option("--max-speed", a->maxSpeedMm, "gate of the point tracker (default: from the data)")
+               ->type_name("MM_PER_FRAME"),
+           1e-6, 1e6);
+  command->add_flag("--keep-fragments", a->keepFragments, "label the fragments as delivered, without re-tracking");
+  numberIn(command->add_option("--rate", a->rate, "frame rate of a CSV input")->type_name("HZ"), 1e-3, 1e6)
+      ->capture_default_str();
+  command->add_option("--save-marker-set", a->saveMarkerSet, "also write the result's marker set")
+      ->type_name("FILE.json");
+  command->add_flag("--json", a->json, "print JSON");
+  return {command, [a] { return runTrack(*a); }};
 }
 
 } // namespace mocap::cli

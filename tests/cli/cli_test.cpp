@@ -8,9 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <string>
 #include <sys/wait.h>
+#include <vector>
 
 namespace mocap {
 namespace {
@@ -142,26 +145,170 @@ TEST(Cli, BadUsageGivesExitTwo)
   EXPECT_EQ(runMocap("--help", dir).exitCode, 0);
 }
 
-// Every command answers --help with its own usage (from the one usage text), and lists the options
-// it accepts; a usage error shows that command's usage, not every command's.
+const std::vector<std::string> kCommands = {"info",         "convert", "clean", "eval-fill", "eval-spikes",
+                                            "eval-smooth",  "smooth-table", "pfa", "track", "fix-swaps",
+                                            "eval-track",   "bind",    "deform"};
+
+std::vector<std::string> lines(const std::string& text)
+{
+  std::vector<std::string> result;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    const std::size_t end = std::min(text.find('\n', begin), text.size());
+    result.push_back(text.substr(begin, end - begin));
+    begin = end + 1;
+  }
+  return result;
+}
+
+// The lines that differ between `expected` and `actual` (a longest-common-subsequence diff):
+// "-N text" only in expected, "+N text" only in actual, N the line number.
+std::string lineDiff(const std::string& expected, const std::string& actual)
+{
+  const std::vector<std::string> a = lines(expected), b = lines(actual);
+  std::vector<std::vector<std::size_t>> common(a.size() + 1, std::vector<std::size_t>(b.size() + 1, 0));
+  for (std::size_t i = a.size(); i-- > 0;)
+    for (std::size_t j = b.size(); j-- > 0;)
+      common[i][j] = a[i] == b[j] ? common[i + 1][j + 1] + 1 : std::max(common[i + 1][j], common[i][j + 1]);
+  std::string diff;
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (i < a.size() && j < b.size() && a[i] == b[j]) {
+      ++i;
+      ++j;
+    } else if (j < b.size() && (i == a.size() || common[i][j + 1] > common[i + 1][j])) {
+      diff += "+" + std::to_string(j + 1) + " " + b[j] + "\n";
+      ++j;
+    } else {
+      diff += "-" + std::to_string(i + 1) + " " + a[i] + "\n";
+      ++i;
+    }
+  }
+  return diff;
+}
+
+// `command`'s entry in `mocap --help`: its synopsis lines, without the description.
+std::string listedSynopsis(const std::string& help, const std::string& command)
+{
+  std::string synopsis;
+  bool inside = false;
+  for (const std::string& line : lines(help)) {
+    const bool starts = line.size() > 2 && line.rfind("  ", 0) == 0 && line[2] != ' ';
+    const bool continues = line.size() > 6 && line.rfind("      ", 0) == 0 && line[6] != ' ';
+    if (starts)
+      inside = line.rfind("  " + command + " ", 0) == 0;
+    else if (!continues)
+      inside = false;
+    if (inside)
+      synopsis += line + "\n";
+  }
+  return synopsis;
+}
+
+// Every command answers --help and -h with its own usage, generated from its definition: the
+// synopsis `mocap --help` lists for it, its description and its options; a usage error shows the
+// command's short usage and where to read more, not every command's.
 TEST(Cli, EveryCommandAnswersHelpWithItsOwnUsage)
 {
   test::TempDir dir;
-  for (const char* command : {"info", "convert", "clean", "eval-fill", "eval-spikes", "eval-smooth", "smooth-table",
-                              "pfa", "track", "fix-swaps", "eval-track", "bind", "deform"}) {
-    const CommandResult help = runMocap(std::string(command) + " --help", dir);
+  const CommandResult all = runMocap("--help", dir);
+  ASSERT_EQ(all.exitCode, 0);
+  for (const std::string& command : kCommands) {
+    const CommandResult help = runMocap(command + " --help", dir);
     EXPECT_EQ(help.exitCode, 0) << command;
-    EXPECT_EQ(help.out.rfind(std::string("usage: mocap ") + command + " ", 0), 0u) << help.out;
+    EXPECT_EQ(help.out.rfind("usage: mocap " + command + " ", 0), 0u) << help.out;
     EXPECT_EQ(help.out.find("commands:"), std::string::npos) << command;
+    EXPECT_NE(help.out.find("Options:"), std::string::npos) << help.out;
+    const std::string listed = listedSynopsis(all.out, command);
+    ASSERT_FALSE(listed.empty()) << command << " missing in mocap --help:\n" << all.out;
+    const std::string usage = "usage: mocap " + listed.substr(2);
+    EXPECT_EQ(help.out.substr(0, usage.size()), usage) << command;
+    EXPECT_EQ(runMocap(command + " -h", dir).out, help.out) << command;
   }
   const CommandResult pfa = runMocap("pfa --help", dir);
   for (const char* option : {"--markers", "--exclude", "--threads", "--random", "--progress", "--curve"})
     EXPECT_NE(pfa.out.find(option), std::string::npos) << option;
   EXPECT_NE(runMocap("clean -h", dir).out.find("--spike-threshold"), std::string::npos);
+  // Defaults and ranges come from the definitions.
+  EXPECT_NE(runMocap("clean --help", dir).out.find("--order K=3"), std::string::npos);
+  EXPECT_NE(runMocap("clean --help", dir).out.find("B-spline order (whole number in [2, 7])"), std::string::npos);
   const CommandResult bad = runMocap("info", dir);
   EXPECT_EQ(bad.exitCode, 2);
-  EXPECT_NE(bad.err.find("usage: mocap info FILE"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.err, "mocap info: FILE is required\nusage: mocap info FILE [OPTIONS] (mocap info --help for more)\n");
   EXPECT_EQ(bad.err.find("commands:"), std::string::npos) << bad.err;
+  EXPECT_EQ(runMocap("help", dir).out, all.out);
+}
+
+// The README's command table is the output of `mocap --help`.
+TEST(Cli, ReadmeListsTheCommandsAsMocapHelpDoes)
+{
+  test::TempDir dir;
+  const std::string readme = readFileBytes(MOCAP_README);
+  const std::size_t section = readme.find("## The `mocap` command line");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t open = readme.find("```\n", section);
+  ASSERT_NE(open, std::string::npos);
+  const std::size_t close = readme.find("\n```\n", open);
+  ASSERT_NE(close, std::string::npos);
+  const std::string block = readme.substr(open + 4, close + 1 - (open + 4));
+  const CommandResult help = runMocap("--help", dir);
+  ASSERT_EQ(help.exitCode, 0);
+  EXPECT_EQ(block, help.out) << "README.md (-) and mocap --help (+) differ; paste mocap --help into the README:\n"
+                             << lineDiff(block, help.out);
+}
+
+// Bad values are usage errors (exit 2) that name the option and what it allows; nothing runs.
+TEST(Cli, OutOfRangeValuesInvalidChoicesAndUnknownOptionsGiveExitTwoNamingTheOption)
+{
+  test::TempDir dir;
+  const std::string take = q(test::sampleTake());
+  const std::string out = " -o " + q(dir.file("x.c3d"));
+  const struct
+  {
+    std::string arguments;
+    std::string message;
+  } cases[] = {
+      {"clean " + take + out + " --order 8", "mocap clean: --order: 8 not in [2, 7]"},
+      {"clean " + take + out + " --order=1", "mocap clean: --order: 1 not in [2, 7]"},
+      {"clean " + take + out + " --min-valid 2", "mocap clean: --min-valid: 2 not in [0, 1]"},
+      {"clean " + take + out + " --order three", "mocap clean: --order: 'three' is not a whole number"},
+      {"eval-smooth " + take + " --noise -1", "mocap eval-smooth: --noise: -1 not in [0, 10000]"},
+      {"eval-spikes " + take + " --amplitude x", "mocap eval-spikes: --amplitude: 'x' is not a number"},
+      {"clean " + take + out + " --smooth wavelet",
+       "mocap clean: --smooth: 'wavelet' is not one of bspline, butterworth, gcvspl, savgol, off"},
+      {"pfa " + take + " --method=best", "mocap pfa: --method: 'best' is not one of pfa, greedy"},
+      {"deform --mesh m.obj --binding b.json --take " + take + " -o x.pc2 --kernel cubic",
+       "mocap deform: --kernel: 'cubic' is not one of exp, gaussian, biharmonic, thin-plate"},
+      {"convert " + take + " " + q(dir.file("x.c3d")) + " --units furlong",
+       "mocap convert: --units: 'furlong' is not mm, cm or m"},
+      {"info " + take + " --bogus", "mocap info: The following argument was not expected: --bogus"},
+      {"clean " + take + out + " --max-gap 10 --max-gap-seconds 1", "mocap clean: --max-gap-seconds excludes --max-gap"},
+      {"fix-swaps " + take, "mocap fix-swaps: --output is required"},
+      {"frobnicate x", "mocap: unknown command 'frobnicate'"},
+  };
+  for (const auto& c : cases) {
+    const CommandResult run = runMocap(c.arguments, dir);
+    EXPECT_EQ(run.exitCode, 2) << c.arguments;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.arguments << "\n" << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 2) << run.err;
+    EXPECT_NE(run.err.find("--help"), std::string::npos) << "a hint to the usage: " << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
+}
+
+// Both --opt VALUE and --opt=VALUE; a repeated option's last value wins; whole numbers are decimal
+// ("010" is ten, not octal eight); negative numbers are values, not options.
+TEST(Cli, OptionValuesReadAsBefore)
+{
+  test::TempDir dir;
+  const std::string nose = q(test::dataFile("trc/NoseMoCap.trc"));
+  const CommandResult spikes = runMocap("eval-spikes " + nose + " --count=7 --count 010 --seed 3 --json", dir);
+  ASSERT_EQ(spikes.exitCode, 0) << spikes.err;
+  EXPECT_NE(spikes.out.find("\"count\": 10,"), std::string::npos) << spikes.out.substr(0, 300);
+  EXPECT_NE(spikes.out.find("\"seed\": 3,"), std::string::npos);
+  const CommandResult bind = runMocap("bind --mesh m.obj --take " + nose + " -o x.json --neutral -5", dir);
+  EXPECT_EQ(bind.err.find("--neutral"), std::string::npos) << "-5 is --neutral's value: " << bind.err;
 }
 
 TEST(Cli, ConvertWritesEveryFormatAndTrcReadsBack)
@@ -211,6 +358,15 @@ TEST(Cli, EvaluationAndPlanningCommandsPrintJson)
   ASSERT_EQ(pfa.exitCode, 0) << pfa.err;
   EXPECT_NE(pfa.out.find("\"recommended\""), std::string::npos);
   EXPECT_GT(std::filesystem::file_size(dir.file("curve.csv")), 50u);
+  const CommandResult two = runMocap("pfa " + nose + " --restarts 5 --k=5 " + nose + " --json", dir);
+  ASSERT_EQ(two.exitCode, 0) << two.err;
+  const std::size_t inputs = two.out.find("\"inputs\": [");
+  ASSERT_NE(inputs, std::string::npos);
+  const std::string listed = two.out.substr(inputs, two.out.find(']', inputs) - inputs);
+  std::size_t takes = 0;
+  for (std::size_t at = listed.find("NoseMoCap.trc"); at != std::string::npos; at = listed.find("NoseMoCap.trc", at + 1))
+    ++takes;
+  EXPECT_EQ(takes, 2u) << "both TAKEs, with options between them: " << listed;
   EXPECT_EQ(runMocap("pfa " + nose + " --k 9:3", dir).exitCode, 2);
   EXPECT_EQ(runMocap("eval-spikes " + nose + " --amplitude -5", dir).exitCode, 2);
   EXPECT_EQ(runMocap("eval-smooth " + q(dir.file("missing.trc")), dir).exitCode, 1);
