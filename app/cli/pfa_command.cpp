@@ -7,8 +7,7 @@
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
-#include "mocap/layout/layout_symmetry.h"
-#include "mocap/io/marker_set_io.h"
+#include "mocap/layout/layout_planning.h"
 #include "mocap/model/marker_edits.h"
 #include "mocap/layout/marker_selection.h"
 #include "mocap/base/number_text.h"
@@ -42,51 +41,6 @@ struct PfaArguments
   bool progress = false;
   bool json = false;
 };
-
-// Glob match with `*` (any run) and `?` (any one character).
-bool globMatch(const std::string& pattern, const std::string& text)
-{
-  std::size_t p = 0, t = 0, star = std::string::npos, resume = 0;
-  while (t < text.size()) {
-    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
-      ++p;
-      ++t;
-    } else if (p < pattern.size() && pattern[p] == '*') {
-      star = p++;
-      resume = t;
-    } else if (star != std::string::npos) {
-      p = star + 1;
-      t = ++resume;
-    } else {
-      return false;
-    }
-  }
-  while (p < pattern.size() && pattern[p] == '*')
-    ++p;
-  return p == pattern.size();
-}
-
-std::vector<std::string> matching(const std::vector<std::string>& labels, const std::string& patterns,
-                                  const std::string& option)
-{
-  std::set<std::string> found;
-  for (const std::string& pattern : splitList(patterns, option)) {
-    bool any = false;
-    for (const std::string& label : labels)
-      if (globMatch(pattern, label)) {
-        found.insert(label);
-        any = true;
-      }
-    if (!any)
-      throw UsageError(option + ": no marker matches '" + pattern + "'");
-  }
-  std::vector<std::string> ordered;
-  for (const std::string& label : labels)
-    if (found.count(label) != 0)
-      ordered.push_back(label);
-  return ordered;
-}
-
 
 std::string csvNumber(double value)
 {
@@ -122,66 +76,27 @@ std::pair<Eigen::Index, Eigen::Index> parseKRange(const std::string& text)
   return {low, high};
 }
 
-// --keyposes F1,F2,… : frame numbers as the first take counts them, or TAKE:FRAME (TAKE from 1).
-std::vector<Eigen::Index> keyFrameRows(const std::string& text, const std::vector<Take>& takes,
-                                       const LayoutFrames& frames)
-{
-  std::vector<Eigen::Index> rows;
-  for (const std::string& field : splitList(text, "--keyposes")) {
-    std::size_t take = 0;
-    std::string frameText = field;
-    if (const std::size_t colon = field.find(':'); colon != std::string::npos) {
-      const std::string takeText = field.substr(0, colon);
-      if (takeText.empty() || takeText.find_first_not_of("0123456789") != std::string::npos)
-        throw UsageError("--keyposes: bad take number in '" + field + "'");
-      take = static_cast<std::size_t>(std::stoul(takeText)) - 1;
-      if (take >= takes.size())
-        throw UsageError("--keyposes: there is no take " + takeText);
-      frameText = field.substr(colon + 1);
-    }
-    std::size_t used = 0;
-    long long frame = 0;
-    try {
-      frame = std::stoll(frameText, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != frameText.size())
-      throw UsageError("--keyposes needs auto or frame numbers, not '" + field + "'");
-    const Eigen::Index index = static_cast<Eigen::Index>(frame - takes[take].firstFrame());
-    const Eigen::Index row = index >= 0 && index < takes[take].frameCount() ? frames.rowOf(take, index) : -1;
-    if (row < 0)
-      throw UsageError("--keyposes: frame " + field + " is outside the take or lacks a planned marker");
-    if (std::find(rows.begin(), rows.end(), row) != rows.end())
-      throw UsageError("--keyposes: frame " + field + " is given twice");
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-std::vector<std::string> labelsOf(const LayoutFrames& frames, const std::vector<Eigen::Index>& markers)
-{
-  std::vector<std::string> labels;
-  for (const Eigen::Index m : markers)
-    labels.push_back(frames.labels[static_cast<std::size_t>(m)]);
-  return labels;
-}
-
 struct Report
 {
   std::vector<std::string> inputs;
+  const LayoutResult& result;
   const LayoutFrames& frames;
   const LayoutPlan& plan;
   const MarkerSymmetry& symmetry;
   const std::optional<PairDetection>& detection;
   std::string pairSource;
+
+  [[nodiscard]] std::vector<std::string> labelsOf(const std::vector<Eigen::Index>& markers) const
+  {
+    return result.labelsOf(markers);
+  }
 };
 
 void writeLayout(JsonWriter& json, const Report& report, const ScoredLayout& layout, bool withFrequencies)
 {
   json.beginObject();
   json.key("labels").beginArray();
-  for (const std::string& label : labelsOf(report.frames, layout.markers))
+  for (const std::string& label : report.labelsOf(layout.markers))
     json.value(label);
   json.endArray();
   if (withFrequencies) {
@@ -195,7 +110,7 @@ void writeLayout(JsonWriter& json, const Report& report, const ScoredLayout& lay
       const auto& unit = report.symmetry.units()[static_cast<std::size_t>(u)];
       json.beginObject();
       json.key("markers").beginArray();
-      for (const std::string& label : labelsOf(report.frames, unit))
+      for (const std::string& label : report.labelsOf(unit))
         json.value(label);
       json.endArray();
       json.key("frequency").value(layout.unitFrequency[static_cast<std::size_t>(u)]);
@@ -314,7 +229,7 @@ std::string jsonReport(const Report& report)
   json.key("labels").beginArray();
   if (const LayoutSize* entry = plan.size(plan.recommendedSize))
     if (const ScoredLayout* layout = entry->layout(plan.method))
-      for (const std::string& label : labelsOf(frames, layout->markers))
+      for (const std::string& label : report.labelsOf(layout->markers))
         json.value(label);
   json.endArray();
   json.endObject();
@@ -420,13 +335,31 @@ void printText(const Report& report)
   if (const LayoutSize* entry = plan.size(plan.recommendedSize))
     if (const ScoredLayout* layout = entry->layout(plan.method)) {
       out << " ";
-      for (const std::string& label : labelsOf(frames, layout->markers))
+      for (const std::string& label : report.labelsOf(layout->markers))
         out << " " << label;
       out << "\n";
     }
   if (plan.cancelled)
     out << "cancelled: results are incomplete\n";
   std::cout << out.str();
+}
+
+// The one core planning (layout_planning.h, as the studio's panel runs it); what the request
+// names wrongly (a glob matching nothing, a bad key pose) is a usage error naming the option.
+LayoutResult planRequested(const std::vector<Take>& takes, LayoutRequest& request,
+                           const std::optional<std::string>& keyposes, const RunControl& control)
+{
+  try {
+    if (keyposes)
+      request.keyPoses = parseKeyPoses(*keyposes);
+    return planLayout(takes, request, control);
+  } catch (const LayoutRequestError& e) {
+    using Field = LayoutRequestError::Field;
+    const char* option = e.field() == Field::Markers   ? "--markers"
+                         : e.field() == Field::Exclude ? "--exclude"
+                                                       : "--keyposes";
+    throw UsageError(std::string(option) + ": " + e.what());
+  }
 }
 
 int runPfa(const PfaArguments& arguments)
@@ -460,44 +393,23 @@ int runPfa(const PfaArguments& arguments)
     for (const auto& w : warnings)
       std::cerr << input << ": warning: " << w << '\n';
   }
-  LayoutFramesOptions frameOptions;
+  LayoutRequest request;
   if (const auto& labels = arguments.stabilize)
-    frameOptions.stabilizeLabels = splitList(*labels, "--stabilize");
-  const std::vector<std::string>& allLabels = takes.front().labels();
-  std::vector<std::string> planned;
-  if (const auto& patterns = arguments.markers) {
-    planned = matching(allLabels, *patterns, "--markers");
-  } else {
-    planned = defaultPlannedLabels(takes.front(), frameOptions.stabilizeLabels);
-  }
-  if (const auto& patterns = arguments.exclude) {
-    const std::vector<std::string> excluded = matching(allLabels, *patterns, "--exclude");
-    planned.erase(std::remove_if(planned.begin(), planned.end(),
-                                 [&](const std::string& label) {
-                                   return std::find(excluded.begin(), excluded.end(), label) !=
-                                          excluded.end();
-                                 }),
-                  planned.end());
-  }
-  frameOptions.markers = planned;
-  const LayoutFrames frames = collectLayoutFrames(takes, frameOptions);
-  if (const auto& keyposes = arguments.keyposes; keyposes && *keyposes != "auto")
-    options.keyFrames = keyFrameRows(*keyposes, takes, frames);
-
-  std::optional<PairDetection> detection;
-  std::string pairSource;
-  MarkerSymmetry symmetry;
-  if (const auto& pairsFile = arguments.pairs) {
-    symmetry = readMarkerPairs(*pairsFile, frames.labels);
-    pairSource = "file " + *pairsFile;
-  } else {
-    detection = detectLayoutPairs(frames, options.keyFrames);
-    symmetry = detection->symmetry;
-    pairSource = "detected on the neutral frame: labels, then mirror matching";
-  }
-
-  const LayoutPlan plan = planMarkerLayout(frames, symmetry, options, control);
-  const Report report{arguments.takes, frames, plan, symmetry, detection, pairSource};
+    request.stabilizeLabels = splitList(*labels, "--stabilize");
+  if (const auto& patterns = arguments.markers)
+    request.markerPatterns = splitList(*patterns, "--markers");
+  if (const auto& patterns = arguments.exclude)
+    request.excludePatterns = splitList(*patterns, "--exclude");
+  if (const auto& pairsFile = arguments.pairs)
+    request.pairsFile = *pairsFile;
+  request.plan = options;
+  const LayoutResult result = planRequested(takes, request, arguments.keyposes, control);
+  const LayoutPlan& plan = result.plan;
+  const LayoutFrames& frames = result.frames;
+  const std::string pairSource = request.pairsFile.empty()
+                                     ? "detected on the neutral frame: labels, then mirror matching"
+                                     : "file " + request.pairsFile;
+  const Report report{arguments.takes, result, frames, plan, result.symmetry, result.detection, pairSource};
   if (arguments.json)
     std::cout << jsonReport(report);
   else
@@ -505,8 +417,7 @@ int runPfa(const PfaArguments& arguments)
   if (const auto& curve = arguments.curve)
     writeFileAtomically(*curve, curveCsv(plan));
   if (exportSize) {
-    const LayoutSize* entry = plan.size(*exportSize);
-    const ScoredLayout* layout = entry ? entry->layout(plan.method) : nullptr;
+    const ScoredLayout* layout = result.layout(*exportSize);
     if (!layout && *exportSize != frames.markerCount()) {
       std::string sizes;
       for (const LayoutSize& e : plan.sizes)
@@ -517,9 +428,7 @@ int runPfa(const PfaArguments& arguments)
                        ")");
     }
     // The planned markers plus the head reference markers a capture with this layout still needs.
-    std::vector<std::string> labels = layout ? labelsOf(frames, layout->markers) : frames.labels;
-    labels.insert(labels.end(), frameOptions.stabilizeLabels.begin(), frameOptions.stabilizeLabels.end());
-    writeTake(subsetTake(takes.front(), labels), exportRequest->second);
+    writeTake(subsetTake(takes.front(), result.captureLabels(layout)), exportRequest->second);
   }
   return plan.cancelled ? kExitBadInput : kExitOk;
 }

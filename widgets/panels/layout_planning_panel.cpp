@@ -534,7 +534,7 @@ const ScoredLayout* LayoutPlanningPanel::selectedLayout() const
 std::vector<std::string> LayoutPlanningPanel::selectedLabels() const
 {
   const ScoredLayout* layout = selectedLayout();
-  return layout ? m_result->labelsOf(*layout) : std::vector<std::string>{};
+  return layout ? m_result->labelsOf(layout->markers) : std::vector<std::string>{};
 }
 
 void LayoutPlanningPanel::showSelectedSize()

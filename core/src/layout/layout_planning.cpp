@@ -145,10 +145,10 @@ LayoutResult planLayout(const std::vector<Take>& takes, const LayoutRequest& req
   return result;
 }
 
-std::vector<std::string> LayoutResult::labelsOf(const ScoredLayout& layout) const
+std::vector<std::string> LayoutResult::labelsOf(const std::vector<Eigen::Index>& markers) const
 {
   std::vector<std::string> labels;
-  for (const Eigen::Index m : layout.markers)
+  for (const Eigen::Index m : markers)
     labels.push_back(frames.labels[static_cast<std::size_t>(m)]);
   return labels;
 }
@@ -161,7 +161,7 @@ const ScoredLayout* LayoutResult::layout(Eigen::Index markerCount) const
 
 std::vector<std::string> LayoutResult::captureLabels(const ScoredLayout* chosen) const
 {
-  std::vector<std::string> labels = chosen ? labelsOf(*chosen) : frames.labels;
+  std::vector<std::string> labels = chosen ? labelsOf(chosen->markers) : frames.labels;
   labels.insert(labels.end(), stabilizeLabels.begin(), stabilizeLabels.end());
   return labels;
 }

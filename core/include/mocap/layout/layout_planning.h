@@ -70,8 +70,9 @@ struct LayoutResult
   std::vector<std::string> stabilizeLabels;
   LayoutPlan plan;
 
-  /// The labels of `layout`'s markers, in plan order. O(#markers).
-  [[nodiscard]] std::vector<std::string> labelsOf(const ScoredLayout& layout) const;
+  /// The labels of planned markers (indices into frames.labels, as ScoredLayout::markers), in that
+  /// order. O(#markers).
+  [[nodiscard]] std::vector<std::string> labelsOf(const std::vector<Eigen::Index>& markers) const;
   /// The layout the plan's method chose with `markerCount` markers, or nullptr. O(#sizes).
   [[nodiscard]] const ScoredLayout* layout(Eigen::Index markerCount) const;
   /// What a capture with `layout` records: its markers plus the head reference markers; with
