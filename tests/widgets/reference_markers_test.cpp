@@ -274,6 +274,36 @@ TEST_F(ReferenceMarkers, TrackAndLabelWithNothingToLabelChangesNothing)
       << window->statusBar()->currentMessage().toStdString();
 }
 
+// One head motion per state of the take, shared by the 3D view and the face mesh: estimated once,
+// estimated again after an edit of a reference marker (and after its undo), never cached when refused.
+TEST_F(ReferenceMarkers, TheDocumentEstimatesTheHeadMotionOncePerStateOfTheTake)
+{
+  const std::vector<Eigen::Index> reference = doc().referenceMarkers();
+  const auto first = doc().headMotion(reference);
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(doc().headMotion(reference), first) << "a second ask is answered from the cache";
+
+  const Eigen::Index root = reference.front();
+  doc().setSelection({root});
+  doc().setRange(100, 400);
+  QAction* remove = actionNamed(*window, QStringLiteral("&Delete Range"));
+  ASSERT_NE(remove, nullptr);
+  remove->trigger();  // a gap in a reference marker moves the poses estimated there
+  ASSERT_EQ(doc().undoStack()->count(), 1);
+  const auto edited = doc().headMotion(reference);
+  ASSERT_NE(edited, first);
+  EXPECT_FALSE(edited->poses[250].isApprox(first->poses[250], 1e-12) && edited->known == first->known)
+      << "the estimate follows the edit";
+  doc().undoStack()->undo();
+  const auto undone = doc().headMotion(reference);
+  ASSERT_NE(undone, edited);
+  EXPECT_TRUE(undone->poses[250].isApprox(first->poses[250], 1e-12));
+
+  const std::vector<Eigen::Index> two(reference.begin(), reference.begin() + 2);
+  EXPECT_THROW((void)doc().headMotion(two), std::exception) << "two markers cannot carry a pose";
+  EXPECT_THROW((void)doc().headMotion(two), std::exception) << "and the refusal is not cached as a motion";
+}
+
 TEST_F(ReferenceMarkers, DeleteRangeOnAGapPushesNothing)
 {
   const Eigen::Index marker = *doc().take().markerIndex("section7-1");

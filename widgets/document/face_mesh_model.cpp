@@ -144,9 +144,10 @@ void FaceMeshModel::restabilize()
   if (m_stabilization.empty() || !m_document.hasTake())
     return;
   try {
-    HeadMotion motion = estimateHeadMotion(m_document.take(), markerIndices(m_document.take(), m_stabilization));
+    std::shared_ptr<const HeadMotion> motion =
+        m_document.headMotion(markerIndices(m_document.take(), m_stabilization));
     Take stabilized = m_document.take();
-    removeHeadMotion(stabilized, motion);
+    removeHeadMotion(stabilized, *motion);
     m_stabilized = std::move(stabilized);
     m_headMotion = std::move(motion);
   } catch (const std::exception& e) {

@@ -96,7 +96,7 @@ private:
   bool m_compare = false;
   std::optional<Take> m_stabilized;  // the take without head motion, when stabilizing
   QString m_stabilizationError;
-  std::optional<HeadMotion> m_headMotion;
+  std::shared_ptr<const HeadMotion> m_headMotion;  // shared with the document's cache
   std::unique_ptr<FaceRig> m_rig;
   std::unique_ptr<FaceRig> m_compareRig;
   QString m_error;

@@ -11,6 +11,11 @@ namespace mocap::ui {
 TakeDocument::TakeDocument(QObject* parent) : QObject(parent)
 {
   connect(&m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+  // Connected before any view, so a view asking for the head motion on these signals gets a fresh one.
+  const auto forgetHeadMotions = [this] { m_headMotions.clear(); };
+  connect(this, &TakeDocument::takeReset, this, forgetHeadMotions);
+  connect(this, &TakeDocument::samplesChanged, this, forgetHeadMotions);
+  connect(this, &TakeDocument::markersChanged, this, forgetHeadMotions);
 }
 
 TakeDocument::ReadResult TakeDocument::read(const QString& path)
@@ -284,6 +289,20 @@ std::vector<std::string> TakeDocument::referenceLabels() const
   for (const Eigen::Index m : m_referenceMarkers)
     labels.push_back(m_take.label(m));
   return labels;
+}
+
+std::shared_ptr<const HeadMotion> TakeDocument::headMotion(const std::vector<Eigen::Index>& markers) const
+{
+  auto& cached = m_headMotions[markers];
+  if (!cached) {
+    try {
+      cached = std::make_shared<const HeadMotion>(estimateHeadMotion(m_take, markers));
+    } catch (...) {
+      m_headMotions.erase(markers);  // no empty entry for a set that cannot carry a pose
+      throw;
+    }
+  }
+  return cached;
 }
 
 bool TakeDocument::isReferenceMarker(Eigen::Index marker) const

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mocap/cleaning/head_stabilization.h"
 #include "mocap/model/sample_patch.h"
 #include "mocap/model/take.h"
 
@@ -7,6 +8,8 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -107,6 +110,11 @@ public:
   [[nodiscard]] const std::vector<Eigen::Index>& referenceMarkers() const { return m_referenceMarkers; }
   /// The reference markers' labels, in marker order.
   [[nodiscard]] std::vector<std::string> referenceLabels() const;
+  /// The take's head motion estimated from `markers` (mocap::estimateHeadMotion), computed once
+  /// per state of the take and shared by everything that draws in the head frame (the 3D view, the
+  /// face mesh and its placement): the cache is dropped on a new take and on every edit of samples
+  /// or markers. Throws as estimateHeadMotion. O(#frames · #markers) when not cached.
+  [[nodiscard]] std::shared_ptr<const HeadMotion> headMotion(const std::vector<Eigen::Index>& markers) const;
   [[nodiscard]] bool isReferenceMarker(Eigen::Index marker) const;
   /// Replaces the set (for SetReferenceMarkersCommand only; out-of-range indices are dropped)
   /// and returns the old one. Emits referenceMarkersChanged when it changed.
@@ -162,6 +170,7 @@ private:
   bool referenceMarkerInserted(Eigen::Index marker);
   bool mapReferenceLabels(const std::vector<std::string>& labels);
   std::vector<Eigen::Index> m_referenceMarkers;
+  mutable std::map<std::vector<Eigen::Index>, std::shared_ptr<const HeadMotion>> m_headMotions;
   /// Labels of reference markers removed from the take: a marker inserted with one of them (the
   /// undo of the removal) rejoins the set.
   std::vector<std::string> m_removedReferenceLabels;

@@ -35,15 +35,7 @@ FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* 
     showRestPose();
     updateFrame();
   });
-  // An edit may move the view's reference markers: their head pose is estimated again.
   TakeDocument& document = model.document();
-  const auto forgetViewMotion = [this] {
-    m_viewReference.clear();
-    m_viewMotion.reset();
-  };
-  connect(&document, &TakeDocument::takeReset, this, forgetViewMotion);
-  connect(&document, &TakeDocument::samplesChanged, this, forgetViewMotion);
-  connect(&document, &TakeDocument::markersChanged, this, forgetViewMotion);
   connect(&document, &TakeDocument::currentFrameChanged, this, &FaceMeshScene::updateFrame);
   // The view's head-stabilized frame can change without a document signal (Ctrl+B).
   connect(view.viewport(), &VtkViewport::aboutToRender, this, &FaceMeshScene::updatePlacement);
@@ -84,23 +76,20 @@ void FaceMeshScene::updatePlacement()
 {
   if (!m_model.hasMesh())
     return;
-  const Take& take = m_model.document().take();
-  if (m_view.headReference() != m_viewReference) {
-    m_viewReference = m_view.headReference();
-    m_viewMotion.reset();
-    if (!m_viewReference.empty()) {
-      try {
-        m_viewMotion = estimateHeadMotion(take, m_viewReference);
-      } catch (const std::exception&) {
-        m_viewMotion.reset();  // the view refuses such a reference too and stays in the lab frame
-      }
+  // The view draws markers in the head frame of its reference markers: so is the mesh placed.
+  std::shared_ptr<const HeadMotion> viewMotion;
+  if (!m_view.headReference().empty()) {
+    try {
+      viewMotion = m_model.document().headMotion(m_view.headReference());
+    } catch (const std::exception&) {
+      viewMotion.reset();  // the view refuses such a reference too and stays in the lab frame
     }
   }
   const Eigen::Index frame = m_model.document().currentFrame();
   std::optional<Eigen::Affine3d> placement = m_model.meshToLab(frame);
   const auto index = static_cast<std::size_t>(frame);
-  if (placement && m_viewMotion && index < m_viewMotion->poses.size())
-    placement = Eigen::Affine3d(m_viewMotion->poses[index].inverse()) * *placement;  // as the view draws markers
+  if (placement && viewMotion && index < viewMotion->poses.size())
+    placement = Eigen::Affine3d(viewMotion->poses[index].inverse()) * *placement;  // as the view draws markers
   m_layer->setVisible(placement.has_value());
   m_compareLayer->setVisible(placement.has_value() && m_model.compare());
   if (!placement)

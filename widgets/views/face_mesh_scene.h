@@ -1,6 +1,5 @@
 #pragma once
 
-#include "mocap/cleaning/head_stabilization.h"
 #include "mocap/model/mesh.h"
 
 #include <QObject>
@@ -10,8 +9,6 @@
 #include <Eigen/Geometry>
 
 #include <memory>
-#include <optional>
-#include <vector>
 
 namespace mocap::ui {
 
@@ -55,8 +52,6 @@ private:
   MarkerView3d& m_view;
   std::unique_ptr<MeshLayer> m_layer;
   std::unique_ptr<MeshLayer> m_compareLayer;
-  std::vector<Eigen::Index> m_viewReference;  // the view's reference markers m_viewMotion is for
-  std::optional<HeadMotion> m_viewMotion;
   double m_deformMs = -1.0;
   double m_compareMs = -1.0;
   MeshVertices m_deformed;

@@ -316,10 +316,10 @@ void MarkerView3d::resetCamera()
 
 QString MarkerView3d::setHeadReference(std::vector<Eigen::Index> referenceMarkers)
 {
-  std::optional<HeadMotion> motion;
+  std::shared_ptr<const HeadMotion> motion;
   if (!referenceMarkers.empty()) {
     try {
-      motion = estimateHeadMotion(m_document.take(), referenceMarkers);
+      motion = m_document.headMotion(referenceMarkers);
     } catch (const std::exception& e) {
       return QString::fromStdString(e.what());
     }

@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QWidget>
 
+#include <memory>
 #include <optional>
 
 #include <Eigen/Core>
@@ -157,7 +158,7 @@ private:
   bool m_linksVisible = false;
   bool m_labellingMode = false;
   LengthUnit m_displayUnit = LengthUnit::Millimetre;
-  std::optional<HeadMotion> m_headMotion;
+  std::shared_ptr<const HeadMotion> m_headMotion;  // shared with the document's cache
   std::vector<bool> m_layoutKept;  // empty: no layout highlight
   std::vector<bool> m_layoutReference;  // empty or one per marker
   std::vector<QColor> m_labelColors;
