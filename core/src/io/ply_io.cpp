@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 namespace mocap {
 
@@ -50,7 +51,7 @@ std::size_t scalarSize(Scalar type)
 class PlyParser
 {
 public:
-  PlyParser(const std::filesystem::path& path, std::string_view bytes) : m_path(path.string()), m_bytes(bytes) {}
+  PlyParser(std::string sourceName, std::string_view bytes) : m_path(std::move(sourceName)), m_bytes(bytes) {}
 
   Mesh parse()
   {
@@ -272,11 +273,16 @@ void appendBinary(std::string& out, T value)
 Mesh readPly(const std::filesystem::path& path)
 {
   const MappedFile file(path);
-  Mesh mesh = PlyParser(path, std::string_view(reinterpret_cast<const char*>(file.data()), file.size())).parse();
+  return parsePly(std::string_view(reinterpret_cast<const char*>(file.data()), file.size()), path.string());
+}
+
+Mesh parsePly(std::string_view bytes, const std::string& sourceName)
+{
+  Mesh mesh = PlyParser(sourceName, bytes).parse();
   try {
     checkMesh(mesh);
   } catch (const InvalidArgument& e) {
-    throw FormatError(path.string(), e.what());
+    throw FormatError(sourceName, e.what());
   }
   return mesh;
 }
