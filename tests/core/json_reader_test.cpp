@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 namespace mocap {
@@ -53,6 +55,15 @@ TEST(JsonReader, ReadsEveryKindOfValue)
   EXPECT_EQ(root.find("s", "root")->string("s"), "q\"\\/\b\f\n\r\t\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80");
   EXPECT_TRUE(root.find("empty", "root")->array("empty").empty());
   EXPECT_TRUE(root.find("none", "root")->object("none").empty());
+
+  // Zero keeps its sign, as a double must (the writer writes -0.0 as "-0").
+  const auto firstNumber = [](const JsonValue& v) {
+    return v.isArray() ? v.array("x")[0].number("x") : v.isObject() ? v.find("a", "x")->number("x") : v.number("x");
+  };
+  for (const char* text : {"-0", "[-0]", "[ -0 ,0]", "{\"a\":-0}", "-0.0", "-0e0"})
+    EXPECT_TRUE(std::signbit(firstNumber(parseJson(text, "doc.json")))) << text;
+  for (const char* text : {"0", "[0]", "[ 0 ,-0]", "{\"a\":0}", "0.0", "[10]", "{\"b\":-0,\"a\":0}"})
+    EXPECT_FALSE(std::signbit(firstNumber(parseJson(text, "doc.json")))) << text;
 
   // A document may be a scalar.
   EXPECT_EQ(parseJson("42", "doc.json").number("x"), 42.0);
@@ -149,7 +160,7 @@ TEST(JsonReader, ReadsBackWhatTheWriterWrote)
 {
   const std::string texts[] = {"plain", "naïve café", "日本語", "\xF0\x9F\x98\x80 emoji", "quote \" backslash \\",
                                "control \x01\x1F\b\f\n\r\t", "slash / and \x7F"};
-  const double numbers[] = {0.0, 1.0, -2.5, 0.1, 1e-300, 1.7976931348623157e308, 5e-324,
+  const double numbers[] = {0.0, -0.0, 1.0, -2.5, 0.1, 1e-300, 1.7976931348623157e308, 5e-324,
                             static_cast<double>(65.053f), 123456789012345.0};
   for (const int indent : {0, 2}) {
     JsonWriter json(indent);
@@ -175,8 +186,10 @@ TEST(JsonReader, ReadsBackWhatTheWriterWrote)
       EXPECT_EQ(readTexts[i].string("text"), texts[i]);
     const auto& readNumbers = back.find("numbers", "root")->array("numbers");
     ASSERT_EQ(readNumbers.size(), std::size(numbers));
-    for (std::size_t i = 0; i < readNumbers.size(); ++i)
-      EXPECT_EQ(readNumbers[i].number("number"), numbers[i]);  // bit for bit
+    for (std::size_t i = 0; i < readNumbers.size(); ++i) {
+      const double read = readNumbers[i].number("number");
+      EXPECT_EQ(std::memcmp(&read, &numbers[i], sizeof read), 0) << numbers[i];  // bit for bit, zero's sign too
+    }
     EXPECT_EQ(back.find("count", "root")->number("count"), -9007199254740991.0);
     EXPECT_EQ(back.find("flag", "root")->type(), JsonValue::Type::Boolean);
     EXPECT_TRUE(back.find("nothing", "root")->isNull());

@@ -20,7 +20,7 @@ constexpr std::size_t kMaxDepth = 256;
 class ReadHead
 {
 public:
-  using iterator_category = std::forward_iterator_tag;
+  using iterator_category = std::input_iterator_tag;
   using value_type = char;
   using difference_type = std::ptrdiff_t;
   using pointer = const char*;
@@ -109,7 +109,10 @@ public:
     return add(std::move(value));
   }
   // Integers become doubles like every other number: the callers read them through number().
-  bool number_integer(nlohmann::json::number_integer_t number) { return add(numberValue(static_cast<double>(number))); }
+  bool number_integer(nlohmann::json::number_integer_t number)
+  {
+    return add(numberValue(number == 0 && zeroWasNegative() ? -0.0 : static_cast<double>(number)));
+  }
   bool number_unsigned(nlohmann::json::number_unsigned_t number)
   {
     return add(numberValue(static_cast<double>(number)));
@@ -173,6 +176,17 @@ private:
   {
     const auto read = static_cast<std::size_t>(m_furthest - m_text.data());
     return read > 0 ? read - 1 : 0;
+  }
+
+  /// Whether the integer 0 just read was written "-0": nlohmann reads it as the integer 0, but our
+  /// writer writes -0.0 as "-0" and the double must read back with its sign. The lexer has read
+  /// the number and the byte after it (a delimiter, in a valid document) unless the text ended.
+  [[nodiscard]] bool zeroWasNegative() const
+  {
+    auto end = static_cast<std::size_t>(m_furthest - m_text.data());
+    if (end > 0 && m_text[end - 1] != '0')
+      --end;
+    return end >= 2 && m_text[end - 2] == '-';
   }
 
   static JsonValue numberValue(double number)
