@@ -46,6 +46,9 @@ PointCache parsePc2(std::string_view bytes, const std::string& name)
   const std::int32_t samples = get<std::int32_t>(data, 28);
   if (points < 0 || samples < 0)
     throw FormatError(name, 16, "negative point or sample count");
+  // Samples of no points take no bytes, so a 32-byte file could claim 2^31 of them.
+  if (points == 0 && samples > 0)
+    throw FormatError(name, 16, "samples of no points");
   const std::uint64_t expected = kHeaderSize + std::uint64_t{12} * static_cast<std::uint64_t>(points) *
                                                    static_cast<std::uint64_t>(samples);
   if (expected != bytes.size())
