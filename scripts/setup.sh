@@ -9,8 +9,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(
   cmake make g++ clang pkg-config
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-l10n-tools
-  libvtk9-dev libeigen3-dev nlohmann-json3-dev
+  libvtk9-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  nlohmann-json3-dev
   xvfb xauth libgl1-mesa-dri
 )
 
