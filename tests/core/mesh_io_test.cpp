@@ -145,6 +145,14 @@ TEST(MeshIo, MalformedPlyIsRejected)
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n",
       "ply\nformat binary_little_endian 1.0\nelement vertex 5\nproperty double x\nproperty double y\n"
       "property double z\nend_header\n\x01\x02",
+      // Found by fuzz_ply_reader: a corner index beyond Eigen::Index was converted (undefined).
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+      "3 0 1 11111111111111111111111111111111111111\n",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar float vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar float vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 nan\n",
   };
   for (const char* text : cases) {
     writeFileAtomically(dir.file("bad.ply"), text);
@@ -205,6 +213,14 @@ TEST(MeshIo, Pc2WriterLeavesNoFileWithoutFinishAndRejectsBadInput)
   EXPECT_THROW((void)readPc2(dir.file("short.pc2")), FormatError);
   writeFileAtomically(dir.file("magic.pc2"), std::string(40, 'x'));
   EXPECT_THROW((void)readPc2(dir.file("magic.pc2")), FormatError);
+
+  // Found by fuzz_pc2_reader: a header claiming samples of zero points (the reader copied each
+  // empty sample from a null pointer, and 2^31 of them fit in 32 bytes).
+  std::string header("POINTCACHE2\0\1\0\0\0", 16);
+  header += std::string(8, '\0') + std::string("\0\0\x80\x3f", 4);  // 0 points, start 0, rate 1
+  EXPECT_THROW((void)parsePc2(header + std::string("\xff\xff\xff\x7f", 4), "many.pc2"), FormatError);
+  EXPECT_THROW((void)parsePc2(header + std::string("\2\0\0\0", 4), "two.pc2"), FormatError);
+  EXPECT_TRUE(parsePc2(header + std::string(4, '\0'), "empty.pc2").samples.empty());
 }
 
 } // namespace

@@ -3,33 +3,18 @@
 #include "mocap/base/error.h"
 #include "mocap/base/number_text.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
-#include <cstdio>
 
 namespace mocap {
 
 std::string jsonQuote(std::string_view text)
 {
-  std::string out = "\"";
-  for (char c : text) {
-    switch (c) {
-    case '"': out += "\\\""; break;
-    case '\\': out += "\\\\"; break;
-    case '\n': out += "\\n"; break;
-    case '\r': out += "\\r"; break;
-    case '\t': out += "\\t"; break;
-    default:
-      if (static_cast<unsigned char>(c) < 0x20) {
-        char buffer[8];
-        std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-        out += buffer;
-      } else {
-        out += c;
-      }
-    }
-  }
-  out += '"';
-  return out;
+  // nlohmann's serializer escapes what JSON requires and replaces each ill-formed UTF-8 sequence
+  // with U+FFFD, so a label in any 8-bit encoding (C3D files carry no encoding) still gives valid
+  // JSON. Other UTF-8 is written as it is, not as \u escapes.
+  return nlohmann::json(std::string(text)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 void JsonWriter::newline()

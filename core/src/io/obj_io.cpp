@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 namespace mocap {
 
@@ -15,7 +16,7 @@ namespace {
 class ObjParser
 {
 public:
-  ObjParser(const std::filesystem::path& path, std::string_view text) : m_path(path.string()), m_text(text) {}
+  ObjParser(std::string sourceName, std::string_view text) : m_path(std::move(sourceName)), m_text(text) {}
 
   Mesh parse()
   {
@@ -157,7 +158,12 @@ void appendRows(std::string& out, const char* keyword, const Rows& rows)
 Mesh readObj(const std::filesystem::path& path)
 {
   const MappedFile file(path);
-  return ObjParser(path, std::string_view(reinterpret_cast<const char*>(file.data()), file.size())).parse();
+  return parseObj(std::string_view(reinterpret_cast<const char*>(file.data()), file.size()), path.string());
+}
+
+Mesh parseObj(std::string_view text, const std::string& sourceName)
+{
+  return ObjParser(sourceName, text).parse();
 }
 
 std::string objText(const Mesh& mesh, const Eigen::Ref<const MeshVertices>& vertices)

@@ -32,28 +32,36 @@ T get(const unsigned char* bytes, std::size_t offset)
 PointCache readPc2(const std::filesystem::path& path)
 {
   const MappedFile file(path);
-  const std::string name = path.string();
-  if (file.size() < kHeaderSize || std::memcmp(file.data(), kMagic, sizeof kMagic) != 0)
+  return parsePc2(std::string_view(reinterpret_cast<const char*>(file.data()), file.size()), path.string());
+}
+
+PointCache parsePc2(std::string_view bytes, const std::string& name)
+{
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (bytes.size() < kHeaderSize || std::memcmp(data, kMagic, sizeof kMagic) != 0)
     throw FormatError(name, 0, "not a PC2 point cache (no POINTCACHE2 signature)");
-  if (get<std::int32_t>(file.data(), 12) != 1)
-    throw FormatError(name, 12, "PC2 version " + std::to_string(get<std::int32_t>(file.data(), 12)) + " (expected 1)");
-  const std::int32_t points = get<std::int32_t>(file.data(), 16);
-  const std::int32_t samples = get<std::int32_t>(file.data(), 28);
+  if (get<std::int32_t>(data, 12) != 1)
+    throw FormatError(name, 12, "PC2 version " + std::to_string(get<std::int32_t>(data, 12)) + " (expected 1)");
+  const std::int32_t points = get<std::int32_t>(data, 16);
+  const std::int32_t samples = get<std::int32_t>(data, 28);
   if (points < 0 || samples < 0)
     throw FormatError(name, 16, "negative point or sample count");
+  // Samples of no points take no bytes, so a 32-byte file could claim 2^31 of them.
+  if (points == 0 && samples > 0)
+    throw FormatError(name, 16, "samples of no points");
   const std::uint64_t expected = kHeaderSize + std::uint64_t{12} * static_cast<std::uint64_t>(points) *
                                                    static_cast<std::uint64_t>(samples);
-  if (expected != file.size())
-    throw FormatError(name, "size " + std::to_string(file.size()) + " bytes does not match " +
+  if (expected != bytes.size())
+    throw FormatError(name, "size " + std::to_string(bytes.size()) + " bytes does not match " +
                                 std::to_string(points) + " points × " + std::to_string(samples) +
                                 " samples (" + std::to_string(expected) + " bytes)");
   PointCache cache;
-  cache.startFrame = get<float>(file.data(), 20);
-  cache.sampleRate = get<float>(file.data(), 24);
+  cache.startFrame = get<float>(data, 20);
+  cache.sampleRate = get<float>(data, 24);
   const std::size_t block = 12u * static_cast<std::size_t>(points);
   for (std::int32_t s = 0; s < samples; ++s) {
     cache.samples.emplace_back(points, 3);
-    std::memcpy(cache.samples.back().data(), file.data() + kHeaderSize + block * static_cast<std::size_t>(s), block);
+    std::memcpy(cache.samples.back().data(), data + kHeaderSize + block * static_cast<std::size_t>(s), block);
   }
   return cache;
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 namespace mocap {
 
@@ -50,7 +51,7 @@ std::size_t scalarSize(Scalar type)
 class PlyParser
 {
 public:
-  PlyParser(const std::filesystem::path& path, std::string_view bytes) : m_path(path.string()), m_bytes(bytes) {}
+  PlyParser(std::string sourceName, std::string_view bytes) : m_path(std::move(sourceName)), m_bytes(bytes) {}
 
   Mesh parse()
   {
@@ -231,6 +232,16 @@ private:
       }
   }
 
+  /// A corner of face `face`: a whole number. Float lists and ascii text can hold any value, and
+  /// converting one outside Eigen::Index's range is undefined; the range check is in parse().
+  Eigen::Index vertexIndex(Scalar type, std::size_t face)
+  {
+    const double index = value(type);
+    if (!(std::abs(index) <= 1e15) || index != std::floor(index))
+      fail("face " + std::to_string(face) + " has a vertex index that is not a whole number");
+    return static_cast<Eigen::Index>(index);
+  }
+
   void readFaces(const Element& element, Mesh& mesh)
   {
     for (std::size_t i = 0; i < element.count; ++i) {
@@ -244,7 +255,7 @@ private:
         if (count < 3)
           fail("face " + std::to_string(i) + " has fewer than 3 corners");
         for (std::size_t c = 0; c < count; ++c)
-          face.vertices.push_back(static_cast<Eigen::Index>(value(property.type)));
+          face.vertices.push_back(vertexIndex(property.type, i));
       }
       if (face.vertices.empty())
         fail("the face element has no vertex_indices list");
@@ -272,11 +283,16 @@ void appendBinary(std::string& out, T value)
 Mesh readPly(const std::filesystem::path& path)
 {
   const MappedFile file(path);
-  Mesh mesh = PlyParser(path, std::string_view(reinterpret_cast<const char*>(file.data()), file.size())).parse();
+  return parsePly(std::string_view(reinterpret_cast<const char*>(file.data()), file.size()), path.string());
+}
+
+Mesh parsePly(std::string_view bytes, const std::string& sourceName)
+{
+  Mesh mesh = PlyParser(sourceName, bytes).parse();
   try {
     checkMesh(mesh);
   } catch (const InvalidArgument& e) {
-    throw FormatError(path.string(), e.what());
+    throw FormatError(sourceName, e.what());
   }
   return mesh;
 }

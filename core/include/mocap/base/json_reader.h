@@ -41,8 +41,10 @@ private:
   std::shared_ptr<std::map<std::string, JsonValue>> m_object;
 };
 
-/// Parses one JSON document. Throws FormatError(sourceName, byte offset, message) for malformed
-/// text, trailing content or nesting deeper than 256. O(text size).
+/// Parses one JSON document (strict RFC 8259, on nlohmann-json's SAX parser). Throws
+/// FormatError(sourceName, byte offset, message) for malformed text (including ill-formed UTF-8
+/// and unpaired surrogates), a repeated key, trailing content or nesting deeper than 256. The
+/// offset is that of the byte where the problem was found. O(text size).
 [[nodiscard]] JsonValue parseJson(std::string_view text, const std::string& sourceName);
 
 } // namespace mocap

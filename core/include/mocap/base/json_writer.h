@@ -8,8 +8,8 @@
 namespace mocap {
 
 /// A small streaming JSON writer for the CLI's machine-readable output: objects, arrays,
-/// strings (escaped), numbers (shortest round-trip form; NaN and infinities become null),
-/// booleans and null. Commas and nesting are tracked; misuse throws InvalidArgument.
+/// strings (escaped; ill-formed UTF-8 becomes U+FFFD), numbers (shortest round-trip form; NaN
+/// and infinities become null), booleans and null. Commas and nesting are tracked; misuse throws InvalidArgument.
 class JsonWriter
 {
 public:
@@ -45,7 +45,7 @@ private:
   int m_indent;
 };
 
-/// `text` as a quoted JSON string.
+/// `text` as a quoted JSON string; each ill-formed UTF-8 sequence in it becomes U+FFFD.
 [[nodiscard]] std::string jsonQuote(std::string_view text);
 
 } // namespace mocap

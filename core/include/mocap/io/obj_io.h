@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace mocap {
 
@@ -13,6 +14,8 @@ namespace mocap {
 /// FormatError ("FILE: line N: ...") for a malformed number or an index out of range, a face with
 /// fewer than three corners or a repeated vertex. O(file size).
 [[nodiscard]] Mesh readObj(const std::filesystem::path& path);
+/// Parses OBJ text as readObj does; `sourceName` names it in errors.
+[[nodiscard]] Mesh parseObj(std::string_view text, const std::string& sourceName);
 
 /// The OBJ text of `mesh` with `vertices` (#vertices × 3) in place of mesh.vertices: the same
 /// faces, UVs and normals, numbers in shortest round-trip form. Throws InvalidArgument when the

@@ -4,6 +4,8 @@
 #include "mocap/model/mesh.h"
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace mocap {
@@ -20,8 +22,11 @@ struct PointCache
 };
 
 /// Reads a PC2 file. Throws IoError when it cannot be read and FormatError for a wrong magic or
-/// version, negative counts or a size that does not match the header. O(file size).
+/// version, negative counts, samples of no points or a size that does not match the header.
+/// O(file size).
 [[nodiscard]] PointCache readPc2(const std::filesystem::path& path);
+/// Parses PC2 bytes as readPc2 does; `sourceName` names them in errors.
+[[nodiscard]] PointCache parsePc2(std::string_view bytes, const std::string& sourceName);
 
 /// Streams a PC2 file one frame at a time (a cache of a long take does not fit in memory), writing
 /// atomically: the file appears only at finish(). Throws IoError on a failed write and

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace mocap {
 
@@ -13,6 +14,8 @@ namespace mocap {
 /// FormatError for a malformed header or body, a big-endian file, an index out of range or a
 /// face with fewer than 3 corners. O(file size).
 [[nodiscard]] Mesh readPly(const std::filesystem::path& path);
+/// Parses PLY bytes as readPly does; `sourceName` names them in errors.
+[[nodiscard]] Mesh parsePly(std::string_view bytes, const std::string& sourceName);
 
 /// Binary little-endian PLY bytes of `mesh`'s faces with `vertices` as double x, y, z (exact).
 /// UVs and normals are not written. Throws InvalidArgument when the vertex count differs.
