@@ -1,5 +1,6 @@
 // `mocap bind`: binds a take's markers to points of a face mesh and writes the binding JSON that
 // `mocap deform` reads.
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -70,10 +71,7 @@ int runBind(const BindArguments& arguments)
   const std::optional<long long>& neutralNumber = arguments.neutral;
 
   const Mesh mesh = readMesh(meshPath);
-  std::vector<std::string> warnings;
-  Take take = readTake(takePath, &warnings);
-  for (const auto& w : warnings)
-    std::cerr << takePath << ": warning: " << w << '\n';
+  Take take = readInputTake(takePath);
   const std::vector<std::string> reference =
       arguments.stabilize ? splitList(*arguments.stabilize, "--stabilize") : std::vector<std::string>{};
   (void)stabilizeTake(take, reference);

@@ -1,3 +1,4 @@
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -214,10 +215,7 @@ int runClean(const CleanArguments& arguments)
     options.stabilizeLabels = splitList(*arguments.stabilize, "--stabilize");
   options.keepStabilized = arguments.keepStabilized;
 
-  std::vector<std::string> warnings;
-  Take take = readTake(input, &warnings);
-  for (const auto& w : warnings)
-    std::cerr << input << ": warning: " << w << '\n';
+  Take take = readInputTake(input);
   const CleanReport report = cleanTake(take, options);
   appendHistory(take, options, report);
   if (formatFromPath(output) == TakeFormat::Bvh && report.headMotion && !options.keepStabilized) {

@@ -1,3 +1,4 @@
+#include "take_input.h"
 #include "cli_error.h"
 #include "commands.h"
 
@@ -29,12 +30,9 @@ int runConvert(const ConvertArguments& arguments)
   std::optional<LengthUnit> units;
   if (arguments.units)
     units = parseLengthUnit(*arguments.units);
-  std::vector<std::string> warnings;
-  Take take = readTake(input, &warnings);
+  Take take = readInputTake(input);
   if (units)
     take.convertUnits(*units);
-  for (const auto& w : warnings)
-    std::cerr << input << ": warning: " << w << '\n';
   writeTake(take, output);
   return kExitOk;
 }

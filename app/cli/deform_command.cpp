@@ -1,5 +1,6 @@
 // `mocap deform`: drives a face mesh with a take through a marker binding (RBF or Laplacian
 // deformation) and writes a PC2 point cache or one mesh per frame.
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -90,10 +91,7 @@ int runDeform(const DeformArguments& arguments)
   leaveOut.rotations = settings.rotations;
 
   const Mesh mesh = readMesh(meshPath);
-  std::vector<std::string> warnings;
-  Take take = readTake(takePath, &warnings);
-  for (const auto& w : warnings)
-    std::cerr << takePath << ": warning: " << w << '\n';
+  Take take = readInputTake(takePath);
   if (arguments.stabilize)
     (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
   FaceRig rig(mesh, readBinding(bindingPath, mesh.vertexCount()), take, settings);

@@ -1,3 +1,4 @@
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -78,10 +79,7 @@ int runEvalSpikes(const EvalSpikesArguments& arguments)
 {
   const std::string& file = arguments.file;
   const SpikeEvaluationOptions& options = arguments.options;
-  std::vector<std::string> warnings;
-  const Take take = readTake(file, &warnings);
-  for (const auto& w : warnings)
-    std::cerr << file << ": warning: " << w << '\n';
+  const Take take = readInputTake(file);
   const std::vector<SpikeEvaluation> results = evaluateSpikes(take, options);
   if (arguments.json)
     writeJson(file, options, results);

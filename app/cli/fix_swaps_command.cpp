@@ -1,6 +1,7 @@
 // `mocap fix-swaps IN -o OUT [--report FILE.json] [--jump-factor F] [--json]`: finds frames where two
 // labels exchange and repairs them (core/include/mocap/tracking/swap_detection.h); the report lists each
 // swap for review.
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -55,10 +56,7 @@ int runFixSwaps(const FixSwapsArguments& arguments)
   const std::string& output = arguments.output;
   (void)formatFromPath(output);  // reject an unknown output type before the read
   SwapOptions options = arguments.options;
-  std::vector<std::string> warnings;
-  Take take = readTake(input, &warnings);
-  for (const auto& w : warnings)
-    std::cerr << input << ": warning: " << w << '\n';
+  Take take = readInputTake(input);
   const std::vector<LabelSwap> swaps = repairSwaps(take, options);
   writeTake(take, output);
   const std::string report = reportJson(input, output, take, swaps);

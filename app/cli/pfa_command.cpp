@@ -1,5 +1,6 @@
 // `mocap pfa`: plans a reduced facial marker layout (Wellein et al. 2007) and reports the
 // error-vs-marker-count curve of PFA, greedy selection and random sets.
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -387,12 +388,8 @@ int runPfa(const PfaArguments& arguments)
   }
 
   std::vector<Take> takes;
-  for (const std::string& input : arguments.takes) {
-    std::vector<std::string> warnings;
-    takes.push_back(readTake(input, &warnings));
-    for (const auto& w : warnings)
-      std::cerr << input << ": warning: " << w << '\n';
-  }
+  for (const std::string& input : arguments.takes)
+    takes.push_back(readInputTake(input));
   LayoutRequest request;
   if (const auto& labels = arguments.stabilize)
     request.stabilizeLabels = splitList(*labels, "--stabilize");

@@ -2,6 +2,7 @@
 // [--rate HZ] [--save-marker-set FILE.json] [--json]`: unlabelled points (a C3D/TRC whose markers
 // are unlabelled fragments, or a CSV of frame,x,y,z points) into labelled trajectories
 // (core/include/mocap/tracking/take_tracking.h).
+#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -82,10 +83,7 @@ int runTrack(const TrackArguments& arguments)
     options.tracker.maxSpeed = maxSpeedMm / millimetresPer(units);
     result = trackPointCloud(readPointCloudCsv(input, rate), set ? &*set : nullptr, options, &report);
   } else {
-    std::vector<std::string> warnings;
-    const Take take = readTake(input, &warnings);
-    for (const auto& w : warnings)
-      std::cerr << input << ": warning: " << w << '\n';
+    const Take take = readInputTake(input);
     options.tracker.maxSpeed = maxSpeedMm / millimetresPer(take.units());
     result = trackTake(take, set ? &*set : nullptr, options, &report);
   }
