@@ -1,6 +1,7 @@
 #include "mocap/layout/marker_selection.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/random.h"
 #include "mocap/math/pca.h"
 #include "mocap/layout/subset_error.h"
 
@@ -476,14 +477,11 @@ std::optional<std::vector<Eigen::Index>> selectRandom(const MarkerSymmetry& symm
     return std::nullopt;
   const auto& units = symmetry.units();
   std::vector<std::size_t> order(units.size());
-  std::uint64_t state = seed;
+  Random random(seed);
   for (int attempt = 0; attempt < 1000; ++attempt) {
     for (std::size_t u = 0; u < order.size(); ++u)
       order[u] = u;
-    for (std::size_t i = order.size(); i > 1; --i) {
-      const auto j = std::min(i - 1, static_cast<std::size_t>(nextUniform(state) * static_cast<double>(i)));
-      std::swap(order[i - 1], order[j]);
-    }
+    random.shuffle(order.begin(), order.end());
     std::vector<bool> selected(units.size(), false);
     Eigen::Index count = 0;
     for (const std::size_t u : order) {
