@@ -1,5 +1,6 @@
 #include "mocap/layout/marker_selection.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 #include "mocap/base/random.h"
 #include "mocap/math/pca.h"
@@ -142,18 +143,23 @@ bool sizeReachable(const MarkerSymmetry& symmetry, Eigen::Index size)
 
 } // namespace
 
+namespace {
+
+constexpr EnumTable<SelectionMethod, 2> kSelectionMethods{{{
+    {SelectionMethod::Pfa, "pfa"},
+    {SelectionMethod::Greedy, "greedy"},
+}}};
+
+} // namespace
+
 std::string_view selectionMethodName(SelectionMethod method)
 {
-  return method == SelectionMethod::Pfa ? "pfa" : "greedy";
+  return kSelectionMethods.name(method, "greedy");
 }
 
 std::optional<SelectionMethod> parseSelectionMethod(std::string_view name)
 {
-  if (name == "pfa")
-    return SelectionMethod::Pfa;
-  if (name == "greedy")
-    return SelectionMethod::Greedy;
-  return std::nullopt;
+  return kSelectionMethods.parse(name);
 }
 
 PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const MarkerSymmetry& symmetry,
