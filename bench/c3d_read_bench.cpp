@@ -1,6 +1,7 @@
 // Reading a large float C3D (60 markers × 20 000 frames, ~19 MB, written by our own writer)
 // against the reference of reading the same file's bytes from the disk cache.
 // Target (issue 2): readC3d within 3× of BM_ReadFileBytes.
+#include "mocap/base/random.h"
 #include "mocap/io/c3d_reader.h"
 #include "mocap/io/c3d_writer.h"
 #include "mocap/base/file_io.h"
@@ -9,7 +10,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <random>
 
 namespace {
 
@@ -21,12 +21,11 @@ const std::filesystem::path& largeTake()
     for (Eigen::Index m = 0; m < markers; ++m)
       labels.push_back("face" + std::to_string(m));
     mocap::Take take(labels, frames, 120.0);
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    mocap::Random random(7);
     for (Eigen::Index m = 0; m < markers; ++m)
       for (Eigen::Index f = 0; f < frames; ++f) {
         const double t = static_cast<double>(f) / 120.0;
-        take.setPosition(f, m, {100.0 * std::sin(t + static_cast<double>(m)) + jitter(random), 5.0 * static_cast<double>(m),
+        take.setPosition(f, m, {100.0 * std::sin(t + static_cast<double>(m)) + (0.4 * random.uniform() - 0.2), 5.0 * static_cast<double>(m),
                                 1000.0 + 10.0 * std::cos(t)});
         const bool occluded = (f / 50 + m) % 23 == 0;
         take.valid()(f, m) = !occluded;

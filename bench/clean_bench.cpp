@@ -2,12 +2,12 @@
 // replacement, `auto` gap filling and B-spline smoothing, one core. Target: < 100 ms, linear in
 // frames (compare the 5 000 and 10 000 frame runs). Reference in the same run: one pass that
 // copies every trajectory (the cost of touching the data at all).
+#include "mocap/base/random.h"
 #include "mocap/cleaning/clean_pipeline.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <random>
 
 namespace {
 
@@ -20,8 +20,8 @@ mocap::Take syntheticTake(Eigen::Index frames)
   for (Eigen::Index m = 0; m < markers; ++m)
     labels.push_back("m" + std::to_string(m));
   mocap::Take take(labels, frames, 120.0);
-  std::mt19937 random(11);
-  std::normal_distribution<double> noise(0.0, 0.05);
+  mocap::Random random(11);
+  const auto noise = [&random] { return 0.05 * random.normal(); };
   for (Eigen::Index m = 0; m < markers; ++m) {
     const double u = static_cast<double>(m % 10) * 15.0, v = static_cast<double>(m / 10) * 20.0;
     for (Eigen::Index f = 0; f < frames; ++f) {
@@ -30,21 +30,20 @@ mocap::Take syntheticTake(Eigen::Index frames)
       const double local = 3.0 * std::sin(2.0 * t + 0.1 * static_cast<double>(m));
       const double x = u * std::cos(yaw) + 10.0 * std::sin(0.5 * t);
       const double y = u * std::sin(yaw) + local;
-      take.setPosition(f, m, {x + noise(random), y + noise(random), 1000.0 + v + local + noise(random)});
+      take.setPosition(f, m, {x + noise(), y + noise(), 1000.0 + v + local + noise()});
       take.valid()(f, m) = true;
       take.residuals()(f, m) = 0.0;
     }
   }
-  std::uniform_int_distribution<Eigen::Index> anyMarker(0, markers - 1), length(5, 120);
   const Eigen::Index hidden = frames * markers * 3 / 100;
   for (Eigen::Index total = 0; total < hidden;) {
-    const Eigen::Index m = anyMarker(random), n = length(random);
-    const Eigen::Index start = std::uniform_int_distribution<Eigen::Index>(1, frames - n - 2)(random);
+    const Eigen::Index m = random.below(markers), n = 5 + random.below(Eigen::Index{116});
+    const Eigen::Index start = 1 + random.below(frames - n - 2);
     take.valid().col(m).segment(start, n).setConstant(false);
     total += n;
   }
   for (int s = 0; s < 200; ++s) {
-    const Eigen::Index m = anyMarker(random), f = std::uniform_int_distribution<Eigen::Index>(0, frames - 1)(random);
+    const Eigen::Index m = random.below(markers), f = random.below(frames);
     if (take.isValid(f, m))
       take.setPosition(f, m, take.position(f, m) + Eigen::Vector3d(5.0, 0.0, 0.0));
   }

@@ -3,6 +3,7 @@
 // `auto` against the reference `linear` in the same run. Target (issue 3): the whole cleaning
 // pipeline (spikes + auto fill + smoothing) under 100 ms on one core, so auto fill well under 70 ms,
 // and linear in the number of frames (compare the 5 000- and 10 000-frame runs).
+#include "mocap/base/random.h"
 #include "mocap/cleaning/fill/gap_fill.h"
 
 #include <benchmark/benchmark.h>
@@ -10,7 +11,6 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
-#include <random>
 
 namespace {
 
@@ -18,9 +18,7 @@ mocap::Take syntheticTake(Eigen::Index frames)
 {
   const Eigen::Index markers = 60;
   const double rate = 100.0;
-  std::mt19937 random(11);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  mocap::Random random(11);
   std::vector<std::string> labels;
   for (Eigen::Index m = 0; m < markers; ++m)
     labels.push_back("face" + std::to_string(m));
@@ -29,8 +27,8 @@ mocap::Take syntheticTake(Eigen::Index frames)
   // Rest shape: a patch of an ellipsoid, roughly a face (mm).
   Eigen::Matrix3Xd rest(3, markers);
   for (Eigen::Index m = 0; m < markers; ++m) {
-    const double u = -1.0 + 2.0 * uniform(random);
-    const double v = -1.0 + 2.0 * uniform(random);
+    const double u = -1.0 + 2.0 * random.uniform();
+    const double v = -1.0 + 2.0 * random.uniform();
     rest.col(m) =
         Eigen::Vector3d(70.0 * u, 90.0 * v, 60.0 * std::sqrt(std::max(0.0, 1.0 - 0.5 * u * u - 0.3 * v * v)));
   }
@@ -39,9 +37,9 @@ mocap::Take syntheticTake(Eigen::Index frames)
   std::vector<Eigen::Matrix3Xd> modes(kModes, Eigen::Matrix3Xd(3, markers));
   std::vector<Eigen::Vector3d> centres(kModes);
   for (int k = 0; k < kModes; ++k) {
-    centres[static_cast<std::size_t>(k)] = rest.col(static_cast<Eigen::Index>(random() % markers));
+    centres[static_cast<std::size_t>(k)] = rest.col(random.below(markers));
     const Eigen::Vector3d direction =
-        Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
+        Eigen::Vector3d(random.normal(), random.normal(), random.normal()).normalized();
     for (Eigen::Index m = 0; m < markers; ++m) {
       const double d = (rest.col(m) - centres[static_cast<std::size_t>(k)]).norm();
       modes[static_cast<std::size_t>(k)].col(m) = 4.0 * std::exp(-d * d / (2.0 * 35.0 * 35.0)) * direction;
@@ -49,7 +47,7 @@ mocap::Take syntheticTake(Eigen::Index frames)
   }
   std::vector<double> phase(2 * kModes + 6);
   for (auto& p : phase)
-    p = 6.283 * uniform(random);
+    p = 6.283 * random.uniform();
   for (Eigen::Index f = 0; f < frames; ++f) {
     const double t = static_cast<double>(f) / rate;
     const Eigen::Matrix3d head =
@@ -65,7 +63,7 @@ mocap::Take syntheticTake(Eigen::Index frames)
       shape += a * modes[static_cast<std::size_t>(k)];
     }
     for (Eigen::Index m = 0; m < markers; ++m) {
-      const Eigen::Vector3d noise(normal(random), normal(random), normal(random));
+      const Eigen::Vector3d noise(random.normal(), random.normal(), random.normal());
       take.setPosition(f, m, head * shape.col(m) + shift + 0.1 * noise);
       take.valid()(f, m) = true;
       take.residuals()(f, m) = 0.5;
@@ -75,10 +73,10 @@ mocap::Take syntheticTake(Eigen::Index frames)
   const auto target = static_cast<Eigen::Index>(0.03 * static_cast<double>(frames * markers));
   Eigen::Index hidden = 0;
   while (hidden < target) {
-    const Eigen::Index m = static_cast<Eigen::Index>(random() % markers);
-    const Eigen::Index length = 5 + static_cast<Eigen::Index>(random() % 116);
+    const Eigen::Index m = random.below(markers);
+    const Eigen::Index length = 5 + random.below(Eigen::Index{116});
     const Eigen::Index start =
-        1 + static_cast<Eigen::Index>(random() % static_cast<unsigned>(frames - length - 2));
+        1 + random.below(frames - length - 2);
     for (Eigen::Index f = start; f < start + length; ++f)
       if (take.valid()(f, m)) {
         take.valid()(f, m) = false;

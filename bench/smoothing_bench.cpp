@@ -2,13 +2,13 @@
 // marker every 1150 frames) with each method through smoothTake, against the reference of a plain
 // 5-point moving average over the same valid runs (the cheapest smoother there is).
 // Target (issue 3): B-spline smoothing a small part of the cleaning pipeline's 100 ms.
+#include "mocap/base/random.h"
 #include "mocap/cleaning/smoothing.h"
 #include "mocap/model/valid_runs.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <random>
 
 namespace {
 
@@ -20,16 +20,16 @@ const mocap::Take& largeTake()
     for (Eigen::Index m = 0; m < markers; ++m)
       labels.push_back("face" + std::to_string(m));
     mocap::Take t(labels, frames, 100.0);
-    std::mt19937 random(7);
-    std::normal_distribution<double> noise(0.0, 0.5);
+    mocap::Random random(7);
+    const auto noise = [&random] { return 0.5 * random.normal(); };
     for (Eigen::Index m = 0; m < markers; ++m) {
       const double phase = static_cast<double>(m);
       for (Eigen::Index f = 0; f < frames; ++f) {
         const double s = static_cast<double>(f) / 100.0;
         t.setPosition(f, m,
-                      {20.0 * std::sin(1.3 * s + phase) + noise(random),
-                       5.0 * phase + 8.0 * std::sin(2.9 * s) + noise(random),
-                       1000.0 + 10.0 * std::cos(0.7 * s + phase) + noise(random)});
+                      {20.0 * std::sin(1.3 * s + phase) + noise(),
+                       5.0 * phase + 8.0 * std::sin(2.9 * s) + noise(),
+                       1000.0 + 10.0 * std::cos(0.7 * s + phase) + noise()});
         const bool occluded = (f / 50 + m) % 23 == 0;
         t.valid()(f, m) = !occluded;
         t.residuals()(f, m) = occluded ? -1.0 : 0.5;

@@ -5,12 +5,12 @@
 // Measured (RelWithDebInfo, 2 shared cores, CPU time): reference 1.2-1.5 ms, paper 3.1-4.6 ms
 // (~3×), robust 85-110 ms (~70×: three small median networks, a 9-sample fit and two 11-sample
 // medians per sample), replaceSpikes 0.4 ms for ~6 000 flags.
+#include "mocap/base/random.h"
 #include "mocap/cleaning/spike_detection.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <random>
 
 namespace {
 
@@ -22,23 +22,22 @@ const mocap::Take& facialTake()
     for (Eigen::Index m = 0; m < markers; ++m)
       labels.push_back("face" + std::to_string(m));
     mocap::Take t(labels, frames, 100.0);
-    std::mt19937 random(11);
-    std::normal_distribution<double> noise(0.0, 0.1);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    mocap::Random random(11);
+    const auto noise = [&random] { return 0.1 * random.normal(); };
     for (Eigen::Index m = 0; m < markers; ++m) {
       const double phase = static_cast<double>(m);
       for (Eigen::Index f = 0; f < frames; ++f) {
         const double s = static_cast<double>(f) / 100.0;
         // Head sway plus expression bursts (jaw, brows) of a few millimetres.
-        const Eigen::Vector3d p(40.0 * std::sin(0.3 * s) + 3.0 * std::sin(2.1 * s + phase) + noise(random),
+        const Eigen::Vector3d p(40.0 * std::sin(0.3 * s) + 3.0 * std::sin(2.1 * s + phase) + noise(),
                                 -250.0 + 5.0 * std::sin(1.3 * s + 0.5 * phase) * std::sin(0.7 * s) +
-                                    noise(random),
-                                1000.0 + 2.0 * std::cos(3.7 * s + phase) + noise(random));
+                                    noise(),
+                                1000.0 + 2.0 * std::cos(3.7 * s + phase) + noise());
         const bool occluded = (f / 40 + m) % 31 == 0;
         t.setPosition(f, m, occluded ? Eigen::Vector3d::Zero() : p);
         t.valid()(f, m) = !occluded;
         t.residuals()(f, m) = occluded ? -1.0 : 0.0;
-        if (!occluded && unit(random) < 0.01)
+        if (!occluded && random.uniform() < 0.01)
           t.setPosition(f, m, p + Eigen::Vector3d(3.0, -3.0, 2.0));
       }
     }

@@ -5,6 +5,7 @@
 // Hungarian tracking, template labelling); BM_TrackHungarian and the reference BM_TrackGreedy
 // compare the tracking step alone against greedy nearest-neighbour assignment in the same run.
 // The "recovered" counter is the fraction of samples back under their true label.
+#include "mocap/base/random.h"
 #include "mocap/tracking/take_tracking.h"
 #include "mocap/evaluation/tracking_evaluation.h"
 
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 namespace {
 
@@ -24,8 +24,7 @@ constexpr Eigen::Index kFrames = 10000;
 mocap::Take syntheticTake()
 {
   const double rate = 100.0;
-  std::mt19937 random(23);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  mocap::Random random(23);
   std::vector<std::string> labels;
   for (Eigen::Index m = 0; m < kMarkers; ++m)
     labels.push_back("face" + std::to_string(m));
@@ -33,13 +32,13 @@ mocap::Take syntheticTake()
   // Rest shape: an 8 × 5 grid 22 mm apart, jittered by ±4 mm, on a curved face patch.
   Eigen::Matrix3Xd rest(3, kMarkers);
   for (Eigen::Index m = 0; m < kMarkers; ++m) {
-    const double x = 22.0 * static_cast<double>(m % 8 - 4) + 8.0 * (uniform(random) - 0.5);
-    const double y = 22.0 * static_cast<double>(m / 8 - 2) + 8.0 * (uniform(random) - 0.5);
+    const double x = 22.0 * static_cast<double>(m % 8 - 4) + 8.0 * (random.uniform() - 0.5);
+    const double y = 22.0 * static_cast<double>(m / 8 - 2) + 8.0 * (random.uniform() - 0.5);
     rest.col(m) = Eigen::Vector3d(x, y, 60.0 - 0.004 * x * x - 0.003 * y * y);
   }
   std::vector<double> phase(kMarkers + 4);
   for (auto& p : phase)
-    p = 6.283 * uniform(random);
+    p = 6.283 * random.uniform();
   for (Eigen::Index f = 0; f < kFrames; ++f) {
     const double t = static_cast<double>(f) / rate;
     const Eigen::Matrix3d head = (Eigen::AngleAxisd(0.25 * std::sin(0.3 * t + phase[0]), Eigen::Vector3d::UnitY()) *
@@ -56,9 +55,9 @@ mocap::Take syntheticTake()
   }
   const auto target = static_cast<Eigen::Index>(0.02 * static_cast<double>(kFrames * kMarkers));
   for (Eigen::Index hidden = 0; hidden < target;) {
-    const auto m = static_cast<Eigen::Index>(random() % kMarkers);
-    const auto length = 3 + static_cast<Eigen::Index>(random() % 28);
-    const auto start = static_cast<Eigen::Index>(random() % static_cast<unsigned>(kFrames - length));
+    const auto m = random.below(kMarkers);
+    const auto length = 3 + random.below(Eigen::Index{28});
+    const auto start = random.below(kFrames - length);
     for (Eigen::Index f = start; f < start + length; ++f) {
       hidden += take.isValid(f, m) ? 1 : 0;
       take.valid()(f, m) = false;

@@ -1,6 +1,6 @@
 #include "mocap/base/error.h"
 #include "mocap/math/hungarian_assignment.h"
-#include "mocap/math/kmeans.h"
+#include "mocap/base/random.h"
 
 #include <gtest/gtest.h>
 
@@ -56,14 +56,14 @@ void expectValid(const Eigen::MatrixXd& cost, const std::vector<Eigen::Index>& a
 
 TEST(HungarianAssignment, MatchesExhaustiveSearchOnRandomGatedProblems)
 {
-  std::uint64_t state = 7;
+  Random random(7);
   for (int trial = 0; trial < 300; ++trial) {
-    const auto rows = static_cast<Eigen::Index>(1 + nextUniform(state) * 6);
-    const auto cols = static_cast<Eigen::Index>(1 + nextUniform(state) * 6);
+    const auto rows = static_cast<Eigen::Index>(1 + random.uniform() * 6);
+    const auto cols = static_cast<Eigen::Index>(1 + random.uniform() * 6);
     Eigen::MatrixXd cost(rows, cols);
     for (Eigen::Index i = 0; i < cost.size(); ++i)
-      cost(i) = std::floor(nextUniform(state) * 20.0);
-    const double gate = trial % 3 == 0 ? 25.0 : 2.0 + std::floor(nextUniform(state) * 12.0);
+      cost(i) = std::floor(random.uniform() * 20.0);
+    const double gate = trial % 3 == 0 ? 25.0 : 2.0 + std::floor(random.uniform() * 12.0);
     const std::vector<Eigen::Index> assignment = assignMinimumCost(cost, gate);
     expectValid(cost, assignment, gate);
     std::vector<bool> used(static_cast<std::size_t>(cols), false);

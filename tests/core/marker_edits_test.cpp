@@ -135,6 +135,12 @@ TEST(MarkerEdits, SwapOverRangeExchangesOnlyThatRangeAndSwapsBack)
   EXPECT_EQ(take.isValid(850, a), original.isValid(850, b));
   EXPECT_EQ(take.position(799, a), original.position(799, a));
   EXPECT_EQ(take.position(901, b), original.position(901, b));
+  for (const Eigen::Index f : {800, 850, 900}) {
+    EXPECT_EQ(take.residuals()(f, a), original.residuals()(f, b));
+    EXPECT_EQ(take.cameraMasks()(f, a), original.cameraMasks()(f, b));
+    EXPECT_EQ(take.cameraMasks()(f, b), original.cameraMasks()(f, a));
+    EXPECT_EQ(take.state(f, b), original.state(f, a));
+  }
   applyPatches(take, std::move(undo));
   expectIdentical(take, original);
   EXPECT_THROW(static_cast<void>(swapMarkersOverRange(take, a, a, 0, 1)), InvalidArgument);
@@ -217,6 +223,32 @@ TEST(SubsetTake, RejectsNoLabelsAnUnknownLabelOrARepeatedOne)
   EXPECT_THROW((void)subsetTake(source, {"a", "z"}), InvalidArgument);
   EXPECT_THROW((void)subsetTake(source, {"b", "a", "b"}), InvalidArgument);
   EXPECT_EQ(subsetTake(source, {"c", "a"}).labels(), (std::vector<std::string>{"c", "a"}));
+}
+
+TEST(MarkerEdits, ExchangeFromAFrameIsTheSwapPatchesToTheEnd)
+{
+  Take take = readC3d(test::sampleTake());
+  const Eigen::Index a = *take.markerIndex("section4-1");
+  const Eigen::Index b = *take.markerIndex("section4-2");
+  take.cameraMasks()(take.frameCount() - 1, a) = 0x15;  // distinct masks, so an exchange shows
+  take.cameraMasks()(take.frameCount() - 1, b) = 0x2a;
+  take.setState(take.frameCount() - 2, b, SampleState::Filled);
+  Take patched = take;
+  applyPatches(patched, swapMarkersOverRange(take, a, b, 700, take.frameCount() - 1));
+  Take exchanged = take;
+  exchangeMarkersFrom(exchanged, a, b, 700);
+  expectIdentical(exchanged, patched);
+  EXPECT_EQ(exchanged.cameraMasks()(take.frameCount() - 1, a), 0x2a);
+  EXPECT_EQ(exchanged.state(take.frameCount() - 2, a), SampleState::Filled);
+  exchangeMarkersFrom(exchanged, a, b, 700);
+  expectIdentical(exchanged, take);
+  Take same = take;
+  exchangeMarkersFrom(same, a, a, 0);                 // one marker: nothing to exchange
+  exchangeMarkersFrom(same, a, b, take.frameCount());  // from past the last frame: nothing
+  expectIdentical(same, take);
+  EXPECT_THROW(exchangeMarkersFrom(same, a, take.markerCount(), 0), InvalidArgument);
+  EXPECT_THROW(exchangeMarkersFrom(same, a, b, take.frameCount() + 1), InvalidArgument);
+  EXPECT_THROW(exchangeMarkersFrom(same, a, b, -1), InvalidArgument);
 }
 
 } // namespace

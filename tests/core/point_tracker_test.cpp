@@ -1,5 +1,5 @@
 #include "mocap/base/error.h"
-#include "mocap/math/kmeans.h"
+#include "mocap/base/random.h"
 #include "mocap/tracking/point_tracker.h"
 
 #include <gtest/gtest.h>
@@ -27,13 +27,13 @@ template <typename Hidden>
 PointCloud shuffledCloud(Hidden hidden, std::uint64_t seed)
 {
   PointCloud cloud;
+  Random random(seed);
   for (Eigen::Index f = 0; f < kFrames; ++f) {
     std::vector<Eigen::Vector3d> frame;
     for (Eigen::Index m = 0; m < kMarkers; ++m)
       if (!hidden(m, f))
         frame.push_back(truePosition(m, f));
-    for (std::size_t i = frame.size(); i > 1; --i)
-      std::swap(frame[i - 1], frame[static_cast<std::size_t>(nextUniform(seed) * static_cast<double>(i))]);
+    random.shuffle(frame.begin(), frame.end());
     cloud.points.insert(cloud.points.end(), frame.begin(), frame.end());
     cloud.frameStart.push_back(static_cast<Eigen::Index>(cloud.points.size()));
   }

@@ -1,31 +1,41 @@
 #include "mocap/base/length_unit.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/text.h"
 
 namespace mocap {
 
+namespace {
+
+// The symbol first (the name), then the spelled-out aliases a file's UNITS may hold.
+constexpr EnumTable<LengthUnit, 15> kUnits{{{
+    {LengthUnit::Millimetre, "mm"},
+    {LengthUnit::Centimetre, "cm"},
+    {LengthUnit::Metre, "m"},
+    {LengthUnit::Millimetre, "millimeter"},
+    {LengthUnit::Millimetre, "millimeters"},
+    {LengthUnit::Millimetre, "millimetre"},
+    {LengthUnit::Millimetre, "millimetres"},
+    {LengthUnit::Centimetre, "centimeter"},
+    {LengthUnit::Centimetre, "centimeters"},
+    {LengthUnit::Centimetre, "centimetre"},
+    {LengthUnit::Centimetre, "centimetres"},
+    {LengthUnit::Metre, "meter"},
+    {LengthUnit::Metre, "meters"},
+    {LengthUnit::Metre, "metre"},
+    {LengthUnit::Metre, "metres"},
+}}};
+
+} // namespace
+
 std::string_view unitName(LengthUnit unit)
 {
-  switch (unit) {
-  case LengthUnit::Millimetre: return "mm";
-  case LengthUnit::Centimetre: return "cm";
-  case LengthUnit::Metre: return "m";
-  }
-  return "mm";
+  return kUnits.name(unit, "mm");
 }
 
 std::optional<LengthUnit> parseLengthUnit(std::string_view text)
 {
-  const std::string key = toLower(trim(text));
-  if (key == "mm" || key == "millimeter" || key == "millimeters" || key == "millimetre" ||
-      key == "millimetres")
-    return LengthUnit::Millimetre;
-  if (key == "cm" || key == "centimeter" || key == "centimeters" || key == "centimetre" ||
-      key == "centimetres")
-    return LengthUnit::Centimetre;
-  if (key == "m" || key == "meter" || key == "meters" || key == "metre" || key == "metres")
-    return LengthUnit::Metre;
-  return std::nullopt;
+  return kUnits.parse(toLower(trim(text)));
 }
 
 double millimetresPer(LengthUnit unit)

@@ -1,5 +1,6 @@
 #include "mocap/cleaning/smoothing.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/cleaning/bspline_fit.h"
 #include "mocap/cleaning/butterworth_filter.h"
 #include "mocap/base/error.h"
@@ -100,24 +101,25 @@ std::string number(double value)
 
 } // namespace
 
+namespace {
+
+constexpr EnumTable<SmoothMethod, 4> kSmoothMethods{{{
+    {SmoothMethod::BSpline, "bspline"},
+    {SmoothMethod::Butterworth, "butterworth"},
+    {SmoothMethod::Gcvspl, "gcvspl"},
+    {SmoothMethod::SavGol, "savgol"},
+}}};
+
+} // namespace
+
 std::optional<SmoothMethod> parseSmoothMethod(std::string_view name)
 {
-  for (SmoothMethod method :
-       {SmoothMethod::BSpline, SmoothMethod::Butterworth, SmoothMethod::Gcvspl, SmoothMethod::SavGol})
-    if (name == smoothMethodName(method))
-      return method;
-  return std::nullopt;
+  return kSmoothMethods.parse(name);
 }
 
 std::string_view smoothMethodName(SmoothMethod method)
 {
-  switch (method) {
-  case SmoothMethod::BSpline: return "bspline";
-  case SmoothMethod::Butterworth: return "butterworth";
-  case SmoothMethod::Gcvspl: return "gcvspl";
-  case SmoothMethod::SavGol: return "savgol";
-  }
-  return "bspline";
+  return kSmoothMethods.name(method, "bspline");
 }
 
 bool operator==(const SmoothOptions& a, const SmoothOptions& b)

@@ -1,5 +1,6 @@
 #include "mocap/cleaning/smoothing_spline.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/math/banded_cholesky.h"
 #include "mocap/base/error.h"
 
@@ -137,25 +138,24 @@ private:
 
 } // namespace
 
+namespace {
+
+constexpr EnumTable<SmoothingSplineMode, 3> kModes{{{
+    {SmoothingSplineMode::Gcv, "gcv"},
+    {SmoothingSplineMode::ErrorVariance, "variance"},
+    {SmoothingSplineMode::Cutoff, "cutoff"},
+}}};
+
+} // namespace
+
 std::optional<SmoothingSplineMode> parseSmoothingSplineMode(std::string_view name)
 {
-  if (name == "gcv")
-    return SmoothingSplineMode::Gcv;
-  if (name == "variance")
-    return SmoothingSplineMode::ErrorVariance;
-  if (name == "cutoff")
-    return SmoothingSplineMode::Cutoff;
-  return std::nullopt;
+  return kModes.parse(name);
 }
 
 std::string_view smoothingSplineModeName(SmoothingSplineMode mode)
 {
-  switch (mode) {
-  case SmoothingSplineMode::Gcv: return "gcv";
-  case SmoothingSplineMode::ErrorVariance: return "variance";
-  case SmoothingSplineMode::Cutoff: return "cutoff";
-  }
-  return "gcv";
+  return kModes.name(mode, "gcv");
 }
 
 void checkSmoothingSplineOptions(const SmoothingSplineOptions& options)

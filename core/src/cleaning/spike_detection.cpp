@@ -1,5 +1,6 @@
 #include "mocap/cleaning/spike_detection.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 #include "mocap/model/valid_runs.h"
 #include "mocap/base/length_unit.h"
@@ -536,18 +537,23 @@ std::vector<Eigen::Index> detectIn(const Trajectory& xyz, const Eigen::Ref<const
 
 } // namespace
 
+namespace {
+
+constexpr EnumTable<SpikeMethod, 2> kSpikeMethods{{{
+    {SpikeMethod::Paper, "paper"},
+    {SpikeMethod::Robust, "robust"},
+}}};
+
+} // namespace
+
 std::optional<SpikeMethod> parseSpikeMethod(std::string_view name)
 {
-  if (name == "paper")
-    return SpikeMethod::Paper;
-  if (name == "robust")
-    return SpikeMethod::Robust;
-  return std::nullopt;
+  return kSpikeMethods.parse(name);
 }
 
 std::string_view spikeMethodName(SpikeMethod method)
 {
-  return method == SpikeMethod::Paper ? "paper" : "robust";
+  return kSpikeMethods.name(method, "robust");
 }
 
 std::vector<Eigen::Index> detectSpikes(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& xyz,

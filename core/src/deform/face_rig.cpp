@@ -1,5 +1,6 @@
 #include "mocap/deform/face_rig.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 
 #include <algorithm>
@@ -7,18 +8,23 @@
 
 namespace mocap {
 
+namespace {
+
+constexpr EnumTable<DeformMethod, 2> kDeformMethods{{{
+    {DeformMethod::Rbf, "rbf"},
+    {DeformMethod::Laplacian, "laplacian"},
+}}};
+
+} // namespace
+
 std::string_view deformMethodName(DeformMethod method)
 {
-  return method == DeformMethod::Rbf ? "rbf" : "laplacian";
+  return kDeformMethods.name(method, "laplacian");
 }
 
 std::optional<DeformMethod> parseDeformMethod(std::string_view name)
 {
-  if (name == "rbf")
-    return DeformMethod::Rbf;
-  if (name == "laplacian")
-    return DeformMethod::Laplacian;
-  return std::nullopt;
+  return kDeformMethods.parse(name);
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "mocap/deform/laplacian_weights.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 
 #include <Eigen/Geometry>
@@ -11,22 +12,24 @@
 
 namespace mocap {
 
+namespace {
+
+constexpr EnumTable<LaplacianWeights, 3> kWeights{{{
+    {LaplacianWeights::Uniform, "uniform"},
+    {LaplacianWeights::Cotangent, "cotangent"},
+    {LaplacianWeights::MeanValue, "mean-value"},
+}}};
+
+} // namespace
+
 std::string_view laplacianWeightsName(LaplacianWeights weights)
 {
-  switch (weights) {
-  case LaplacianWeights::Uniform: return "uniform";
-  case LaplacianWeights::Cotangent: return "cotangent";
-  case LaplacianWeights::MeanValue: return "mean-value";
-  }
-  return "?";
+  return kWeights.name(weights, "?");
 }
 
 std::optional<LaplacianWeights> parseLaplacianWeights(std::string_view name)
 {
-  for (const LaplacianWeights w : {LaplacianWeights::Uniform, LaplacianWeights::Cotangent, LaplacianWeights::MeanValue})
-    if (laplacianWeightsName(w) == name)
-      return w;
-  return std::nullopt;
+  return kWeights.parse(name);
 }
 
 namespace {

@@ -4,8 +4,9 @@
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
 #include "mocap/base/json_writer.h"
+#include "mocap/math/registration.h"
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -239,73 +240,6 @@ MeshBinding readBinding(const std::filesystem::path& path, Eigen::Index vertexCo
 
 // ----------------------------------------------------------------------------------- auto-binder
 
-namespace {
-
-struct Frame3
-{
-  Eigen::Vector3d centre;
-  Eigen::Matrix3d axes;  // columns: principal axes, largest variance first, right-handed
-  double radius = 0.0;   // RMS distance from the centre
-};
-
-Frame3 principalFrame(const Eigen::Ref<const PointSet>& points)
-{
-  Frame3 frame;
-  frame.centre = points.colwise().mean().transpose();
-  const PointSet centred = points.rowwise() - frame.centre.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(centred.transpose() * centred);
-  frame.axes = eigen.eigenvectors().rowwise().reverse();
-  if (frame.axes.determinant() < 0.0)
-    frame.axes.col(2) = -frame.axes.col(2);
-  frame.radius = std::sqrt(centred.rowwise().squaredNorm().mean());
-  return frame;
-}
-
-// Index of the nearest candidate point (brute force; the candidate sets are a face mesh).
-Eigen::Index nearest(const PointSet& candidates, const Eigen::Vector3d& query)
-{
-  Eigen::Index best = 0;
-  (candidates.rowwise() - query.transpose()).rowwise().squaredNorm().minCoeff(&best);
-  return best;
-}
-
-struct IcpResult
-{
-  Similarity transform;
-  double rms = std::numeric_limits<double>::infinity();
-};
-
-// `closest` maps a point to the nearest point of the target (a vertex or a surface point).
-template <typename Closest>
-IcpResult icp(const Eigen::Ref<const PointSet>& markers, const Closest& closest, Similarity start, int iterations)
-{
-  IcpResult result{start, std::numeric_limits<double>::infinity()};
-  PointSet matched(markers.rows(), 3);
-  for (int it = 0; it < iterations; ++it) {
-    const PointSet moved = result.transform.applyToRows(markers);
-    for (Eigen::Index m = 0; m < markers.rows(); ++m)
-      matched.row(m) = closest(Eigen::Vector3d(moved.row(m).transpose())).transpose();
-    const double rms = std::sqrt((moved - matched).rowwise().squaredNorm().mean());
-    if (rms >= result.rms * (1.0 - 1e-9) && it > 0)
-      break;
-    result.rms = rms;
-    result.transform = fitSimilarity(markers, matched);
-    // Nearest-point matching rewards shrinking the markers onto a small patch; keep the scale
-    // within ±25 % of the start (the RMS-radius ratio of both sets).
-    const double scale = std::clamp(result.transform.scale, 0.8 * start.scale, 1.25 * start.scale);
-    if (scale != result.transform.scale) {
-      result.transform.scale = scale;
-      result.transform.translation = (matched.colwise().mean() - scale * markers.colwise().mean() *
-                                                                     result.transform.rotation.transpose())
-                                         .transpose();
-    }
-  }
-  result.rms = similarityResidual(result.transform, markers, matched);
-  return result;
-}
-
-} // namespace
-
 MeshBinding autoBind(const Mesh& mesh, const std::vector<std::string>& labels, const Eigen::Ref<const PointSet>& neutral,
                      const AutoBindOptions& options)
 {
@@ -354,13 +288,21 @@ MeshBinding autoBind(const Mesh& mesh, const std::vector<std::string>& labels, c
     // largest), each also turned ±20° about every axis, since the markers cover only part of the
     // mesh and their axes match the mesh's only roughly. Every start runs a cheap ICP to the
     // nearest vertex; the best few are refined against the surface.
-    const Frame3 source = principalFrame(neutral);
-    const Frame3 target = principalFrame(candidates);
-    const auto toVertex = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
-      return candidates.row(nearest(candidates, p)).transpose();
-    };
-    const auto toSurface = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+    const PrincipalFrame source = principalFrame(neutral);
+    const PrincipalFrame target = principalFrame(candidates);
+    IcpOptions toVertex;  // each marker pulls its closest vertex
+    toVertex.maxIterations = options.icpIterations;
+    toVertex.errorTolerance = 1e-9;
+    IcpOptions toSurface = toVertex;  // each marker pulls its closest surface point
+    toSurface.closest = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
       return closestSurfacePoint(mesh.vertices, triangles, p).first.on(mesh.vertices);
+    };
+    // Nearest-point pairing rewards shrinking the markers onto a small patch; keep the scale
+    // within ±25 % of the start (the RMS-radius ratio of both sets).
+    const auto keepScaleNear = [](IcpOptions o, const Similarity& start) {
+      o.minScale = 0.8 * start.scale;
+      o.maxScale = 1.25 * start.scale;
+      return o;
     };
     std::vector<IcpResult> coarse;
     for (int order = 0; order < 2; ++order)
@@ -375,16 +317,17 @@ MeshBinding autoBind(const Mesh& mesh, const std::vector<std::string>& labels, c
           const double angle = turn == 0 ? 0.0 : (turn % 2 ? 0.35 : -0.35);
           const Eigen::Matrix3d tilt =
               Eigen::AngleAxisd(angle, target.axes.col(turn == 0 ? 0 : (turn - 1) / 2)).toRotationMatrix();
-          Similarity start;
-          start.rotation = tilt * axes * source.axes.transpose();
-          start.scale = source.radius > 0.0 ? target.radius / source.radius : 1.0;
-          start.translation = target.centre - start.scale * start.rotation * source.centre;
-          coarse.push_back(icp(neutral, toVertex, start, options.icpIterations));
+          const Similarity start =
+              similarityThrough(tilt * axes * source.axes.transpose(),
+                                source.radius > 0.0 ? target.radius / source.radius : 1.0, source.centre, target.centre);
+          coarse.push_back(icp(neutral, candidates, start, keepScaleNear(toVertex, start)));
         }
-    std::sort(coarse.begin(), coarse.end(), [](const IcpResult& a, const IcpResult& b) { return a.rms < b.rms; });
+    const auto byRms = [](const IcpResult& a, const IcpResult& b) { return a.rms < b.rms; };
+    std::sort(coarse.begin(), coarse.end(), byRms);
     IcpResult best;
     for (std::size_t i = 0; i < std::min<std::size_t>(4, coarse.size()); ++i) {
-      const IcpResult refined = icp(neutral, toSurface, coarse[i].transform, options.icpIterations);
+      // Each refinement keeps its scale within ±25 % of its own start.
+      const IcpResult refined = icp(neutral, candidates, coarse[i].transform, keepScaleNear(toSurface, coarse[i].transform));
       if (refined.rms < best.rms)
         best = refined;
     }

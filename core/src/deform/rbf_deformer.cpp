@@ -1,5 +1,6 @@
 #include "mocap/deform/rbf_deformer.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 
 #include <Eigen/LU>
@@ -12,23 +13,25 @@
 
 namespace mocap {
 
+namespace {
+
+constexpr EnumTable<RbfKernel, 4> kKernels{{{
+    {RbfKernel::Exp, "exp"},
+    {RbfKernel::Gaussian, "gaussian"},
+    {RbfKernel::Biharmonic, "biharmonic"},
+    {RbfKernel::ThinPlate, "thin-plate"},
+}}};
+
+} // namespace
+
 std::string_view rbfKernelName(RbfKernel kernel)
 {
-  switch (kernel) {
-  case RbfKernel::Exp: return "exp";
-  case RbfKernel::Gaussian: return "gaussian";
-  case RbfKernel::Biharmonic: return "biharmonic";
-  case RbfKernel::ThinPlate: return "thin-plate";
-  }
-  return "?";
+  return kKernels.name(kernel, "?");
 }
 
 std::optional<RbfKernel> parseRbfKernel(std::string_view name)
 {
-  for (const RbfKernel k : {RbfKernel::Exp, RbfKernel::Gaussian, RbfKernel::Biharmonic, RbfKernel::ThinPlate})
-    if (rbfKernelName(k) == name)
-      return k;
-  return std::nullopt;
+  return kKernels.parse(name);
 }
 
 double rbfKernel(RbfKernel kernel, double r, double c)

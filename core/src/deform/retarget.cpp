@@ -1,5 +1,6 @@
 #include "mocap/deform/retarget.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 #include "mocap/cleaning/head_stabilization.h"
 
@@ -8,18 +9,23 @@
 
 namespace mocap {
 
+namespace {
+
+constexpr EnumTable<RetargetScale, 2> kScales{{{
+    {RetargetScale::Uniform, "uniform"},
+    {RetargetScale::PerAxis, "per-axis"},
+}}};
+
+} // namespace
+
 std::string_view retargetScaleName(RetargetScale scale)
 {
-  return scale == RetargetScale::Uniform ? "uniform" : "per-axis";
+  return kScales.name(scale, "per-axis");
 }
 
 std::optional<RetargetScale> parseRetargetScale(std::string_view name)
 {
-  if (name == "uniform")
-    return RetargetScale::Uniform;
-  if (name == "per-axis")
-    return RetargetScale::PerAxis;
-  return std::nullopt;
+  return kScales.parse(name);
 }
 
 Retarget fitRetarget(const Eigen::Ref<const PointSet>& neutral, const Eigen::Ref<const PointSet>& bound,

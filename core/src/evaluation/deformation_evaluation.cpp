@@ -1,12 +1,12 @@
 #include "mocap/evaluation/deformation_evaluation.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/random.h"
 #include "mocap/deform/laplacian_deformer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <random>
 
 namespace mocap {
 
@@ -24,8 +24,7 @@ LeaveOutResult evaluateLeaveOut(const Take& take, const std::vector<Eigen::Index
       static_cast<std::size_t>(std::lround(options.fraction * static_cast<double>(count))), 1, count - 1);
   std::vector<Eigen::Index> order(count);
   std::iota(order.begin(), order.end(), Eigen::Index{0});
-  std::mt19937_64 random(options.seed);
-  std::shuffle(order.begin(), order.end(), random);
+  Random(options.seed).shuffle(order.begin(), order.end());
   LeaveOutResult result;
   result.hidden.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(hiddenCount));
   std::sort(result.hidden.begin(), result.hidden.end());

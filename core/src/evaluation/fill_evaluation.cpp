@@ -1,6 +1,7 @@
 #include "mocap/evaluation/fill_evaluation.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/random.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,28 +10,6 @@
 namespace mocap {
 
 namespace {
-
-// SplitMix64: tiny, fast and the same on every platform (std distributions are not).
-class Random
-{
-public:
-  explicit Random(std::uint64_t seed) : m_state(seed) {}
-  std::uint64_t next()
-  {
-    std::uint64_t z = (m_state += std::uint64_t{0x9e3779b97f4a7c15});
-    z = (z ^ (z >> 30)) * std::uint64_t{0xbf58476d1ce4e5b9};
-    z = (z ^ (z >> 27)) * std::uint64_t{0x94d049bb133111eb};
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, bound) (bound ≥ 1); the modulo bias is negligible for bounds this small.
-  Eigen::Index below(Eigen::Index bound)
-  {
-    return static_cast<Eigen::Index>(next() % static_cast<std::uint64_t>(bound));
-  }
-
-private:
-  std::uint64_t m_state;
-};
 
 void checkOptions(const Take& take, const FillEvaluationOptions& options)
 {

@@ -2,17 +2,15 @@
 
 #include "mocap/cleaning/bspline_fit.h"
 #include "mocap/base/error.h"
+#include "mocap/base/random.h"
 #include "mocap/model/valid_runs.h"
 
 #include <chrono>
 #include <cmath>
-#include <random>
 
 namespace mocap {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Sum of squared position and acceleration errors of `test` against `clean` (same validity).
 struct ErrorSums
@@ -151,30 +149,13 @@ Take addMeasurementNoise(const Take& take, double noiseMm, std::uint64_t seed)
   if (!std::isfinite(noiseMm) || noiseMm < 0.0)
     throw InvalidArgument("noise must be a finite number of millimetres ≥ 0, not " + std::to_string(noiseMm));
   Take noisy = inMillimetres(take);
-  std::mt19937_64 random(seed);
-  const auto uniform = [&random] {
-    // (0, 1]: 53 random bits, never 0 so the logarithm below is finite.
-    return 1.0 - static_cast<double>(random() >> 11) * 0x1.0p-53;
-  };
-  double spare = 0.0;
-  bool haveSpare = false;
-  const auto gaussian = [&] {
-    if (haveSpare) {
-      haveSpare = false;
-      return spare;
-    }
-    const double radius = std::sqrt(-2.0 * std::log(uniform()));
-    const double angle = 2.0 * kPi * uniform();
-    spare = radius * std::sin(angle);
-    haveSpare = true;
-    return radius * std::cos(angle);
-  };
+  Random random(seed);
   for (Eigen::Index m = 0; m < noisy.markerCount(); ++m) {
     auto xyz = noisy.trajectory(m);
     for (Eigen::Index f = 0; f < noisy.frameCount(); ++f)
       if (noisy.isValid(f, m))
         for (Eigen::Index c = 0; c < 3; ++c)
-          xyz(f, c) += noiseMm * gaussian();
+          xyz(f, c) += noiseMm * random.normal();
   }
   return noisy;
 }

@@ -2,11 +2,11 @@
 
 #include "mocap/base/error.h"
 #include "mocap/base/length_unit.h"
+#include "mocap/base/random.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
 namespace mocap {
 
@@ -15,31 +15,14 @@ namespace {
 constexpr Eigen::Index kSpacing = 5;  // frames kept free around each spike and cut gap
 constexpr double kPi = 3.14159265358979323846;
 
-// Our own draws from mt19937_64 (fully specified by the standard), so a seed gives the same
-// spikes with every standard library; std::uniform_*_distribution are implementation-defined.
-class Draw
+// Uniform on the unit sphere (Archimedes: z uniform in [-1, 1], longitude uniform).
+Eigen::RowVector3d randomDirection(Random& random)
 {
-public:
-  explicit Draw(std::uint64_t seed) : m_engine(seed) {}
-  /// Uniform in [0, 1).
-  double unit() { return static_cast<double>(m_engine() >> 11) * 0x1.0p-53; }
-  /// Uniform in [0, n), n > 0 (the modulo bias is below 2^-40 for takes of any real size).
-  Eigen::Index index(Eigen::Index n)
-  {
-    return static_cast<Eigen::Index>(m_engine() % static_cast<std::uint64_t>(n));
-  }
-  /// Uniform on the unit sphere (Archimedes: z uniform in [-1, 1], longitude uniform).
-  Eigen::RowVector3d direction()
-  {
-    const double z = 2.0 * unit() - 1.0;
-    const double longitude = 2.0 * kPi * unit();
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    return {r * std::cos(longitude), r * std::sin(longitude), z};
-  }
-
-private:
-  std::mt19937_64 m_engine;
-};
+  const double z = 2.0 * random.uniform() - 1.0;
+  const double longitude = 2.0 * kPi * random.uniform();
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return {r * std::cos(longitude), r * std::sin(longitude), z};
+}
 
 struct Injection
 {
@@ -69,14 +52,14 @@ void reserve(SampleMask& reserved, Eigen::Index marker, Eigen::Index first, Eige
 }
 
 // Places one spike of `shape` on `truth` (cutting its gap there), or returns false.
-bool place(Take& truth, SampleMask& reserved, Draw& draw, Shape shape,
+bool place(Take& truth, SampleMask& reserved, Random& random, Shape shape,
            const std::vector<Eigen::Index>& markers, Injection& out)
 {
   const Eigen::Index frames = truth.frameCount();
-  const auto pick = draw.index(static_cast<Eigen::Index>(markers.size()));
+  const auto pick = random.below(static_cast<Eigen::Index>(markers.size()));
   const Eigen::Index marker = markers[static_cast<std::size_t>(pick)];
-  const Eigen::Index first = draw.index(frames);
-  const Eigen::Index length = shape == Shape::Block ? 2 + draw.index(2) : 1;
+  const Eigen::Index first = random.below(frames);
+  const Eigen::Index length = shape == Shape::Block ? 2 + random.below(2) : 1;
   const Eigen::Index last = first + length - 1;
   auto valid = truth.valid().col(marker);
   if (last >= frames || !valid.segment(first, length).all() || !isFree(reserved, marker, first, last))
@@ -84,8 +67,8 @@ bool place(Take& truth, SampleMask& reserved, Draw& draw, Shape shape,
   if (shape == Shape::NextToGap) {
     const bool atRunEnd = first == 0 || last == frames - 1 || !valid(first - 1) || !valid(last + 1);
     if (!atRunEnd) {
-      const Eigen::Index gap = 5 + draw.index(11);
-      const bool after = draw.index(2) == 1;
+      const Eigen::Index gap = 5 + random.below(11);
+      const bool after = random.below(2) == 1;
       const Eigen::Index from = after ? last + 1 : std::max<Eigen::Index>(0, first - gap);
       const Eigen::Index to = after ? std::min(frames - 1, last + gap) : first - 1;
       if (!isFree(reserved, marker, from, to))
@@ -96,7 +79,7 @@ bool place(Take& truth, SampleMask& reserved, Draw& draw, Shape shape,
     }
   }
   reserve(reserved, marker, first, last);
-  out = {marker, first, length, draw.direction()};
+  out = {marker, first, length, randomDirection(random)};
   return true;
 }
 
@@ -121,14 +104,14 @@ std::vector<SpikeEvaluation> evaluateSpikes(const Take& take, const SpikeEvaluat
   const double toTake = 1.0 / millimetresPer(take.units());
   Take truth = take;
   SampleMask reserved = SampleMask::Constant(take.frameCount(), take.markerCount(), false);
-  Draw draw(options.seed);
+  Random random(options.seed);
   std::vector<Injection> injections;
   // Random tries until the count is reached or the take has had no room for a long while.
   constexpr int kMaxMisses = 100000;
   for (int misses = 0; misses < kMaxMisses && static_cast<int>(injections.size()) < options.count;) {
     const auto shape = static_cast<Shape>(injections.size() % 3);
     Injection injection;
-    if (!place(truth, reserved, draw, shape, markers, injection)) {
+    if (!place(truth, reserved, random, shape, markers, injection)) {
       ++misses;
       continue;
     }

@@ -1,8 +1,8 @@
 #include "mocap/evaluation/tracking_evaluation.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/random.h"
 #include "mocap/tracking/fragment_joining.h"
-#include "mocap/math/kmeans.h"
 #include "mocap/model/valid_runs.h"
 
 #include <algorithm>
@@ -16,13 +16,6 @@ namespace {
 constexpr int kAttemptsPerSwap = 200;
 constexpr Eigen::Index kSwapNeighbours = 3;
 constexpr Eigen::Index kSwapMargin = 3;  // valid frames either side of a swap, so it is observable
-
-// Uniform in [0, bound) from a splitmix64 state (bound ≥ 1).
-Eigen::Index below(std::uint64_t& state, Eigen::Index bound)
-{
-  const auto k = static_cast<Eigen::Index>(nextUniform(state) * static_cast<double>(bound));
-  return std::min(k, bound - 1);
-}
 
 void checkOptions(const Take& take, const TrackingEvaluationOptions& options)
 {
@@ -48,7 +41,7 @@ std::vector<Eigen::Index> labelledMarkers(const Take& take)
 }
 
 // Marker `m` cut into random pieces; dropped frames are cleared in `kept`.
-void cutMarker(const Take& take, Eigen::Index m, const TrackingEvaluationOptions& options, std::uint64_t& state,
+void cutMarker(const Take& take, Eigen::Index m, const TrackingEvaluationOptions& options, Random& random,
                std::vector<Fragment>& pieces, SampleMask& kept)
 {
   const auto trajectory = take.trajectory(m);
@@ -56,7 +49,7 @@ void cutMarker(const Take& take, Eigen::Index m, const TrackingEvaluationOptions
     Eigen::Index f = run.first;
     const Eigen::Index end = run.first + run.length;
     while (f < end) {
-      const Eigen::Index length = std::min(end - f, 1 + below(state, 2 * options.meanFragmentLength));
+      const Eigen::Index length = std::min(end - f, 1 + random.index(2 * options.meanFragmentLength));
       Fragment piece;
       piece.first = f;
       for (Eigen::Index g = f; g < f + length; ++g) {
@@ -64,7 +57,7 @@ void cutMarker(const Take& take, Eigen::Index m, const TrackingEvaluationOptions
         kept(g, m) = true;
       }
       pieces.push_back(std::move(piece));
-      f += length + below(state, options.maxCutGap + 1);
+      f += length + random.index(options.maxCutGap + 1);
     }
   }
 }
@@ -79,20 +72,19 @@ bool validThrough(const Take& take, Eigen::Index m, Eigen::Index first, Eigen::I
 UnlabelledCopy makeUnlabelledCopy(const Take& take, const TrackingEvaluationOptions& options)
 {
   checkOptions(take, options);
-  std::uint64_t state = mixSeed(options.seed, 0x7261636bULL, 1);
+  Random random(mixSeed(options.seed, 0x7261636bULL, 1));
   UnlabelledCopy copy;
   copy.kept = SampleMask::Constant(take.frameCount(), take.markerCount(), false);
   std::vector<Fragment> pieces;
   for (const Eigen::Index m : labelledMarkers(take))
-    cutMarker(take, m, options, state, pieces, copy.kept);
+    cutMarker(take, m, options, random, pieces, copy.kept);
   std::vector<Eigen::Index> strays;  // the take's own unlabelled markers: points to ignore
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
     if (isUnlabelledLabel(take.label(m)))
       strays.push_back(m);
   for (Fragment& piece : fragmentsOfMarkers(take, strays))
     pieces.push_back(std::move(piece));
-  for (std::size_t i = pieces.size(); i > 1; --i)  // Fisher–Yates: no order reveals the label
-    std::swap(pieces[i - 1], pieces[static_cast<std::size_t>(below(state, static_cast<Eigen::Index>(i)))]);
+  random.shuffle(pieces.begin(), pieces.end());  // no order reveals the label
   copy.fragments = static_cast<Eigen::Index>(pieces.size());  // strays included
   copy.take = Take({}, take.frameCount(), take.frameRate());
   copy.take.setUnits(take.units());
@@ -113,23 +105,23 @@ Take makeSwappedCopy(const Take& take, const TrackingEvaluationOptions& options,
   if (markers.size() < 2 || options.swaps == 0)
     return copy;
   const MarkerSet set = markerSetFromTake(take);
-  std::uint64_t state = mixSeed(options.seed, 0x73776170ULL, 2);
+  Random random(mixSeed(options.seed, 0x73776170ULL, 2));
   SampleMask busy = SampleMask::Constant(take.frameCount(), take.markerCount(), false);
   for (int attempt = 0; attempt < kAttemptsPerSwap * options.swaps && static_cast<int>(swaps.size()) < options.swaps;
        ++attempt) {
-    const Eigen::Index a = below(state, set.size());
+    const Eigen::Index a = random.index(set.size());
     std::vector<std::pair<double, Eigen::Index>> near;
     for (Eigen::Index j = 0; j < set.size(); ++j)
       if (j != a)
         near.emplace_back((set.neutral.row(j) - set.neutral.row(a)).squaredNorm(), j);
     std::sort(near.begin(), near.end());
-    const Eigen::Index b = near[static_cast<std::size_t>(below(state, std::min<Eigen::Index>(kSwapNeighbours, set.size() - 1)))].second;
+    const Eigen::Index b = near[static_cast<std::size_t>(random.index(std::min<Eigen::Index>(kSwapNeighbours, set.size() - 1)))].second;
     const Eigen::Index ma = *take.markerIndex(set.labels[static_cast<std::size_t>(a)]);
     const Eigen::Index mb = *take.markerIndex(set.labels[static_cast<std::size_t>(b)]);
-    const Eigen::Index length = options.minSwapLength + below(state, options.maxSwapLength - options.minSwapLength + 1);
+    const Eigen::Index length = options.minSwapLength + random.index(options.maxSwapLength - options.minSwapLength + 1);
     if (length + 2 * kSwapMargin >= take.frameCount())
       continue;
-    const Eigen::Index begin = kSwapMargin + below(state, take.frameCount() - length - 2 * kSwapMargin);
+    const Eigen::Index begin = kSwapMargin + random.index(take.frameCount() - length - 2 * kSwapMargin);
     const Eigen::Index from = begin - kSwapMargin;
     const Eigen::Index to = begin + length + kSwapMargin;
     if (!validThrough(take, ma, from, to) || !validThrough(take, mb, from, to) ||

@@ -1,5 +1,6 @@
 #include "mocap/io/take_io.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/io/bvh_writer.h"
 #include "mocap/io/c3d_reader.h"
 #include "mocap/io/c3d_writer.h"
@@ -11,29 +12,29 @@
 
 namespace mocap {
 
+namespace {
+
+// The name of a format is its file extension.
+constexpr EnumTable<TakeFormat, 4> kFormats{{{
+    {TakeFormat::C3d, "c3d"},
+    {TakeFormat::Trc, "trc"},
+    {TakeFormat::Csv, "csv"},
+    {TakeFormat::Bvh, "bvh"},
+}}};
+
+} // namespace
+
 TakeFormat formatFromPath(const std::filesystem::path& path)
 {
   const std::string ext = lowerExtension(path);
-  if (ext == "c3d")
-    return TakeFormat::C3d;
-  if (ext == "trc")
-    return TakeFormat::Trc;
-  if (ext == "csv")
-    return TakeFormat::Csv;
-  if (ext == "bvh")
-    return TakeFormat::Bvh;
+  if (const auto format = kFormats.parse(ext))
+    return *format;
   throw InvalidArgument(path.string() + ": unknown file type '" + ext + "' (expected .c3d, .trc, .csv or .bvh)");
 }
 
 std::string_view formatName(TakeFormat format)
 {
-  switch (format) {
-  case TakeFormat::C3d: return "c3d";
-  case TakeFormat::Trc: return "trc";
-  case TakeFormat::Csv: return "csv";
-  case TakeFormat::Bvh: return "bvh";
-  }
-  return "unknown";
+  return kFormats.name(format, "unknown");
 }
 
 namespace {

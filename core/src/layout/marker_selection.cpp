@@ -1,6 +1,8 @@
 #include "mocap/layout/marker_selection.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
+#include "mocap/base/random.h"
 #include "mocap/math/pca.h"
 #include "mocap/layout/subset_error.h"
 
@@ -141,18 +143,23 @@ bool sizeReachable(const MarkerSymmetry& symmetry, Eigen::Index size)
 
 } // namespace
 
+namespace {
+
+constexpr EnumTable<SelectionMethod, 2> kSelectionMethods{{{
+    {SelectionMethod::Pfa, "pfa"},
+    {SelectionMethod::Greedy, "greedy"},
+}}};
+
+} // namespace
+
 std::string_view selectionMethodName(SelectionMethod method)
 {
-  return method == SelectionMethod::Pfa ? "pfa" : "greedy";
+  return kSelectionMethods.name(method, "greedy");
 }
 
 std::optional<SelectionMethod> parseSelectionMethod(std::string_view name)
 {
-  if (name == "pfa")
-    return SelectionMethod::Pfa;
-  if (name == "greedy")
-    return SelectionMethod::Greedy;
-  return std::nullopt;
+  return kSelectionMethods.parse(name);
 }
 
 PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const MarkerSymmetry& symmetry,
@@ -476,14 +483,11 @@ std::optional<std::vector<Eigen::Index>> selectRandom(const MarkerSymmetry& symm
     return std::nullopt;
   const auto& units = symmetry.units();
   std::vector<std::size_t> order(units.size());
-  std::uint64_t state = seed;
+  Random random(seed);
   for (int attempt = 0; attempt < 1000; ++attempt) {
     for (std::size_t u = 0; u < order.size(); ++u)
       order[u] = u;
-    for (std::size_t i = order.size(); i > 1; --i) {
-      const auto j = std::min(i - 1, static_cast<std::size_t>(nextUniform(state) * static_cast<double>(i)));
-      std::swap(order[i - 1], order[j]);
-    }
+    random.shuffle(order.begin(), order.end());
     std::vector<bool> selected(units.size(), false);
     Eigen::Index count = 0;
     for (const std::size_t u : order) {

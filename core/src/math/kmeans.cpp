@@ -11,17 +11,9 @@ namespace mocap {
 
 namespace {
 
-std::uint64_t splitMix(std::uint64_t& state)
-{
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
-}
-
 // k-means++: each next centre is a point drawn with probability ∝ its squared distance to the
 // nearest centre so far, read from the precomputed distance matrix.
-std::vector<Eigen::Index> seedCentres(const KMeansPoints& points, Eigen::Index k, std::uint64_t& state)
+std::vector<Eigen::Index> seedCentres(const KMeansPoints& points, Eigen::Index k, Random& random)
 {
   const Eigen::Index n = points.count();
   std::vector<Eigen::Index> chosen;
@@ -31,13 +23,13 @@ std::vector<Eigen::Index> seedCentres(const KMeansPoints& points, Eigen::Index k
     chosen.push_back(i);
     taken[static_cast<std::size_t>(i)] = true;
   };
-  take(std::min<Eigen::Index>(static_cast<Eigen::Index>(nextUniform(state) * static_cast<double>(n)), n - 1));
+  take(random.index(n));
   Eigen::VectorXd nearest = points.squaredDistances().col(chosen.front());
   while (static_cast<Eigen::Index>(chosen.size()) < k) {
     const double total = nearest.sum();
     Eigen::Index next = -1;
     if (total > 0.0) {
-      const double target = nextUniform(state) * total;
+      const double target = random.uniform() * total;
       double running = 0.0;
       for (Eigen::Index i = 0; i < n && next < 0; ++i) {
         running += nearest(i);
@@ -50,8 +42,7 @@ std::vector<Eigen::Index> seedCentres(const KMeansPoints& points, Eigen::Index k
             next = i;
     } else {
       // Fewer distinct points than clusters: any point not yet a centre.
-      auto skip = static_cast<Eigen::Index>(
-          nextUniform(state) * static_cast<double>(n - static_cast<Eigen::Index>(chosen.size())));
+      auto skip = random.index(n - static_cast<Eigen::Index>(chosen.size()));
       for (Eigen::Index i = 0; i < n && next < 0; ++i)
         if (!taken[static_cast<std::size_t>(i)] && skip-- == 0)
           next = i;
@@ -89,7 +80,7 @@ KMeansResult kMeans(const KMeansPoints& points, Eigen::Index k, std::uint64_t se
   if (options.maxIterations < 1)
     throw InvalidArgument("k-means: maxIterations must be at least 1");
 
-  std::uint64_t state = seed;
+  Random random(seed);
   const Eigen::MatrixXd& x = points.points();
   KMeansResult result;
   result.assignment.assign(static_cast<std::size_t>(n), -1);
@@ -121,7 +112,7 @@ KMeansResult kMeans(const KMeansPoints& points, Eigen::Index k, std::uint64_t se
   };
 
   // The seeds are points, so the first assignment reads the precomputed distances.
-  const std::vector<Eigen::Index> seeds = seedCentres(points, k, state);
+  const std::vector<Eigen::Index> seeds = seedCentres(points, k, random);
   for (Eigen::Index i = 0; i < n; ++i) {
     Eigen::Index best = 0;
     double bestValue = points.squaredDistances()(seeds[0], i);
@@ -185,21 +176,6 @@ KMeansResult kMeans(const KMeansPoints& points, Eigen::Index k, std::uint64_t se
     }
   }
   return result;
-}
-
-std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t a, std::uint64_t b)
-{
-  std::uint64_t state = seed;
-  std::uint64_t h = splitMix(state);
-  state = h ^ (a * 0xD1B54A32D192ED03ULL);
-  h = splitMix(state);
-  state = h ^ (b * 0x8CB92BA72F3D8DD7ULL);
-  return splitMix(state);
-}
-
-double nextUniform(std::uint64_t& state)
-{
-  return static_cast<double>(splitMix(state) >> 11) * 0x1.0p-53;
 }
 
 } // namespace mocap

@@ -12,6 +12,14 @@ PointSet Similarity::applyToRows(const Eigen::Ref<const PointSet>& points) const
   return ((scale * points * rotation.transpose()).rowwise() + translation.transpose());
 }
 
+Similarity similarityThrough(const Eigen::Matrix3d& rotation, double scale, const Eigen::Vector3d& fromCentre,
+                             const Eigen::Vector3d& toCentre)
+{
+  Similarity result{scale, rotation, Eigen::Vector3d::Zero()};
+  result.translation = toCentre - result.apply(fromCentre);
+  return result;
+}
+
 namespace {
 
 // Umeyama's closed form (R from the Kabsch rotation of the cross-covariance C, s = tr(RᵀC) / Σ‖fromᵢ − from̄‖²).
@@ -44,8 +52,7 @@ Similarity umeyama(const Eigen::Ref<const PointSet>& from, const Eigen::Ref<cons
       throw InvalidArgument("similarity: the point sets do not correspond (non-positive scale)");
     result.scale = 1.0;
   }
-  result.translation = toCentre.transpose() - result.scale * result.rotation * fromCentre.transpose();
-  return result;
+  return similarityThrough(result.rotation, result.scale, fromCentre.transpose(), toCentre.transpose());
 }
 
 } // namespace

@@ -28,8 +28,11 @@ SamplePatch copyRange(const Take& take, Eigen::Index from, Eigen::Index to, Eige
   patch.valid = take.valid().col(from).segment(first, count);
   patch.residuals = take.residuals().col(from).segment(first, count);
   patch.states.reserve(static_cast<std::size_t>(count));
-  for (Eigen::Index f = first; f <= last; ++f)
+  patch.cameraMasks.reserve(static_cast<std::size_t>(count));
+  for (Eigen::Index f = first; f <= last; ++f) {
     patch.states.push_back(take.state(f, from));
+    patch.cameraMasks.push_back(take.cameraMasks()(f, from));
+  }
   return patch;
 }
 
@@ -102,6 +105,18 @@ std::vector<SamplePatch> swapMarkersOverRange(const Take& take, Eigen::Index a, 
   patches.push_back(copyRange(take, b, a, first, last));
   patches.push_back(copyRange(take, a, b, first, last));
   return patches;
+}
+
+void exchangeMarkersFrom(Take& take, Eigen::Index a, Eigen::Index b, Eigen::Index frame)
+{
+  checkMarker(take, a);
+  checkMarker(take, b);
+  if (frame < 0 || frame > take.frameCount())
+    throw InvalidArgument("exchange markers: frame " + std::to_string(frame) + " is outside the take (" +
+                          std::to_string(take.frameCount()) + " frames)");
+  if (a == b || frame == take.frameCount())
+    return;
+  static_cast<void>(applyPatches(take, swapMarkersOverRange(take, a, b, frame, take.frameCount() - 1)));
 }
 
 Take subsetTake(const Take& source, const std::vector<std::string>& labels)

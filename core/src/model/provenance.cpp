@@ -1,5 +1,6 @@
 #include "mocap/model/provenance.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 #include "mocap/base/json_reader.h"
 #include "mocap/base/json_writer.h"
@@ -146,15 +147,20 @@ void loadProcessingGroup(Take& take, const C3dGroup& group, std::vector<std::str
 
 } // namespace
 
+namespace {
+
+constexpr EnumTable<SampleState, 4> kSampleStates{{{
+    {SampleState::Original, "original"},
+    {SampleState::Filled, "filled"},
+    {SampleState::Smoothed, "smoothed"},
+    {SampleState::Edited, "edited"},
+}}};
+
+} // namespace
+
 std::string_view sampleStateName(SampleState state)
 {
-  switch (state) {
-  case SampleState::Original: return "original";
-  case SampleState::Filled: return "filled";
-  case SampleState::Smoothed: return "smoothed";
-  case SampleState::Edited: return "edited";
-  }
-  return "original";
+  return kSampleStates.name(state, "original");
 }
 
 std::vector<StateRun> stateRuns(const Take& take)

@@ -11,7 +11,8 @@ void checkPatch(const Take& take, const SamplePatch& patch)
 {
   const auto n = static_cast<Eigen::Index>(patch.frames.size());
   if (patch.positions.rows() != n || patch.valid.size() != n || patch.residuals.size() != n ||
-      static_cast<Eigen::Index>(patch.states.size()) != n)
+      static_cast<Eigen::Index>(patch.states.size()) != n ||
+      (!patch.cameraMasks.empty() && static_cast<Eigen::Index>(patch.cameraMasks.size()) != n))
     throw InvalidArgument("sample patch arrays disagree in size");
   if (patch.marker < 0 || patch.marker >= take.markerCount())
     throw InvalidArgument("sample patch marker " + std::to_string(patch.marker) + " out of range");
@@ -68,6 +69,7 @@ SamplePatch swapSamples(Take& take, SamplePatch patch)
   auto trajectory = take.trajectory(patch.marker);
   auto valid = take.valid();
   auto residuals = take.residuals();
+  auto masks = take.cameraMasks();
   for (std::size_t i = 0; i < patch.frames.size(); ++i) {
     const Eigen::Index f = patch.frames[i];
     const auto row = static_cast<Eigen::Index>(i);
@@ -79,6 +81,8 @@ SamplePatch swapSamples(Take& take, SamplePatch patch)
     const SampleState oldState = take.state(f, patch.marker);
     take.setState(f, patch.marker, patch.states[i]);
     patch.states[i] = oldState;
+    if (!patch.cameraMasks.empty())
+      std::swap(masks(f, patch.marker), patch.cameraMasks[i]);
   }
   return patch;
 }
@@ -107,6 +111,8 @@ SamplePatch patchWithin(const SamplePatch& patch, Eigen::Index first, Eigen::Ind
   for (const Eigen::Index row : rows) {
     part.frames.push_back(patch.frames[static_cast<std::size_t>(row)]);
     part.states.push_back(patch.states[static_cast<std::size_t>(row)]);
+    if (!patch.cameraMasks.empty())
+      part.cameraMasks.push_back(patch.cameraMasks[static_cast<std::size_t>(row)]);
   }
   return part;
 }

@@ -100,29 +100,6 @@ std::vector<LabelSwap> swapsAt(const Take& take, Eigen::Index frame, const std::
 
 } // namespace
 
-void exchangeMarkersFrom(Take& take, Eigen::Index a, Eigen::Index b, Eigen::Index frame)
-{
-  if (a < 0 || b < 0 || a >= take.markerCount() || b >= take.markerCount() || frame < 0 || frame > take.frameCount())
-    throw InvalidArgument("exchange markers: marker or frame out of range");
-  if (a == b)
-    return;
-  const Eigen::Index n = take.frameCount() - frame;
-  auto ta = take.trajectory(a);
-  auto tb = take.trajectory(b);
-  ta.bottomRows(n).swap(tb.bottomRows(n));
-  auto valid = take.valid();
-  valid.col(a).tail(n).swap(valid.col(b).tail(n));
-  auto residuals = take.residuals();
-  residuals.col(a).tail(n).swap(residuals.col(b).tail(n));
-  auto masks = take.cameraMasks();
-  masks.col(a).tail(n).swap(masks.col(b).tail(n));
-  for (Eigen::Index f = frame; f < take.frameCount(); ++f) {
-    const SampleState sa = take.state(f, a);
-    take.setState(f, a, take.state(f, b));
-    take.setState(f, b, sa);
-  }
-}
-
 std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options, const JobControl& job)
 {
   checkOptions(options);

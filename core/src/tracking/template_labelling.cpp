@@ -2,8 +2,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/math/hungarian_assignment.h"
-
-#include <Eigen/Eigenvalues>
+#include "mocap/math/registration.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,20 +27,6 @@ void checkPoints(const Eigen::Ref<const PointSet>& points, const char* what)
     throw InvalidArgument(std::string("template alignment: ") + what + " not finite");
 }
 
-// Distance from each row of `moved` to its closest row of `points`, and that row.
-void closestPoints(const Eigen::Ref<const PointSet>& moved, const Eigen::Ref<const PointSet>& points,
-                   Eigen::VectorXd& distance, std::vector<Eigen::Index>& closest)
-{
-  distance.resize(moved.rows());
-  closest.resize(static_cast<std::size_t>(moved.rows()));
-  for (Eigen::Index i = 0; i < moved.rows(); ++i) {
-    Eigen::Index best = 0;
-    (points.rowwise() - moved.row(i)).rowwise().squaredNorm().minCoeff(&best);
-    closest[static_cast<std::size_t>(i)] = best;
-    distance(i) = (points.row(best) - moved.row(i)).norm();
-  }
-}
-
 double quantile(Eigen::VectorXd values, double fraction)
 {
   const auto k = static_cast<Eigen::Index>(fraction * static_cast<double>(values.size() - 1));
@@ -56,67 +41,16 @@ double trimmedMean(Eigen::VectorXd values)
   return values.head(keep).mean();
 }
 
-PointSet transformed(const Similarity& s, const Eigen::Ref<const PointSet>& points)
+// ICP options for a template against one frame's points: each data point pulls its closest
+// template point (the data may miss markers and hold strays), far pairs trimmed.
+IcpOptions templateIcp()
 {
-  PointSet out(points.rows(), 3);
-  for (Eigen::Index i = 0; i < points.rows(); ++i)
-    out.row(i) = s.apply(points.row(i).transpose()).transpose();
-  return out;
-}
-
-// ICP from `start`: each data point pulls its closest template point (the data may miss markers
-// and hold strays, so correspondences go from the data); returns the transform and the trimmed
-// mean distance of the data points to their closest template point.
-std::pair<Similarity, double> refineIcp(const Eigen::Ref<const PointSet>& templ, const Eigen::Ref<const PointSet>& points,
-                                        Similarity s)
-{
-  Eigen::VectorXd distance;
-  std::vector<Eigen::Index> closest;
-  for (int iteration = 0; iteration < kIcpIterations; ++iteration) {
-    closestPoints(points, transformed(s, templ), distance, closest);
-    const double limit = kIcpInlierFactor * quantile(distance, 0.5) + 1e-12;
-    std::vector<Eigen::Index> inliers;
-    for (Eigen::Index i = 0; i < points.rows(); ++i)
-      if (distance(i) <= limit)
-        inliers.push_back(i);
-    if (inliers.size() < 3)
-      break;
-    PointSet from(static_cast<Eigen::Index>(inliers.size()), 3);
-    PointSet to(from.rows(), 3);
-    for (std::size_t k = 0; k < inliers.size(); ++k) {
-      from.row(static_cast<Eigen::Index>(k)) = templ.row(closest[static_cast<std::size_t>(inliers[k])]);
-      to.row(static_cast<Eigen::Index>(k)) = points.row(inliers[k]);
-    }
-    const Similarity next = fitSimilarityLoose(from, to);
-    const double change = (next.rotation - s.rotation).norm() + std::abs(next.scale - s.scale) +
-                          (next.translation - s.translation).norm() / (limit + 1.0);
-    s = next;
-    if (change < 1e-10)
-      break;
-  }
-  closestPoints(points, transformed(s, templ), distance, closest);
-  return {s, trimmedMean(distance)};
-}
-
-// Principal axes (columns, largest variance first) and the RMS radius of a point set.
-std::pair<Eigen::Matrix3d, double> principalAxes(const Eigen::Ref<const PointSet>& points)
-{
-  const PointSet centred = points.rowwise() - points.colwise().mean();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(centred.transpose() * centred);
-  Eigen::Matrix3d axes = eigen.eigenvectors().rowwise().reverse();
-  if (axes.determinant() < 0.0)
-    axes.col(2) = -axes.col(2);
-  return {axes, std::sqrt(centred.squaredNorm() / static_cast<double>(points.rows()))};
-}
-
-Similarity startAt(const Eigen::Matrix3d& rotation, double scale, const Eigen::Vector3d& fromCentre,
-                   const Eigen::Vector3d& toCentre)
-{
-  Similarity s;
-  s.rotation = rotation;
-  s.scale = scale;
-  s.translation = toCentre - scale * (rotation * fromCentre);
-  return s;
+  IcpOptions options;
+  options.pairing = IcpPairing::EachTarget;
+  options.maxIterations = kIcpIterations;
+  options.inlierFactor = kIcpInlierFactor;
+  options.changeTolerance = 1e-10;
+  return options;
 }
 
 void checkOptions(const Take& take, const std::vector<Fragment>& fragments, const MarkerSet& set,
@@ -410,19 +344,20 @@ Similarity alignTemplate(const Eigen::Ref<const PointSet>& templ, const Eigen::R
 {
   checkPoints(templ, "template points");
   checkPoints(points, "data points");
-  const Eigen::Vector3d fromCentre = templ.colwise().mean().transpose();
-  const Eigen::Vector3d toCentre = points.colwise().mean().transpose();
-  const auto [fromAxes, fromRadius] = principalAxes(templ);
-  const auto [toAxes, toRadius] = principalAxes(points);
-  const double scale = fromRadius > 0.0 && toRadius > 0.0 ? toRadius / fromRadius : 1.0;
-  std::vector<Similarity> starts{startAt(Eigen::Matrix3d::Identity(), 1.0, fromCentre, toCentre)};
+  const PrincipalFrame from = principalFrame(templ);
+  const PrincipalFrame to = principalFrame(points);
+  const double scale = from.radius > 0.0 && to.radius > 0.0 ? to.radius / from.radius : 1.0;
+  std::vector<Similarity> starts{similarityThrough(Eigen::Matrix3d::Identity(), 1.0, from.centre, to.centre)};
   for (const auto& flip : {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, -1, 1), Eigen::Vector3d(-1, 1, -1),
                            Eigen::Vector3d(1, -1, -1)})
-    starts.push_back(startAt(toAxes * flip.asDiagonal() * fromAxes.transpose(), scale, fromCentre, toCentre));
+    starts.push_back(similarityThrough(to.axes * flip.asDiagonal() * from.axes.transpose(), scale, from.centre, to.centre));
   Similarity best;
   double bestResidual = std::numeric_limits<double>::infinity();
+  const IcpOptions options = templateIcp();
   for (const Similarity& start : starts) {
-    const auto [s, r] = refineIcp(templ, points, start);
+    const Similarity s = icp(templ, points, start, options).transform;
+    // Trimmed mean distance of the data points to their closest template point.
+    const double r = trimmedMean(closestPointDistances(templ, points, s, options));
     if (r < bestResidual) {
       best = s;
       bestResidual = r;

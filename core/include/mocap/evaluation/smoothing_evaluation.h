@@ -18,8 +18,8 @@ namespace mocap {
 
 /// A copy of `take` in millimetres with independent Gaussian noise of standard deviation
 /// `noiseMm` added to each coordinate of each valid sample (invalid samples untouched). The
-/// normal deviates come from std::mt19937_64 through the Box–Muller transform, so a seed gives
-/// the same noise with every compiler (no paper equation). Throws InvalidArgument unless noiseMm is
+/// normal deviates come from mocap::Random (Box–Muller), so a seed gives the same noise with
+/// every compiler (no paper equation). Throws InvalidArgument unless noiseMm is
 /// finite and ≥ 0.
 /// O(#frames · #markers).
 [[nodiscard]] Take addMeasurementNoise(const Take& take, double noiseMm, std::uint64_t seed);

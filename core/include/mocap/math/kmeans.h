@@ -1,5 +1,7 @@
 #pragma once
 
+#include "mocap/base/random.h"
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -53,17 +55,10 @@ private:
 /// the precomputed distances; later ones compute each point's distances to all centres in dim
 /// passes over the centres' coordinates, which the compiler vectorises. An emptied cluster
 /// restarts at the point farthest from its centre. Clustering step of PFA (Cohen et al. 2002;
-/// Wellein et al. 2007 §2). The same seed gives the same result on every platform (own splitmix64
-/// generator, no std distributions). O(#points · k · (1 + dim · iterations)).
+/// Wellein et al. 2007 §2). The same seed gives the same result on every platform (mocap::Random,
+/// no std distributions). O(#points · k · (1 + dim · iterations)).
 /// Throws InvalidArgument unless 1 ≤ k ≤ #points and maxIterations ≥ 1.
 [[nodiscard]] KMeansResult kMeans(const KMeansPoints& points, Eigen::Index k, std::uint64_t seed,
                                   const KMeansOptions& options = {});
-
-/// The seed of one restart of a seeded series: a hash of (seed, a, b), e.g. (user seed, k, restart
-/// index), so each restart's result does not depend on which thread runs it. O(1).
-[[nodiscard]] std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t a, std::uint64_t b);
-
-/// Uniform double in [0, 1) from a splitmix64 state (advanced). O(1).
-[[nodiscard]] double nextUniform(std::uint64_t& state);
 
 } // namespace mocap

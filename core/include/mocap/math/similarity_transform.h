@@ -21,6 +21,10 @@ struct Similarity
   [[nodiscard]] PointSet applyToRows(const Eigen::Ref<const PointSet>& points) const;
 };
 
+/// The similarity with `rotation` and `scale` that takes `fromCentre` onto `toCentre`. O(1).
+[[nodiscard]] Similarity similarityThrough(const Eigen::Matrix3d& rotation, double scale, const Eigen::Vector3d& fromCentre,
+                                           const Eigen::Vector3d& toCentre);
+
 /// The similarity minimising Σ‖s·R·fromᵢ + t − toᵢ‖² (Umeyama 1991: R from the Kabsch step on the
 /// centred sets, s = tr(Rᵀ·C) / Σ‖fromᵢ − c_from‖² with C the cross-covariance). Not a paper
 /// equation: it aligns a take's neutral frame to a mesh and gives the source→target scale by which

@@ -20,12 +20,17 @@ namespace mocap {
                                           std::string label);
 
 /// Patches that exchange everything markers `a` and `b` hold over frames [first, last]
-/// (positions, validity, residuals, states): the fix for two labels swapped by the tracker after
+/// (positions, validity, residuals, states, camera masks): the fix for two labels swapped by the tracker after
 /// the markers crossed. Apply both (applyPatches); applying the undo patches swaps back. Throws
 /// InvalidArgument when a == b, an index is outside the take or the range is empty or outside it.
 /// O(last − first).
 [[nodiscard]] std::vector<SamplePatch> swapMarkersOverRange(const Take& take, Eigen::Index a, Eigen::Index b,
                                                             Eigen::Index first, Eigen::Index last);
+
+/// swapMarkersOverRange from `frame` to the end of the take, applied in place: the repair of one
+/// label swap (applying it twice restores the take); a == b or frame == #frames changes nothing.
+/// Throws InvalidArgument for a marker or frame outside the take. O(#frames − frame).
+void exchangeMarkersFrom(Take& take, Eigen::Index a, Eigen::Index b, Eigen::Index frame);
 
 /// A patch that gives marker `to` every valid sample of marker `from` (position, residual,
 /// state), overwriting `to` in those frames: how a hand-labelled fragment joins its marker

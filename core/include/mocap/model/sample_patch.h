@@ -2,6 +2,7 @@
 
 #include "mocap/model/take.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace mocap {
@@ -18,6 +19,9 @@ struct SamplePatch
   Eigen::Array<bool, Eigen::Dynamic, 1> valid;
   Eigen::ArrayXd residuals;
   std::vector<SampleState> states;
+  /// The samples' camera masks, or empty to leave the take's as they are (only an exchange of
+  /// two markers' samples moves them; every other edit keeps which cameras saw the marker).
+  std::vector<std::uint8_t> cameraMasks;
 
   [[nodiscard]] std::size_t size() const { return frames.size(); }
   [[nodiscard]] bool empty() const { return frames.empty(); }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mocap/model/marker_edits.h"  // exchangeMarkersFrom, the repair of one swap
 #include "mocap/model/take.h"
 #include "mocap/base/job_control.h"
 
@@ -50,10 +51,5 @@ std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options = {}, 
 /// repairSwaps on a copy: the swaps without changing `take`.
 [[nodiscard]] std::vector<LabelSwap> detectSwaps(const Take& take, const SwapOptions& options = {},
                                                 const JobControl& job = {});
-
-/// Exchanges every sample of markers `a` and `b` from `frame` to the end of the take (the repair
-/// of one swap; applying it twice restores the take). Throws InvalidArgument out of range.
-/// O(#frames).
-void exchangeMarkersFrom(Take& take, Eigen::Index a, Eigen::Index b, Eigen::Index frame);
 
 } // namespace mocap

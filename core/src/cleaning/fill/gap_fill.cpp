@@ -1,5 +1,6 @@
 #include "mocap/cleaning/fill/gap_fill.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/cleaning/fill/auto_fill.h"
 #include "mocap/base/error.h"
 #include "mocap/cleaning/fill/fill_context.h"
@@ -18,13 +19,7 @@ namespace mocap {
 
 namespace {
 
-struct MethodName
-{
-  FillMethod method;
-  std::string_view name;
-};
-
-constexpr std::array<MethodName, 9> kNames{{
+constexpr EnumTable<FillMethod, 9> kNames{{{
     {FillMethod::Linear, "linear"},
     {FillMethod::Spline, "spline"},
     {FillMethod::Guenter, "guenter"},
@@ -34,7 +29,16 @@ constexpr std::array<MethodName, 9> kNames{{
     {FillMethod::Rigid, "rigid"},
     {FillMethod::Pca, "pca"},
     {FillMethod::Auto, "auto"},
-}};
+}}};
+
+constexpr EnumTable<UnfilledCause, 6> kCauses{{{
+    {UnfilledCause::None, ""},
+    {UnfilledCause::NeverValid, "never_valid"},
+    {UnfilledCause::RarelyValid, "rarely_valid"},
+    {UnfilledCause::TooLong, "too_long"},
+    {UnfilledCause::EdgeGap, "edge_gap"},
+    {UnfilledCause::Method, "method"},
+}}};
 
 void checkOptions(const FillOptions& options)
 {
@@ -130,8 +134,8 @@ const std::vector<FillMethod>& allFillMethods()
 {
   static const std::vector<FillMethod> methods = [] {
     std::vector<FillMethod> list;
-    for (const auto& entry : kNames)
-      list.push_back(entry.method);
+    for (const auto& entry : kNames.entries)
+      list.push_back(entry.value);
     return list;
   }();
   return methods;
@@ -139,23 +143,12 @@ const std::vector<FillMethod>& allFillMethods()
 
 std::optional<FillMethod> parseFillMethod(std::string_view name)
 {
-  for (const auto& entry : kNames)
-    if (entry.name == name)
-      return entry.method;
-  return std::nullopt;
+  return kNames.parse(name);
 }
 
 std::string_view unfilledCauseName(UnfilledCause cause)
 {
-  switch (cause) {
-  case UnfilledCause::None: return "";
-  case UnfilledCause::NeverValid: return "never_valid";
-  case UnfilledCause::RarelyValid: return "rarely_valid";
-  case UnfilledCause::TooLong: return "too_long";
-  case UnfilledCause::EdgeGap: return "edge_gap";
-  case UnfilledCause::Method: return "method";
-  }
-  return "";
+  return kCauses.name(cause, "");
 }
 
 Eigen::Index longestGapFrames(const FillOptions& options, double frameRate)
@@ -172,10 +165,7 @@ Eigen::Index longestGapFrames(const FillOptions& options, double frameRate)
 
 std::string_view fillMethodName(FillMethod method)
 {
-  for (const auto& entry : kNames)
-    if (entry.method == method)
-      return entry.name;
-  return "unknown";
+  return kNames.name(method, "unknown");
 }
 
 FillResult fillGaps(const Take& take, const FillOptions& options, const JobControl& job)
