@@ -14,6 +14,8 @@
 #include "mocap/io/take_io.h"
 
 #include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTableWidget>
 #include <QTest>
@@ -277,6 +279,9 @@ TEST_F(LayoutPlanning, ScrollsRatherThanForcingTheWindowTaller)
   QTest::qWait(50);
   EXPECT_EQ(window->height(), 800);
   EXPECT_LE(panel->minimumSizeHint().height(), 300);
+  auto* scroll = panel->findChild<QScrollArea*>();
+  ASSERT_NE(scroll, nullptr);
+  EXPECT_FALSE(scroll->horizontalScrollBar()->isVisible()) << "the form fits the dock's width: no sideways scrolling";
 }
 
 TEST_F(LayoutPlanning, RemembersItsParameters)

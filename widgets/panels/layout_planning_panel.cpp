@@ -176,6 +176,8 @@ void LayoutPlanningPanel::buildForm()
   m_method = new QComboBox(this);
   m_method->addItem(tr("PFA (principal feature analysis)"), static_cast<int>(SelectionMethod::Pfa));
   m_method->addItem(tr("Greedy (least reconstruction error)"), static_cast<int>(SelectionMethod::Greedy));
+  m_method->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // the dock stays narrow
+  m_method->setMinimumContentsLength(18);
   form->addRow(tr("Method:"), m_method);
 
   m_variance = new QDoubleSpinBox(this);
