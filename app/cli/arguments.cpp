@@ -90,6 +90,18 @@ CLI::Option* oneOf(CLI::Option* option, const std::vector<std::string>& names)
   return option->check(check)->type_name(choices);
 }
 
+CLI::Option* oneOf(CLI::Option* option, const std::string& choices)
+{
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  for (std::size_t bar = choices.find('|'); bar != std::string::npos; bar = choices.find('|', start)) {
+    names.push_back(choices.substr(start, bar - start));
+    start = bar + 1;
+  }
+  names.push_back(choices.substr(start));
+  return oneOf(option, names);
+}
+
 std::string fixedNumber(double value, int decimals)
 {
   if (!std::isfinite(value))

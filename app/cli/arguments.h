@@ -20,6 +20,9 @@ CLI::Option* wholeNumberIn(CLI::Option* option, long long min, long long max);
 
 /// One of `names`, which the usage shows as `a|b|c`.
 CLI::Option* oneOf(CLI::Option* option, const std::vector<std::string>& names);
+/// One of the names in `choices`, written "a|b|c" as core's enum tables give them (e.g.
+/// spikeMethodNames()), so the command line accepts exactly what core reads.
+CLI::Option* oneOf(CLI::Option* option, const std::string& choices);
 
 /// `value` as the shortest text that reads back to it, for defaults shown in the usage.
 [[nodiscard]] std::string numberText(double value);

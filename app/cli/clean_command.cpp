@@ -5,6 +5,8 @@
 
 #include "mocap/io/bvh_writer.h"
 #include "mocap/cleaning/clean_pipeline.h"
+#include "mocap/cleaning/smoothing.h"
+#include "mocap/cleaning/spike_detection.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/io/take_io.h"
@@ -250,7 +252,7 @@ Command addClean(CLI::App& mocap)
   command->add_option("-o,--output", a->output, "the cleaned take; its extension names the format")
       ->required()
       ->type_name("OUT");
-  oneOf(command->add_option("--spikes", a->spikes, "spike detector"), {"paper", "robust", "off"})
+  oneOf(command->add_option("--spikes", a->spikes, "spike detector"), spikeMethodNames() + "|off")
       ->capture_default_str();
   numberIn(command->add_option("--spike-factor", a->spikeOptions.factor, "spike detection factor")->type_name("F"),
            1e-6, 1e6)
@@ -285,8 +287,7 @@ Command addClean(CLI::App& mocap)
                     ->type_name("N"),
                 1, 1000)
       ->capture_default_str();
-  oneOf(command->add_option("--smooth", a->smooth, "smoothing method"),
-        {"bspline", "butterworth", "gcvspl", "savgol", "off"})
+  oneOf(command->add_option("--smooth", a->smooth, "smoothing method"), smoothMethodNames() + "|off")
       ->capture_default_str();
   wholeNumberIn(command->add_option("--order", a->smoothOptions.degree, "B-spline order")->type_name("K"), 2, 7)
       ->capture_default_str();

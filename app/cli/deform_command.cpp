@@ -9,6 +9,8 @@
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/deform/face_rig.h"
+#include "mocap/deform/retarget.h"
+#include "mocap/deform/laplacian_weights.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/deform/laplacian_deformer.h"
 #include "mocap/io/mesh_io.h"
@@ -205,8 +207,8 @@ Command addDeform(CLI::App& mocap)
                                     "the neutral frame (default: the first with every bound marker)")
                     ->type_name("FRAME"),
                 -(1LL << 40), 1LL << 40);
-  oneOf(command->add_option("--method", a->method, "deformation"), {"rbf", "laplacian"})->capture_default_str();
-  oneOf(command->add_option("--kernel", a->kernel, "RBF kernel"), {"exp", "gaussian", "biharmonic", "thin-plate"})
+  oneOf(command->add_option("--method", a->method, "deformation"), deformMethodNames())->capture_default_str();
+  oneOf(command->add_option("--kernel", a->kernel, "RBF kernel"), rbfKernelNames())
       ->capture_default_str();
   numberIn(command->add_option("--radius", settings.rbf.radius, "RBF radius c, in mesh units")->type_name("C"), 1e-9,
            1e9)
@@ -215,7 +217,7 @@ Command addDeform(CLI::App& mocap)
   command->add_flag("--no-affine", a->noAffine, "RBF without the affine term");
   oneOf(command->add_option("--up", a->up, "the mesh's up axis, for --regions"), {"x", "y", "z"})
       ->capture_default_str();
-  oneOf(command->add_option("--weights", a->weights, "Laplacian weights"), {"uniform", "cotangent", "mean-value"})
+  oneOf(command->add_option("--weights", a->weights, "Laplacian weights"), laplacianWeightsNames())
       ->capture_default_str();
   numberIn(command->add_option("--constraint-weight", settings.laplacian.constraintWeight,
                                "Laplacian weight of the marker constraints")
@@ -229,7 +231,7 @@ Command addDeform(CLI::App& mocap)
       ->capture_default_str();
   command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
       ->type_name("LABELS");
-  oneOf(command->add_option("--scale", a->scale, "marker displacements to mesh scale"), {"uniform", "per-axis"})
+  oneOf(command->add_option("--scale", a->scale, "marker displacements to mesh scale"), retargetScaleNames())
       ->capture_default_str();
   command->add_option("--frames", a->frames, "the frames deformed, as the take numbers them (default: all)")
       ->type_name("FIRST:LAST");

@@ -441,7 +441,7 @@ Command addPfa(CLI::App& mocap)
   command->add_option("TAKE", a->takes, "the takes planned on, all with the same markers")
       ->required()
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  oneOf(command->add_option("--method", a->method, "how markers are chosen"), {"pfa", "greedy"})
+  oneOf(command->add_option("--method", a->method, "how markers are chosen"), selectionMethodNames())
       ->capture_default_str();
   numberIn(command->add_option("--variance", options.pfa.varianceFraction, "variance the PCA components explain")
                ->type_name(numberText(options.pfa.varianceFraction)),

@@ -111,7 +111,7 @@ Command addSmoothTable(CLI::App& mocap)
                ->type_name("N"),
            1.0, 1e6)
       ->capture_default_str();
-  oneOf(command->add_option("--spikes", a->spikes, "spike repair before smoothing"), {"paper", "robust", "off"})
+  oneOf(command->add_option("--spikes", a->spikes, "spike repair before smoothing"), spikeMethodNames() + "|off")
       ->capture_default_str();
   command->add_flag("--json", a->json, "print JSON");
   return {command, [a] { return runSmoothTable(*a); }};

@@ -122,6 +122,11 @@ std::string_view smoothMethodName(SmoothMethod method)
   return kSmoothMethods.name(method, "bspline");
 }
 
+std::string smoothMethodNames()
+{
+  return kSmoothMethods.names();
+}
+
 bool operator==(const SmoothOptions& a, const SmoothOptions& b)
 {
   return a.method == b.method && a.degree == b.degree && a.knotSpacing == b.knotSpacing &&

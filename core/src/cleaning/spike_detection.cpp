@@ -556,6 +556,11 @@ std::string_view spikeMethodName(SpikeMethod method)
   return kSpikeMethods.name(method, "robust");
 }
 
+std::string spikeMethodNames()
+{
+  return kSpikeMethods.names();
+}
+
 std::vector<Eigen::Index> detectSpikes(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& xyz,
                                        const Eigen::Ref<const ValidMask>& valid, const SpikeOptions& options)
 {

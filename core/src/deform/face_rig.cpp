@@ -22,6 +22,11 @@ std::string_view deformMethodName(DeformMethod method)
   return kDeformMethods.name(method, "laplacian");
 }
 
+std::string deformMethodNames()
+{
+  return kDeformMethods.names();
+}
+
 std::optional<DeformMethod> parseDeformMethod(std::string_view name)
 {
   return kDeformMethods.parse(name);

@@ -27,6 +27,11 @@ std::string_view laplacianWeightsName(LaplacianWeights weights)
   return kWeights.name(weights, "?");
 }
 
+std::string laplacianWeightsNames()
+{
+  return kWeights.names();
+}
+
 std::optional<LaplacianWeights> parseLaplacianWeights(std::string_view name)
 {
   return kWeights.parse(name);

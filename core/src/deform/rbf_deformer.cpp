@@ -29,6 +29,11 @@ std::string_view rbfKernelName(RbfKernel kernel)
   return kKernels.name(kernel, "?");
 }
 
+std::string rbfKernelNames()
+{
+  return kKernels.names();
+}
+
 std::optional<RbfKernel> parseRbfKernel(std::string_view name)
 {
   return kKernels.parse(name);

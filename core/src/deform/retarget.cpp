@@ -23,6 +23,11 @@ std::string_view retargetScaleName(RetargetScale scale)
   return kScales.name(scale, "per-axis");
 }
 
+std::string retargetScaleNames()
+{
+  return kScales.names();
+}
+
 std::optional<RetargetScale> parseRetargetScale(std::string_view name)
 {
   return kScales.parse(name);

@@ -157,6 +157,11 @@ std::string_view selectionMethodName(SelectionMethod method)
   return kSelectionMethods.name(method, "greedy");
 }
 
+std::string selectionMethodNames()
+{
+  return kSelectionMethods.names();
+}
+
 std::optional<SelectionMethod> parseSelectionMethod(std::string_view name)
 {
   return kSelectionMethods.parse(name);

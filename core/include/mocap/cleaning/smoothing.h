@@ -25,6 +25,8 @@ enum class SmoothMethod
 /// "bspline", "butterworth", "gcvspl", "savgol" (exact, lower case); nullopt otherwise. O(1).
 [[nodiscard]] std::optional<SmoothMethod> parseSmoothMethod(std::string_view name);
 [[nodiscard]] std::string_view smoothMethodName(SmoothMethod method);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string smoothMethodNames();
 
 /// Which smoother and its parameters. Only the fields of the chosen method are used (and checked).
 /// The default is Woltring's cubic smoothing spline with λ chosen by GCV per run: it adapts to the

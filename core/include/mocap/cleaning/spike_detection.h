@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -56,6 +57,8 @@ enum class SpikeMethod
 [[nodiscard]] std::optional<SpikeMethod> parseSpikeMethod(std::string_view name);
 /// The name parseSpikeMethod reads back. O(1).
 [[nodiscard]] std::string_view spikeMethodName(SpikeMethod method);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string spikeMethodNames();
 
 struct SpikeOptions
 {

@@ -22,6 +22,8 @@ enum class DeformMethod
 
 /// "rbf", "laplacian". O(1).
 [[nodiscard]] std::string_view deformMethodName(DeformMethod method);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string deformMethodNames();
 [[nodiscard]] std::optional<DeformMethod> parseDeformMethod(std::string_view name);
 
 struct FaceRigOptions

@@ -5,6 +5,7 @@
 #include <Eigen/SparseCore>
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -20,6 +21,8 @@ enum class LaplacianWeights
 
 /// "uniform", "cotangent", "mean-value". O(1).
 [[nodiscard]] std::string_view laplacianWeightsName(LaplacianWeights weights);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string laplacianWeightsNames();
 [[nodiscard]] std::optional<LaplacianWeights> parseLaplacianWeights(std::string_view name);
 
 /// The #vertices × #vertices Laplacian K with Kᵢⱼ = −wᵢⱼ for each edge and Kᵢᵢ = Σⱼ wᵢⱼ, so every

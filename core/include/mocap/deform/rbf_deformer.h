@@ -3,6 +3,7 @@
 #include "mocap/deform/mesh_deformer.h"
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace mocap {
@@ -18,6 +19,8 @@ enum class RbfKernel
 
 /// "exp", "gaussian", "biharmonic", "thin-plate". O(1).
 [[nodiscard]] std::string_view rbfKernelName(RbfKernel kernel);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string rbfKernelNames();
 [[nodiscard]] std::optional<RbfKernel> parseRbfKernel(std::string_view name);
 /// φ(r) for `kernel` with radius c. O(1).
 [[nodiscard]] double rbfKernel(RbfKernel kernel, double r, double c);

@@ -5,6 +5,7 @@
 #include "mocap/model/take.h"
 
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -18,6 +19,8 @@ enum class RetargetScale
 };
 
 [[nodiscard]] std::string_view retargetScaleName(RetargetScale scale);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string retargetScaleNames();
 [[nodiscard]] std::optional<RetargetScale> parseRetargetScale(std::string_view name);
 
 /// Maps a marker displacement from the neutral frame into a control displacement on the mesh:

@@ -28,6 +28,8 @@ enum class SelectionMethod
 
 /// "pfa" or "greedy". O(1).
 [[nodiscard]] std::string_view selectionMethodName(SelectionMethod method);
+/// Every value's name, "a|b|c" (for usage texts and errors). O(#values).
+[[nodiscard]] std::string selectionMethodNames();
 /// The method named "pfa" or "greedy"; nullopt otherwise. O(1).
 [[nodiscard]] std::optional<SelectionMethod> parseSelectionMethod(std::string_view name);
 
