@@ -426,7 +426,7 @@ QString LayoutPlanningPanel::checkedRequest(const LayoutPlanParameters& paramete
                                             const std::vector<std::string>& reference, LayoutRequest& request) const
 {
   using Field = LayoutRequestError::Field;
-  const auto fieldName = [this](Field field) {
+  const auto fieldName = [](Field field) {
     return field == Field::KeyPoses ? tr("Key poses") : field == Field::Markers ? tr("Plan markers") : tr("Leave out");
   };
   try {
