@@ -10,24 +10,51 @@
 
 namespace mocap {
 
-LeaveOutResult evaluateLeaveOut(const Take& take, const std::vector<Eigen::Index>& markers,
-                                const std::vector<MeshPoint>& points, Eigen::Index neutralFrame,
-                                const Retarget& retarget, const MeshVertices& rest, const DeformerFactory& factory,
-                                const LeaveOutOptions& options)
+void LeaveOutResult::add(double error, double restDistance)
 {
-  if (markers.size() < 2 || markers.size() != points.size())
-    throw InvalidArgument("leave-out: needs at least 2 bound markers, one point each");
+  m_sum += error;
+  m_squares += error * error;
+  m_restSum += restDistance;
+  maxError = std::max(maxError, error);
+  ++samples;
+}
+
+void LeaveOutResult::finish()
+{
+  if (samples == 0)
+    return;
+  const auto n = static_cast<double>(samples);
+  meanError = m_sum / n;
+  rmsError = std::sqrt(m_squares / n);
+  restError = m_restSum / n;
+}
+
+std::vector<Eigen::Index> chooseHiddenMarkers(std::size_t count, const LeaveOutOptions& options)
+{
+  if (count < 2)
+    throw InvalidArgument("leave-out: needs at least 2 bound markers");
   if (!(options.fraction > 0.0 && options.fraction < 1.0))
     throw InvalidArgument("leave-out: the hidden fraction must be in (0, 1)");
-  const std::size_t count = markers.size();
   const auto hiddenCount = std::clamp<std::size_t>(
       static_cast<std::size_t>(std::lround(options.fraction * static_cast<double>(count))), 1, count - 1);
   std::vector<Eigen::Index> order(count);
   std::iota(order.begin(), order.end(), Eigen::Index{0});
   Random(options.seed).shuffle(order.begin(), order.end());
+  std::vector<Eigen::Index> hidden(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(hiddenCount));
+  std::sort(hidden.begin(), hidden.end());
+  return hidden;
+}
+
+LeaveOutResult evaluateLeaveOut(const Take& take, const std::vector<Eigen::Index>& markers,
+                                const std::vector<MeshPoint>& points, Eigen::Index neutralFrame,
+                                const Retarget& retarget, const MeshVertices& rest, const DeformerFactory& factory,
+                                const LeaveOutOptions& options)
+{
+  if (markers.size() != points.size())
+    throw InvalidArgument("leave-out: needs one bound point per marker");
   LeaveOutResult result;
-  result.hidden.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(hiddenCount));
-  std::sort(result.hidden.begin(), result.hidden.end());
+  result.hidden = chooseHiddenMarkers(markers.size(), options);
+  const std::size_t count = markers.size();
 
   std::vector<Eigen::Index> keptMarkers, hiddenMarkers;
   std::vector<MeshPoint> keptPoints, hiddenPoints;
@@ -41,7 +68,6 @@ LeaveOutResult evaluateLeaveOut(const Take& take, const std::vector<Eigen::Index
   PointSet kept, truth;
   std::vector<bool> keptPresent, truthPresent;
   MeshVertices deformed;
-  double sum = 0.0, squares = 0.0, restSum = 0.0;
   for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
     controlDisplacements(take, hiddenMarkers, neutralFrame, retarget, f, truth, truthPresent);
     if (std::none_of(truthPresent.begin(), truthPresent.end(), [](bool p) { return p; }))
@@ -53,20 +79,45 @@ LeaveOutResult evaluateLeaveOut(const Take& take, const std::vector<Eigen::Index
         continue;
       const auto row = static_cast<Eigen::Index>(h);
       const Eigen::Vector3d actual = hiddenRest.row(row).transpose() + truth.row(row).transpose();
-      const double error = (hiddenPoints[h].on(deformed) - actual).norm() / retarget.uniformScale;
-      sum += error;
-      squares += error * error;
-      result.maxError = std::max(result.maxError, error);
-      restSum += truth.row(row).norm() / retarget.uniformScale;
-      ++result.samples;
+      result.add((hiddenPoints[h].on(deformed) - actual).norm() / retarget.uniformScale,
+                 truth.row(row).norm() / retarget.uniformScale);
     }
   }
-  if (result.samples > 0) {
-    const auto n = static_cast<double>(result.samples);
-    result.meanError = sum / n;
-    result.rmsError = std::sqrt(squares / n);
-    result.restError = restSum / n;
+  result.finish();
+  return result;
+}
+
+LeaveOutResult evaluateBlendshapeLeaveOut(const BlendshapeSolver& solver, const Take& take,
+                                          const LeaveOutOptions& options)
+{
+  const std::vector<Eigen::Index>& markers = solver.markers();
+  LeaveOutResult result;
+  result.hidden = chooseHiddenMarkers(markers.size(), options);
+  std::vector<bool> use(markers.size(), true);
+  for (const Eigen::Index h : result.hidden)
+    use[static_cast<std::size_t>(h)] = false;
+  const BlendshapeSolveResult solved = solver.solve(take, use);
+  std::vector<Eigen::Index> hiddenMarkers;
+  for (const Eigen::Index h : result.hidden)
+    hiddenMarkers.push_back(markers[static_cast<std::size_t>(h)]);
+  const Retarget& retarget = solver.retarget();
+  PointSet truth;
+  std::vector<bool> present;
+  for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+    if (solved.held[static_cast<std::size_t>(f)])
+      continue;
+    controlDisplacements(take, hiddenMarkers, solver.neutralFrame(), retarget, f, truth, present);
+    const Eigen::VectorXd w = solved.weights.row(f).transpose();
+    for (std::size_t i = 0; i < result.hidden.size(); ++i) {
+      if (!present[i])
+        continue;
+      const Eigen::Vector3d predicted = solver.shapeMatrix().middleRows<3>(3 * result.hidden[i]) * w;
+      const auto row = static_cast<Eigen::Index>(i);
+      result.add((predicted - truth.row(row).transpose()).norm() / retarget.uniformScale,
+                 truth.row(row).norm() / retarget.uniformScale);
+    }
   }
+  result.finish();
   return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
+#include "mocap/base/parallel_for.h"
 #include "mocap/base/random.h"
 #include "mocap/math/pca.h"
 #include "mocap/layout/subset_error.h"
@@ -11,12 +12,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <unordered_map>
 
 namespace mocap {
@@ -29,12 +28,7 @@ int threadCount(const RunControl& control)
 {
   if (control.threads > 0)
     return control.threads;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
-bool cancelled(const RunControl& control)
-{
-  return control.cancel != nullptr && control.cancel->load(std::memory_order_relaxed);
+  return hardwareThreads();
 }
 
 // Rate-limited progress on the calling thread.
@@ -57,51 +51,6 @@ private:
   const RunControl& m_control;
   Clock::time_point m_last = Clock::now() - std::chrono::seconds(1);
 };
-
-// Runs body(i) for every i in [0, count) on `threads` threads, the caller being one of them and
-// calling tick() between its items. Indices are handed out in order; results must be stored by
-// index so they do not depend on the thread count. Returns false when cancelled. The first
-// exception a body throws is rethrown here after every thread has stopped.
-template <typename Body>
-bool parallelFor(std::size_t count, int threads, const RunControl& control, Body&& body,
-                 const std::function<void()>& tick)
-{
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  const auto work = [&](bool caller) {
-    while (!stop.load(std::memory_order_relaxed)) {
-      if (cancelled(control)) {
-        stop = true;
-        break;
-      }
-      const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
-      if (i >= count)
-        break;
-      try {
-        body(i);
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failureMutex);
-        if (!failure)
-          failure = std::current_exception();
-        stop = true;
-      }
-      if (caller && tick)
-        tick();
-    }
-  };
-  std::vector<std::thread> pool;
-  const auto extra = static_cast<std::size_t>(std::max(0, threads - 1));
-  for (std::size_t t = 0; t < std::min(extra, count > 0 ? count - 1 : 0); ++t)
-    pool.emplace_back(work, false);
-  work(true);
-  for (auto& thread : pool)
-    thread.join();
-  if (failure)
-    std::rethrow_exception(failure);
-  return !cancelled(control);
-}
 
 void checkSymmetry(const MarkerSymmetry& symmetry, Eigen::Index markers)
 {
@@ -225,7 +174,7 @@ PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const Marke
       reporter.report((doneBefore + static_cast<double>(k) * static_cast<double>(doneRestarts.load())) /
                       totalWork);
     };
-    if (!parallelFor(restarts, threads, control, body, tick)) {
+    if (!parallelFor(restarts, threads, body, control.cancel, tick)) {
       sweep.cancelled = true;
       break;
     }
@@ -438,7 +387,7 @@ std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetE
   const auto tick = [&] {
     reporter.report(static_cast<double>(done.load()) / static_cast<double>(sizes.size()));
   };
-  if (!parallelFor(sizes.size(), threadCount(control), control, body, tick))
+  if (!parallelFor(sizes.size(), threadCount(control), body, control.cancel, tick))
     return {};
 
   // Sizes searched independently can come out worse than a smaller size plus one unit. In
@@ -710,7 +659,7 @@ LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& sy
     reporter.report(greedyEnd + (1.0 - greedyEnd) * static_cast<double>(done.load()) /
                                     static_cast<double>(std::max<std::size_t>(jobs.size(), 1)));
   };
-  if (!parallelFor(jobs.size(), threadCount(control), control, body, tick)) {
+  if (!parallelFor(jobs.size(), threadCount(control), body, control.cancel, tick)) {
     plan.cancelled = true;
     plan.sizes.clear();
     return plan;

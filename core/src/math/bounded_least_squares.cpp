@@ -25,7 +25,7 @@ enum class Bound : std::uint8_t
 
 BoundedLeastSquares::BoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
                                          const Eigen::Ref<const Eigen::VectorXd>& lower,
-                                         const Eigen::Ref<const Eigen::VectorXd>& upper)
+                                         const Eigen::Ref<const Eigen::VectorXd>& upper, double ridge)
     : m_a(a), m_lower(lower), m_upper(upper)
 {
   const Eigen::Index k = a.cols();
@@ -41,9 +41,11 @@ BoundedLeastSquares::BoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>
     throw InvalidArgument("bounded least squares: the bounds must be finite");
   if ((lower.array() > upper.array()).any())
     throw InvalidArgument("bounded least squares: a lower bound exceeds its upper bound");
+  if (!(ridge >= 0.0) || !std::isfinite(ridge))
+    throw InvalidArgument("bounded least squares: the ridge must be finite and ≥ 0");
   m_gram = a.transpose() * a;
-  const double ridge = 1e-12 * std::max(m_gram.trace() / static_cast<double>(k), 1e-300);
-  m_gram.diagonal().array() += ridge;
+  const double leastNorm = 1e-12 * std::max(m_gram.trace() / static_cast<double>(k), 1e-300);
+  m_gram.diagonal().array() += leastNorm + ridge;
 }
 
 Eigen::VectorXd BoundedLeastSquares::solve(const Eigen::Ref<const Eigen::VectorXd>& b,

@@ -16,12 +16,13 @@ namespace mocap {
 class BoundedLeastSquares
 {
 public:
-  /// `a` is #equations × #weights. O(#equations · #weights²).
+  /// `a` is #equations × #weights. With `ridge` > 0 the problem is min ‖A·w − b‖² + ridge·‖w‖²
+  /// (added to AᵀA's diagonal). O(#equations · #weights²).
   /// Throws InvalidArgument for no weights, a non-finite entry, bounds of the wrong size,
-  /// non-finite bounds or lower > upper.
+  /// non-finite bounds, lower > upper or a negative or non-finite ridge.
   BoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
                       const Eigen::Ref<const Eigen::VectorXd>& lower,
-                      const Eigen::Ref<const Eigen::VectorXd>& upper);
+                      const Eigen::Ref<const Eigen::VectorXd>& upper, double ridge = 0.0);
 
   [[nodiscard]] Eigen::Index weightCount() const { return m_gram.rows(); }
   [[nodiscard]] Eigen::Index equationCount() const { return m_a.rows(); }
