@@ -43,5 +43,8 @@ Command addBind(CLI::App& mocap);
 /// `mocap deform --mesh FACE.obj --binding BIND.json --take TAKE -o OUT`: RBF or Laplacian
 /// face-mesh deformation driven by the take's markers.
 Command addDeform(CLI::App& mocap);
+/// `mocap solve --mesh NEUTRAL.obj --shapes DIR --binding BIND.json --take TAKE -o OUT`: the
+/// take's blendshape weights on a rig (bvls, ridge, temporal), as CSV curves or a PC2 cache.
+Command addSolve(CLI::App& mocap);
 
 } // namespace mocap::cli

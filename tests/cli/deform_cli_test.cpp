@@ -1,14 +1,16 @@
-// `mocap bind` and `mocap deform` end to end on the bundled take and the MediaPipe face.
+// `mocap bind`, `mocap deform` and `mocap solve` end to end on the bundled take and the MediaPipe face.
 #include "../core/test_support.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
 #include "mocap/io/pc2_io.h"
+#include "mocap/io/obj_io.h"
 #include "mocap/io/ply_io.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <sstream>
 #include <sys/wait.h>
 
 namespace mocap {
@@ -137,6 +139,115 @@ TEST(DeformCli, BadUsageAndBadInputGiveClearErrors)
               dir);
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.err.find("at least 3 correspondences"), std::string::npos) << run.err;
+}
+
+// A rig of the MediaPipe face with three shapes, each lifting a patch of vertices, in ICT
+// FaceKit's layout (neutral OBJ plus a folder of shapes named after them).
+void writeSmallRig(const test::TempDir& dir)
+{
+  const Mesh face = readObj(test::dataFile("face_mesh/canonical_face_model.obj"));
+  writeObj(dir.file("neutral.obj"), face);
+  std::filesystem::create_directory(dir.file("shapes"));
+  const char* names[] = {"jawOpen", "browInnerUp", "mouthSmile_L"};
+  for (int s = 0; s < 3; ++s) {
+    MeshVertices posed = face.vertices;
+    const Eigen::RowVector3d centre = face.vertices.row(40 + 150 * s);
+    for (Eigen::Index v = 0; v < posed.rows(); ++v) {
+      const double falloff = std::exp(-(posed.row(v) - centre).squaredNorm() / 9.0);
+      if (falloff > 1e-3)
+        posed(v, s % 3) += 0.6 * falloff;
+    }
+    writeObj(dir.path() / "shapes" / (std::string(names[s]) + ".obj"), face, posed);
+  }
+}
+
+std::vector<std::string> csvLines(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+std::string solveArguments(const test::TempDir& dir)
+{
+  return "solve --mesh '" + dir.file("neutral.obj").string() + "' --shapes '" + dir.file("shapes").string() +
+         "' --binding '" + test::dataFile("../../resources/sample/Facial-Sing.binding.json").string() + "' --take " +
+         sample() + " " + kStabilize;
+}
+
+TEST(SolveCli, WritesWeightCurvesInBothLayoutsAndTheIssueJsonKeys)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string curves = dir.file("weights.csv").string();
+  const Outcome run = mocap(solveArguments(dir) + " -o '" + curves + "' --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue json = parseJson(run.out, "solve --json");
+  EXPECT_EQ(json.find("method", "solve")->string("method"), "temporal");
+  for (const char* key : {"lambda", "setup_seconds", "frames_per_second", "leave_out_error_mm"})
+    EXPECT_TRUE(json.find(key, "solve")->isNumber()) << key;
+  const JsonValue& residual = *json.find("residual_mm", "solve");
+  for (const char* key : {"mean", "p95", "max"})
+    EXPECT_GE(residual.find(key, "residual")->number(key), 0.0) << key;
+  EXPECT_TRUE(json.find("active_shapes", "solve")->isArray());
+  EXPECT_EQ(json.find("markers", "solve")->number("markers"), 31.0);
+
+  const std::vector<std::string> plain = csvLines(readFileBytes(curves));
+  ASSERT_EQ(plain.size(), 3001u);  // header + the take's 3000 frames
+  EXPECT_EQ(plain[0], "Frame,Time,browInnerUp,jawOpen,mouthSmile_L");
+  EXPECT_EQ(plain[1].substr(0, 4), "1,0,");
+  for (std::size_t i = 1; i < plain.size(); i += 97) {
+    std::istringstream row(plain[i]);
+    std::string cell;
+    for (int c = 0; std::getline(row, cell, ','); ++c)
+      if (c >= 2) {
+        EXPECT_GE(std::stod(cell), 0.0);
+        EXPECT_LE(std::stod(cell), 1.0);
+      }
+  }
+
+  const std::string live = dir.file("live.csv").string();
+  const Outcome liveRun = mocap(solveArguments(dir) + " --method bvls --format livelink --leave-out 0 -o '" + live + "'", dir);
+  ASSERT_EQ(liveRun.exitCode, 0) << liveRun.err;
+  const std::vector<std::string> liveLines = csvLines(readFileBytes(live));
+  ASSERT_EQ(liveLines.size(), 3001u);
+  EXPECT_EQ(liveLines[0], "Timecode,BlendShapeCount,browInnerUp,jawOpen,mouthSmile_L");
+  EXPECT_EQ(liveLines[1].substr(0, 18), "00:00:00:00.000,3,");
+  EXPECT_EQ(liveLines[2].substr(0, 18), "00:00:00:01.000,3,");
+}
+
+TEST(SolveCli, WritesTheSolvedMeshAsAPointCache)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string cache = dir.file("solved.pc2").string();
+  const Outcome run = mocap(solveArguments(dir) + " --method ridge --leave-out 0 -o '" + cache + "'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.out.find("solved 3000 frames to 3 shapes from 31 markers"), std::string::npos) << run.out;
+  const PointCache pc2 = readPc2(cache);
+  EXPECT_EQ(pc2.samples.size(), 3000u);
+  EXPECT_EQ(pc2.samples.front().rows(), 468);
+}
+
+TEST(SolveCli, BadRigsAndOutputsGiveClearErrors)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  Outcome run = mocap(solveArguments(dir) + " -o '" + dir.file("w.txt").string() + "'", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find(".csv"), std::string::npos) << run.err;
+  run = mocap("solve --mesh '" + dir.file("neutral.obj").string() + "' --binding b.json --take " + sample() + " -o w.csv", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find("--shapes"), std::string::npos) << run.err;
+  std::filesystem::create_directory(dir.file("empty"));
+  run = mocap("solve --mesh '" + dir.file("neutral.obj").string() + "' --shapes '" + dir.file("empty").string() +
+                  "' --binding b.json --take " + sample() + " -o '" + dir.file("w.csv").string() + "'",
+              dir);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("has no .obj shapes"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("w.csv")));
 }
 
 } // namespace

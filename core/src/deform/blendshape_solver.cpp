@@ -201,11 +201,15 @@ int solveTemporal(const Eigen::MatrixXd& a, const Observations& o, double ridge,
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
   const Eigen::MatrixXd& v = eigen.eigenvectors();
   const Eigen::VectorXd g = eigen.eigenvalues().cwiseMax(0.0);
-  const double rho = std::max(g.mean() + ridge, 1e-300);
-  std::vector<BandedCholesky> factors;
-  factors.reserve(static_cast<std::size_t>(shapes));
-  for (Eigen::Index k = 0; k < shapes; ++k)
-    factors.emplace_back(temporalBand(frames, g(k) + ridge + rho, mu));
+  // ρ starts at a tenth of the mean eigenvalue and is rebalanced (Boyd et al. §3.4.1) whenever
+  // one residual outgrows the other tenfold; refactorising is O(#frames · #shapes).
+  double rho = std::max(0.1 * g.mean() + ridge, 1e-300);
+  std::vector<BandedCholesky> factors(static_cast<std::size_t>(shapes));
+  const auto factorise = [&] {
+    for (Eigen::Index k = 0; k < shapes; ++k)
+      factors[static_cast<std::size_t>(k)] = BandedCholesky(temporalBand(frames, g(k) + ridge + rho, mu));
+  };
+  factorise();
 
   // Aᵀb of the present rows, and per incomplete frame its missing markers.
   Eigen::MatrixXd atb = o.b * a;
@@ -248,6 +252,12 @@ int solveTemporal(const Eigen::MatrixXd& a, const Observations& o, double ridge,
     z = zNew;
     if (primal < kTolerance * scale && dual < kTolerance * scale)
       break;
+    if (primal > 10.0 * dual || dual > 10.0 * primal) {
+      const double factor = primal > dual ? 2.0 : 0.5;
+      rho *= factor;
+      u /= factor;
+      factorise();
+    }
     if (iteration % 16 == 0)
       control.checkpoint(static_cast<double>(iteration) / kMaxIterations);
   }

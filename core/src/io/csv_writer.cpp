@@ -11,11 +11,7 @@
 
 namespace mocap {
 
-namespace {
-
-
-// RFC 4180: a field with a comma, quote or line break is quoted, its quotes doubled. O(field).
-void appendField(std::string& out, const std::string& field)
+void appendCsvField(std::string& out, const std::string& field)
 {
   if (field.find_first_of(",\"\r\n") == std::string::npos) {
     out += field;
@@ -30,8 +26,6 @@ void appendField(std::string& out, const std::string& field)
   out += '"';
 }
 
-} // namespace
-
 std::string formatCsv(const Take& take)
 {
   std::string out;
@@ -39,7 +33,7 @@ std::string formatCsv(const Take& take)
   for (const std::string& label : take.labels()) {
     for (const char* axis : {":X", ":Y", ":Z"}) {
       out += ',';
-      appendField(out, label + axis);
+      appendCsvField(out, label + axis);
     }
   }
   out += '\n';

@@ -52,7 +52,7 @@ BlendshapeRig readObjRig(const std::filesystem::path& neutral, const std::filesy
   rig.neutral = readMesh(neutral);
   const std::vector<std::filesystem::path> files = selectFiles(shapeFiles(neutral, shapeFolder), only, shapeFolder);
   if (files.empty())
-    throw InvalidArgument("shape folder '" + shapeFolder.string() + "' has no .obj shapes");
+    throw IoError("shape folder '" + shapeFolder.string() + "' has no .obj shapes");
   // Unmoved vertices are written with the neutral's digits; the tolerance only absorbs rounding.
   const double tolerance = 1e-9 * std::max(rig.neutral.size(), 1e-300);
   rig.shapes.resize(files.size());

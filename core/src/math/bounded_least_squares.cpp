@@ -102,14 +102,13 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
       if (freeSet.empty())
         break;
       const auto nf = static_cast<Eigen::Index>(freeSet.size());
-      for (Eigen::Index a = 0; a < nf; ++a) {
-        const Eigen::Index fa = freeSet[static_cast<std::size_t>(a)];
-        for (Eigen::Index b = 0; b <= a; ++b)
-          block(a, b) = h(fa, freeSet[static_cast<std::size_t>(b)]);
-        rhs(a) = atb(fa) - h.row(fa).dot(fixed);
-      }
-      Eigen::Ref<Eigen::MatrixXd> view = block.topLeftCorner(nf, nf);
+      for (Eigen::Index a = 0; a < nf; ++a)
+        rhs(a) = atb(freeSet[static_cast<std::size_t>(a)]) - h.row(freeSet[static_cast<std::size_t>(a)]).dot(fixed);
       z.head(nf) = rhs.head(nf);
+      for (Eigen::Index a = 0; a < nf; ++a)
+        for (Eigen::Index b = 0; b <= a; ++b)
+          block(a, b) = h(freeSet[static_cast<std::size_t>(a)], freeSet[static_cast<std::size_t>(b)]);
+      Eigen::Ref<Eigen::MatrixXd> view = block.topLeftCorner(nf, nf);
       const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(view);
       if (llt.info() == Eigen::Success) {
         llt.solveInPlace(z.head(nf));
@@ -159,24 +158,24 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
       if (++step >= maxSteps)
         return w;
     }
-    // KKT: a bound weight whose gradient points into the box is freed (the most violating one).
+    // KKT: every bound weight whose gradient points into the box is freed at once (freeing one
+    // per step, as Lawson & Hanson do, costs a factorisation per weight that enters). The
+    // subspace step that follows starts from a feasible point, so the objective still decreases.
     gradient.noalias() = h * w;
     gradient -= atb;
-    Eigen::Index worst = -1;
-    double worstViolation = tolerance;
+    bool freed = false;
     for (Eigen::Index i = 0; i < k; ++i) {
       const Bound s = state[static_cast<std::size_t>(i)];
       if (s == Bound::Free || m_lower(i) == m_upper(i))
         continue;
       const double violation = s == Bound::Lower ? -gradient(i) : gradient(i);
-      if (violation > worstViolation) {
-        worstViolation = violation;
-        worst = i;
+      if (violation > tolerance) {
+        state[static_cast<std::size_t>(i)] = Bound::Free;
+        freed = true;
       }
     }
-    if (worst < 0)
+    if (!freed)
       return w;
-    state[static_cast<std::size_t>(worst)] = Bound::Free;
   }
   return w;
 }

@@ -15,6 +15,10 @@ namespace mocap {
 /// when the frame numbers would overflow. O(#frames · #markers).
 [[nodiscard]] std::string formatCsv(const Take& take);
 
+/// Appends one CSV field per RFC 4180: a field with a comma, quote or line break is quoted, its
+/// quotes doubled. O(field).
+void appendCsvField(std::string& out, const std::string& field);
+
 /// Writes formatCsv(take) atomically. Throws IoError. O(#frames · #markers).
 void writeCsv(const Take& take, const std::filesystem::path& path);
 

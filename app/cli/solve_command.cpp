@@ -1,0 +1,263 @@
+// `mocap solve`: solves a take to the weights of a blendshape rig through a marker binding and
+// writes weight curves (CSV) or the solved mesh as a PC2 point cache.
+#include "take_input.h"
+#include "arguments.h"
+#include "cli_error.h"
+#include "commands.h"
+
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/deform/blendshape_solver.h"
+#include "mocap/deform/retarget.h"
+#include "mocap/evaluation/deformation_evaluation.h"
+#include "mocap/io/mesh_sequence_writer.h"
+#include "mocap/io/obj_rig_reader.h"
+#include "mocap/io/weights_csv_writer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+namespace mocap::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The options of `mocap solve`; BlendshapeSolveOptions and LeaveOutOptions hold the defaults the usage shows.
+struct SolveArguments
+{
+  std::string meshPath, shapesPath, bindingPath, takePath, out;
+  BlendshapeSolveOptions settings;
+  std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
+  std::string format = "plain";
+  std::optional<std::string> stabilize, only;
+  LeaveOutOptions leaveOut;
+  bool json = false;
+};
+
+/// A shape counts as active when its weight reaches this somewhere in the take.
+constexpr double kActiveWeight = 0.01;
+
+struct ResidualSummary
+{
+  double mean = 0.0, p95 = 0.0, max = 0.0;
+};
+
+ResidualSummary summarize(const Eigen::VectorXd& residual)
+{
+  std::vector<double> values;
+  for (const double r : residual)
+    if (std::isfinite(r))
+      values.push_back(r);
+  ResidualSummary s;
+  if (values.empty())
+    return s;
+  std::sort(values.begin(), values.end());
+  for (const double v : values)
+    s.mean += v / static_cast<double>(values.size());
+  s.p95 = values[std::min(values.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(values.size())))];
+  s.max = values.back();
+  return s;
+}
+
+BlendshapeRig readRig(const SolveArguments& arguments)
+{
+  const std::string extension = lowerExtension(arguments.meshPath);
+  if (extension == "glb" || extension == "gltf")
+    throw UsageError("glTF rigs are not read yet; give the neutral OBJ and --shapes DIR");
+  if (arguments.shapesPath.empty())
+    throw UsageError("--shapes DIR is needed with an OBJ/PLY neutral");
+  const std::vector<std::string> only = arguments.only ? splitList(*arguments.only, "--only") : std::vector<std::string>{};
+  return readObjRig(arguments.meshPath, arguments.shapesPath, only);
+}
+
+/// Weight curves for .csv, else (checkOutput allowed only .pc2) the solved mesh as a point cache.
+void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
+                 const Take& take, const BlendshapeSolveResult& result)
+{
+  const std::string extension = lowerExtension(out);
+  if (extension == "csv") {
+    writeWeightsCsv(out, rig.shapeNames(), result.weights, take.firstFrame(), take.frameRate(),
+                    arguments.format == "livelink" ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
+    return;
+  }
+  MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
+                          std::filesystem::path(arguments.meshPath).stem().string(),
+                          static_cast<float>(take.firstFrame()));
+  MeshVertices posed;
+  for (Eigen::Index f = 0; f < result.weights.rows(); ++f) {
+    rig.evaluate(result.weights.row(f).transpose(), posed);
+    sink.add(posed);
+  }
+  sink.finish();
+}
+
+/// Checked before any work, so a wrong name does not cost a solve.
+void checkOutput(const std::filesystem::path& out)
+{
+  const std::string extension = lowerExtension(out);
+  if (extension != "csv" && extension != "pc2")
+    throw UsageError("-o must be a .csv (weight curves) or a .pc2 (solved mesh) file, not '" + out.string() + "'");
+}
+
+void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
+               const Take& take, const BlendshapeSolveResult& result, double loadSeconds,
+               const std::optional<LeaveOutResult>& quality)
+{
+  const ResidualSummary residual = summarize(result.residual);
+  const auto frames = static_cast<double>(result.weights.rows());
+  JsonWriter json;
+  json.beginObject();
+  json.key("method").value(blendshapeSolveMethodName(solver.options().method));
+  json.key("lambda").value(result.lambda);
+  json.key("lambda_chosen").value(result.lambdaChosen);
+  if (solver.options().method == BlendshapeSolveMethod::Temporal) {
+    json.key("smoothness").value(solver.options().smoothness);
+    json.key("iterations").value(static_cast<std::int64_t>(result.iterations));
+  }
+  json.key("sparsity").value(solver.options().sparsity);
+  json.key("shapes").value(static_cast<std::int64_t>(rig.shapeCount()));
+  json.key("markers").value(static_cast<std::int64_t>(solver.markers().size()));
+  json.key("frames").value(static_cast<std::int64_t>(result.weights.rows()));
+  json.key("neutral_frame").value(static_cast<std::int64_t>(take.firstFrame() + solver.neutralFrame()));
+  json.key("held_frames").value(static_cast<std::int64_t>(std::count(result.held.begin(), result.held.end(), true)));
+  json.key("rig_load_seconds").value(loadSeconds);
+  json.key("setup_seconds").value(solver.setupSeconds());
+  json.key("solve_seconds").value(result.solveSeconds);
+  json.key("frames_per_second").value(result.solveSeconds > 0.0 ? frames / result.solveSeconds : 0.0);
+  json.key("residual_mm").beginObject();
+  json.key("mean").value(residual.mean);
+  json.key("p95").value(residual.p95);
+  json.key("max").value(residual.max);
+  json.endObject();
+  if (quality) {
+    json.key("leave_out_error_mm").value(quality->meanError);
+    json.key("leave_out").beginObject();
+    json.key("fraction").value(arguments.leaveOut.fraction);
+    json.key("seed").value(static_cast<std::int64_t>(arguments.leaveOut.seed));
+    json.key("hidden").beginArray();
+    for (const Eigen::Index h : quality->hidden)
+      json.value(solver.labels()[static_cast<std::size_t>(h)]);
+    json.endArray();
+    json.key("samples").value(static_cast<std::int64_t>(quality->samples));
+    json.key("rms_mm").value(quality->rmsError);
+    json.key("max_mm").value(quality->maxError);
+    json.key("rest_error_mm").value(quality->restError);
+    json.endObject();
+  } else {
+    json.key("leave_out_error_mm").null();
+  }
+  json.key("active_shapes").beginArray();
+  for (Eigen::Index s = 0; s < rig.shapeCount(); ++s) {
+    const double peak = result.weights.rows() > 0 ? result.weights.col(s).maxCoeff() : 0.0;
+    if (peak < kActiveWeight)
+      continue;
+    json.beginObject();
+    json.key("name").value(rig.shapes[static_cast<std::size_t>(s)].name);
+    json.key("max").value(peak);
+    json.key("mean").value(result.weights.col(s).mean());
+    json.endObject();
+  }
+  json.endArray();
+  json.key("output").value(arguments.out);
+  json.endObject();
+  std::cout << json.str() << '\n';
+}
+
+int runSolve(const SolveArguments& arguments)
+{
+  checkOutput(arguments.out);
+  BlendshapeSolveOptions settings = arguments.settings;
+  settings.method = parseBlendshapeSolveMethod(arguments.method).value();
+  const Clock::time_point loadStart = Clock::now();
+  const BlendshapeRig rig = readRig(arguments);
+  const double loadSeconds = secondsSince(loadStart);
+  Take take = readInputTake(arguments.takePath);
+  if (arguments.stabilize)
+    (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
+  const BlendshapeSolver solver(rig, readBinding(arguments.bindingPath, rig.neutral.vertexCount()), take, settings);
+  const BlendshapeSolveResult result = solver.solve(take);
+  writeOutput(arguments.out, arguments, rig, take, result);
+  std::optional<LeaveOutResult> quality;
+  if (arguments.leaveOut.fraction > 0.0)
+    quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
+
+  if (arguments.json) {
+    printJson(arguments, rig, solver, take, result, loadSeconds, quality);
+    return kExitOk;
+  }
+  const ResidualSummary residual = summarize(result.residual);
+  const auto held = std::count(result.held.begin(), result.held.end(), true);
+  std::cout << "solved " << result.weights.rows() << " frames to " << rig.shapeCount() << " shapes from "
+            << solver.markers().size() << " markers (" << arguments.method << ", λ " << result.lambda
+            << (result.lambdaChosen ? " by GCV" : "") << ")\nrig " << fixedNumber(loadSeconds, 3) << " s, set-up "
+            << fixedNumber(solver.setupSeconds(), 3) << " s, solve " << fixedNumber(result.solveSeconds, 3)
+            << " s\nmarker residual " << fixedNumber(residual.mean, 2) << " mm mean, " << fixedNumber(residual.p95, 2)
+            << " mm p95, " << fixedNumber(residual.max, 2) << " mm max\n";
+  if (held > 0)
+    std::cout << "warning: " << held << " frames had too few markers and hold the previous frame's weights\n";
+  if (quality)
+    std::cout << "leave-" << quality->hidden.size() << "-markers-out error " << fixedNumber(quality->meanError, 2)
+              << " mm mean (face at rest: " << fixedNumber(quality->restError, 2) << " mm)\n";
+  std::cout << "wrote " << arguments.out << '\n';
+  return kExitOk;
+}
+
+} // namespace
+
+Command addSolve(CLI::App& mocap)
+{
+  CLI::App* command = mocap.add_subcommand(
+      "solve", "solve the take to a blendshape rig's weights; weight curves (CSV) or the solved mesh (PC2)");
+  const auto a = std::make_shared<SolveArguments>();
+  BlendshapeSolveOptions& settings = a->settings;
+  command->add_option("--mesh", a->meshPath, "the rig's neutral mesh (.obj, .ply)")->required()->type_name("NEUTRAL.obj");
+  command->add_option("--shapes", a->shapesPath, "folder with one OBJ per shape, named after it")->type_name("DIR");
+  command->add_option("--binding", a->bindingPath, "the binding mocap bind wrote")->required()->type_name("BIND.json");
+  command->add_option("--take", a->takePath, "the take to solve")->required()->type_name("TAKE");
+  wholeNumberIn(command->add_option("--neutral", settings.neutralFrame,
+                                    "the neutral frame (default: the first with every bound marker)")
+                    ->type_name("FRAME"),
+                -(1LL << 40), 1LL << 40);
+  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+      ->type_name("LABELS");
+  oneOf(command->add_option("--method", a->method, "solve"), blendshapeSolveMethodNames())->capture_default_str();
+  numberIn(command->add_option("--lambda", settings.lambda,
+                               "ridge weight λ relative to the shapes' mean squared motion (default: by GCV)")
+               ->type_name("L"),
+           0.0, 1e6);
+  numberIn(command->add_option("--smoothness", settings.smoothness,
+                               "temporal: weight of the weights' second differences, as at 100 Hz")
+               ->type_name("S"),
+           0.0, 1e6)
+      ->capture_default_str();
+  numberIn(command->add_option("--sparsity", settings.sparsity, "L1 weight pulling unused shapes to 0")->type_name("S"),
+           0.0, 1e3)
+      ->capture_default_str();
+  command->add_option("--only", a->only, "solve only these shapes")->type_name("NAME,...");
+  oneOf(command->add_option("--format", a->format, "CSV layout"), std::string("plain|livelink"))->capture_default_str();
+  numberIn(command->add_option("--leave-out", a->leaveOut.fraction,
+                               "share of markers hidden to measure the error; 0: no measurement")
+               ->type_name("FRACTION"),
+           0.0, 0.9)
+      ->capture_default_str();
+  wholeNumberIn(command->add_option("--seed", a->leaveOut.seed, "which markers are left out")->type_name("S"), 0,
+                1LL << 62)
+      ->capture_default_str();
+  command->add_option("-o", a->out, "weight curves (.csv) or the solved mesh (.pc2, plus OUT.obj)")
+      ->required()
+      ->type_name("OUT.csv|OUT.pc2");
+  command->add_flag("--json", a->json, "print JSON: λ, timing, marker residual, leave-out error, active shapes");
+  return {command, [a] { return runSolve(*a); }};
+}
+
+} // namespace mocap::cli
