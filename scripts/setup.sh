@@ -11,7 +11,7 @@ packages=(
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-l10n-tools
   libvtk9-dev libeigen3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  nlohmann-json3-dev
+  nlohmann-json3-dev libtinygltf-dev
   xvfb xauth libgl1-mesa-dri
 )
 

@@ -10,6 +10,7 @@
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
+#include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
 #include "mocap/io/obj_rig_reader.h"
 #include "mocap/io/weights_csv_writer.h"
@@ -80,7 +81,8 @@ BlendshapeRig readRig(const SolveArguments& arguments)
   return readObjRig(arguments.meshPath, arguments.shapesPath, only);
 }
 
-/// Weight curves for .csv, else (checkOutput allowed only .pc2) the solved mesh as a point cache.
+/// Weight curves for .csv, the rig with its animated weights for .glb, else (checkOutput allowed
+/// only .pc2) the solved mesh as a point cache.
 void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
                  const Take& take, const BlendshapeSolveResult& result)
 {
@@ -88,6 +90,10 @@ void writeOutput(const std::filesystem::path& out, const SolveArguments& argumen
   if (extension == "csv") {
     writeWeightsCsv(out, rig.shapeNames(), result.weights, take.firstFrame(), take.frameRate(),
                     arguments.format == "livelink" ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
+    return;
+  }
+  if (extension == "glb") {
+    writeRigGlb(out, rig, result.weights, take.frameRate());
     return;
   }
   MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
@@ -105,8 +111,9 @@ void writeOutput(const std::filesystem::path& out, const SolveArguments& argumen
 void checkOutput(const std::filesystem::path& out)
 {
   const std::string extension = lowerExtension(out);
-  if (extension != "csv" && extension != "pc2")
-    throw UsageError("-o must be a .csv (weight curves) or a .pc2 (solved mesh) file, not '" + out.string() + "'");
+  if (extension != "csv" && extension != "glb" && extension != "pc2")
+    throw UsageError("-o must be a .csv (weight curves), .glb (rig with animated weights) or .pc2 (solved mesh) file, not '" +
+                     out.string() + "'");
 }
 
 void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
@@ -217,7 +224,7 @@ int runSolve(const SolveArguments& arguments)
 Command addSolve(CLI::App& mocap)
 {
   CLI::App* command = mocap.add_subcommand(
-      "solve", "solve the take to a blendshape rig's weights; weight curves (CSV) or the solved mesh (PC2)");
+      "solve", "solve the take to a blendshape rig's weights; weight curves (CSV), animated rig (GLB) or mesh (PC2)");
   const auto a = std::make_shared<SolveArguments>();
   BlendshapeSolveOptions& settings = a->settings;
   command->add_option("--mesh", a->meshPath, "the rig's neutral mesh (.obj, .ply)")->required()->type_name("NEUTRAL.obj");
@@ -253,9 +260,10 @@ Command addSolve(CLI::App& mocap)
   wholeNumberIn(command->add_option("--seed", a->leaveOut.seed, "which markers are left out")->type_name("S"), 0,
                 1LL << 62)
       ->capture_default_str();
-  command->add_option("-o", a->out, "weight curves (.csv) or the solved mesh (.pc2, plus OUT.obj)")
+  command->add_option("-o", a->out,
+                      "weight curves (.csv), the rig with animated weights (.glb) or the solved mesh (.pc2, plus OUT.obj)")
       ->required()
-      ->type_name("OUT.csv|OUT.pc2");
+      ->type_name("OUT.csv|OUT.glb|OUT.pc2");
   command->add_flag("--json", a->json, "print JSON: λ, timing, marker residual, leave-out error, active shapes");
   return {command, [a] { return runSolve(*a); }};
 }

@@ -8,6 +8,8 @@ marker bones sit where the BVH channels put them. FRAME.obj (one file of an OBJ 
 through the OBJ importer with the vertices of the file. CACHE.pc2's rest mesh (CACHE.obj) gets a
 Mesh Cache modifier on the cache; stepping the scene frames must give the cache's vertices.
 SAMPLE (optional) is the cache sample FRAME.obj was written from, so the two exports agree.
+With `--glb RIG.glb WEIGHTS.csv`, the blendshape rig `mocap solve` wrote goes through the glTF
+importer: its shape keys and their keyed values must match the weight curves of the same solve.
 Prints "PASS: ..." and exits 0, or "FAIL: ..." and exits 1.
 """
 
@@ -242,14 +244,56 @@ def check_pc2(path, sequence_frame=None, sample_of_frame=None):
     return f"PC2 {len(cache)} samples x {len(cache[0])} points through the Mesh Cache modifier"
 
 
+def read_weights_csv(path):
+    """`mocap solve`'s plain weight curves: Frame,Time,<shape>,... and one row per frame."""
+    with open(path) as f:
+        rows = [line.rstrip("\n").split(",") for line in f if line.strip()]
+    return rows[0][2:], [[float(v) for v in row[2:]] for row in rows[1:]]
+
+
+def check_glb(path, csv_path):
+    """The rig GLB through Blender's glTF importer: one shape key per shape, named as in the CSV,
+    and the keyed values equal the CSV's weights (float32 in the file, so within 1e-5)."""
+    names, weights = read_weights_csv(csv_path)
+    before = {o.name for o in bpy.context.scene.objects}
+    bpy.ops.import_scene.gltf(filepath=path)
+    meshes = [o for o in imported_object(before) if o.type == "MESH"]
+    require(len(meshes) == 1, f"the GLB gave {len(meshes)} mesh objects, not 1")
+    key = meshes[0].data.shape_keys
+    require(key is not None, "the imported mesh has no shape keys")
+    blocks = [b.name for b in key.key_blocks][1:]  # the first block is the basis
+    require(blocks == names, f"shape keys {blocks} differ from the CSV's columns {names}")
+    action = key.animation_data.action if key.animation_data else None
+    require(action is not None, "the shape keys are not animated")
+    checked = 0
+    for s, name in enumerate(names):
+        curve = action.fcurves.find(f'key_blocks["{name}"].value')
+        require(curve is not None, f"shape key {name} has no animation curve")
+        values = [k.co[1] for k in curve.keyframe_points]
+        require(len(values) == len(weights), f"{name}: {len(values)} keys for {len(weights)} frames")
+        for f in range(0, len(weights), max(1, len(weights) // 7)):
+            require(abs(values[f] - weights[f][s]) <= 1e-5,
+                    f"{name} frame {f}: Blender keys {values[f]}, the CSV has {weights[f][s]}")
+            checked += 1
+    return f"GLB: {len(names)} shape keys, {checked} keyed values equal the CSV within 1e-5"
+
+
 def main():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    glb = None
+    if "--glb" in args:
+        at = args.index("--glb")
+        glb, args = args[at + 1:at + 3], args[:at] + args[at + 3:]
+        require(len(glb) == 2, "--glb needs RIG.glb WEIGHTS.csv")
     if len(args) not in (3, 4):
-        raise CheckFailed("usage: blender -b --python check_exports.py -- TAKE.bvh FRAME.obj CACHE.pc2 [SAMPLE]")
+        raise CheckFailed("usage: blender -b --python check_exports.py -- TAKE.bvh FRAME.obj CACHE.pc2 [SAMPLE]"
+                          " [--glb RIG.glb WEIGHTS.csv]")
     bvh, frame_obj, pc2 = args[:3]
     sample = int(args[3]) if len(args) == 4 else None
     bpy.ops.wm.read_factory_settings(use_empty=True)
     results = [check_bvh(bvh), check_obj(frame_obj)[1], check_pc2(pc2, frame_obj if sample is not None else None, sample)]
+    if glb:
+        results.append(check_glb(*glb))
     print(f"PASS: Blender {bpy.app.version_string} opened the exports: " + "; ".join(results))
 
 

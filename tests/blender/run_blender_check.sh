@@ -1,6 +1,7 @@
 #!/bin/sh
-# ctest `blender_import`: writes the three animation exports with the built `mocap` CLI (a BVH of
-# the sample take, an OBJ sequence and an OBJ + PC2 cache of the deformed MediaPipe face) and opens
+# ctest `blender_import`: writes the animation exports with the built `mocap` CLI (a BVH of the
+# sample take, an OBJ sequence and an OBJ + PC2 cache of the deformed MediaPipe face, a solved
+# blendshape rig as GLB with its weight curves as CSV) and opens
 # them in Blender with check_exports.py. Exits 77 (reported as skipped) when Blender is missing.
 #   run_blender_check.sh MOCAP BLENDER TEST_DATA_DIR SAMPLE_TAKE
 set -eu
@@ -30,8 +31,26 @@ deform -o "$out/face.pc2"
 deform -o "$out/sequence"
 "$mocap" convert "$sample" "$out/take.bvh" >/dev/null
 
+# A three-shape rig of the same face (each shape lifts a band of vertices along one axis), solved
+# from the same binding to a GLB and to weight curves.
+mkdir "$out/shapes"
+shape() {  # NAME FIRST LAST AXIS(2..4 = x..z column) OFFSET
+  awk -v first="$2" -v last="$3" -v axis="$4" -v offset="$5" \
+    '/^v /{n++; if (n >= first && n <= last) $axis += offset} {print}' "$mesh" >"$out/shapes/$1.obj"
+}
+shape jawOpen 1 40 3 -0.8
+shape browInnerUp 150 190 3 0.5
+shape mouthSmile_L 300 340 2 0.6
+solve() {
+  "$mocap" solve --mesh "$mesh" --shapes "$out/shapes" --binding "$out/bind.json" --take "$sample" \
+    --stabilize "$stabilize" --leave-out 0 "$@" >/dev/null
+}
+solve -o "$out/rig.glb"
+solve -o "$out/weights.csv"
+
 # Frame 5 of the sequence is sample 4 of the cache: the two exports must agree.
 status=0
 "$blender" -b --factory-startup --python-exit-code 1 --python "$here/check_exports.py" -- \
-  "$out/take.bvh" "$out/sequence/canonical_face_model_0005.obj" "$out/face.pc2" 4 || status=$?
+  "$out/take.bvh" "$out/sequence/canonical_face_model_0005.obj" "$out/face.pc2" 4 \
+  --glb "$out/rig.glb" "$out/weights.csv" || status=$?
 exit "$status"

@@ -231,6 +231,21 @@ TEST(SolveCli, WritesTheSolvedMeshAsAPointCache)
   EXPECT_EQ(pc2.samples.front().rows(), 468);
 }
 
+TEST(SolveCli, WritesTheRigWithItsAnimatedWeightsAsGlb)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string glb = dir.file("solved.glb").string(), csv = dir.file("solved.csv").string();
+  ASSERT_EQ(mocap(solveArguments(dir) + " --leave-out 0 -o '" + glb + "'", dir).exitCode, 0);
+  ASSERT_EQ(mocap(solveArguments(dir) + " --leave-out 0 -o '" + csv + "'", dir).exitCode, 0);
+  const std::string bytes = readFileBytes(glb);
+  ASSERT_GT(bytes.size(), 12u);
+  EXPECT_EQ(bytes.substr(0, 4), "glTF");
+  // The GLB holds the same 3000 × 3 weights the CSV does (as float32): 36 000 bytes of animation
+  // output plus the 3000 key times, beside the mesh.
+  EXPECT_GT(bytes.size(), 3000u * 4u * 4u);
+}
+
 TEST(SolveCli, BadRigsAndOutputsGiveClearErrors)
 {
   test::TempDir dir;

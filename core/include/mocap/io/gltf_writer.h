@@ -1,0 +1,26 @@
+#pragma once
+
+#include "mocap/model/blendshape_rig.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+
+namespace mocap {
+
+/// The rig as glTF 2.0 binary (GLB): the neutral mesh (positions and triangles), one morph target
+/// per shape — sparse accessors holding only the moved vertices — named in the mesh's
+/// `extras.targetNames` (which Blender, three.js and Unity read as shape-key names), and, when
+/// `weights` has rows, an animation of the node's `weights` path with one key per frame (frame i
+/// at i / frameRate seconds, linear interpolation). Coordinates are written as float32 in the
+/// rig's units. Throws InvalidArgument for an invalid rig (checkRig), weights with another column
+/// count or outside a finite range, or a non-positive rate. O(#vertices + Σ #moved + #frames · #shapes).
+[[nodiscard]] std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                 double frameRate);
+
+/// Writes rigGlb atomically. Throws as rigGlb and IoError.
+void writeRigGlb(const std::filesystem::path& path, const BlendshapeRig& rig,
+                 const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate);
+
+} // namespace mocap
