@@ -4,8 +4,10 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "leave_out_cli.h"
 
 #include "mocap/evaluation/deformation_evaluation.h"
+#include "mocap/base/stopwatch.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/deform/face_rig.h"
@@ -19,7 +21,6 @@
 #include "mocap/io/take_io.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -29,13 +30,6 @@
 namespace mocap::cli {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// The options of `mocap deform`; FaceRigOptions and LeaveOutOptions hold the defaults the usage shows.
 struct DeformArguments
@@ -113,9 +107,9 @@ int runDeform(const DeformArguments& arguments)
   Eigen::Index framesMissingControls = 0;
   MeshVertices deformed;
   for (Eigen::Index f = begin; f < end; ++f) {
-    const Clock::time_point start = Clock::now();
+    const Stopwatch frameTime;
     framesMissingControls += rig.deform(take, f, deformed) ? 0 : 1;
-    frameSeconds.push_back(secondsSince(start));
+    frameSeconds.push_back(frameTime.seconds());
     sink.add(deformed);
   }
   sink.finish();
@@ -161,20 +155,8 @@ int runDeform(const DeformArguments& arguments)
       json.value(retarget.axisScale(a));
     json.endArray();
     json.key("frames_missing_controls").value(static_cast<std::int64_t>(framesMissingControls));
-    if (quality) {
-      json.key("leave_out").beginObject();
-      json.key("fraction").value(leaveOut.fraction);
-      json.key("seed").value(static_cast<std::int64_t>(leaveOut.seed));
-      json.key("hidden").beginArray();
-      for (const Eigen::Index h : quality->hidden)
-        json.value(rig.labels()[static_cast<std::size_t>(h)]);
-      json.endArray();
-      json.key("samples").value(static_cast<std::int64_t>(quality->samples));
-      json.key("rms_mm").value(quality->rmsError);
-      json.key("max_mm").value(quality->maxError);
-      json.key("rest_error_mm").value(quality->restError);
-      json.endObject();
-    }
+    if (quality)
+      writeLeaveOutJson(json, *quality, leaveOut, rig.labels());
     json.key("output").value(out.string());
     json.endObject();
     std::cout << json.str() << '\n';
@@ -235,14 +217,7 @@ Command addDeform(CLI::App& mocap)
       ->capture_default_str();
   command->add_option("--frames", a->frames, "the frames deformed, as the take numbers them (default: all)")
       ->type_name("FIRST:LAST");
-  numberIn(command->add_option("--leave-out", a->leaveOut.fraction,
-                               "share of markers hidden to measure the error; 0: no measurement")
-               ->type_name("FRACTION"),
-           0.0, 0.9)
-      ->capture_default_str();
-  wholeNumberIn(command->add_option("--seed", a->leaveOut.seed, "which markers are left out")->type_name("S"), 0,
-                1LL << 62)
-      ->capture_default_str();
+  addLeaveOutOptions(*command, a->leaveOut);
   command->add_flag("--ply", a->ply, "write PLY frames (with a folder output)");
   command->add_option("-o", a->out, "a .pc2 point cache (plus OUT.obj), or a folder of one mesh per frame")
       ->required()

@@ -4,7 +4,9 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "leave_out_cli.h"
 
+#include "mocap/base/stopwatch.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/deform/blendshape_solver.h"
@@ -16,7 +18,6 @@
 #include "mocap/io/weights_csv_writer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -25,13 +26,6 @@
 namespace mocap::cli {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// The options of `mocap solve`; BlendshapeSolveOptions and LeaveOutOptions hold the defaults the usage shows.
 struct SolveArguments
@@ -148,18 +142,7 @@ void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const 
   json.endObject();
   if (quality) {
     json.key("leave_out_error_mm").value(quality->meanError);
-    json.key("leave_out").beginObject();
-    json.key("fraction").value(arguments.leaveOut.fraction);
-    json.key("seed").value(static_cast<std::int64_t>(arguments.leaveOut.seed));
-    json.key("hidden").beginArray();
-    for (const Eigen::Index h : quality->hidden)
-      json.value(solver.labels()[static_cast<std::size_t>(h)]);
-    json.endArray();
-    json.key("samples").value(static_cast<std::int64_t>(quality->samples));
-    json.key("rms_mm").value(quality->rmsError);
-    json.key("max_mm").value(quality->maxError);
-    json.key("rest_error_mm").value(quality->restError);
-    json.endObject();
+    writeLeaveOutJson(json, *quality, arguments.leaveOut, solver.labels());
   } else {
     json.key("leave_out_error_mm").null();
   }
@@ -185,9 +168,9 @@ int runSolve(const SolveArguments& arguments)
   checkOutput(arguments.out);
   BlendshapeSolveOptions settings = arguments.settings;
   settings.method = parseBlendshapeSolveMethod(arguments.method).value();
-  const Clock::time_point loadStart = Clock::now();
+  const Stopwatch load;
   const BlendshapeRig rig = readRig(arguments);
-  const double loadSeconds = secondsSince(loadStart);
+  const double loadSeconds = load.seconds();
   Take take = readInputTake(arguments.takePath);
   if (arguments.stabilize)
     (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
@@ -252,14 +235,7 @@ Command addSolve(CLI::App& mocap)
       ->capture_default_str();
   command->add_option("--only", a->only, "solve only these shapes")->type_name("NAME,...");
   oneOf(command->add_option("--format", a->format, "CSV layout"), std::string("plain|livelink"))->capture_default_str();
-  numberIn(command->add_option("--leave-out", a->leaveOut.fraction,
-                               "share of markers hidden to measure the error; 0: no measurement")
-               ->type_name("FRACTION"),
-           0.0, 0.9)
-      ->capture_default_str();
-  wholeNumberIn(command->add_option("--seed", a->leaveOut.seed, "which markers are left out")->type_name("S"), 0,
-                1LL << 62)
-      ->capture_default_str();
+  addLeaveOutOptions(*command, a->leaveOut);
   command->add_option("-o", a->out,
                       "weight curves (.csv), the rig with animated weights (.glb) or the solved mesh (.pc2, plus OUT.obj)")
       ->required()

@@ -1,5 +1,6 @@
 #include "mocap/deform/blendshape_solver.h"
 
+#include "mocap/base/stopwatch.h"
 #include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 #include "mocap/math/banded_cholesky.h"
@@ -8,7 +9,6 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -24,13 +24,7 @@ constexpr EnumTable<BlendshapeSolveMethod, 3> kSolveMethods{{{
     {BlendshapeSolveMethod::Temporal, "temporal"},
 }}};
 
-using Clock = std::chrono::steady_clock;
 using Mask = std::vector<bool>;
-
-double secondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 void checkOptions(const BlendshapeSolveOptions& options)
 {
@@ -322,29 +316,24 @@ BlendshapeSolver::BlendshapeSolver(const BlendshapeRig& rig, const MeshBinding& 
                                    const BlendshapeSolveOptions& options)
     : m_options(options)
 {
-  const Clock::time_point start = Clock::now();
+  const Stopwatch setup;
   checkOptions(options);
   checkRig(rig);
-  if (binding.meshVertices != 0 && binding.meshVertices != rig.neutral.vertexCount())
-    throw InvalidArgument("the binding was made for a mesh of " + std::to_string(binding.meshVertices) +
-                          " vertices, not " + std::to_string(rig.neutral.vertexCount()));
-  for (const MarkerBinding& marker : binding.markers) {
-    m_labels.push_back(marker.label);
-    m_points.push_back(marker.point);
-  }
-  m_markers = markerIndices(take, m_labels);
-  m_neutral = chooseNeutralFrame(take, m_markers, options.neutralFrame);
-  const PointSet bound = boundPositions(rig.neutral.vertices, m_points);
-  m_retarget = fitRetarget(markerPositions(take, m_neutral, m_markers), bound, options.scale);
+  BoundTake bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
+  m_labels = std::move(bound.labels);
+  m_markers = std::move(bound.markers);
+  m_points = std::move(bound.points);
+  m_neutral = bound.neutral;
+  m_retarget = bound.retarget;
   m_a = sampleShapes(rig, m_points);
   m_termScale = std::max(m_a.squaredNorm() / static_cast<double>(m_a.cols()), 1e-300);
-  m_setupSeconds = secondsSince(start);
+  m_setupSeconds = setup.seconds();
 }
 
 BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vector<bool>& use,
                                               const JobControl& control) const
 {
-  const Clock::time_point start = Clock::now();
+  const Stopwatch solveTime;
   if (!use.empty() && use.size() != m_markers.size())
     throw InvalidArgument("blendshape solve: " + std::to_string(use.size()) + " marker flags for " +
                           std::to_string(m_markers.size()) + " bound markers");
@@ -400,7 +389,7 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
                                          m_retarget.uniformScale);
     }
   }
-  result.solveSeconds = secondsSince(start);
+  result.solveSeconds = solveTime.seconds();
   return result;
 }
 

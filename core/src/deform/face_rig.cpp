@@ -2,9 +2,9 @@
 
 #include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
+#include "mocap/base/stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace mocap {
 
@@ -56,25 +56,19 @@ FaceRig::FaceRig(const Mesh& mesh, const MeshBinding& binding, const Take& take,
     throw InvalidArgument("rotation iterations must be 0 … 100, not " + std::to_string(options.rotations));
   if (options.rotations > 0 && options.method != DeformMethod::Laplacian)
     throw InvalidArgument("rotation iterations need Laplacian deformation");
-  if (binding.meshVertices != 0 && binding.meshVertices != mesh.vertexCount())
-    throw InvalidArgument("the binding was made for a mesh of " + std::to_string(binding.meshVertices) +
-                          " vertices, not " + std::to_string(mesh.vertexCount()));
-  for (const MarkerBinding& marker : binding.markers) {
-    m_labels.push_back(marker.label);
-    m_points.push_back(marker.point);
-  }
-  m_markers = markerIndices(take, m_labels);
-  m_neutral = chooseNeutralFrame(take, m_markers, options.neutralFrame);
-  const PointSet bound = boundPositions(mesh.vertices, m_points);
+  BoundTake bound = bindTake(binding, take, mesh.vertices, options.neutralFrame, options.scale);
   if (options.method == DeformMethod::Rbf)
-    checkDistinctControls(bound, 1e-9 * mesh.size(), m_labels);
-  const PointSet neutral = markerPositions(take, m_neutral, m_markers);
-  m_retarget = fitRetarget(neutral, bound, options.scale);
-  m_placement = fitSimilarity(neutral, bound);
+    checkDistinctControls(bound.boundPoints, 1e-9 * mesh.size(), bound.labels);
+  m_placement = fitSimilarity(bound.neutralMarkers, bound.boundPoints);
+  m_labels = std::move(bound.labels);
+  m_markers = std::move(bound.markers);
+  m_points = std::move(bound.points);
+  m_neutral = bound.neutral;
+  m_retarget = bound.retarget;
   m_factory = makeFactory(mesh, options);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch setup;
   m_deformer = m_factory(m_points);
-  m_setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_setupSeconds = setup.seconds();
 }
 
 FaceRig::~FaceRig() = default;

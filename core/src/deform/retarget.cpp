@@ -121,4 +121,23 @@ PointSet boundPositions(const Eigen::Ref<const MeshVertices>& vertices, const st
   return positions;
 }
 
+BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,
+                   std::optional<long long> neutralFrame, RetargetScale scale)
+{
+  if (binding.meshVertices != 0 && binding.meshVertices != rest.rows())
+    throw InvalidArgument("the binding was made for a mesh of " + std::to_string(binding.meshVertices) +
+                          " vertices, not " + std::to_string(rest.rows()));
+  BoundTake bound;
+  for (const MarkerBinding& marker : binding.markers) {
+    bound.labels.push_back(marker.label);
+    bound.points.push_back(marker.point);
+  }
+  bound.markers = markerIndices(take, bound.labels);
+  bound.neutral = chooseNeutralFrame(take, bound.markers, neutralFrame);
+  bound.boundPoints = boundPositions(rest, bound.points);
+  bound.neutralMarkers = markerPositions(take, bound.neutral, bound.markers);
+  bound.retarget = fitRetarget(bound.neutralMarkers, bound.boundPoints, scale);
+  return bound;
+}
+
 } // namespace mocap

@@ -69,4 +69,24 @@ void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& mar
 [[nodiscard]] PointSet boundPositions(const Eigen::Ref<const MeshVertices>& vertices,
                                       const std::vector<MeshPoint>& points);
 
+/// A binding found in a take: the bound markers, their neutral frame and the retarget, the
+/// per-take set-up that FaceRig and BlendshapeSolver share.
+struct BoundTake
+{
+  std::vector<std::string> labels;    ///< binding order
+  std::vector<Eigen::Index> markers;  ///< take marker index per bound marker
+  std::vector<MeshPoint> points;      ///< bound point per marker
+  Eigen::Index neutral = 0;           ///< neutral frame index (0-based)
+  Retarget retarget;
+  PointSet neutralMarkers;            ///< the markers in the neutral frame (take units)
+  PointSet boundPoints;               ///< their bound points on `rest` (mesh units)
+};
+
+/// Finds `binding`'s markers in `take` (markerIndices), picks the neutral frame
+/// (chooseNeutralFrame) and fits the retarget onto the bound points of `rest`. Throws
+/// InvalidArgument for a binding made for another vertex count and as those functions do.
+/// O(#frames · #markers).
+[[nodiscard]] BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,
+                                 std::optional<long long> neutralFrame, RetargetScale scale);
+
 } // namespace mocap
