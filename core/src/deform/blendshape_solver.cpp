@@ -319,13 +319,8 @@ BlendshapeSolver::BlendshapeSolver(const BlendshapeRig& rig, const MeshBinding& 
   const Stopwatch setup;
   checkOptions(options);
   checkRig(rig);
-  BoundTake bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
-  m_labels = std::move(bound.labels);
-  m_markers = std::move(bound.markers);
-  m_points = std::move(bound.points);
-  m_neutral = bound.neutral;
-  m_retarget = bound.retarget;
-  m_a = sampleShapes(rig, m_points);
+  m_bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
+  m_a = sampleShapes(rig, m_bound.points);
   m_termScale = std::max(m_a.squaredNorm() / static_cast<double>(m_a.cols()), 1e-300);
   m_setupSeconds = setup.seconds();
 }
@@ -334,19 +329,18 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
                                               const JobControl& control) const
 {
   const Stopwatch solveTime;
-  if (!use.empty() && use.size() != m_markers.size())
+  if (!use.empty() && use.size() != m_bound.markers.size())
     throw InvalidArgument("blendshape solve: " + std::to_string(use.size()) + " marker flags for " +
-                          std::to_string(m_markers.size()) + " bound markers");
-  if (m_neutral >= take.frameCount() ||
-      std::any_of(m_markers.begin(), m_markers.end(), [&](Eigen::Index m) { return m >= take.markerCount(); }))
+                          std::to_string(m_bound.markers.size()) + " bound markers");
+  if (!m_bound.fits(take))
     throw InvalidArgument("the take no longer has the markers or frames the solver was set up with");
   std::vector<Eigen::Index> used;
   Mask usedRows;
-  for (std::size_t m = 0; m < m_markers.size(); ++m) {
+  for (std::size_t m = 0; m < m_bound.markers.size(); ++m) {
     const bool on = use.empty() || use[m];
     usedRows.push_back(on);
     if (on)
-      used.push_back(m_markers[m]);
+      used.push_back(m_bound.markers[m]);
   }
   if (used.empty())
     throw InvalidArgument("blendshape solve: no marker is used");
@@ -354,7 +348,7 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
   const auto minimum = std::max<std::size_t>(
       std::min<std::size_t>(3, used.size()),
       static_cast<std::size_t>(std::ceil(m_options.minimumMarkerShare * static_cast<double>(used.size()))));
-  const Observations o = observe(take, used, m_neutral, m_retarget, minimum);
+  const Observations o = observe(take, used, m_bound.neutral, m_bound.retarget, minimum);
 
   BlendshapeSolveResult result;
   if (m_options.method == BlendshapeSolveMethod::Bvls) {
@@ -386,7 +380,7 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
       result.residual(f) = std::numeric_limits<double>::quiet_NaN();
     } else {
       result.residual(f) = frameResidual(a, o.b.row(f), o.present[i], result.weights.row(f).transpose(),
-                                         m_retarget.uniformScale);
+                                         m_bound.retarget.uniformScale);
     }
   }
   result.solveSeconds = solveTime.seconds();

@@ -56,18 +56,13 @@ FaceRig::FaceRig(const Mesh& mesh, const MeshBinding& binding, const Take& take,
     throw InvalidArgument("rotation iterations must be 0 … 100, not " + std::to_string(options.rotations));
   if (options.rotations > 0 && options.method != DeformMethod::Laplacian)
     throw InvalidArgument("rotation iterations need Laplacian deformation");
-  BoundTake bound = bindTake(binding, take, mesh.vertices, options.neutralFrame, options.scale);
+  m_bound = bindTake(binding, take, mesh.vertices, options.neutralFrame, options.scale);
   if (options.method == DeformMethod::Rbf)
-    checkDistinctControls(bound.boundPoints, 1e-9 * mesh.size(), bound.labels);
-  m_placement = fitSimilarity(bound.neutralMarkers, bound.boundPoints);
-  m_labels = std::move(bound.labels);
-  m_markers = std::move(bound.markers);
-  m_points = std::move(bound.points);
-  m_neutral = bound.neutral;
-  m_retarget = bound.retarget;
+    checkDistinctControls(m_bound.boundPoints, 1e-9 * mesh.size(), m_bound.labels);
+  m_placement = fitSimilarity(m_bound.neutralMarkers, m_bound.boundPoints);
   m_factory = makeFactory(mesh, options);
   const Stopwatch setup;
-  m_deformer = m_factory(m_points);
+  m_deformer = m_factory(m_bound.points);
   m_setupSeconds = setup.seconds();
 }
 
@@ -78,10 +73,9 @@ bool FaceRig::deform(const Take& take, Eigen::Index frame, MeshVertices& out)
   if (frame < 0 || frame >= take.frameCount())
     throw InvalidArgument("frame " + std::to_string(frame) + " is outside the take (0 … " +
                           std::to_string(take.frameCount() - 1) + ")");
-  if (m_neutral >= take.frameCount() ||
-      std::any_of(m_markers.begin(), m_markers.end(), [&](Eigen::Index m) { return m >= take.markerCount(); }))
+  if (!m_bound.fits(take))
     throw InvalidArgument("the take no longer has the markers or frames the face rig was set up with");
-  controlDisplacements(take, m_markers, m_neutral, m_retarget, frame, m_displacements, m_present);
+  controlDisplacements(take, m_bound.markers, m_bound.neutral, m_bound.retarget, frame, m_displacements, m_present);
   deformFrame(*m_deformer, m_displacements, m_present, m_options.rotations, out);
   return std::all_of(m_present.begin(), m_present.end(), [](bool p) { return p; });
 }

@@ -4,6 +4,7 @@
 #include "mocap/base/error.h"
 #include "mocap/cleaning/head_stabilization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -119,6 +120,12 @@ PointSet boundPositions(const Eigen::Ref<const MeshVertices>& vertices, const st
   for (std::size_t i = 0; i < points.size(); ++i)
     positions.row(static_cast<Eigen::Index>(i)) = points[i].on(vertices).transpose();
   return positions;
+}
+
+bool BoundTake::fits(const Take& take) const
+{
+  return neutral < take.frameCount() &&
+         std::all_of(markers.begin(), markers.end(), [&](Eigen::Index m) { return m < take.markerCount(); });
 }
 
 BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,

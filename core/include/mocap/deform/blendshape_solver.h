@@ -83,11 +83,11 @@ public:
                                             const JobControl& control = {}) const;
 
   [[nodiscard]] const BlendshapeSolveOptions& options() const { return m_options; }
-  [[nodiscard]] const std::vector<std::string>& labels() const { return m_labels; }
-  [[nodiscard]] const std::vector<Eigen::Index>& markers() const { return m_markers; }
-  [[nodiscard]] const std::vector<MeshPoint>& points() const { return m_points; }
-  [[nodiscard]] Eigen::Index neutralFrame() const { return m_neutral; }
-  [[nodiscard]] const Retarget& retarget() const { return m_retarget; }
+  [[nodiscard]] const std::vector<std::string>& labels() const { return m_bound.labels; }
+  [[nodiscard]] const std::vector<Eigen::Index>& markers() const { return m_bound.markers; }
+  [[nodiscard]] const std::vector<MeshPoint>& points() const { return m_bound.points; }
+  [[nodiscard]] Eigen::Index neutralFrame() const { return m_bound.neutral; }
+  [[nodiscard]] const Retarget& retarget() const { return m_bound.retarget; }
   /// The shapes' deltas at the bound points: rows 3m … 3m+2 are marker m's x, y, z (mesh units).
   [[nodiscard]] const Eigen::MatrixXd& shapeMatrix() const { return m_a; }
   /// trace(AᵀA)/#shapes: the unit of λ, μ and the sparsity weight.
@@ -96,11 +96,7 @@ public:
 
 private:
   BlendshapeSolveOptions m_options;
-  std::vector<std::string> m_labels;
-  std::vector<Eigen::Index> m_markers;
-  std::vector<MeshPoint> m_points;
-  Eigen::Index m_neutral = 0;
-  Retarget m_retarget;
+  BoundTake m_bound;
   Eigen::MatrixXd m_a;
   double m_termScale = 1.0;
   double m_setupSeconds = 0.0;

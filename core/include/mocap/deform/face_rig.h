@@ -66,12 +66,12 @@ public:
   bool deform(const Take& take, Eigen::Index frame, MeshVertices& out);
 
   [[nodiscard]] const FaceRigOptions& options() const { return m_options; }
-  [[nodiscard]] const std::vector<std::string>& labels() const { return m_labels; }
+  [[nodiscard]] const std::vector<std::string>& labels() const { return m_bound.labels; }
   /// Take marker index per bound marker, in binding order.
-  [[nodiscard]] const std::vector<Eigen::Index>& markers() const { return m_markers; }
-  [[nodiscard]] const std::vector<MeshPoint>& points() const { return m_points; }
-  [[nodiscard]] Eigen::Index neutralFrame() const { return m_neutral; }
-  [[nodiscard]] const Retarget& retarget() const { return m_retarget; }
+  [[nodiscard]] const std::vector<Eigen::Index>& markers() const { return m_bound.markers; }
+  [[nodiscard]] const std::vector<MeshPoint>& points() const { return m_bound.points; }
+  [[nodiscard]] Eigen::Index neutralFrame() const { return m_bound.neutral; }
+  [[nodiscard]] const Retarget& retarget() const { return m_bound.retarget; }
   /// Take (neutral frame) → mesh: where the rest mesh sits over the neutral markers.
   [[nodiscard]] const Similarity& placement() const { return m_placement; }
   [[nodiscard]] const MeshVertices& rest() const { return m_deformer->rest(); }
@@ -82,11 +82,7 @@ public:
 
 private:
   FaceRigOptions m_options;
-  std::vector<std::string> m_labels;
-  std::vector<Eigen::Index> m_markers;
-  std::vector<MeshPoint> m_points;
-  Eigen::Index m_neutral = 0;
-  Retarget m_retarget;
+  BoundTake m_bound;
   Similarity m_placement;
   DeformerFactory m_factory;
   std::unique_ptr<MeshDeformer> m_deformer;

@@ -80,6 +80,10 @@ struct BoundTake
   Retarget retarget;
   PointSet neutralMarkers;            ///< the markers in the neutral frame (take units)
   PointSet boundPoints;               ///< their bound points on `rest` (mesh units)
+
+  /// Whether `take` still has the neutral frame and every bound marker (the set-up is stale
+  /// otherwise). O(#markers).
+  [[nodiscard]] bool fits(const Take& take) const;
 };
 
 /// Finds `binding`'s markers in `take` (markerIndices), picks the neutral frame
