@@ -14,7 +14,7 @@
 #include "mocap/evaluation/deformation_evaluation.h"
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
-#include "mocap/io/obj_rig_reader.h"
+#include "mocap/io/rig_io.h"
 #include "mocap/io/weights_csv_writer.h"
 
 #include <algorithm>
@@ -64,15 +64,14 @@ ResidualSummary summarize(const Eigen::VectorXd& residual)
   return s;
 }
 
-BlendshapeRig readRig(const SolveArguments& arguments)
+BlendshapeRig readSolveRig(const SolveArguments& arguments)
 {
-  const std::string extension = lowerExtension(arguments.meshPath);
-  if (extension == "glb" || extension == "gltf")
-    throw UsageError("glTF rigs are not read yet; give the neutral OBJ and --shapes DIR");
-  if (arguments.shapesPath.empty())
+  if (!isGltfPath(arguments.meshPath) && arguments.shapesPath.empty())
     throw UsageError("--shapes DIR is needed with an OBJ/PLY neutral");
+  if (isGltfPath(arguments.meshPath) && !arguments.shapesPath.empty())
+    throw UsageError("--shapes is not used with a glTF rig: it holds its own shapes");
   const std::vector<std::string> only = arguments.only ? splitList(*arguments.only, "--only") : std::vector<std::string>{};
-  return readObjRig(arguments.meshPath, arguments.shapesPath, only);
+  return readRig(arguments.meshPath, arguments.shapesPath, only);
 }
 
 /// Weight curves for .csv, the rig with its animated weights for .glb, else (checkOutput allowed
@@ -169,7 +168,7 @@ int runSolve(const SolveArguments& arguments)
   BlendshapeSolveOptions settings = arguments.settings;
   settings.method = parseBlendshapeSolveMethod(arguments.method).value();
   const Stopwatch load;
-  const BlendshapeRig rig = readRig(arguments);
+  const BlendshapeRig rig = readSolveRig(arguments);
   const double loadSeconds = load.seconds();
   Take take = readInputTake(arguments.takePath);
   if (arguments.stabilize)
