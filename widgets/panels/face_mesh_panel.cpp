@@ -97,7 +97,7 @@ void FaceMeshPanel::buildUi()
   meshLayout->addWidget(m_meshLabel);
   auto* files = new QHBoxLayout;
   auto* loadMeshButton = new QPushButton(tr("Load Mesh…"), meshBox);
-  loadMeshButton->setToolTip(tr("A face mesh as OBJ or PLY"));
+  loadMeshButton->setToolTip(tr("A face mesh as OBJ or PLY, or a glTF rig's neutral"));
   connect(loadMeshButton, &QPushButton::clicked, this, &FaceMeshPanel::loadMeshDialog);
   auto* loadBindingButton = new QPushButton(tr("Load Binding…"), meshBox);
   connect(loadBindingButton, &QPushButton::clicked, this, &FaceMeshPanel::loadBindingDialog);
@@ -326,11 +326,16 @@ QString FaceMeshPanel::loadMesh(const QString& path)
     showError(tr("Cannot read the mesh %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())));
     return m_status->text();
   }
+  useMesh(std::move(mesh), path);
+  return {};
+}
+
+void FaceMeshPanel::useMesh(Mesh mesh, const QString& path)
+{
   m_meshLabel->setText(tr("%1: %n vertices", nullptr, static_cast<int>(mesh.vertexCount())).arg(QFileInfo(path).fileName()));
   m_model->setMesh(std::move(mesh));
   m_meshPath = QFileInfo(path).absoluteFilePath();
   updateRigStatus();
-  return {};
 }
 
 QString FaceMeshPanel::loadBinding(const QString& path)
@@ -530,7 +535,7 @@ void FaceMeshPanel::showError(const QString& message)
 void FaceMeshPanel::loadMeshDialog()
 {
   const QString path = QFileDialog::getOpenFileName(this, tr("Load face mesh"), lastFolder(),
-                                                    tr("Meshes (*.obj *.ply);;All files (*)"));
+                                                    tr("Meshes (*.obj *.ply *.glb *.gltf);;All files (*)"));
   if (path.isEmpty())
     return;
   rememberFolder(path);

@@ -54,6 +54,8 @@ public:
 
   /// Each returns an error message (also shown in the panel) or "".
   QString loadMesh(const QString& path);
+  /// Uses `mesh` (read from `path`, e.g. a blendshape rig's neutral) as loadMesh does.
+  void useMesh(Mesh mesh, const QString& path);
   /// The file the loaded mesh came from ("" when none is loaded).
   [[nodiscard]] const QString& meshPath() const { return m_meshPath; }
   QString loadBinding(const QString& path);

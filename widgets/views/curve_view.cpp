@@ -5,7 +5,6 @@
 #include "document/take_document.h"
 #include "views/display_units.h"
 #include "views/sample_colors.h"
-#include "views/axis_ticks.h"
 #include "views/selection_palette.h"
 
 #include "mocap/model/gaps.h"
@@ -28,13 +27,7 @@
 namespace mocap::ui {
 
 namespace {
-constexpr double kLeftMargin = 60.0;
-constexpr double kRightMargin = 8.0;
-constexpr double kTopMargin = 20.0;     // the legend row
-constexpr double kBottomMargin = 30.0;  // frame and time tick labels
-constexpr double kStripGap = 6.0;
 const char* const kAxisNames[3] = {"X", "Y", "Z"};
-const QColor kGrid(255, 255, 255, 26);
 const QColor kTickText(150, 150, 150);
 
 // The preview's colour: the marker's hue, much lighter than the curve drawn in it.
@@ -50,21 +43,16 @@ double toDisplay(double value, LengthUnit from, LengthUnit to)
 }
 } // namespace
 
-CurveView::CurveView(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
+CurveView::CurveView(TakeDocument& document, QWidget* parent)
+    : FrameStripView(document, parent), m_document(document)
 {
-  setFocusPolicy(Qt::StrongFocus);
   setMinimumHeight(150);
-  setAutoFillBackground(false);
   setMouseTracking(true);  // the hover read-out
-  connect(&document, &TakeDocument::takeReset, this, &CurveView::showAll);
   connect(&document, &TakeDocument::samplesChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::selectionChanged, this, qOverload<>(&CurveView::update));
-  connect(&document, &TakeDocument::currentFrameChanged, this, &CurveView::follow);
-  connect(&document, &TakeDocument::rangeChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::previewChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::flagsChanged, this, qOverload<>(&CurveView::update));
   connect(&document, &TakeDocument::markersChanged, this, qOverload<>(&CurveView::update));
-  showAll();
 }
 
 void CurveView::setDisplayUnit(LengthUnit unit)
@@ -73,59 +61,14 @@ void CurveView::setDisplayUnit(LengthUnit unit)
   update();
 }
 
-void CurveView::showAll()
-{
-  m_first = 0.0;
-  m_last = std::max<double>(static_cast<double>(m_document.take().frameCount()) - 1.0, 1.0);
-  update();
-}
-
-void CurveView::setVisibleRange(double first, double last)
-{
-  const double frames = std::max<double>(static_cast<double>(m_document.take().frameCount()) - 1.0, 1.0);
-  const double span = std::clamp(last - first, 10.0, std::max(frames, 10.0));
-  first = std::clamp(first, 0.0, std::max(frames - span, 0.0));
-  m_first = first;
-  m_last = first + span;
-  update();
-}
-
-void CurveView::follow(Eigen::Index frame)
-{
-  const auto f = static_cast<double>(frame);
-  if (f < m_first || f > m_last) {
-    const double span = m_last - m_first;
-    setVisibleRange(f - span / 2.0, f + span / 2.0);
-  }
-  update();
-}
-
-QRectF CurveView::plotArea() const
-{
-  return QRectF(kLeftMargin, kTopMargin, std::max(width() - kLeftMargin - kRightMargin, 10.0),
-                std::max(height() - kTopMargin - kBottomMargin, 10.0));
-}
-
-double CurveView::xOf(double frame) const
-{
-  const QRectF area = plotArea();
-  return area.left() + (frame - m_first) / (m_last - m_first) * area.width();
-}
-
-double CurveView::frameAt(double x) const
-{
-  const QRectF area = plotArea();
-  return m_first + (x - area.left()) / area.width() * (m_last - m_first);
-}
-
 std::optional<std::pair<double, double>> CurveView::valueRange(int axis) const
 {
   const Take& take = m_document.take();
   const auto& selection = m_document.selection();
   if (take.empty() || axis < 0 || axis > 2)
     return std::nullopt;
-  const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(m_first)));
-  const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(m_last)));
+  const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(firstVisible())));
+  const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(lastVisible())));
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (Eigen::Index m : selection) {
     const auto values = take.trajectory(m).col(axis);
@@ -161,7 +104,6 @@ void CurveView::paintEvent(QPaintEvent*)
   QPainter painter(this);
   painter.fillRect(rect(), QColor(30, 32, 36));
   const Take& take = m_document.take();
-  const QRectF area = plotArea();
   for (StripScale& scale : m_scales)
     scale.drawn = false;
   if (take.empty() || m_document.selection().empty()) {
@@ -169,56 +111,12 @@ void CurveView::paintEvent(QPaintEvent*)
     painter.drawText(rect(), Qt::AlignCenter, tr("Select a marker to see its curves"));
     return;
   }
-  const double stripHeight = (area.height() - 2 * kStripGap) / 3.0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const QRectF strip(area.left(), area.top() + axis * (stripHeight + kStripGap), area.width(), stripHeight);
-    paintStrip(painter, strip, axis);
-  }
-  if (m_document.hasRange()) {
-    const double x0 = std::max(xOf(static_cast<double>(m_document.rangeFirst()) - 0.5), area.left());
-    const double x1 = std::min(xOf(static_cast<double>(m_document.rangeLast()) + 0.5), area.right());
-    if (x1 > x0)
-      painter.fillRect(QRectF(x0, area.top(), x1 - x0, area.height()), QColor(90, 150, 255, 60));
-  }
-  // Current frame.
-  const double x = xOf(static_cast<double>(m_document.currentFrame()));
-  if (x >= area.left() && x <= area.right()) {
-    painter.setPen(QPen(QColor(255, 255, 255, 160), 1.0));
-    painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
-  }
-  paintFrameTicks(painter, area);
+  const std::vector<QRectF> axes = strips(3);
+  for (int axis = 0; axis < 3; ++axis)
+    paintStrip(painter, axes[static_cast<std::size_t>(axis)], axis);
+  paintFrameOverlay(painter);
   paintLegend(painter);
   paintReadout(painter);
-}
-
-void CurveView::paintFrameTicks(QPainter& painter, const QRectF& area) const
-{
-  const Take& take = m_document.take();
-  const QFontMetricsF metrics(painter.font());
-  const double widest = metrics.horizontalAdvance(QString::number(take.firstFrame() + take.frameCount())) + 16.0;
-  const int count = std::max(2, static_cast<int>(area.width() / widest));
-  // Frames as the file numbers them; the step is a whole number of frames.
-  const double offset = static_cast<double>(take.firstFrame());
-  const AxisTicks frames = niceTicks(m_first + offset, m_last + offset, count);
-  const double step = std::max(1.0, frames.step);
-  for (double label = std::ceil((m_first + offset) / step) * step; label <= m_last + offset + 1e-9; label += step) {
-    const double x = xOf(label - offset);
-    painter.setPen(kGrid);
-    painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
-    painter.setPen(kTickText);
-    painter.drawLine(QPointF(x, area.bottom()), QPointF(x, area.bottom() + 3.0));
-    painter.drawText(QRectF(x - widest / 2.0, area.bottom() + 2.0, widest, 13.0), Qt::AlignHCenter | Qt::AlignTop,
-                     QString::number(static_cast<qlonglong>(std::llround(label))));
-  }
-  // Seconds from the first frame, on their own nice ticks below the frame numbers.
-  const double rate = take.frameRate();
-  const AxisTicks seconds = niceTicks(m_first / rate, m_last / rate, std::max(2, count));
-  painter.setPen(QColor(120, 120, 120));
-  for (const double t : seconds.values) {
-    const double x = xOf(t * rate);
-    painter.drawText(QRectF(x - widest / 2.0, area.bottom() + 15.0, widest, 13.0), Qt::AlignHCenter | Qt::AlignTop,
-                     tr("%1 s").arg(t, 0, 'f', seconds.decimals));
-  }
 }
 
 void CurveView::paintLegend(QPainter& painter) const
@@ -266,22 +164,13 @@ void CurveView::paintLegend(QPainter& painter) const
     x += 22.0 + w + 10.0;
   }
   // Left: one swatch and label per selected marker, as many as fit before the key.
-  const double limit = right - keyWidth - 12.0;
-  x = kLeftMargin;
+  std::vector<QString> labels;
+  std::vector<QColor> colors;
   for (std::size_t i = 0; i < selection.size(); ++i) {
-    const QString label = QString::fromStdString(take.label(selection[i]));
-    const double w = 16.0 + metrics.horizontalAdvance(label) + 12.0;
-    const QString more = tr("+%1 more").arg(selection.size() - i);
-    if (x + w > limit - (i + 1 < selection.size() ? metrics.horizontalAdvance(more) : 0.0)) {
-      painter.setPen(kTickText);
-      painter.drawText(QRectF(x, y, limit - x + 80.0, h), Qt::AlignLeft | Qt::AlignVCenter, more);
-      break;
-    }
-    painter.fillRect(QRectF(x, y + 3.0, 11.0, h - 6.0), selectionPaletteColor(i));
-    painter.setPen(QColor(215, 215, 215));
-    painter.drawText(QRectF(x + 15.0, y, w, h), Qt::AlignLeft | Qt::AlignVCenter, label);
-    x += w;
+    labels.push_back(QString::fromStdString(take.label(selection[i])));
+    colors.push_back(selectionPaletteColor(i));
   }
+  paintSwatchLegend(painter, labels, colors, right - keyWidth - 12.0);
 }
 
 void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) const
@@ -317,7 +206,7 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
   }
   const auto [lo, hi] = *range;
   m_scales[static_cast<std::size_t>(axis)] = {strip, lo, hi, true};
-  paintValueTicks(painter, strip, axis, lo, hi);
+  paintValueTicks(painter, strip, lo, hi);
 
   painter.save();
   painter.setClipRect(strip);
@@ -326,31 +215,13 @@ void CurveView::paintStrip(QPainter& painter, const QRectF& strip, int axis) con
   paintPreview(painter, strip, axis);
   paintFlags(painter, strip, axis);
   painter.restore();
-  // The axis name on a dark plate, so a curve passing the corner does not hide it.
-  const QRectF plate(strip.left() + 2.0, strip.top() + 2.0,
-                     QFontMetricsF(painter.font()).horizontalAdvance(axisName) + 8.0, 15.0);
-  painter.fillRect(plate, QColor(30, 32, 36, 200));
-  painter.setPen(QColor(190, 190, 190));
-  painter.drawText(plate, Qt::AlignCenter, axisName);
+  paintStripName(painter, strip, axisName);
 }
 
-void CurveView::paintValueTicks(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const
+void CurveView::paintValueTicks(QPainter& painter, const QRectF& strip, double lo, double hi) const
 {
   const LengthUnit units = m_document.take().units();
-  const double from = toDisplay(lo, units, m_displayUnit), to = toDisplay(hi, units, m_displayUnit);
-  const AxisTicks ticks = niceTicks(from, to, std::max(4, static_cast<int>(strip.height() / 16.0)));
-  const double scale = (hi - lo) / (to - from);  // take units per display unit
-  const StripScale& s = m_scales[static_cast<std::size_t>(axis)];
-  painter.setRenderHint(QPainter::Antialiasing, false);
-  for (const double v : ticks.values) {
-    const double y = s.yOf(lo + (v - from) * scale);
-    painter.setPen(kGrid);
-    painter.drawLine(QPointF(strip.left(), y), QPointF(strip.right(), y));
-    painter.setPen(kTickText);
-    painter.drawLine(QPointF(strip.left() - 3.0, y), QPointF(strip.left(), y));
-    painter.drawText(QRectF(0.0, y - 7.0, kLeftMargin - 6.0, 14.0), Qt::AlignRight | Qt::AlignVCenter,
-                     QString::number(v, 'f', ticks.decimals));
-  }
+  FrameStripView::paintValueTicks(painter, strip, toDisplay(lo, units, m_displayUnit), toDisplay(hi, units, m_displayUnit));
 }
 
 // O(visible frames) for one marker: zoomed out, each pixel column draws its frames' min-max
@@ -364,11 +235,11 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
   const auto valid = take.valid().col(marker);
   const auto states = take.states().col(marker);
   const auto& scale = m_scales[static_cast<std::size_t>(axis)];
-  const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(m_first)));
-  const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(m_last)));
+  const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(firstVisible())));
+  const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(lastVisible())));
   QVector<QLineF> lines;
   std::array<QVector<QLineF>, 4> halos;  // by SampleState
-  const double framesPerPixel = (m_last - m_first) / strip.width();
+  const double framesPerPixel = (lastVisible() - firstVisible()) / strip.width();
   if (framesPerPixel > 1.0) {
     const int columns = static_cast<int>(strip.width());
     lines.reserve(columns);
@@ -441,7 +312,7 @@ void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) c
 {
   const auto& selection = m_document.selection();
   const auto& scale = m_scales[static_cast<std::size_t>(axis)];
-  const double pixelsPerFrame = strip.width() / (m_last - m_first);
+  const double pixelsPerFrame = strip.width() / (lastVisible() - firstVisible());
   // Antialiased wide dashes cost far more than the curve itself; zoomed out (a point per pixel
   // column) they look the same without it.
   painter.setRenderHint(QPainter::Antialiasing, pixelsPerFrame >= 1.0);
@@ -465,7 +336,7 @@ void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) c
     for (std::size_t i = 0; i < patch.frames.size(); ++i) {
       const auto row = static_cast<Eigen::Index>(i);
       const Eigen::Index f = patch.frames[i];
-      if (static_cast<double>(f) < m_first - 1.0 || static_cast<double>(f) > m_last + 1.0 || !patch.valid(row)) {
+      if (static_cast<double>(f) < firstVisible() - 1.0 || static_cast<double>(f) > lastVisible() + 1.0 || !patch.valid(row)) {
         previousFrame = -2;
         continue;
       }
@@ -519,7 +390,7 @@ void CurveView::paintFlags(QPainter& painter, const QRectF& strip, int axis) con
   painter.setPen(QPen(colorScheme().flagged, 1.5));
   for (const auto& [marker, frame] : m_document.flags()) {
     if (!std::binary_search(selection.begin(), selection.end(), marker) ||
-        static_cast<double>(frame) < m_first || static_cast<double>(frame) > m_last)
+        static_cast<double>(frame) < firstVisible() || static_cast<double>(frame) > lastVisible())
       continue;
     painter.drawEllipse(QPointF(xOf(static_cast<double>(frame)), scale.yOf(take.trajectory(marker)(frame, axis))),
                         4.0, 4.0);
@@ -626,7 +497,7 @@ std::optional<QPointF> CurveView::pointOf(Eigen::Index marker, Eigen::Index fram
 bool CurveView::startDrag(const QPointF& position)
 {
   constexpr double kGrabPixels = 6.0;
-  if ((m_last - m_first) / plotArea().width() > 0.5)
+  if ((lastVisible() - firstVisible()) / plotArea().width() > 0.5)
     return false;
   const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(position.x())));
   for (int axis = 0; axis < 3; ++axis) {
@@ -679,39 +550,17 @@ void CurveView::finishDrag(const std::optional<QPointF>& commitAt)
       "edit sample", {{"axis", kAxisNames[drag.axis]}}));
 }
 
-void CurveView::mousePressEvent(QMouseEvent* event)
+bool CurveView::pressItem(const QPointF& position)
 {
-  const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(event->position().x())));
-  if (event->button() == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier) &&
-      startDrag(event->position())) {
-    m_document.setCurrentFrame(frame);
-  } else if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier)) {
-    m_rangeAnchor = frame;
-    m_document.setRange(frame, frame);
-  } else if (event->button() == Qt::LeftButton) {
-    m_rangeAnchor = -1;
-    m_document.clearRange();
-    m_document.setCurrentFrame(frame);
-  } else {
-    m_panStart = event->position();
-    m_panFirst = m_first;
-  }
+  return startDrag(position);
 }
 
 void CurveView::mouseMoveEvent(QMouseEvent* event)
 {
-  const auto frame = static_cast<Eigen::Index>(std::lround(frameAt(event->position().x())));
-  if (m_drag && (event->buttons() & Qt::LeftButton)) {
+  if (m_drag && (event->buttons() & Qt::LeftButton))
     updateDrag(event->position());
-  } else if ((event->buttons() & Qt::LeftButton) && m_rangeAnchor >= 0) {
-    m_document.setRange(std::min(m_rangeAnchor, frame), std::max(m_rangeAnchor, frame));
-  } else if (event->buttons() & Qt::LeftButton) {
-    m_document.setCurrentFrame(frame);
-  } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
-    const double span = m_last - m_first;
-    const double shift = (event->position().x() - m_panStart.x()) / plotArea().width() * span;
-    setVisibleRange(m_panFirst - shift, m_panFirst - shift + span);
-  }
+  else
+    FrameStripView::mouseMoveEvent(event);
   m_hover = event->buttons() == Qt::NoButton ? std::optional(event->position()) : std::nullopt;
   update();
 }
@@ -725,28 +574,18 @@ void CurveView::leaveEvent(QEvent* event)
 
 void CurveView::mouseReleaseEvent(QMouseEvent* event)
 {
-  m_rangeAnchor = -1;
+  FrameStripView::mouseReleaseEvent(event);
   if (m_drag && event->button() == Qt::LeftButton)
     finishDrag(std::abs(event->position().y() - m_drag->startY) >= 1.0 ? std::optional(event->position())
                                                                         : std::nullopt);
 }
 
-void CurveView::wheelEvent(QWheelEvent* event)
-{
-  const double anchor = frameAt(event->position().x());
-  const double factor = std::pow(0.85, event->angleDelta().y() / 120.0);
-  setVisibleRange(anchor - (anchor - m_first) * factor, anchor + (m_last - anchor) * factor);
-  event->accept();
-}
-
 void CurveView::keyPressEvent(QKeyEvent* event)
 {
-  if (event->key() == Qt::Key_Home && event->modifiers() & Qt::ControlModifier)
-    showAll();
-  else if (event->key() == Qt::Key_Escape && m_drag)
+  if (event->key() == Qt::Key_Escape && m_drag)
     finishDrag(std::nullopt);
   else
-    QWidget::keyPressEvent(event);
+    FrameStripView::keyPressEvent(event);
 }
 
 } // namespace mocap::ui

@@ -1,7 +1,8 @@
 #pragma once
 
+#include "views/frame_strip_view.h"
+
 #include <QString>
-#include <QWidget>
 
 #include "mocap/base/length_unit.h"
 #include "mocap/model/sample_patch.h"
@@ -22,14 +23,12 @@ class TakeDocument;
 /// state's colour; each marker's gaps are shaded lightly in its colour. Value ticks and a grid
 /// in the display unit, frame and time ticks along the bottom, the current frame marked, and
 /// the live preview (TakeDocument::preview) drawn as a thick dashed line with dots, inside the
-/// strip's value range. Hovering shows marker, frame and value. Setting the current frame
-/// outside the visible range centres it (the zoom is kept). Click sets the current frame;
-/// Shift-drag selects a frame range (for range edits); the wheel zooms around the cursor; right-
-/// or middle-drag pans; Ctrl+Home shows everything. Zoomed in far enough to tell samples apart,
+/// strip's value range. Hovering shows marker, frame and value. Frame range, ticks, zoom, pan
+/// and range selection as every FrameStripView. Zoomed in far enough to tell samples apart,
 /// dragging a sample of a selected marker up or down edits that coordinate (one undoable command
 /// on release, previewed while dragging; Esc cancels). Each pixel column draws the min-max of its
 /// frames, so painting costs O(visible frames × selected markers + width), whatever the zoom.
-class CurveView final : public QWidget
+class CurveView final : public FrameStripView
 {
   Q_OBJECT
 
@@ -38,10 +37,6 @@ public:
 
   /// Unit of the value labels (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit);
-  /// Visible frame range [first, last].
-  void setVisibleRange(double first, double last);
-  [[nodiscard]] double firstVisible() const { return m_first; }
-  [[nodiscard]] double lastVisible() const { return m_last; }
   [[nodiscard]] QSize sizeHint() const override { return {800, 260}; }
   /// Where sample `frame` of `marker` on `axis` (0 x, 1 y, 2 z) was last drawn; nullopt before
   /// the first paint or when it is not drawn.
@@ -57,10 +52,9 @@ public:
 
 protected:
   void paintEvent(QPaintEvent* event) override;
-  void mousePressEvent(QMouseEvent* event) override;
+  bool pressItem(const QPointF& position) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
-  void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   void leaveEvent(QEvent* event) override;
 
@@ -89,12 +83,6 @@ private:
   void updateDrag(const QPointF& position);
   void finishDrag(const std::optional<QPointF>& commitAt);
   [[nodiscard]] SamplePatch dragPatch(const QPointF& position) const;
-  [[nodiscard]] double frameAt(double x) const;
-  [[nodiscard]] double xOf(double frame) const;
-  [[nodiscard]] QRectF plotArea() const;
-  void showAll();
-  /// Centres `frame` when it lies outside the visible range.
-  void follow(Eigen::Index frame);
   /// The marker, frame and axis readoutAt() describes.
   struct HoverSample
   {
@@ -104,20 +92,14 @@ private:
   };
   [[nodiscard]] std::optional<HoverSample> sampleAt(const QPointF& position) const;
   void paintStrip(class QPainter& painter, const QRectF& strip, int axis) const;
-  void paintValueTicks(QPainter& painter, const QRectF& strip, int axis, double lo, double hi) const;
+  void paintValueTicks(QPainter& painter, const QRectF& strip, double lo, double hi) const;
   void paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index marker, int axis, const QColor& color) const;
   void paintPreview(QPainter& painter, const QRectF& strip, int axis) const;
   void paintFlags(QPainter& painter, const QRectF& strip, int axis) const;
-  void paintFrameTicks(QPainter& painter, const QRectF& area) const;
   void paintLegend(QPainter& painter) const;
   void paintReadout(QPainter& painter) const;
 
   TakeDocument& m_document;
-  double m_first = 0.0;
-  double m_last = 1.0;
-  QPointF m_panStart;
-  Eigen::Index m_rangeAnchor = -1;
-  double m_panFirst = 0.0;
   mutable std::array<StripScale, 3> m_scales{};
   LengthUnit m_displayUnit = LengthUnit::Millimetre;
   std::optional<Drag> m_drag;

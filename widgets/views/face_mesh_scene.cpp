@@ -12,14 +12,20 @@ namespace mocap::ui {
 
 namespace {
 
-constexpr double kCompareGap = 1.15;  // the compared mesh sits this many mesh widths to the side
-
 double elapsedMs(const QElapsedTimer& clock)
 {
   return static_cast<double>(clock.nsecsElapsed()) * 1e-6;
 }
 
 } // namespace
+
+double sideOffset(const Mesh& mesh)
+{
+  constexpr double kGap = 1.15;  // a mesh beside another sits this many mesh widths to the side
+  if (mesh.vertexCount() == 0)
+    return 0.0;
+  return kGap * (mesh.vertices.col(0).maxCoeff() - mesh.vertices.col(0).minCoeff());
+}
 
 FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* parent)
     : QObject(parent), m_model(model), m_view(view),
@@ -72,10 +78,10 @@ void FaceMeshScene::updateFrame()
     emit deformed(m_deformMs, m_compareMs);
 }
 
-void FaceMeshScene::updatePlacement()
+std::optional<Eigen::Affine3d> FaceMeshScene::placement() const
 {
   if (!m_model.hasMesh())
-    return;
+    return std::nullopt;
   // The view draws markers in the head frame of its reference markers: so is the mesh placed.
   std::shared_ptr<const HeadMotion> viewMotion;
   if (!m_view.headReference().empty()) {
@@ -90,14 +96,20 @@ void FaceMeshScene::updatePlacement()
   const auto index = static_cast<std::size_t>(frame);
   if (placement && viewMotion && index < viewMotion->poses.size())
     placement = Eigen::Affine3d(viewMotion->poses[index].inverse()) * *placement;  // as the view draws markers
+  return placement;
+}
+
+void FaceMeshScene::updatePlacement()
+{
+  if (!m_model.hasMesh())
+    return;
+  const std::optional<Eigen::Affine3d> placement = this->placement();
   m_layer->setVisible(placement.has_value());
   m_compareLayer->setVisible(placement.has_value() && m_model.compare());
   if (!placement)
     return;
   m_layer->setPlacement(*placement);
-  const MeshVertices& rest = m_model.mesh().vertices;
-  const double width = rest.col(0).maxCoeff() - rest.col(0).minCoeff();
-  m_compareLayer->setPlacement(*placement * Eigen::Translation3d(kCompareGap * width, 0.0, 0.0));
+  m_compareLayer->setPlacement(*placement * Eigen::Translation3d(sideOffset(m_model.mesh()), 0.0, 0.0));
 }
 
 Eigen::Index FaceMeshScene::vertexAt(QPoint position) const

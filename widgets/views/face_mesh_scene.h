@@ -9,12 +9,17 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <optional>
 
 namespace mocap::ui {
 
 class FaceMeshModel;
 class MarkerView3d;
 class MeshLayer;
+
+/// How far along the mesh's x axis (mesh units) a second mesh is drawn beside it: a little more
+/// than its width. O(#vertices).
+[[nodiscard]] double sideOffset(const Mesh& mesh);
 
 /// The face mesh model (FaceMeshModel) drawn in the 3D view: deforms the mesh whenever the current
 /// frame or the rigs change, and places it where the markers are drawn, in the lab frame or in the
@@ -35,6 +40,10 @@ public:
   [[nodiscard]] Eigen::Index vertexAt(QPoint position) const;
   /// Where vertex `vertex` of the (first) mesh is drawn, in 3D view widget coordinates.
   [[nodiscard]] QPointF vertexPosition(Eigen::Index vertex) const;
+  /// Mesh units → the view's coordinates for the current frame: the model's meshToLab, in the
+  /// view's head-stabilized frame when it has one (as the markers are drawn); nullopt when the
+  /// mesh cannot be placed. O(1) (the head motion is cached by the document).
+  [[nodiscard]] std::optional<Eigen::Affine3d> placement() const;
   /// Milliseconds the last frame's deform took (−1 when it did not run).
   [[nodiscard]] double lastDeformMs() const { return m_deformMs; }
   [[nodiscard]] double lastCompareMs() const { return m_compareMs; }

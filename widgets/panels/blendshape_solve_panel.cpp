@@ -1,0 +1,632 @@
+#include "panels/blendshape_solve_panel.h"
+
+#include "actions/weight_edit_actions.h"
+#include "document/blendshape_solve_model.h"
+#include "document/face_mesh_model.h"
+#include "document/take_document.h"
+#include "panels/face_mesh_panel.h"
+#include "panels/job_progress_row.h"
+#include "views/blendshape_scene.h"
+#include "views/face_mesh_scene.h"
+
+#include "mocap/io/gltf_writer.h"
+#include "mocap/io/rig_io.h"
+#include "mocap/io/weights_csv_writer.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mocap::ui {
+
+namespace {
+
+const QString kGroup = QStringLiteral("blendshapeSolve/");
+
+QString settingKey(const char* name)
+{
+  return kGroup + QLatin1String(name);
+}
+
+QString lastFolder()
+{
+  return QSettings().value(settingKey("folder")).toString();
+}
+
+void rememberFolder(const QString& path)
+{
+  QSettings().setValue(settingKey("folder"), QFileInfo(path).absolutePath());
+}
+
+RigLoad readRigInBackground(const QString& path, const QString& shapeFolder)
+{
+  RigLoad load;
+  load.path = path;
+  try {
+    load.rig = std::make_shared<const BlendshapeRig>(readRig(path.toStdString(), shapeFolder.toStdString()));
+  } catch (const std::exception& e) {  // nothing may throw across the event loop
+    load.error = QString::fromStdString(e.what());
+  }
+  return load;
+}
+
+SolveRun solveInBackground(const std::shared_ptr<const BlendshapeRig>& rig, const MeshBinding& binding,
+                           const Take& take, const BlendshapeSolveOptions& options, const JobControl& control)
+{
+  SolveRun run;
+  run.options = options;
+  try {
+    const BlendshapeSolver solver(*rig, binding, take, options);
+    run.result = solver.solve(take, {}, control);
+    run.markers = solver.markers().size();
+    run.setupSeconds = solver.setupSeconds();
+  } catch (const JobCancelled&) {
+    run.result = {};  // cancelled: no weights, no error
+  } catch (const std::exception& e) {
+    run.error = QString::fromStdString(e.what());
+  }
+  return run;
+}
+
+/// The peak weight of every shape, for the list.
+Eigen::VectorXd peaks(const Eigen::MatrixXd& weights)
+{
+  return weights.rows() > 0 ? Eigen::VectorXd(weights.colwise().maxCoeff().transpose())
+                            : Eigen::VectorXd::Zero(weights.cols());
+}
+
+} // namespace
+
+BlendshapeSolvePanel::BlendshapeSolvePanel(TakeDocument& document, FaceMeshPanel& faceMesh, MarkerView3d& view,
+                                           QWidget* parent)
+    : QWidget(parent), m_document(document), m_faceMesh(faceMesh), m_model(new BlendshapeSolveModel(this)),
+      m_scene(new BlendshapeScene(*m_model, faceMesh.scene(), view, this)),
+      m_edits(new WeightEditActions(document, *m_model, this))
+{
+  buildUi();
+  readSettings();
+  connect(&m_loadWatcher, &QFutureWatcher<RigLoad>::finished, this, &BlendshapeSolvePanel::onRigLoaded);
+  connect(&m_solveWatcher, &QFutureWatcher<SolveRun>::finished, this, &BlendshapeSolvePanel::onSolved);
+  connect(m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
+  connect(m_model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeSolvePanel::fillShapeList);
+  connect(&document, &TakeDocument::takeReset, m_model, &BlendshapeSolveModel::clearResult);
+}
+
+BlendshapeSolvePanel::~BlendshapeSolvePanel()
+{
+  m_progress->stopRunning();
+  m_loadWatcher.waitForFinished();
+  m_solveWatcher.waitForFinished();
+}
+
+void BlendshapeSolvePanel::buildUi()
+{
+  auto* layout = new QVBoxLayout(this);
+  layout->addWidget(buildRigBox());
+  layout->addWidget(buildSolveBox());
+  layout->addWidget(buildShapesBox(), 1);
+  layout->addWidget(buildDisplayBox());
+  m_status = new QLabel(this);
+  m_status->setWordWrap(true);
+  m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(m_status);
+  showStatus(tr("Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve."));
+}
+
+QWidget* BlendshapeSolvePanel::buildRigBox()
+{
+  auto* box = new QGroupBox(tr("Rig"), this);
+  auto* rows = new QVBoxLayout(box);
+  m_rigLabel = new QLabel(tr("No rig"), box);
+  m_rigLabel->setWordWrap(true);
+  rows->addWidget(m_rigLabel);
+  auto* buttons = new QHBoxLayout;
+  auto* gltf = new QPushButton(tr("Load glTF Rig…"), box);
+  gltf->setToolTip(tr("A .glb or .gltf with the neutral mesh and one morph target per shape"));
+  connect(gltf, &QPushButton::clicked, this, &BlendshapeSolvePanel::loadGltfDialog);
+  auto* obj = new QPushButton(tr("Load OBJ Rig…"), box);
+  obj->setToolTip(tr("A neutral OBJ/PLY and a folder with one OBJ per shape, named after it"));
+  connect(obj, &QPushButton::clicked, this, &BlendshapeSolvePanel::loadObjDialog);
+  buttons->addWidget(gltf);
+  buttons->addWidget(obj);
+  buttons->addStretch();
+  rows->addLayout(buttons);
+  return box;
+}
+
+QWidget* BlendshapeSolvePanel::buildSolveBox()
+{
+  auto* box = new QGroupBox(tr("Solve"), this);
+  auto* form = new QFormLayout(box);
+  m_method = new QComboBox(box);
+  m_method->setObjectName(QStringLiteral("solveMethod"));
+  m_method->addItem(tr("Temporal (smooth over time)"), static_cast<int>(BlendshapeSolveMethod::Temporal));
+  m_method->addItem(tr("Ridge (per frame)"), static_cast<int>(BlendshapeSolveMethod::Ridge));
+  m_method->addItem(tr("Bounded least squares (per frame)"), static_cast<int>(BlendshapeSolveMethod::Bvls));
+  form->addRow(tr("Method:"), m_method);
+  auto* lambdaRow = new QHBoxLayout;
+  m_autoLambda = new QCheckBox(tr("Automatic (GCV)"), box);
+  m_lambda = new QDoubleSpinBox(box);
+  m_lambda->setDecimals(6);
+  m_lambda->setRange(0.0, 1e6);
+  m_lambda->setSingleStep(0.001);
+  m_lambda->setToolTip(tr("Ridge weight λ, relative to the shapes' mean squared motion"));
+  lambdaRow->addWidget(m_autoLambda);
+  lambdaRow->addWidget(m_lambda, 1);
+  form->addRow(tr("λ:"), lambdaRow);
+  m_smoothness = new QDoubleSpinBox(box);
+  m_smoothness->setDecimals(3);
+  m_smoothness->setRange(0.0, 1e6);
+  m_smoothness->setToolTip(tr("Weight of the weights' second differences over time, as at 100 Hz"));
+  form->addRow(tr("Smoothness:"), m_smoothness);
+  m_sparsity = new QDoubleSpinBox(box);
+  m_sparsity->setDecimals(4);
+  m_sparsity->setRange(0.0, 1e3);
+  m_sparsity->setSingleStep(0.001);
+  m_sparsity->setToolTip(tr("L1 weight pulling unused shapes to zero"));
+  form->addRow(tr("Sparsity:"), m_sparsity);
+  connect(m_method, &QComboBox::currentIndexChanged, this, &BlendshapeSolvePanel::updateMethodFields);
+  connect(m_autoLambda, &QCheckBox::toggled, this, &BlendshapeSolvePanel::updateMethodFields);
+  for (QDoubleSpinBox* spin : {m_lambda, m_smoothness, m_sparsity})
+    connect(spin, &QDoubleSpinBox::valueChanged, this, [this] { writeSettings(); });
+  m_solve = new QPushButton(tr("Solve"), box);
+  m_solve->setToolTip(tr("Solve every frame of the take to the rig's weights (on a worker; Cancel stops it)"));
+  connect(m_solve, &QPushButton::clicked, this, [this] { (void)solve(); });
+  form->addRow(m_solve);
+  m_progress = new JobProgressRow(box);
+  connect(m_progress, &JobProgressRow::cancelled, this, [this] { showStatus(tr("Cancelling…")); });
+  form->addRow(m_progress);
+  return box;
+}
+
+QWidget* BlendshapeSolvePanel::buildShapesBox()
+{
+  auto* box = new QGroupBox(tr("Shapes"), this);
+  auto* rows = new QVBoxLayout(box);
+  m_filter = new QLineEdit(box);
+  m_filter->setPlaceholderText(tr("Filter shapes (e.g. mouth)"));
+  m_filter->setClearButtonEnabled(true);
+  connect(m_filter, &QLineEdit::textChanged, this, &BlendshapeSolvePanel::applyShapeFilter);
+  rows->addWidget(m_filter);
+  m_shapes = new QListWidget(box);
+  m_shapes->setObjectName(QStringLiteral("shapeList"));
+  m_shapes->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  m_shapes->setToolTip(tr("Selected shapes are drawn in the Weights view and edited below"));
+  connect(m_shapes, &QListWidget::itemSelectionChanged, this, &BlendshapeSolvePanel::onListSelectionChanged);
+  rows->addWidget(m_shapes, 1);
+
+  auto* edits = new QFormLayout;
+  auto* scaleRow = new QHBoxLayout;
+  m_scaleFactor = new QDoubleSpinBox(box);
+  m_scaleFactor->setRange(0.0, 10.0);
+  m_scaleFactor->setDecimals(2);
+  m_scaleFactor->setSingleStep(0.05);
+  auto* scale = new QPushButton(tr("Scale"), box);
+  connect(scale, &QPushButton::clicked, this, [this] { showEditResult(m_edits->scale(m_scaleFactor->value())); });
+  auto* zero = new QPushButton(tr("Zero"), box);
+  connect(zero, &QPushButton::clicked, this, [this] { showEditResult(m_edits->zero()); });
+  scaleRow->addWidget(m_scaleFactor, 1);
+  scaleRow->addWidget(scale);
+  scaleRow->addWidget(zero);
+  edits->addRow(tr("Scale by:"), scaleRow);
+  auto* smoothRow = new QHBoxLayout;
+  m_cutoff = new QDoubleSpinBox(box);
+  m_cutoff->setRange(0.1, 100.0);
+  m_cutoff->setDecimals(1);
+  m_cutoff->setSuffix(tr(" Hz"));
+  auto* smooth = new QPushButton(tr("Smooth"), box);
+  connect(smooth, &QPushButton::clicked, this, [this] { showEditResult(m_edits->smooth(m_cutoff->value())); });
+  smoothRow->addWidget(m_cutoff, 1);
+  smoothRow->addWidget(smooth);
+  edits->addRow(tr("Low-pass:"), smoothRow);
+  for (QDoubleSpinBox* spin : {m_scaleFactor, m_cutoff})
+    connect(spin, &QDoubleSpinBox::valueChanged, this, [this] { writeSettings(); });
+  rows->addLayout(edits);
+  auto* hint = new QLabel(tr("Edits apply to the selected shapes over the frame range selected on the curves "
+                             "(Shift-drag), or the whole take; Ctrl+Z undoes them."),
+                          box);
+  hint->setWordWrap(true);
+  hint->setStyleSheet(QStringLiteral("color: gray;"));
+  rows->addWidget(hint);
+  return box;
+}
+
+QWidget* BlendshapeSolvePanel::buildDisplayBox()
+{
+  auto* box = new QGroupBox(tr("Display and export"), this);
+  auto* rows = new QVBoxLayout(box);
+  m_show = new QCheckBox(tr("Show the solved rig in the 3D view"), box);
+  connect(m_show, &QCheckBox::toggled, this, [this](bool on) {
+    m_scene->setShown(on);
+    writeSettings();
+  });
+  m_beside = new QCheckBox(tr("Beside the markers (else over them)"), box);
+  connect(m_beside, &QCheckBox::toggled, this, [this](bool on) {
+    m_scene->setBeside(on);
+    writeSettings();
+  });
+  rows->addWidget(m_show);
+  rows->addWidget(m_beside);
+  auto* buttons = new QHBoxLayout;
+  m_exportCsv = new QPushButton(tr("Export Weights…"), box);
+  m_exportCsv->setToolTip(tr("Weight curves as CSV: one column per shape (plain or Live Link Face layout)"));
+  connect(m_exportCsv, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportCsvDialog);
+  m_exportGlb = new QPushButton(tr("Export Rig GLB…"), box);
+  m_exportGlb->setToolTip(tr("The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)"));
+  connect(m_exportGlb, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportGlbDialog);
+  buttons->addWidget(m_exportCsv);
+  buttons->addWidget(m_exportGlb);
+  buttons->addStretch();
+  rows->addLayout(buttons);
+  connect(m_model, &BlendshapeSolveModel::resultChanged, this, [this] {
+    m_exportCsv->setEnabled(m_model->hasResult());
+    m_exportGlb->setEnabled(m_model->hasResult());
+  });
+  m_exportCsv->setEnabled(false);
+  m_exportGlb->setEnabled(false);
+  return box;
+}
+
+void BlendshapeSolvePanel::readSettings()
+{
+  m_loadingSettings = true;
+  const QSettings settings;
+  const BlendshapeSolveOptions defaults;
+  m_method->setCurrentIndex(std::max(
+      0, m_method->findData(settings.value(settingKey("method"), static_cast<int>(defaults.method)).toInt())));
+  m_autoLambda->setChecked(settings.value(settingKey("autoLambda"), true).toBool());
+  m_lambda->setValue(settings.value(settingKey("lambda"), 0.001).toDouble());
+  m_smoothness->setValue(settings.value(settingKey("smoothness"), defaults.smoothness).toDouble());
+  m_sparsity->setValue(settings.value(settingKey("sparsity"), defaults.sparsity).toDouble());
+  m_scaleFactor->setValue(settings.value(settingKey("scale"), 0.8).toDouble());
+  m_cutoff->setValue(settings.value(settingKey("cutoff"), 6.0).toDouble());
+  m_show->setChecked(settings.value(settingKey("show"), true).toBool());
+  m_beside->setChecked(settings.value(settingKey("beside"), false).toBool());
+  m_loadingSettings = false;
+  m_scene->setShown(m_show->isChecked());
+  m_scene->setBeside(m_beside->isChecked());
+  updateMethodFields();
+}
+
+void BlendshapeSolvePanel::writeSettings() const
+{
+  if (m_loadingSettings)
+    return;
+  QSettings settings;
+  settings.setValue(settingKey("method"), m_method->currentData());
+  settings.setValue(settingKey("autoLambda"), m_autoLambda->isChecked());
+  settings.setValue(settingKey("lambda"), m_lambda->value());
+  settings.setValue(settingKey("smoothness"), m_smoothness->value());
+  settings.setValue(settingKey("sparsity"), m_sparsity->value());
+  settings.setValue(settingKey("scale"), m_scaleFactor->value());
+  settings.setValue(settingKey("cutoff"), m_cutoff->value());
+  settings.setValue(settingKey("show"), m_show->isChecked());
+  settings.setValue(settingKey("beside"), m_beside->isChecked());
+}
+
+void BlendshapeSolvePanel::updateMethodFields()
+{
+  const auto method = static_cast<BlendshapeSolveMethod>(m_method->currentData().toInt());
+  m_autoLambda->setEnabled(method != BlendshapeSolveMethod::Bvls);
+  m_lambda->setEnabled(method != BlendshapeSolveMethod::Bvls && !m_autoLambda->isChecked());
+  m_smoothness->setEnabled(method == BlendshapeSolveMethod::Temporal);
+  writeSettings();
+}
+
+BlendshapeSolveOptions BlendshapeSolvePanel::optionsFromUi() const
+{
+  BlendshapeSolveOptions options;
+  options.method = static_cast<BlendshapeSolveMethod>(m_method->currentData().toInt());
+  if (options.method != BlendshapeSolveMethod::Bvls && !m_autoLambda->isChecked())
+    options.lambda = m_lambda->value();
+  options.smoothness = m_smoothness->value();
+  options.sparsity = m_sparsity->value();
+  // The neutral frame is the face mesh's: the binding was made on it.
+  options.neutralFrame = m_faceMesh.model().options().neutralFrame;
+  options.scale = m_faceMesh.model().options().scale;
+  return options;
+}
+
+bool BlendshapeSolvePanel::busy() const
+{
+  return m_loadWatcher.isRunning() || m_solveWatcher.isRunning();
+}
+
+void BlendshapeSolvePanel::waitForJob()
+{
+  while (busy()) {
+    m_loadWatcher.waitForFinished();
+    m_solveWatcher.waitForFinished();
+    QCoreApplication::processEvents();
+  }
+  QCoreApplication::processEvents();  // the finished() slots
+}
+
+QString BlendshapeSolvePanel::loadRig(const QString& path, const QString& shapeFolder)
+{
+  if (busy()) {
+    showStatus(tr("Wait for the running job, or cancel it."), true);
+    return m_status->text();
+  }
+  showStatus(tr("Reading %1…").arg(QFileInfo(path).fileName()));
+  m_loadWatcher.setFuture(QtConcurrent::run(readRigInBackground, path, shapeFolder));
+  return {};
+}
+
+void BlendshapeSolvePanel::onRigLoaded()
+{
+  const RigLoad load = m_loadWatcher.result();
+  if (!load.error.isEmpty()) {
+    showStatus(tr("Cannot read the rig %1: %2").arg(QFileInfo(load.path).fileName(), load.error), true);
+    emit rigLoaded(m_status->text());
+    return;
+  }
+  m_model->setRig(load.rig, load.path);
+  // The binding is made on the rig's neutral: the Face Mesh panel shows it (a mesh of the same
+  // vertex count, e.g. the OBJ it came from, and its binding are kept).
+  if (m_faceMesh.model().mesh().vertexCount() != load.rig->neutral.vertexCount())
+    m_faceMesh.useMesh(load.rig->neutral, load.path);
+  m_rigLabel->setText(tr("%1: %n shape(s), %2 vertices", nullptr, static_cast<int>(load.rig->shapeCount()))
+                          .arg(QFileInfo(load.path).fileName())
+                          .arg(static_cast<qlonglong>(load.rig->neutral.vertexCount())));
+  fillShapeList();
+  showStatus(m_faceMesh.model().binding().markers.empty()
+                 ? tr("Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.")
+                 : tr("Rig loaded. Solve when ready."));
+  emit rigLoaded({});
+}
+
+QString BlendshapeSolvePanel::solve()
+{
+  QString problem;
+  const FaceMeshModel& face = m_faceMesh.model();
+  if (busy())
+    problem = tr("A job is already running.");
+  else if (!m_document.hasTake())
+    problem = tr("Open a take first.");
+  else if (!m_model->hasRig())
+    problem = tr("Load a rig first.");
+  else if (face.mesh().vertexCount() != m_model->rig()->neutral.vertexCount())
+    problem = tr("The Face Mesh panel shows another mesh than this rig's neutral; load the rig again.");
+  else if (face.binding().markers.empty())
+    problem = tr("Bind the markers to the rig's neutral in the Face Mesh panel first (Auto-Bind or Load Binding).");
+  if (!problem.isEmpty()) {
+    showStatus(problem, true);
+    return problem;
+  }
+  showStatus(tr("Solving…"));
+  m_solve->setEnabled(false);
+  m_solveWatcher.setFuture(QtConcurrent::run(solveInBackground, m_model->rig(), face.binding(), face.rigTake(),
+                                             optionsFromUi(), m_progress->begin()));
+  return {};
+}
+
+void BlendshapeSolvePanel::cancel()
+{
+  m_progress->cancel();
+}
+
+void BlendshapeSolvePanel::onSolved()
+{
+  m_progress->finish();
+  m_solve->setEnabled(true);
+  SolveRun run = m_solveWatcher.result();
+  if (!run.error.isEmpty()) {
+    showStatus(tr("Solve failed: %1").arg(run.error), true);
+    emit solveFinished(m_status->text());
+    return;
+  }
+  if (run.result.weights.rows() == 0) {
+    showStatus(tr("Cancelled; the weights are as they were."));
+    emit solveFinished(tr("cancelled"));
+    return;
+  }
+  const BlendshapeSolveResult& r = run.result;
+  double sum = 0.0, worst = 0.0;
+  int solved = 0;
+  for (const double e : r.residual)
+    if (std::isfinite(e)) {
+      sum += e;
+      worst = std::max(worst, e);
+      ++solved;
+    }
+  const auto held = static_cast<int>(std::count(r.held.begin(), r.held.end(), true));
+  const QString method = QString::fromUtf8(blendshapeSolveMethodName(run.options.method).data());
+  QString text = tr("Solved %1 frames from %2 markers (%3, λ %4%5) in %6 s; marker residual %7 mm mean, %8 mm max.")
+                     .arg(r.weights.rows())
+                     .arg(run.markers)
+                     .arg(method)
+                     .arg(r.lambda, 0, 'g', 3)
+                     .arg(r.lambdaChosen ? tr(" by GCV") : QString())
+                     .arg(run.setupSeconds + r.solveSeconds, 0, 'f', 2)
+                     .arg(solved > 0 ? sum / solved : 0.0, 0, 'f', 2)
+                     .arg(worst, 0, 'f', 2);
+  if (held > 0)
+    text += QLatin1Char('\n') + tr("Warning: %n frame(s) had too few markers and hold the previous frame's weights "
+                                   "(shaded red in the Weights view).",
+                                   nullptr, held);
+  const BlendshapeSolveOptions options = run.options;
+  m_model->setResult(std::move(run.result), options);
+  fillShapeList();
+  showStatus(text, held > 0);
+  emit solveFinished({});
+}
+
+void BlendshapeSolvePanel::fillShapeList()
+{
+  const QSignalBlocker blocker(m_shapes);
+  m_shapes->clear();
+  if (!m_model->hasRig())
+    return;
+  const Eigen::VectorXd peak = peaks(m_model->weights());
+  for (Eigen::Index s = 0; s < m_model->rig()->shapeCount(); ++s) {
+    QString text = m_model->shapeName(s);
+    if (m_model->hasResult())
+      text += tr("  (peak %1)").arg(peak(s), 0, 'f', 2);
+    auto* item = new QListWidgetItem(text, m_shapes);
+    item->setData(Qt::UserRole, static_cast<qlonglong>(s));
+    if (m_model->hasResult() && peak(s) < 0.01)
+      item->setForeground(QColor(130, 130, 130));  // never used in this take
+  }
+  applyShapeFilter();
+  m_syncingSelection = true;
+  onModelSelectionChanged();
+  m_syncingSelection = false;
+}
+
+void BlendshapeSolvePanel::applyShapeFilter()
+{
+  const QString filter = m_filter->text().trimmed();
+  for (int i = 0; i < m_shapes->count(); ++i) {
+    QListWidgetItem* item = m_shapes->item(i);
+    item->setHidden(!filter.isEmpty() && !m_model->shapeName(item->data(Qt::UserRole).toLongLong())
+                                              .contains(filter, Qt::CaseInsensitive));
+  }
+}
+
+void BlendshapeSolvePanel::onListSelectionChanged()
+{
+  if (m_syncingSelection)
+    return;
+  std::vector<Eigen::Index> shapes;
+  for (const QListWidgetItem* item : m_shapes->selectedItems())
+    shapes.push_back(static_cast<Eigen::Index>(item->data(Qt::UserRole).toLongLong()));
+  m_syncingSelection = true;
+  m_model->setSelectedShapes(std::move(shapes));
+  m_syncingSelection = false;
+}
+
+void BlendshapeSolvePanel::onModelSelectionChanged()
+{
+  if (m_syncingSelection && sender() == m_model)
+    return;
+  const QSignalBlocker blocker(m_shapes);
+  const auto& selected = m_model->selectedShapes();
+  for (int i = 0; i < m_shapes->count(); ++i) {
+    QListWidgetItem* item = m_shapes->item(i);
+    const auto shape = static_cast<Eigen::Index>(item->data(Qt::UserRole).toLongLong());
+    item->setSelected(std::binary_search(selected.begin(), selected.end(), shape));
+  }
+  if (!selected.empty())
+    for (int i = 0; i < m_shapes->count(); ++i)
+      if (m_shapes->item(i)->isSelected()) {
+        m_shapes->scrollToItem(m_shapes->item(i));
+        break;
+      }
+}
+
+void BlendshapeSolvePanel::showEditResult(const QString& why)
+{
+  if (why.isEmpty())
+    return;
+  showStatus(why, true);
+  emit message(why, 5000);
+}
+
+QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
+{
+  if (!m_model->hasResult())
+    return tr("Solve the take first.");
+  try {
+    const Take& take = m_document.take();
+    writeWeightsCsv(path.toStdString(), m_model->rig()->shapeNames(), m_model->weights(), take.firstFrame(),
+                    take.frameRate(), liveLink ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
+  } catch (const std::exception& e) {
+    showStatus(tr("Cannot write the weights: %1").arg(QString::fromStdString(e.what())), true);
+    return m_status->text();
+  }
+  showStatus(tr("Wrote %1").arg(QFileInfo(path).fileName()));
+  return {};
+}
+
+QString BlendshapeSolvePanel::exportGlb(const QString& path)
+{
+  if (!m_model->hasResult())
+    return tr("Solve the take first.");
+  try {
+    writeRigGlb(path.toStdString(), *m_model->rig(), m_model->weights(), m_document.take().frameRate());
+  } catch (const std::exception& e) {
+    showStatus(tr("Cannot write the rig: %1").arg(QString::fromStdString(e.what())), true);
+    return m_status->text();
+  }
+  showStatus(tr("Wrote %1").arg(QFileInfo(path).fileName()));
+  return {};
+}
+
+QString BlendshapeSolvePanel::statusText() const
+{
+  return m_status->text();
+}
+
+void BlendshapeSolvePanel::showStatus(const QString& text, bool error)
+{
+  m_status->setStyleSheet(error ? QStringLiteral("color: #d04040;") : QString());
+  m_status->setText(text);
+}
+
+void BlendshapeSolvePanel::loadGltfDialog()
+{
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load glTF rig"), lastFolder(),
+                                                    tr("glTF rigs (*.glb *.gltf);;All files (*)"));
+  if (path.isEmpty())
+    return;
+  rememberFolder(path);
+  (void)loadRig(path);
+}
+
+void BlendshapeSolvePanel::loadObjDialog()
+{
+  const QString neutral = QFileDialog::getOpenFileName(this, tr("Load the rig's neutral mesh"), lastFolder(),
+                                                       tr("Meshes (*.obj *.ply);;All files (*)"));
+  if (neutral.isEmpty())
+    return;
+  rememberFolder(neutral);
+  const QString folder = QFileDialog::getExistingDirectory(this, tr("The folder with one OBJ per shape"),
+                                                           QFileInfo(neutral).absolutePath());
+  if (folder.isEmpty())
+    return;
+  (void)loadRig(neutral, folder);
+}
+
+void BlendshapeSolvePanel::exportCsvDialog()
+{
+  const QString plain = tr("Weight curves (*.csv)"), liveLink = tr("Live Link Face CSV (*.csv)");
+  QString filter = plain;
+  QString path = QFileDialog::getSaveFileName(this, tr("Export weights"), lastFolder(), plain + QStringLiteral(";;") + liveLink,
+                                              &filter);
+  if (path.isEmpty())
+    return;
+  if (QFileInfo(path).suffix().isEmpty())
+    path += QStringLiteral(".csv");
+  rememberFolder(path);
+  (void)exportCsv(path, filter == liveLink);
+}
+
+void BlendshapeSolvePanel::exportGlbDialog()
+{
+  QString path = QFileDialog::getSaveFileName(this, tr("Export animated rig"), lastFolder(), tr("glTF binary (*.glb)"));
+  if (path.isEmpty())
+    return;
+  if (QFileInfo(path).suffix().isEmpty())
+    path += QStringLiteral(".glb");
+  rememberFolder(path);
+  (void)exportGlb(path);
+}
+
+} // namespace mocap::ui

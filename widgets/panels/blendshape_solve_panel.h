@@ -1,0 +1,146 @@
+#pragma once
+
+#include "mocap/deform/blendshape_solver.h"
+#include "mocap/model/blendshape_rig.h"
+
+#include <QFutureWatcher>
+#include <QString>
+#include <QWidget>
+
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+
+namespace mocap::ui {
+
+class BlendshapeScene;
+class BlendshapeSolveModel;
+class FaceMeshPanel;
+class JobProgressRow;
+class MarkerView3d;
+class TakeDocument;
+class WeightEditActions;
+
+/// A rig read on a worker, or why it could not be.
+struct RigLoad
+{
+  std::shared_ptr<const BlendshapeRig> rig;
+  QString path;
+  QString error;
+};
+
+/// A solve run on a worker, or why it failed ("" and no weights when cancelled).
+struct SolveRun
+{
+  BlendshapeSolveResult result;
+  BlendshapeSolveOptions options;
+  std::size_t markers = 0;
+  double setupSeconds = 0.0;
+  QString error;
+};
+
+/// The Blendshape solve dock: load a rig (a glTF/GLB with morph targets, or a neutral OBJ and a
+/// folder of shape OBJs; read on a worker), whose neutral becomes the Face Mesh dock's mesh so
+/// the binding is made and edited there; choose the method (bvls, ridge, temporal) and its λ,
+/// smoothness and sparsity; Solve runs BlendshapeSolver on a worker with progress and Cancel, on
+/// the take the face mesh sees (head motion removed). Then: the rig posed by the weights in the
+/// 3D view (BlendshapeScene), the shapes with their peak weights (selecting them shows their
+/// curves in the Weights view), the marker residual and held frames in the status, undoable
+/// edits of the selected shapes over the selected frame range (scale, zero, smooth), and export
+/// of the weights as CSV (plain or Live Link Face) or of the animated rig as GLB. Settings are
+/// remembered (QSettings, "blendshapeSolve/…").
+class BlendshapeSolvePanel final : public QWidget
+{
+  Q_OBJECT
+
+public:
+  BlendshapeSolvePanel(TakeDocument& document, FaceMeshPanel& faceMesh, MarkerView3d& view, QWidget* parent = nullptr);
+  ~BlendshapeSolvePanel() override;
+
+  [[nodiscard]] BlendshapeSolveModel& model() const { return *m_model; }
+  [[nodiscard]] BlendshapeScene& scene() const { return *m_scene; }
+  [[nodiscard]] WeightEditActions& edits() const { return *m_edits; }
+
+  /// Starts reading a rig: `path` a .glb/.gltf (no folder) or a neutral .obj/.ply with
+  /// `shapeFolder`. rigLoaded() tells the outcome. Returns "" or why nothing was started.
+  QString loadRig(const QString& path, const QString& shapeFolder = {});
+  /// Starts a solve of the take with the panel's settings; solveFinished() tells the outcome.
+  /// Returns "" or why nothing was started (no rig, no binding, a job running).
+  QString solve();
+  void cancel();
+  [[nodiscard]] bool busy() const;
+  /// Processes events until the running load or solve has delivered (for tests and the command line).
+  void waitForJob();
+
+  [[nodiscard]] BlendshapeSolveOptions optionsFromUi() const;
+  /// Each returns "" or the error shown.
+  QString exportCsv(const QString& path, bool liveLink);
+  QString exportGlb(const QString& path);
+
+  [[nodiscard]] QString statusText() const;
+  [[nodiscard]] QListWidget* shapeList() const { return m_shapes; }
+
+signals:
+  void rigLoaded(const QString& error);
+  void solveFinished(const QString& error);
+  /// What an edit did or why it did nothing, for the status bar.
+  void message(const QString& text, int timeoutMs);
+
+private:
+  void buildUi();
+  QWidget* buildRigBox();
+  QWidget* buildSolveBox();
+  QWidget* buildShapesBox();
+  QWidget* buildDisplayBox();
+  void readSettings();
+  void writeSettings() const;
+  void onRigLoaded();
+  void onSolved();
+  void fillShapeList();
+  void applyShapeFilter();
+  void onListSelectionChanged();
+  void onModelSelectionChanged();
+  void updateMethodFields();
+  void showStatus(const QString& text, bool error = false);
+  void showEditResult(const QString& why);
+  void loadGltfDialog();
+  void loadObjDialog();
+  void exportCsvDialog();
+  void exportGlbDialog();
+
+  TakeDocument& m_document;
+  FaceMeshPanel& m_faceMesh;
+  BlendshapeSolveModel* m_model = nullptr;
+  BlendshapeScene* m_scene = nullptr;
+  WeightEditActions* m_edits = nullptr;
+  QFutureWatcher<RigLoad> m_loadWatcher;
+  QFutureWatcher<SolveRun> m_solveWatcher;
+  bool m_loadingSettings = false;
+  bool m_syncingSelection = false;
+
+  QLabel* m_rigLabel = nullptr;
+  QComboBox* m_method = nullptr;
+  QCheckBox* m_autoLambda = nullptr;
+  QDoubleSpinBox* m_lambda = nullptr;
+  QDoubleSpinBox* m_smoothness = nullptr;
+  QDoubleSpinBox* m_sparsity = nullptr;
+  QPushButton* m_solve = nullptr;
+  JobProgressRow* m_progress = nullptr;
+  QLabel* m_status = nullptr;
+  QLineEdit* m_filter = nullptr;
+  QListWidget* m_shapes = nullptr;
+  QDoubleSpinBox* m_scaleFactor = nullptr;
+  QDoubleSpinBox* m_cutoff = nullptr;
+  QCheckBox* m_show = nullptr;
+  QCheckBox* m_beside = nullptr;
+  QPushButton* m_exportCsv = nullptr;
+  QPushButton* m_exportGlb = nullptr;
+};
+
+} // namespace mocap::ui

@@ -1,0 +1,74 @@
+#include "views/blendshape_scene.h"
+
+#include "document/blendshape_solve_model.h"
+#include "document/face_mesh_model.h"
+#include "document/take_document.h"
+#include "views/face_mesh_scene.h"
+#include "views/marker_view_3d.h"
+#include "views/mesh_layer.h"
+#include "views/vtk_viewport.h"
+
+namespace mocap::ui {
+
+BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshScene& faceMesh, MarkerView3d& view,
+                                 QObject* parent)
+    : QObject(parent), m_model(model), m_faceMesh(faceMesh), m_view(view),
+      m_layer(std::make_unique<MeshLayer>(view.viewport()->renderer()))
+{
+  m_layer->setColor(QColor(236, 196, 160));  // warm, apart from the deformed mesh's colours
+  m_layer->setVisible(false);
+  connect(&model, &BlendshapeSolveModel::rigChanged, this, &BlendshapeScene::updateMesh);
+  connect(&model, &BlendshapeSolveModel::resultChanged, this, &BlendshapeScene::updateFrame);
+  connect(&model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeScene::updateFrame);
+  connect(&faceMesh.model(), &FaceMeshModel::rigChanged, this, &BlendshapeScene::updateFrame);
+  connect(&faceMesh.model().document(), &TakeDocument::currentFrameChanged, this, &BlendshapeScene::updateFrame);
+  connect(view.viewport(), &VtkViewport::aboutToRender, this, &BlendshapeScene::updatePlacement);
+}
+
+BlendshapeScene::~BlendshapeScene() = default;
+
+void BlendshapeScene::setShown(bool shown)
+{
+  m_shown = shown;
+  updateFrame();
+}
+
+void BlendshapeScene::setBeside(bool beside)
+{
+  m_beside = beside;
+  updatePlacement();
+  m_view.viewport()->requestRender();
+}
+
+void BlendshapeScene::updateMesh()
+{
+  if (m_model.hasRig())
+    m_layer->setMesh(m_model.rig()->neutral);
+  else
+    m_layer->clear();
+  updateFrame();
+}
+
+void BlendshapeScene::updateFrame()
+{
+  const bool posed = m_shown && m_layer->hasMesh() &&
+                     m_model.pose(m_faceMesh.model().document().currentFrame(), m_posed) &&
+                     m_posed.rows() == m_layer->vertices().rows();
+  if (posed)
+    m_layer->setVertices(m_posed);
+  m_posedShown = posed;
+  updatePlacement();
+  m_view.viewport()->requestRender();
+}
+
+void BlendshapeScene::updatePlacement()
+{
+  const std::optional<Eigen::Affine3d> placement = m_faceMesh.placement();
+  m_layer->setVisible(m_posedShown && placement.has_value());
+  if (!m_posedShown || !placement)
+    return;
+  const double offset = m_beside ? -sideOffset(m_model.rig()->neutral) : 0.0;
+  m_layer->setPlacement(*placement * Eigen::Translation3d(offset, 0.0, 0.0));
+}
+
+} // namespace mocap::ui
