@@ -75,7 +75,14 @@ int main(int argc, char** argv)
   const QCommandLineOption showDock(QStringLiteral("show-dock"),
                                     QStringLiteral("Show and raise the dock NAME (title or object name, e.g. Gaps)."),
                                     QStringLiteral("NAME"));
-  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding, showDock});
+  const QCommandLineOption rig(QStringLiteral("rig"),
+                               QStringLiteral("Load a blendshape rig (.glb/.gltf, or a neutral .obj with --rig-shapes); "
+                                              "--binding without --mesh is then the binding on its neutral."),
+                               QStringLiteral("RIG"));
+  const QCommandLineOption rigShapes(QStringLiteral("rig-shapes"),
+                                     QStringLiteral("The folder of shape OBJs of an OBJ rig."), QStringLiteral("DIR"));
+  const QCommandLineOption solve(QStringLiteral("solve"), QStringLiteral("Solve the take to the rig's weights."));
+  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding, showDock, rig, rigShapes, solve});
   parser.process(app);
 
   mocap::studio::MainWindow window;
@@ -95,6 +102,15 @@ int main(int argc, char** argv)
   }
   if (parser.isSet(mesh)) {
     const QString error = window.loadFaceMesh(parser.value(mesh), parser.value(binding));
+    if (!error.isEmpty()) {
+      std::cerr << "mocap-studio: " << error.toStdString() << '\n';
+      if (parser.isSet(screenshot))
+        return 1;
+    }
+  }
+  if (parser.isSet(rig)) {
+    const QString error = window.loadRig(parser.value(rig), parser.value(rigShapes),
+                                         parser.isSet(mesh) ? QString() : parser.value(binding), parser.isSet(solve));
     if (!error.isEmpty()) {
       std::cerr << "mocap-studio: " << error.toStdString() << '\n';
       if (parser.isSet(screenshot))

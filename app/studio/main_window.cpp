@@ -16,6 +16,8 @@
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "document/blendshape_solve_model.h"
+#include "panels/blendshape_solve_panel.h"
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/gap_list_panel.h"
@@ -25,6 +27,7 @@
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
+#include "views/weight_curve_view.h"
 #include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
 #include "views/sample_colors.h"
@@ -248,6 +251,52 @@ void MainWindow::createDocks()
   addDockWidget(Qt::RightDockWidgetArea, m_faceMeshDock);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
+
+  m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_document, *m_faceMesh, *m_view3d, this);
+  connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::message, statusBar(), &QStatusBar::showMessage);
+  m_blendshapeDock = new QDockWidget(tr("Blendshape Solve"), this);
+  m_blendshapeDock->setObjectName(QStringLiteral("blendshapeSolveDock"));
+  auto* solveScroll = new QScrollArea(m_blendshapeDock);
+  solveScroll->setWidgetResizable(true);
+  solveScroll->setFrameShape(QFrame::NoFrame);
+  solveScroll->setWidget(m_blendshapeSolve);
+  m_blendshapeDock->setWidget(solveScroll);
+  addDockWidget(Qt::RightDockWidgetArea, m_blendshapeDock);
+  tabifyDockWidget(cleaningDock, m_blendshapeDock);
+  m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
+
+  m_weights = new ui::WeightCurveView(*m_document, m_blendshapeSolve->model(), this);
+  m_weightsDock = new QDockWidget(tr("Weights"), this);
+  m_weightsDock->setObjectName(QStringLiteral("weightsDock"));
+  m_weightsDock->setWidget(m_weights);
+  addDockWidget(Qt::BottomDockWidgetArea, m_weightsDock);
+  tabifyDockWidget(curveDock, m_weightsDock);
+  m_weightsDock->hide();  // shown with the first solve, or from View ▸ Weights
+  connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::solveFinished, this, [this](const QString& error) {
+    if (!error.isEmpty())
+      return;
+    m_weightsDock->show();
+    m_weightsDock->raise();
+  });
+}
+
+QString MainWindow::loadRig(const QString& rigPath, const QString& shapeFolder, const QString& bindingPath, bool solve)
+{
+  m_blendshapeDock->show();
+  m_blendshapeDock->raise();
+  QString error = m_blendshapeSolve->loadRig(rigPath, shapeFolder);
+  m_blendshapeSolve->waitForJob();
+  if (error.isEmpty() && !m_blendshapeSolve->model().hasRig())
+    error = m_blendshapeSolve->statusText();
+  if (error.isEmpty() && !bindingPath.isEmpty())
+    error = m_faceMesh->loadBinding(bindingPath);
+  if (error.isEmpty() && solve) {
+    error = m_blendshapeSolve->solve();
+    m_blendshapeSolve->waitForJob();
+    if (error.isEmpty() && !m_blendshapeSolve->model().hasResult())
+      error = m_blendshapeSolve->statusText();
+  }
+  return error;
 }
 
 QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& bindingPath)

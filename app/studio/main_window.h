@@ -24,7 +24,9 @@ class LabellingActions;
 class MarkerEditActions;
 struct Preferences;
 class CleaningPanel;
+class BlendshapeSolvePanel;
 class FaceMeshPanel;
+class WeightCurveView;
 class GapListPanel;
 class CurveView;
 class LayoutPlanningPanel;
@@ -58,12 +60,20 @@ public:
   [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
   [[nodiscard]] ui::LayoutPlanningPanel* layoutPlanningPanel() const { return m_layoutPlanning; }
   [[nodiscard]] ui::FaceMeshPanel* faceMeshPanel() const { return m_faceMesh; }
+  [[nodiscard]] ui::BlendshapeSolvePanel* blendshapeSolvePanel() const { return m_blendshapeSolve; }
+  [[nodiscard]] ui::WeightCurveView* weightView() const { return m_weights; }
   [[nodiscard]] ui::GapListPanel* gapListPanel() const { return m_gapList; }
   /// Shows and raises the dock with this object name or title (any case); false when none has it.
   bool showDock(const QString& name);
   /// Loads a face mesh (and its binding when given) into the Face Mesh dock and shows it.
   /// Returns the error message, empty on success.
   QString loadFaceMesh(const QString& meshPath, const QString& bindingPath = {});
+  /// Loads a blendshape rig (a .glb/.gltf, or a neutral .obj/.ply with `shapeFolder`) into the
+  /// Blendshape Solve dock and shows it, then the binding (made on the rig's neutral) when given;
+  /// with `solve`, then solves the take with the dock's settings. Waits for each (the command
+  /// line's --rig, --solve). Returns the error, or "".
+  QString loadRig(const QString& rigPath, const QString& shapeFolder = {}, const QString& bindingPath = {},
+                  bool solve = false);
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether
@@ -133,6 +143,10 @@ private:
   ui::CleaningPanel* m_cleaning = nullptr;
   ui::LayoutPlanningPanel* m_layoutPlanning = nullptr;
   ui::FaceMeshPanel* m_faceMesh = nullptr;
+  ui::BlendshapeSolvePanel* m_blendshapeSolve = nullptr;
+  ui::WeightCurveView* m_weights = nullptr;
+  QDockWidget* m_blendshapeDock = nullptr;
+  QDockWidget* m_weightsDock = nullptr;
   ui::GapListPanel* m_gapList = nullptr;
   QDockWidget* m_faceMeshDock = nullptr;
   ui::MarkerTableModel* m_tableModel = nullptr;

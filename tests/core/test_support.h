@@ -27,6 +27,12 @@ private:
   std::filesystem::path m_path;
 };
 
+/// A rig of the MediaPipe face (tests/data, cm) with three shapes — jawOpen (the chin down and
+/// back), browInnerUp (the inner brows up), mouthSmile_L (the left mouth corner out and up) —
+/// written in ICT FaceKit's layout: `dir`/neutral.obj and `dir`/shapes/<name>.obj. The sample
+/// binding fits its neutral.
+void writeSmallRig(const TempDir& dir);
+
 /// How many entries (files and folders) `folder` holds directly.
 [[nodiscard]] std::size_t entryCount(const std::filesystem::path& folder);
 

@@ -207,6 +207,7 @@ QWidget* BlendshapeSolvePanel::buildShapesBox()
   m_shapes = new QListWidget(box);
   m_shapes->setObjectName(QStringLiteral("shapeList"));
   m_shapes->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  m_shapes->setMinimumHeight(180);  // a rig has tens of shapes: show a good part of them
   m_shapes->setToolTip(tr("Selected shapes are drawn in the Weights view and edited below"));
   connect(m_shapes, &QListWidget::itemSelectionChanged, this, &BlendshapeSolvePanel::onListSelectionChanged);
   rows->addWidget(m_shapes, 1);
@@ -297,7 +298,7 @@ void BlendshapeSolvePanel::readSettings()
   m_scaleFactor->setValue(settings.value(settingKey("scale"), 0.8).toDouble());
   m_cutoff->setValue(settings.value(settingKey("cutoff"), 6.0).toDouble());
   m_show->setChecked(settings.value(settingKey("show"), true).toBool());
-  m_beside->setChecked(settings.value(settingKey("beside"), false).toBool());
+  m_beside->setChecked(settings.value(settingKey("beside"), true).toBool());
   m_loadingSettings = false;
   m_scene->setShown(m_show->isChecked());
   m_scene->setBeside(m_beside->isChecked());

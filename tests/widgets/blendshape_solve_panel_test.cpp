@@ -1,0 +1,229 @@
+// The Blendshape Solve dock under Xvfb: a small OBJ rig on the sample mesh, solved from the
+// sample take off the UI thread; the posed rig in the 3D view, weight curves with click-to-select,
+// undoable weight edits, exports, and clear errors.
+#include "../core/test_support.h"
+
+#include "main_window.h"
+#include "sample_window.h"
+
+#include "actions/weight_edit_actions.h"
+#include "document/blendshape_solve_model.h"
+#include "document/face_mesh_model.h"
+#include "document/take_document.h"
+#include "panels/blendshape_solve_panel.h"
+#include "panels/face_mesh_panel.h"
+#include "views/blendshape_scene.h"
+#include "views/face_mesh_scene.h"
+#include "views/mesh_layer.h"
+#include "views/weight_curve_view.h"
+
+#include "mocap/base/file_io.h"
+
+#include <QDockWidget>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+namespace mocap {
+namespace {
+
+using studio::MainWindow;
+
+const QString kMesh = QStringLiteral(MOCAP_SAMPLE_DIR "/canonical_face_model.obj");
+const QString kBinding = QStringLiteral(MOCAP_SAMPLE_DIR "/Facial-Sing.binding.json");
+
+class BlendshapeSolvePanelTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    test::writeSmallRig(dir);
+    window = test::openSampleWindow(1280, 800);
+    ASSERT_NE(window, nullptr);
+    panel = window->blendshapeSolvePanel();
+    ASSERT_NE(panel, nullptr);
+  }
+
+  QString neutral() const { return QString::fromStdString(dir.file("neutral.obj").string()); }
+  QString shapes() const { return QString::fromStdString(dir.file("shapes").string()); }
+  ui::BlendshapeSolveModel& model() const { return panel->model(); }
+  ui::TakeDocument& document() const { return window->document(); }
+
+  /// The sample binding on the sample mesh, then the rig (same vertices) and a solve.
+  void solveSample()
+  {
+    ASSERT_EQ(window->loadFaceMesh(kMesh, kBinding), QString());
+    ASSERT_EQ(window->loadRig(neutral(), shapes(), {}, true), QString()) << panel->statusText().toStdString();
+  }
+
+  /// The frame where `shape`'s weight peaks.
+  Eigen::Index peakFrame(Eigen::Index shape) const
+  {
+    Eigen::Index frame = 0;
+    model().weights().col(shape).maxCoeff(&frame);
+    return frame;
+  }
+
+  test::TempDir dir;
+  std::unique_ptr<MainWindow> window;
+  ui::BlendshapeSolvePanel* panel = nullptr;
+};
+
+TEST_F(BlendshapeSolvePanelTest, SolvesTheTakeOffTheUiThreadAndPosesTheRigInTheView)
+{
+  solveSample();
+  ASSERT_TRUE(model().hasResult());
+  EXPECT_EQ(model().weights().rows(), document().take().frameCount());
+  ASSERT_EQ(model().weights().cols(), 3);
+  EXPECT_EQ(model().shapeName(0), QStringLiteral("browInnerUp"));  // shapes in name order
+  EXPECT_GE(model().weights().minCoeff(), 0.0);
+  EXPECT_LE(model().weights().maxCoeff(), 1.0);
+  EXPECT_GT(model().weights().maxCoeff(), 0.05) << "the singing face should use the shapes";
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("Solved"))) << panel->statusText().toStdString();
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("31 markers"))) << panel->statusText().toStdString();
+  EXPECT_EQ(panel->shapeList()->count(), 3);
+  EXPECT_TRUE(window->findChild<QDockWidget*>(QStringLiteral("weightsDock"))->isVisible());
+
+  // The posed rig follows the current frame: at a shape's peak it is the neutral plus its delta.
+  const Eigen::Index shape = 1;
+  const Eigen::Index frame = peakFrame(shape);
+  document().setCurrentFrame(frame);
+  QApplication::processEvents();
+  const ui::MeshLayer& layer = panel->scene().layer();
+  EXPECT_TRUE(layer.isVisible());
+  MeshVertices expected;
+  model().rig()->evaluate(model().weights().row(frame).transpose(), expected);
+  ASSERT_EQ(layer.vertices().rows(), expected.rows());
+  EXPECT_LT((layer.vertices() - expected).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT((layer.vertices() - model().rig()->neutral.vertices).cwiseAbs().maxCoeff(), 0.01);
+  // Beside the markers (the default) it sits one mesh width and a bit to the side of the face mesh.
+  const Eigen::Vector3d shift = layer.placement().translation() -
+                                window->faceMeshPanel()->scene().placement()->translation();
+  EXPECT_GT(shift.norm(), 1.0);
+}
+
+TEST_F(BlendshapeSolvePanelTest, WeightEditsApplyToTheSelectedShapesOverTheRangeAndUndo)
+{
+  solveSample();
+  const Eigen::MatrixXd solved = model().weights();
+  model().setSelectedShapes({1});
+  document().setRange(100, 400);
+  QUndoStack& undo = *document().undoStack();
+  const int before = undo.count();
+  EXPECT_EQ(panel->edits().scale(0.5), QString());
+  EXPECT_EQ(undo.count(), before + 1);
+  const Eigen::MatrixXd& scaled = model().weights();
+  EXPECT_LT((scaled.col(1).segment(100, 301) - 0.5 * solved.col(1).segment(100, 301)).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(scaled.col(1).head(100), solved.col(1).head(100));
+  EXPECT_EQ(scaled.col(0), solved.col(0));
+  EXPECT_EQ(panel->edits().zero(), QString());
+  EXPECT_EQ(model().weights().col(1).segment(100, 301).cwiseAbs().maxCoeff(), 0.0);
+  undo.undo();
+  undo.undo();
+  EXPECT_EQ(model().weights(), solved);
+  undo.redo();
+
+  // Smoothing keeps the curve inside [0, 1] and makes it smoother within the range.
+  undo.undo();
+  document().clearRange();
+  const auto roughness = [](const Eigen::VectorXd& w) {
+    return (w.segment(2, w.size() - 2) - 2.0 * w.segment(1, w.size() - 2) + w.head(w.size() - 2)).squaredNorm();
+  };
+  model().setSelectedShapes({0, 1, 2});
+  EXPECT_EQ(panel->edits().smooth(3.0), QString());
+  for (Eigen::Index s = 0; s < 3; ++s) {
+    if (roughness(solved.col(s)) > 0.0) {
+      EXPECT_LT(roughness(model().weights().col(s)), roughness(solved.col(s))) << s;
+    }
+  }
+  EXPECT_GE(model().weights().minCoeff(), 0.0);
+  EXPECT_LE(model().weights().maxCoeff(), 1.0);
+
+  // A new solve replaces the weights: the older edits no longer apply and undo leaves it alone.
+  ASSERT_EQ(panel->solve(), QString());
+  panel->waitForJob();
+  const Eigen::MatrixXd resolved = model().weights();
+  undo.undo();
+  EXPECT_EQ(model().weights(), resolved);
+
+  // Edits say why they cannot apply.
+  model().setSelectedShapes({});
+  EXPECT_FALSE(panel->edits().scale(2.0).isEmpty());
+  model().setSelectedShapes({0});
+  EXPECT_FALSE(panel->edits().smooth(1000.0).isEmpty());
+}
+
+TEST_F(BlendshapeSolvePanelTest, ClickingACurveSelectsItsShapeAndTheListFollows)
+{
+  solveSample();
+  ui::WeightCurveView* view = window->weightView();
+  ASSERT_NE(view, nullptr);
+  view->resize(1000, 300);
+  view->show();
+  view->repaint();
+  // A frame where shape 2 stands apart from the others.
+  const Eigen::MatrixXd& w = model().weights();
+  Eigen::Index frame = -1;
+  double gap = 0.0;
+  for (Eigen::Index f = 0; f < w.rows(); ++f) {
+    const double apart = std::min(std::abs(w(f, 2) - w(f, 0)), std::abs(w(f, 2) - w(f, 1)));
+    if (apart > gap) {
+      gap = apart;
+      frame = f;
+    }
+  }
+  ASSERT_GT(gap, 0.1);
+  const std::optional<QPointF> point = view->pointOf(2, frame);
+  ASSERT_TRUE(point.has_value());
+  EXPECT_EQ(view->shapeAt(*point), 2);
+  EXPECT_TRUE(view->readoutAt(*point).startsWith(QStringLiteral("mouthSmile_L"))) << view->readoutAt(*point).toStdString();
+  QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, point->toPoint());
+  EXPECT_EQ(model().selectedShapes(), std::vector<Eigen::Index>{2});
+  EXPECT_EQ(document().currentFrame(), frame);
+  const QList<QListWidgetItem*> selected = panel->shapeList()->selectedItems();
+  ASSERT_EQ(selected.size(), 1);
+  EXPECT_TRUE(selected.front()->text().startsWith(QStringLiteral("mouthSmile_L")));
+  // And selecting in the list selects the shape.
+  panel->shapeList()->item(0)->setSelected(true);
+  EXPECT_EQ(model().selectedShapes(), (std::vector<Eigen::Index>{0, 2}));
+}
+
+TEST_F(BlendshapeSolvePanelTest, ExportsWeightCurvesAndTheAnimatedRig)
+{
+  solveSample();
+  const std::string csv = dir.file("weights.csv").string(), glb = dir.file("rig.glb").string();
+  ASSERT_EQ(panel->exportCsv(QString::fromStdString(csv), false), QString());
+  const std::string text = readFileBytes(csv);
+  EXPECT_EQ(text.substr(0, text.find('\n')), "Frame,Time,browInnerUp,jawOpen,mouthSmile_L");
+  EXPECT_EQ(static_cast<Eigen::Index>(std::count(text.begin(), text.end(), '\n')), document().take().frameCount() + 1);
+  ASSERT_EQ(panel->exportCsv(QString::fromStdString(dir.file("live.csv").string()), true), QString());
+  EXPECT_EQ(readFileBytes(dir.file("live.csv")).rfind("Timecode,BlendShapeCount,", 0), 0u);
+  ASSERT_EQ(panel->exportGlb(QString::fromStdString(glb)), QString());
+  EXPECT_EQ(readFileBytes(glb).substr(0, 4), "glTF");
+}
+
+TEST_F(BlendshapeSolvePanelTest, MissingRigBindingOrFolderGiveClearErrors)
+{
+  EXPECT_TRUE(panel->solve().contains(QStringLiteral("Load a rig")));
+  // A shape folder that is not there: an error, and no rig half-loaded.
+  QSignalSpy loaded(panel, &ui::BlendshapeSolvePanel::rigLoaded);
+  ASSERT_EQ(panel->loadRig(neutral(), QString::fromStdString(dir.file("nowhere").string())), QString());
+  panel->waitForJob();
+  ASSERT_EQ(loaded.count(), 1);
+  EXPECT_FALSE(loaded.front().front().toString().isEmpty());
+  EXPECT_FALSE(model().hasRig());
+  // A rig without a binding: the neutral becomes the face mesh, and Solve asks for the binding.
+  ASSERT_EQ(window->loadRig(neutral(), shapes()), QString());
+  EXPECT_TRUE(model().hasRig());
+  EXPECT_EQ(window->faceMeshPanel()->model().mesh().vertexCount(), 468);
+  EXPECT_TRUE(panel->solve().contains(QStringLiteral("Bind the markers"))) << panel->statusText().toStdString();
+  EXPECT_FALSE(model().hasResult());
+  EXPECT_FALSE(panel->exportCsv(QString::fromStdString(dir.file("w.csv").string()), false).isEmpty());
+  EXPECT_FALSE(std::filesystem::exists(dir.file("w.csv")));
+}
+
+} // namespace
+} // namespace mocap
