@@ -117,9 +117,15 @@ int main(int argc, char** argv)
         return 1;
     }
   }
-  for (const QString& name : parser.values(showDock))
+  // Raised once the window is up: a hidden window's tabified docks may come up on another tab.
+  const QStringList docks = parser.values(showDock);
+  for (const QString& name : docks)
     if (!window.showDock(name))
       std::cerr << "mocap-studio: no dock named " << name.toStdString() << '\n';
+  QTimer::singleShot(200, &window, [&window, docks] {
+    for (const QString& name : docks)
+      (void)window.showDock(name);
+  });
   if (parser.isSet(select))
     window.selectLabels(parser.value(select).split(QLatin1Char(','), Qt::SkipEmptyParts));
   if (parser.isSet(frame)) {

@@ -275,6 +275,9 @@ void MainWindow::createDocks()
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::solveFinished, this, [this](const QString& error) {
     if (!error.isEmpty())
       return;
+    // The first solve of a rig: show its curves, and frame the posed rig with the markers.
+    if (!m_weightsDock->isVisible())
+      m_view3d->resetCamera();
     m_weightsDock->show();
     m_weightsDock->raise();
   });
