@@ -61,6 +61,21 @@ SolvedTake prepareTake(const Take& source, const BlendshapeRig& rig, const MeshB
   return prepared;
 }
 
+/// prepareTake for every take, each its share of `control`'s progress; false when cancelled.
+bool prepareTakes(const std::vector<Take>& takes, const BlendshapeRig& rig, const MeshBinding& binding,
+                  const LayoutRigErrorOptions& options, const JobControl& control, std::vector<SolvedTake>& solved)
+{
+  const auto count = static_cast<double>(takes.size());
+  try {
+    for (std::size_t t = 0; t < takes.size(); ++t)
+      solved.push_back(prepareTake(takes[t], rig, binding, options,
+                                   control.part(static_cast<double>(t) / count, static_cast<double>(t + 1) / count)));
+  } catch (const JobCancelled&) {
+    return false;
+  }
+  return true;
+}
+
 /// Which of the solver's bound markers `labels` names.
 std::vector<bool> useMask(const BlendshapeSolver& solver, const std::vector<std::string>& labels)
 {
@@ -125,11 +140,8 @@ LayoutRigErrors layoutRigErrors(const std::vector<Take>& takes, const Blendshape
   // The full-set solves are a share of the work like one layout each.
   const double total = static_cast<double>(takes.size() * (layouts.size() + 1));
   std::vector<SolvedTake> solved;
-  try {
-    for (std::size_t t = 0; t < takes.size(); ++t)
-      solved.push_back(prepareTake(takes[t], rig, binding, options,
-                                   progress.part(static_cast<double>(t) / total, static_cast<double>(t + 1) / total)));
-  } catch (const JobCancelled&) {
+  if (!prepareTakes(takes, rig, binding, options, progress.part(0.0, static_cast<double>(takes.size()) / total),
+                    solved)) {
     result.cancelled = true;
     return result;
   }
