@@ -1,5 +1,6 @@
 // `mocap pfa`: plans a reduced facial marker layout (Wellein et al. 2007) and reports the
-// error-vs-marker-count curve of PFA, greedy selection and random sets.
+// error-vs-marker-count curve of PFA, greedy selection and random sets, also judged on a
+// blendshape rig when one is given.
 #include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
@@ -8,6 +9,8 @@
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
+#include "mocap/evaluation/layout_rig_error.h"
+#include "mocap/io/rig_io.h"
 #include "mocap/layout/layout_planning.h"
 #include "mocap/model/marker_edits.h"
 #include "mocap/layout/marker_selection.h"
@@ -38,6 +41,10 @@ struct PfaArguments
   LayoutPlanOptions options;
   std::optional<std::string> k, pairs, stabilize, keyposes, curve, markers, exclude;
   std::optional<std::pair<std::string, std::string>> exportSubset;
+  /// The rig measure: --rig, --rig-shapes, --binding, --rig-only; method and frames as below.
+  std::optional<std::string> rig, rigShapes, binding, rigOnly;
+  LayoutRigErrorOptions rigOptions;
+  std::string rigMethod = std::string(blendshapeSolveMethodName(LayoutRigErrorOptions{}.solve.method));
   int threads = RunControl{}.threads;
   bool progress = false;
   bool json = false;
@@ -86,6 +93,7 @@ struct Report
   const MarkerSymmetry& symmetry;
   const std::optional<PairDetection>& detection;
   std::string pairSource;
+  const PlanRigErrors* rig = nullptr;  ///< the rig measure, when --rig was given
 
   [[nodiscard]] std::vector<std::string> labelsOf(const std::vector<Eigen::Index>& markers) const
   {
@@ -93,7 +101,8 @@ struct Report
   }
 };
 
-void writeLayout(JsonWriter& json, const Report& report, const ScoredLayout& layout, bool withFrequencies)
+void writeLayout(JsonWriter& json, const Report& report, const ScoredLayout& layout, bool withFrequencies,
+                 const std::optional<RigLayoutError>& rig)
 {
   json.beginObject();
   json.key("labels").beginArray();
@@ -121,10 +130,46 @@ void writeLayout(JsonWriter& json, const Report& report, const ScoredLayout& lay
   }
   json.key("blendshape_mse").value(layout.blendshapeError);
   json.key("reconstruction_rmse_mm").value(layout.reconstructionRmse);
+  json.key("rig_weight_mse").value(rig ? rig->mse : std::nan(""));
   json.endObject();
 }
 
-std::string jsonReport(const Report& report)
+/// The rig measure at `markerCount` for `method`'s layout: none without --rig or such a layout.
+std::optional<RigLayoutError> rigErrorOf(const Report& report, Eigen::Index markerCount, SelectionMethod method)
+{
+  const LayoutSizeRigErrors* entry = report.rig ? report.rig->size(markerCount) : nullptr;
+  if (!entry)
+    return std::nullopt;
+  return method == SelectionMethod::Pfa ? entry->pfa : entry->greedy;
+}
+
+double randomRigError(const Report& report, Eigen::Index markerCount)
+{
+  const LayoutSizeRigErrors* entry = report.rig ? report.rig->size(markerCount) : nullptr;
+  return entry ? entry->randomMse : std::nan("");
+}
+
+void writeRig(JsonWriter& json, const Report& report, const PfaArguments& arguments)
+{
+  json.key("rig");
+  if (!report.rig) {
+    json.null();
+    return;
+  }
+  const PlanRigErrors& rig = *report.rig;
+  json.beginObject();
+  json.key("path").value(arguments.rig.value_or(""));
+  json.key("method").value(arguments.rigMethod);
+  json.key("bound_markers").value(static_cast<std::int64_t>(rig.boundMarkers));
+  json.key("frames").value(static_cast<std::int64_t>(rig.frames));
+  json.key("planned_bound_markers").value(static_cast<std::int64_t>(rig.planned.boundMarkers));
+  json.key("planned_rig_weight_mse").value(rig.planned.mse);
+  json.key("seconds").value(rig.seconds);
+  json.key("cancelled").value(rig.cancelled);
+  json.endObject();
+}
+
+std::string jsonReport(const Report& report, const PfaArguments& arguments)
 {
   const LayoutPlan& plan = report.plan;
   const LayoutFrames& frames = report.frames;
@@ -201,18 +246,19 @@ std::string jsonReport(const Report& report)
     json.key("markers").value(static_cast<std::int64_t>(entry.markerCount));
     if (const ScoredLayout* layout = entry.layout(plan.method)) {
       json.key("selected");
-      writeLayout(json, report, *layout, plan.method == SelectionMethod::Pfa);
+      writeLayout(json, report, *layout, plan.method == SelectionMethod::Pfa,
+                  rigErrorOf(report, entry.markerCount, plan.method));
     } else {
       json.key("selected").null();
     }
     json.key("pfa");
     if (entry.pfa)
-      writeLayout(json, report, *entry.pfa, true);
+      writeLayout(json, report, *entry.pfa, true, rigErrorOf(report, entry.markerCount, SelectionMethod::Pfa));
     else
       json.null();
     json.key("greedy");
     if (entry.greedy)
-      writeLayout(json, report, *entry.greedy, false);
+      writeLayout(json, report, *entry.greedy, false, rigErrorOf(report, entry.markerCount, SelectionMethod::Greedy));
     else
       json.null();
     json.key("random").beginObject();
@@ -220,6 +266,9 @@ std::string jsonReport(const Report& report)
     json.key("blendshape_mse").value(entry.randomCount ? entry.randomBlendshapeError : std::nan(""));
     json.key("reconstruction_rmse_mm")
         .value(entry.randomCount ? entry.randomReconstructionRmse : std::nan(""));
+    json.key("rig_weight_mse").value(randomRigError(report, entry.markerCount));
+    if (const LayoutSizeRigErrors* rig = report.rig ? report.rig->size(entry.markerCount) : nullptr)
+      json.key("rig_count").value(rig->randomCount);
     json.endObject();
     json.endObject();
   }
@@ -234,15 +283,25 @@ std::string jsonReport(const Report& report)
         json.value(label);
   json.endArray();
   json.endObject();
+  writeRig(json, report, arguments);
   json.key("cancelled").value(plan.cancelled);
   json.endObject();
   return json.str() + "\n";
 }
 
-std::string curveCsv(const LayoutPlan& plan)
+// A rig MSE cell: empty where not judged.
+std::string rigCsvCell(double mse)
 {
+  return std::isnan(mse) ? std::string() : csvNumber(mse);
+}
+
+// With --rig, three columns more at the end (the columns before keep their places).
+std::string curveCsv(const Report& report)
+{
+  const LayoutPlan& plan = report.plan;
   std::string csv = "markers,pfa_k,pfa_blendshape_mse,pfa_rmse_mm,greedy_blendshape_mse,greedy_rmse_mm,"
-                    "random_blendshape_mse,random_rmse_mm\n";
+                    "random_blendshape_mse,random_rmse_mm";
+  csv += report.rig ? ",pfa_rig_weight_mse,greedy_rig_weight_mse,random_rig_weight_mse\n" : "\n";
   for (const LayoutSize& entry : plan.sizes) {
     csv += std::to_string(entry.markerCount) + ",";
     if (entry.pfa)
@@ -259,6 +318,12 @@ std::string curveCsv(const LayoutPlan& plan)
       csv += csvNumber(entry.randomBlendshapeError) + "," + csvNumber(entry.randomReconstructionRmse);
     else
       csv += ",";
+    if (report.rig) {
+      const auto pfa = rigErrorOf(report, entry.markerCount, SelectionMethod::Pfa);
+      const auto greedy = rigErrorOf(report, entry.markerCount, SelectionMethod::Greedy);
+      csv += "," + rigCsvCell(pfa ? pfa->mse : std::nan("")) + "," + rigCsvCell(greedy ? greedy->mse : std::nan("")) +
+             "," + rigCsvCell(randomRigError(report, entry.markerCount));
+    }
     csv += "\n";
   }
   return csv;
@@ -291,21 +356,35 @@ void printText(const Report& report)
   }
   out << "\nkey poses: " << plan.basis.keyPoseCount()
       << " (blendshape basis from the full set); test motion RMS " << fixedNumber(plan.motionRms, 2) << " mm\n\n";
-  out << "markers   k | PFA blend-MSE  RMSE mm | greedy blend-MSE  RMSE mm | random(mean) blend-MSE  "
-         "RMSE mm\n";
+  // With --rig each group gains a rig-MSE column; without, the table is as it always was.
+  const char* rigHeading = report.rig ? "  rig-MSE" : "";
+  out << "markers   k | PFA blend-MSE  RMSE mm" << rigHeading << " | greedy blend-MSE  RMSE mm" << rigHeading
+      << " | random(mean) blend-MSE  RMSE mm" << rigHeading << "\n";
+  const auto rigCell = [&](double mse) {
+    if (!report.rig)
+      return std::string();
+    const std::string text = std::isnan(mse) ? "-" : fixedNumber(mse, 5);
+    return std::string(text.size() < 9 ? 9 - text.size() : 1, ' ') + text;
+  };
   for (const LayoutSize& entry : plan.sizes) {
-    char line[256];
+    char line[320];
     const auto cell = [](const std::optional<ScoredLayout>& layout, bool mse) {
       return layout ? fixedNumber(mse ? layout->blendshapeError : layout->reconstructionRmse, mse ? 5 : 3)
                     : std::string("-");
     };
-    std::snprintf(line, sizeof line, "%7lld %3s | %13s %8s | %16s %8s | %22s %8s%s\n",
+    const auto rigOf = [&](SelectionMethod method) {
+      const auto error = rigErrorOf(report, entry.markerCount, method);
+      return rigCell(error ? error->mse : std::nan(""));
+    };
+    std::snprintf(line, sizeof line, "%7lld %3s | %13s %8s%s | %16s %8s%s | %22s %8s%s%s\n",
                   static_cast<long long>(entry.markerCount),
                   entry.pfa ? std::to_string(entry.pfa->k).c_str() : "-", cell(entry.pfa, true).c_str(),
-                  cell(entry.pfa, false).c_str(), cell(entry.greedy, true).c_str(),
-                  cell(entry.greedy, false).c_str(),
+                  cell(entry.pfa, false).c_str(), rigOf(SelectionMethod::Pfa).c_str(),
+                  cell(entry.greedy, true).c_str(), cell(entry.greedy, false).c_str(),
+                  rigOf(SelectionMethod::Greedy).c_str(),
                   entry.randomCount ? fixedNumber(entry.randomBlendshapeError, 5).c_str() : "-",
                   entry.randomCount ? fixedNumber(entry.randomReconstructionRmse, 3).c_str() : "-",
+                  rigCell(randomRigError(report, entry.markerCount)).c_str(),
                   entry.markerCount == plan.recommendedSize ? "  <- recommended" : "");
     out << line;
   }
@@ -329,7 +408,17 @@ void printText(const Report& report)
     if (nearest->randomCount > 0)
       out << "; random: " << fixedNumber(std::sqrt(nearest->randomBlendshapeError), 3) << " and "
           << fixedNumber(nearest->randomReconstructionRmse, 2) << " mm";
+    const auto rig = rigErrorOf(report, nearest->markerCount, method);
+    if (rig && rig->judged())
+      out << "\n  on the rig: weights off by " << fixedNumber(std::sqrt(rig->mse), 3) << " RMS against the full set's"
+          << (std::isnan(randomRigError(report, nearest->markerCount))
+                  ? std::string()
+                  : "; random: " + fixedNumber(std::sqrt(randomRigError(report, nearest->markerCount)), 3));
   }
+  if (report.rig)
+    out << "\nrig: " << report.rig->boundMarkers << " bound markers, " << report.rig->frames
+        << " frames solved, all planned markers " << fixedNumber(report.rig->planned.mse, 5) << " MSE, "
+        << fixedNumber(report.rig->seconds, 2) << " s" << (report.rig->cancelled ? " (cancelled)" : "");
   out << "\n";
   out << "\nrecommended: " << plan.recommendedSize << " of " << frames.markerCount() << " markers ("
       << plan.recommendationRule << ")\n";
@@ -363,6 +452,46 @@ LayoutResult planRequested(const std::vector<Take>& takes, LayoutRequest& reques
   }
 }
 
+/// The rig options go with --rig, and --rig with --binding.
+void checkRigOptions(const PfaArguments& arguments, const std::vector<CLI::Option*>& rigOptions)
+{
+  if (arguments.rig && !arguments.binding)
+    throw UsageError("--rig needs --binding BIND.json: the take's markers bound to the rig's neutral");
+  if (!arguments.rig)
+    for (const CLI::Option* option : rigOptions)
+      if (option->count() > 0)
+        throw UsageError(option->get_name() + " needs --rig");
+}
+
+/// The rig and binding of --rig, read before any planning so a wrong path costs nothing.
+struct RigInput
+{
+  BlendshapeRig rig;
+  MeshBinding binding;
+};
+
+std::optional<RigInput> readRigInput(const PfaArguments& arguments)
+{
+  if (!arguments.rig)
+    return std::nullopt;
+  const std::vector<std::string> only =
+      arguments.rigOnly ? splitList(*arguments.rigOnly, "--rig-only") : std::vector<std::string>{};
+  RigInput input;
+  input.rig = readRig(*arguments.rig, arguments.rigShapes.value_or(""), only);
+  input.binding = readBinding(*arguments.binding, input.rig.neutral.vertexCount());
+  return input;
+}
+
+/// Prints "\rNAME: P %" on stderr, ending the line at 100 %.
+std::function<void(double)> progressLine(const char* name)
+{
+  return [name](double fraction) {
+    std::cerr << '\r' << name << ": " << static_cast<int>(std::lround(100.0 * fraction)) << " %" << std::flush;
+    if (fraction >= 1.0)
+      std::cerr << '\n';
+  };
+}
+
 int runPfa(const PfaArguments& arguments)
 {
   LayoutPlanOptions options = arguments.options;
@@ -372,11 +501,7 @@ int runPfa(const PfaArguments& arguments)
   RunControl control;
   control.threads = arguments.threads;
   if (arguments.progress)
-    control.progress = [](double fraction) {
-      std::cerr << "\rpfa: " << static_cast<int>(std::lround(100.0 * fraction)) << " %" << std::flush;
-      if (fraction >= 1.0)
-        std::cerr << '\n';
-    };
+    control.progress = progressLine("pfa");
   std::optional<Eigen::Index> exportSize;
   const auto& exportRequest = arguments.exportSubset;
   if (exportRequest) {
@@ -387,6 +512,7 @@ int runPfa(const PfaArguments& arguments)
     (void)formatFromPath(exportRequest->second);
   }
 
+  const std::optional<RigInput> rig = readRigInput(arguments);
   std::vector<Take> takes;
   for (const std::string& input : arguments.takes)
     takes.push_back(readInputTake(input));
@@ -406,13 +532,25 @@ int runPfa(const PfaArguments& arguments)
   const std::string pairSource = request.pairsFile.empty()
                                      ? "detected on the neutral frame: labels, then mirror matching"
                                      : "file " + request.pairsFile;
-  const Report report{arguments.takes, result, frames, plan, result.symmetry, result.detection, pairSource};
+  std::optional<PlanRigErrors> rigErrors;
+  if (rig && !plan.cancelled) {
+    LayoutRigErrorOptions rigOptions = arguments.rigOptions;
+    rigOptions.solve.method = parseBlendshapeSolveMethod(arguments.rigMethod).value();
+    rigOptions.randomSubsets = options.randomSubsets;
+    rigOptions.seed = options.pfa.seed;
+    RunControl rigControl = control;
+    if (arguments.progress)
+      rigControl.progress = progressLine("rig");
+    rigErrors = planRigErrors(takes, result, rig->rig, rig->binding, rigOptions, rigControl);
+  }
+  Report report{arguments.takes, result, frames, plan, result.symmetry, result.detection, pairSource};
+  report.rig = rigErrors ? &*rigErrors : nullptr;
   if (arguments.json)
-    std::cout << jsonReport(report);
+    std::cout << jsonReport(report, arguments);
   else
     printText(report);
   if (const auto& curve = arguments.curve)
-    writeFileAtomically(*curve, curveCsv(plan));
+    writeFileAtomically(*curve, curveCsv(report));
   if (exportSize) {
     const ScoredLayout* layout = result.layout(*exportSize);
     if (!layout && *exportSize != frames.markerCount()) {
@@ -474,7 +612,27 @@ Command addPfa(CLI::App& mocap)
                     ->type_name("N"),
                 1, 256);
   command->add_flag("--progress", a->progress, "show the progress on stderr");
-  return {command, [a] { return runPfa(*a); }};
+  // The rig measure: layouts judged by the weights solved on a blendshape rig (mocap solve's).
+  command->add_option("--rig", a->rig, "also judge each layout on this blendshape rig (.obj, .ply with --rig-shapes; .glb)")
+      ->type_name("RIG");
+  const std::vector<CLI::Option*> rigOptions{
+      command->add_option("--rig-shapes", a->rigShapes, "the rig's shapes: a folder with one OBJ per shape")
+          ->type_name("DIR"),
+      command->add_option("--binding", a->binding, "the markers bound to the rig's neutral (mocap bind)")
+          ->type_name("BIND.json"),
+      oneOf(command->add_option("--rig-method", a->rigMethod, "how the rig's weights are solved"),
+            blendshapeSolveMethodNames())
+          ->capture_default_str(),
+      wholeNumberIn(command->add_option("--rig-frames", a->rigOptions.maxFrames,
+                                        "at most N evenly spaced frames per take solved on the rig (0: all)")
+                        ->type_name("N"),
+                    0, 100000000)
+          ->capture_default_str(),
+      command->add_option("--rig-only", a->rigOnly, "judge on only these shapes of the rig")->type_name("NAME,...")};
+  return {command, [a, rigOptions] {
+            checkRigOptions(*a, rigOptions);
+            return runPfa(*a);
+          }};
 }
 
 } // namespace mocap::cli

@@ -141,26 +141,6 @@ TEST(DeformCli, BadUsageAndBadInputGiveClearErrors)
   EXPECT_NE(run.err.find("at least 3 correspondences"), std::string::npos) << run.err;
 }
 
-// A rig of the MediaPipe face with three shapes, each lifting a patch of vertices, in ICT
-// FaceKit's layout (neutral OBJ plus a folder of shapes named after them).
-void writeSmallRig(const test::TempDir& dir)
-{
-  const Mesh face = readObj(test::dataFile("face_mesh/canonical_face_model.obj"));
-  writeObj(dir.file("neutral.obj"), face);
-  std::filesystem::create_directory(dir.file("shapes"));
-  const char* names[] = {"jawOpen", "browInnerUp", "mouthSmile_L"};
-  for (int s = 0; s < 3; ++s) {
-    MeshVertices posed = face.vertices;
-    const Eigen::RowVector3d centre = face.vertices.row(40 + 150 * s);
-    for (Eigen::Index v = 0; v < posed.rows(); ++v) {
-      const double falloff = std::exp(-(posed.row(v) - centre).squaredNorm() / 9.0);
-      if (falloff > 1e-3)
-        posed(v, s % 3) += 0.6 * falloff;
-    }
-    writeObj(dir.path() / "shapes" / (std::string(names[s]) + ".obj"), face, posed);
-  }
-}
-
 std::vector<std::string> csvLines(const std::string& text)
 {
   std::vector<std::string> lines;
@@ -263,6 +243,73 @@ TEST(SolveCli, BadRigsAndOutputsGiveClearErrors)
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.err.find("has no .obj shapes"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("w.csv")));
+}
+
+std::string pfaRigArguments(const test::TempDir& dir, const std::string& binding)
+{
+  return "pfa " + sample() + " " + kStabilize + " --markers 'section*' --restarts 20 --random 2 --rig '" +
+         dir.file("neutral.obj").string() + "' --rig-shapes '" + dir.file("shapes").string() + "' --binding '" +
+         binding + "' --rig-frames 300";
+}
+
+TEST(PfaRigCli, JudgesEverySizeOnTheRigBesideTheKeyPoseMeasures)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string binding = test::dataFile("../../resources/sample/Facial-Sing.binding.json").string();
+  const Outcome run = mocap(pfaRigArguments(dir, binding) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue json = parseJson(run.out, "pfa --json");
+  const JsonValue& rig = *json.find("rig", "pfa");
+  EXPECT_EQ(rig.find("bound_markers", "rig")->number("bound_markers"), 31.0);
+  EXPECT_EQ(rig.find("planned_bound_markers", "rig")->number("planned"), 31.0);
+  EXPECT_LE(rig.find("frames", "rig")->number("frames"), 300.0);
+  EXPECT_LT(rig.find("planned_rig_weight_mse", "rig")->number("planned"), 1e-12);  // the full set against itself
+  const auto& sizes = json.find("sizes", "pfa")->array("sizes");
+  ASSERT_GE(sizes.size(), 20U);
+  double smallest = -1.0, largest = -1.0;
+  for (const JsonValue& size : sizes) {
+    const double markers = size.find("markers", "size")->number("markers");
+    for (const char* method : {"pfa", "greedy"}) {
+      const JsonValue& layout = *size.find(method, "size");
+      if (layout.isNull())
+        continue;
+      ASSERT_NE(layout.find("blendshape_mse", method), nullptr);  // the existing keys stay
+      const JsonValue& mse = *layout.find("rig_weight_mse", method);
+      EXPECT_EQ(mse.isNull(), markers < 3) << method << " at " << markers;  // too few bound markers
+      if (mse.isNumber() && std::string(method) == "greedy")
+        (markers == 3 ? smallest : largest) = mse.number("mse");
+    }
+    EXPECT_NE(size.find("random", "size")->find("rig_weight_mse", "random"), nullptr);
+  }
+  EXPECT_GT(smallest, largest) << "three markers judge worse than thirty";
+  EXPECT_GE(largest, 0.0);
+
+  const Outcome text = mocap(pfaRigArguments(dir, binding) + " --curve '" + dir.file("curve.csv").string() + "'", dir);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("rig-MSE"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("on the rig: weights off by"), std::string::npos) << text.out;
+  EXPECT_NE(readFileBytes(dir.file("curve.csv")).find(",pfa_rig_weight_mse,greedy_rig_weight_mse,random_rig_weight_mse\n"),
+            std::string::npos);
+}
+
+TEST(PfaRigCli, BadRigInputGivesClearErrorsBeforeAnyPlanning)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  Outcome run = mocap(pfaRigArguments(dir, dir.file("missing.bind.json").string()), dir);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("missing.bind.json"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+  run = mocap("pfa " + sample() + " --rig '" + dir.file("neutral.obj").string() + "'", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find("--rig needs --binding"), std::string::npos) << run.err;
+  run = mocap("pfa " + sample() + " --rig-method ridge", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find("--rig-method needs --rig"), std::string::npos) << run.err;
+  run = mocap("pfa " + sample() + " --rig '" + dir.file("neutral.obj").string() + "' --binding b.json", dir);
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.err.find("needs the folder with its shapes"), std::string::npos) << run.err;
 }
 
 } // namespace
