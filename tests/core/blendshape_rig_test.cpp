@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 namespace mocap {
@@ -100,6 +101,53 @@ TEST(ObjRigReader, RefusesAnEmptyFolderAMissingOneAndAShapeOfAnotherMesh)
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("wrong.obj"), std::string::npos) << e.what();
   }
+}
+
+TEST(BlendshapeRig, RegionKeepsTheVerticesFacesAndShapeEntriesInsideItRenumbered)
+{
+  const Mesh& face = test::mediaPipeFace();
+  BlendshapeRig rig;
+  rig.neutral = face;
+  rig.shapes.push_back(sparseShape("edge", face.vertices, lifted(face, {99, 100, 250, 300}, 1.0), 1e-9));
+  rig.shapes.push_back(sparseShape("outside", face.vertices, lifted(face, {5}, 1.0), 1e-9));
+  const BlendshapeRig region = rigRegion(rig, 100, 299);
+  ASSERT_EQ(region.neutral.vertexCount(), 200);
+  EXPECT_EQ(region.neutral.vertices.row(0), face.vertices.row(100));
+  std::size_t inside = 0;
+  for (const MeshFace& f : face.faces)
+    inside += std::all_of(f.vertices.begin(), f.vertices.end(), [](Eigen::Index v) { return v >= 100 && v <= 299; });
+  ASSERT_GT(inside, 0u);
+  EXPECT_EQ(region.neutral.faces.size(), inside);
+  EXPECT_NO_THROW(checkRig(region));
+  EXPECT_EQ(region.shapeNames(), rig.shapeNames());
+  EXPECT_EQ(region.shapes[0].vertices, (std::vector<Eigen::Index>{0, 150}));
+  EXPECT_EQ(region.shapes[0].deltaOf(150), Eigen::Vector3d(0.0, 1.0, 0.0));
+  EXPECT_EQ(region.shapes[1].size(), 0);
+  EXPECT_EQ(rigRegion(rig, 0, face.vertexCount() - 1).neutral.faces.size(), face.faces.size());
+
+  EXPECT_THROW((void)rigRegion(rig, 10, 9), InvalidArgument);
+  EXPECT_THROW((void)rigRegion(rig, -1, 9), InvalidArgument);
+  EXPECT_THROW((void)rigRegion(rig, 0, face.vertexCount()), InvalidArgument);
+  EXPECT_THROW((void)rigRegion(rig, 7, 7), InvalidArgument);  // one vertex: no face
+}
+
+TEST(BlendshapeRig, PrunedRigDropsEntriesThatMoveNoAxisBeyondTheTolerance)
+{
+  const Mesh& face = test::mediaPipeFace();
+  BlendshapeRig rig;
+  rig.neutral = face;
+  MeshVertices posed = lifted(face, {4, 8}, 1e-3);
+  posed(8, 0) += 0.5;
+  posed(12, 2) -= 2e-3;
+  rig.shapes.push_back(sparseShape("slight", face.vertices, posed, 0.0));
+  ASSERT_EQ(rig.shapes[0].vertices, (std::vector<Eigen::Index>{4, 8, 12}));
+  const BlendshapeRig pruned = prunedRig(rig, 1.5e-3);
+  EXPECT_EQ(pruned.shapes[0].vertices, (std::vector<Eigen::Index>{8, 12}));
+  EXPECT_EQ(pruned.shapes[0].deltaOf(8), rig.shapes[0].deltaOf(8));
+  EXPECT_EQ(prunedRig(rig, 0.0).shapes[0].vertices, rig.shapes[0].vertices);
+  EXPECT_EQ(pruned.neutral.vertices, face.vertices);
+  EXPECT_THROW((void)prunedRig(rig, -1.0), InvalidArgument);
+  EXPECT_THROW((void)prunedRig(rig, std::nan("")), InvalidArgument);
 }
 
 } // namespace

@@ -1,13 +1,13 @@
 // The rig GLB: neutral mesh, sparse morph targets named in extras.targetNames, weight animation;
 // read back with TinyGLTF's loader, an independent parser of what we wrote.
 #include "face_mesh_fixture.h"
+#include "glb_model.h"
 
 #include "mocap/base/error.h"
 #include "mocap/io/gltf_writer.h"
 
 #include <gtest/gtest.h>
 
-#include <tiny_gltf.h>
 
 #include <cstring>
 
@@ -37,23 +37,12 @@ std::vector<T> accessorValues(const tinygltf::Model& model, int bufferView, std:
   return values;
 }
 
-tinygltf::Model load(const std::string& glb)
-{
-  tinygltf::Model model;
-  std::string error, warning;
-  EXPECT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromMemory(&model, &error, &warning,
-                                                         reinterpret_cast<const unsigned char*>(glb.data()),
-                                                         static_cast<unsigned int>(glb.size())))
-      << error;
-  return model;
-}
-
 TEST(GltfWriter, WritesTheNeutralSparseTargetsTheirNamesAndTheWeightAnimation)
 {
   const BlendshapeRig rig = twoShapeRig();
   Eigen::MatrixXd weights(4, 2);
   weights << 0.0, 0.0, 0.25, 1.0, 0.5, 0.125, 1.0, 0.0;
-  const tinygltf::Model model = load(rigGlb(rig, weights, 50.0));
+  const tinygltf::Model model = test::glbModel(rigGlb(rig, weights, 50.0));
   ASSERT_EQ(model.meshes.size(), 1u);
   const tinygltf::Mesh& mesh = model.meshes[0];
   const tinygltf::Primitive& primitive = mesh.primitives.at(0);
@@ -95,7 +84,7 @@ TEST(GltfWriter, RefusesBadWeightsAndRates)
   Eigen::MatrixXd nan = Eigen::MatrixXd::Zero(3, 2);
   nan(1, 1) = std::nan("");
   EXPECT_THROW((void)rigGlb(rig, nan, 50.0), InvalidArgument);
-  EXPECT_NO_THROW((void)load(rigGlb(rig, Eigen::MatrixXd(0, 2), 50.0)));  // rig only, no animation
+  EXPECT_NO_THROW((void)test::glbModel(rigGlb(rig, Eigen::MatrixXd(0, 2), 50.0)));  // rig only, no animation
 }
 
 } // namespace

@@ -2,8 +2,10 @@
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/io/gltf_rig_reader.h"
 #include "mocap/io/obj_io.h"
 #include "mocap/io/ply_io.h"
+#include "mocap/io/rig_io.h"
 
 namespace mocap {
 
@@ -14,7 +16,9 @@ Mesh readMesh(const std::filesystem::path& path)
     return readObj(path);
   if (extension == "ply")
     return readPly(path);
-  throw InvalidArgument(path.string() + ": unknown mesh format (use .obj or .ply)");
+  if (isGltfPath(path))
+    return readGltfRig(path).neutral;
+  throw InvalidArgument(path.string() + ": unknown mesh format (use .obj, .ply, .glb or .gltf)");
 }
 
 } // namespace mocap

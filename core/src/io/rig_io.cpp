@@ -2,6 +2,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/io/gltf_rig_reader.h"
 #include "mocap/io/obj_rig_reader.h"
 
 namespace mocap {
@@ -18,7 +19,7 @@ BlendshapeRig readRig(const std::filesystem::path& neutral, const std::filesyste
   if (isGltfPath(neutral)) {
     if (!shapeFolder.empty())
       throw InvalidArgument("a glTF rig holds its own shapes; no shape folder is read with " + neutral.string());
-    throw InvalidArgument("glTF rigs are not read yet: " + neutral.string());  // gltf_rig_reader lands next
+    return readGltfRig(neutral, only);
   }
   if (shapeFolder.empty())
     throw InvalidArgument("an OBJ/PLY neutral needs the folder with its shapes: " + neutral.string());

@@ -8,6 +8,28 @@
 
 namespace mocap {
 
+namespace {
+
+/// The entries of `shape` that `keep(vertex, delta row)` accepts, their vertices less `shift`.
+template <typename Keep>
+SparseShape filteredShape(const SparseShape& shape, Eigen::Index shift, Keep keep)
+{
+  SparseShape kept;
+  kept.name = shape.name;
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = 0; i < shape.size(); ++i) {
+    const Eigen::Index v = shape.vertices[static_cast<std::size_t>(i)];
+    if (keep(v, shape.deltas.row(i))) {
+      kept.vertices.push_back(v - shift);
+      rows.push_back(i);
+    }
+  }
+  kept.deltas = shape.deltas(rows, Eigen::all);
+  return kept;
+}
+
+} // namespace
+
 Eigen::Vector3d SparseShape::deltaOf(Eigen::Index vertex) const
 {
   const auto it = std::lower_bound(vertices.begin(), vertices.end(), vertex);
@@ -109,6 +131,43 @@ BlendshapeRig selectShapes(const BlendshapeRig& rig, const std::vector<std::stri
     selected.shapes.push_back(rig.shapes[static_cast<std::size_t>(*s)]);
   }
   return selected;
+}
+
+BlendshapeRig rigRegion(const BlendshapeRig& rig, Eigen::Index first, Eigen::Index last)
+{
+  if (first < 0 || last < first || last >= rig.neutral.vertexCount())
+    throw InvalidArgument("vertex range " + std::to_string(first) + "…" + std::to_string(last) +
+                          " is not inside the rig's vertices 0…" + std::to_string(rig.neutral.vertexCount() - 1));
+  const auto inside = [&](Eigen::Index v) { return v >= first && v <= last; };
+  BlendshapeRig region;
+  region.neutral.vertices = rig.neutral.vertices.middleRows(first, last - first + 1);
+  region.neutral.uvs = rig.neutral.uvs;
+  region.neutral.normals = rig.neutral.normals;
+  for (const MeshFace& face : rig.neutral.faces) {
+    if (!std::all_of(face.vertices.begin(), face.vertices.end(), inside))
+      continue;
+    MeshFace kept = face;
+    for (Eigen::Index& v : kept.vertices)
+      v -= first;
+    region.neutral.faces.push_back(std::move(kept));
+  }
+  if (region.neutral.faces.empty())
+    throw InvalidArgument("no face lies wholly inside vertices " + std::to_string(first) + "…" + std::to_string(last));
+  for (const SparseShape& shape : rig.shapes)
+    region.shapes.push_back(filteredShape(shape, first, [&](Eigen::Index v, const auto&) { return inside(v); }));
+  return region;
+}
+
+BlendshapeRig prunedRig(const BlendshapeRig& rig, double tolerance)
+{
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+    throw InvalidArgument("the delta tolerance must be finite and not negative");
+  BlendshapeRig pruned;
+  pruned.neutral = rig.neutral;
+  for (const SparseShape& shape : rig.shapes)
+    pruned.shapes.push_back(
+        filteredShape(shape, 0, [&](Eigen::Index, const auto& delta) { return delta.cwiseAbs().maxCoeff() > tolerance; }));
+  return pruned;
 }
 
 } // namespace mocap

@@ -55,4 +55,16 @@ void checkRig(const BlendshapeRig& rig);
 /// the rig does not have or a name given twice. O(#names · #shapes).
 [[nodiscard]] BlendshapeRig selectShapes(const BlendshapeRig& rig, const std::vector<std::string>& names);
 
+/// The rig cut to the contiguous vertex range first…last (e.g. ICT FaceKit's face, 0…9408),
+/// renumbered from 0: the faces whose vertices all lie inside, each shape's entries inside. The
+/// UV and normal tables are kept whole (faces keep their indices into them; some may go unused).
+/// Throws InvalidArgument for an empty range, one outside the mesh, or one that leaves no face.
+/// O(#corners + #vertices + Σ #moved vertices).
+[[nodiscard]] BlendshapeRig rigRegion(const BlendshapeRig& rig, Eigen::Index first, Eigen::Index last);
+
+/// The rig without the shape entries that move no axis more than `tolerance` (mesh units), the
+/// test sparseShape applies: for a smaller file when sub-micron motion does not matter. Throws
+/// InvalidArgument for a negative or non-finite tolerance. O(Σ #moved vertices).
+[[nodiscard]] BlendshapeRig prunedRig(const BlendshapeRig& rig, double tolerance);
+
 } // namespace mocap
