@@ -4,6 +4,7 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "vertex_range.h"
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
@@ -13,7 +14,6 @@
 #include "mocap/io/take_io.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -43,15 +43,10 @@ std::vector<std::pair<Eigen::Index, Eigen::Index>> parsePairs(const std::string&
 
 std::vector<Eigen::Index> vertexRange(const std::string& text, Eigen::Index vertexCount)
 {
-  long long first = 0, last = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%lld:%lld%c", &first, &last, &tail) != 2 || first < 0 || last < first ||
-      last >= vertexCount)
-    throw UsageError("--vertices needs FIRST:LAST vertex indices of the mesh (0…" + std::to_string(vertexCount - 1) +
-                     "), not '" + text + "'");
+  const auto [first, last] = parseVertexRange(text, vertexCount);
   std::vector<Eigen::Index> range;
-  for (long long v = first; v <= last; ++v)
-    range.push_back(static_cast<Eigen::Index>(v));
+  for (Eigen::Index v = first; v <= last; ++v)
+    range.push_back(v);
   return range;
 }
 
@@ -123,7 +118,7 @@ Command addBind(CLI::App& mocap)
 {
   CLI::App* command = mocap.add_subcommand("bind", "bind markers to mesh points; per-marker residuals");
   const auto a = std::make_shared<BindArguments>();
-  command->add_option("--mesh", a->meshPath, "the face mesh (.obj, .ply)")->required()->type_name("FACE.obj");
+  command->add_option("--mesh", a->meshPath, "the face mesh (.obj, .ply, or a glTF rig's neutral: .glb, .gltf)")->required()->type_name("FACE.obj");
   command->add_option("--take", a->takePath, "the take whose neutral frame is bound")->required()->type_name("TAKE");
   command->add_option("--pairs", a->pairs, "at least 3 marker-vertex correspondences (default: ICP)")
       ->type_name("LABEL=VERTEX,...");

@@ -43,8 +43,12 @@ Command addBind(CLI::App& mocap);
 /// `mocap deform --mesh FACE.obj --binding BIND.json --take TAKE -o OUT`: RBF or Laplacian
 /// face-mesh deformation driven by the take's markers.
 Command addDeform(CLI::App& mocap);
-/// `mocap solve --mesh NEUTRAL.obj --shapes DIR --binding BIND.json --take TAKE -o OUT`: the
-/// take's blendshape weights on a rig (bvls, ridge, temporal), as CSV curves or a PC2 cache.
+/// `mocap rig --mesh NEUTRAL.obj|RIG.glb [--shapes DIR] -o RIG.glb`: a blendshape rig as one GLB,
+/// optionally cut to some shapes or a vertex range.
+Command addRig(CLI::App& mocap);
+/// `mocap solve --mesh NEUTRAL.obj|RIG.glb [--shapes DIR] --binding BIND.json --take TAKE -o OUT`:
+/// the take's blendshape weights on a rig (bvls, ridge, temporal), as CSV curves, an animated GLB
+/// or a PC2 cache.
 Command addSolve(CLI::App& mocap);
 
 } // namespace mocap::cli

@@ -182,7 +182,7 @@ Command addDeform(CLI::App& mocap)
       mocap.add_subcommand("deform", "deform a face mesh by the take; PC2 cache or one mesh per frame");
   const auto a = std::make_shared<DeformArguments>();
   FaceRigOptions& settings = a->settings;
-  command->add_option("--mesh", a->meshPath, "the face mesh (.obj, .ply)")->required()->type_name("FACE.obj");
+  command->add_option("--mesh", a->meshPath, "the face mesh (.obj, .ply, or a glTF rig's neutral: .glb, .gltf)")->required()->type_name("FACE.obj");
   command->add_option("--binding", a->bindingPath, "the binding mocap bind wrote")->required()->type_name("BIND.json");
   command->add_option("--take", a->takePath, "the take that drives the mesh")->required()->type_name("TAKE");
   wholeNumberIn(command->add_option("--neutral", settings.neutralFrame,

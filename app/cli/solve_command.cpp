@@ -5,6 +5,7 @@
 #include "cli_error.h"
 #include "commands.h"
 #include "leave_out_cli.h"
+#include "rig_input.h"
 
 #include "mocap/base/stopwatch.h"
 #include "mocap/base/file_io.h"
@@ -14,7 +15,6 @@
 #include "mocap/evaluation/deformation_evaluation.h"
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
-#include "mocap/io/rig_io.h"
 #include "mocap/io/weights_csv_writer.h"
 
 #include <algorithm>
@@ -62,16 +62,6 @@ ResidualSummary summarize(const Eigen::VectorXd& residual)
   s.p95 = values[std::min(values.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(values.size())))];
   s.max = values.back();
   return s;
-}
-
-BlendshapeRig readSolveRig(const SolveArguments& arguments)
-{
-  if (!isGltfPath(arguments.meshPath) && arguments.shapesPath.empty())
-    throw UsageError("--shapes DIR is needed with an OBJ/PLY neutral");
-  if (isGltfPath(arguments.meshPath) && !arguments.shapesPath.empty())
-    throw UsageError("--shapes is not used with a glTF rig: it holds its own shapes");
-  const std::vector<std::string> only = arguments.only ? splitList(*arguments.only, "--only") : std::vector<std::string>{};
-  return readRig(arguments.meshPath, arguments.shapesPath, only);
 }
 
 /// Weight curves for .csv, the rig with its animated weights for .glb, else (checkOutput allowed
@@ -168,7 +158,7 @@ int runSolve(const SolveArguments& arguments)
   BlendshapeSolveOptions settings = arguments.settings;
   settings.method = parseBlendshapeSolveMethod(arguments.method).value();
   const Stopwatch load;
-  const BlendshapeRig rig = readSolveRig(arguments);
+  const BlendshapeRig rig = readInputRig(arguments.meshPath, arguments.shapesPath, arguments.only);
   const double loadSeconds = load.seconds();
   Take take = readInputTake(arguments.takePath);
   if (arguments.stabilize)
@@ -209,7 +199,9 @@ Command addSolve(CLI::App& mocap)
       "solve", "solve the take to a blendshape rig's weights; weight curves (CSV), animated rig (GLB) or mesh (PC2)");
   const auto a = std::make_shared<SolveArguments>();
   BlendshapeSolveOptions& settings = a->settings;
-  command->add_option("--mesh", a->meshPath, "the rig's neutral mesh (.obj, .ply)")->required()->type_name("NEUTRAL.obj");
+  command->add_option("--mesh", a->meshPath, "the rig: its neutral (.obj, .ply) with --shapes, or a glTF rig (.glb, .gltf)")
+      ->required()
+      ->type_name("NEUTRAL.obj|RIG.glb");
   command->add_option("--shapes", a->shapesPath, "folder with one OBJ per shape, named after it")->type_name("DIR");
   command->add_option("--binding", a->bindingPath, "the binding mocap bind wrote")->required()->type_name("BIND.json");
   command->add_option("--take", a->takePath, "the take to solve")->required()->type_name("TAKE");

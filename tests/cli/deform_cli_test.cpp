@@ -1,14 +1,18 @@
-// `mocap bind`, `mocap deform` and `mocap solve` end to end on the bundled take and the MediaPipe face.
+// `mocap bind`, `mocap deform`, `mocap rig` and `mocap solve` end to end on the bundled take, the
+// MediaPipe face and the bundled ICT FaceKit rig.
 #include "../core/test_support.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
+#include "mocap/io/gltf_rig_reader.h"
 #include "mocap/io/pc2_io.h"
 #include "mocap/io/obj_io.h"
 #include "mocap/io/ply_io.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <sys/wait.h>
@@ -310,6 +314,160 @@ TEST(PfaRigCli, BadRigInputGivesClearErrorsBeforeAnyPlanning)
   run = mocap("pfa " + sample() + " --rig '" + dir.file("neutral.obj").string() + "' --binding b.json", dir);
   EXPECT_EQ(run.exitCode, 2);
   EXPECT_NE(run.err.find("needs the folder with its shapes"), std::string::npos) << run.err;
+}
+
+// Every weight of a weights CSV: the rows after the header, the columns after Frame and Time.
+std::vector<double> csvWeights(const std::string& text)
+{
+  std::vector<double> weights;
+  const std::vector<std::string> lines = csvLines(text);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::istringstream row(lines[i]);
+    std::string cell;
+    for (int c = 0; std::getline(row, cell, ','); ++c)
+      if (c >= 2)
+        weights.push_back(std::stod(cell));
+  }
+  return weights;
+}
+
+std::string rigArguments(const test::TempDir& dir)
+{
+  return "rig --mesh '" + dir.file("neutral.obj").string() + "' --shapes '" + dir.file("shapes").string() + "'";
+}
+
+TEST(RigCli, ConvertsAnObjFolderRigToAGlbThatBindsDeformsAndSolvesAlike)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string glb = dir.file("rig.glb").string();
+  const Outcome run = mocap(rigArguments(dir) + " -o '" + glb + "' --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue json = parseJson(run.out, "rig --json");
+  EXPECT_EQ(json.find("vertices", "rig")->number("vertices"), 468.0);
+  EXPECT_EQ(json.find("triangles", "rig")->number("triangles"), 898.0);
+  std::vector<std::string> names;
+  for (const JsonValue& name : json.find("shapes", "rig")->array("shapes"))
+    names.push_back(name.string("shape"));
+  EXPECT_EQ(names, (std::vector<std::string>{"browInnerUp", "jawOpen", "mouthSmile_L"}));
+  EXPECT_GT(json.find("moved_vertices", "rig")->number("moved_vertices"), 30.0);
+  EXPECT_EQ(json.find("bytes", "rig")->number("bytes"), static_cast<double>(std::filesystem::file_size(glb)));
+
+  const std::string fromFolder = dir.file("folder.csv").string(), fromGlb = dir.file("glb.csv").string();
+  ASSERT_EQ(mocap(solveArguments(dir) + " --leave-out 0 -o '" + fromFolder + "'", dir).exitCode, 0);
+  const Outcome solved = mocap("solve --mesh '" + glb + "' --binding '" +
+                                   test::dataFile("../../resources/sample/Facial-Sing.binding.json").string() +
+                                   "' --take " + sample() + " " + kStabilize + " --leave-out 0 -o '" + fromGlb + "'",
+                               dir);
+  ASSERT_EQ(solved.exitCode, 0) << solved.err;
+  EXPECT_EQ(csvLines(readFileBytes(fromGlb))[0], csvLines(readFileBytes(fromFolder))[0]);
+  const std::vector<double> folderWeights = csvWeights(readFileBytes(fromFolder));
+  const std::vector<double> glbWeights = csvWeights(readFileBytes(fromGlb));
+  ASSERT_EQ(folderWeights.size(), 3000u * 3u);
+  ASSERT_EQ(glbWeights.size(), folderWeights.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < glbWeights.size(); ++i)
+    largest = std::max(largest, std::abs(glbWeights[i] - folderWeights[i]));
+  EXPECT_LT(largest, 1e-4) << "the GLB holds the rig as float32, nothing else differs";
+
+  // bind and deform read the GLB's neutral as a mesh.
+  const std::string binding = dir.file("bind.json").string();
+  const Outcome bound = mocap("bind --mesh '" + glb + "' --take " + sample() + " " + kStabilize + " --markers " +
+                                  faceMarkers() + " -o '" + binding + "'",
+                              dir);
+  ASSERT_EQ(bound.exitCode, 0) << bound.err;
+  EXPECT_NE(bound.out.find("bound 31 markers"), std::string::npos) << bound.out;
+  const Outcome deformed = mocap("deform --mesh '" + glb + "' --binding '" + binding + "' --take " + sample() + " " +
+                                     kStabilize + " --frames 1:20 --leave-out 0 -o '" + dir.file("d.pc2").string() + "'",
+                                 dir);
+  ASSERT_EQ(deformed.exitCode, 0) << deformed.err;
+  EXPECT_EQ(readPc2(dir.file("d.pc2")).samples.at(0).rows(), 468);
+}
+
+TEST(RigCli, KeepsAVertexRangeAndTheShapesAskedFor)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string glb = dir.file("crop.glb").string();
+  const Outcome run = mocap(rigArguments(dir) + " --only jawOpen,browInnerUp --vertices 100:299 -o '" + glb + "' --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const Mesh face = readObj(dir.file("neutral.obj"));
+  std::size_t inside = 0;
+  for (const MeshFace& f : face.faces)
+    inside += std::all_of(f.vertices.begin(), f.vertices.end(), [](Eigen::Index v) { return v >= 100 && v <= 299; });
+  const JsonValue json = parseJson(run.out, "rig --json");
+  EXPECT_EQ(json.find("vertices", "rig")->number("vertices"), 200.0);
+  EXPECT_EQ(json.find("triangles", "rig")->number("triangles"), static_cast<double>(inside));
+  const BlendshapeRig rig = readGltfRig(glb);
+  EXPECT_EQ(rig.shapeNames(), (std::vector<std::string>{"jawOpen", "browInnerUp"}));
+  EXPECT_EQ(rig.neutral.vertices.row(0), face.vertices.row(100).cast<float>().cast<double>());
+  // --tolerance drops the entries that move no axis beyond it.
+  const Outcome pruned = mocap(rigArguments(dir) + " --tolerance 0.3 -o '" + dir.file("pruned.glb").string() + "' --json", dir);
+  ASSERT_EQ(pruned.exitCode, 0) << pruned.err;
+  const BlendshapeRig all = readGltfRig(dir.file("pruned.glb"));
+  for (const SparseShape& shape : all.shapes)
+    for (Eigen::Index i = 0; i < shape.size(); ++i)
+      EXPECT_GT(shape.deltas.row(i).cwiseAbs().maxCoeff(), 0.3);
+  EXPECT_LT(parseJson(pruned.out, "rig").find("moved_vertices", "rig")->number("moved"),
+            parseJson(mocap(rigArguments(dir) + " -o '" + dir.file("all.glb").string() + "' --json", dir).out, "rig")
+                .find("moved_vertices", "rig")
+                ->number("moved"));
+}
+
+TEST(RigCli, BadRangesOutputsAndShapeFoldersGiveClearErrors)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string glb = dir.file("rig.glb").string(), out = " -o '" + dir.file("x.glb").string() + "'";
+  ASSERT_EQ(mocap(rigArguments(dir) + " -o '" + glb + "'", dir).exitCode, 0);
+  const auto expectError = [&](const std::string& arguments, int exitCode, const std::string& fragment) {
+    const Outcome run = mocap(arguments, dir);
+    EXPECT_EQ(run.exitCode, exitCode) << arguments;
+    EXPECT_NE(run.err.find(fragment), std::string::npos) << run.err;
+  };
+  expectError("rig --mesh '" + glb + "' --shapes '" + dir.file("shapes").string() + "'" + out, 2,
+              "--shapes is not used with a glTF rig");
+  expectError("rig --mesh '" + dir.file("neutral.obj").string() + "'" + out, 2, "--shapes DIR is needed");
+  expectError(rigArguments(dir) + " --vertices 5:2" + out, 2, "--vertices needs FIRST:LAST vertex indices of the mesh (0…467)");
+  expectError(rigArguments(dir) + " --vertices 0:468" + out, 2, "not '0:468'");
+  expectError(rigArguments(dir) + " --vertices 7-9" + out, 2, "not '7-9'");
+  expectError(rigArguments(dir) + " --vertices 7:7" + out, 2, "no face lies wholly inside vertices 7…7");
+  expectError(rigArguments(dir) + " --only jawOpen,smile" + out, 2, "has no smile.obj");
+  expectError(rigArguments(dir) + " -o '" + dir.file("rig.obj").string() + "'", 2, "-o must be a .glb file");
+  writeFileAtomically(dir.file("junk.glb"), std::string("glTF") + std::string(40, '\0'));
+  expectError("rig --mesh '" + dir.file("junk.glb").string() + "'" + out, 1, "junk.glb: GLB version 0");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.glb")));
+}
+
+TEST(RigCli, TheBundledIctRigLoadsAndSolvesTheBundledTake)
+{
+  const std::filesystem::path sampleDir = MOCAP_SAMPLE_DIR;
+  const BlendshapeRig rig = readGltfRig(sampleDir / "ict_face_rig.glb");
+  EXPECT_EQ(rig.neutral.vertexCount(), 9409);
+  EXPECT_EQ(rig.neutral.triangles().size(), 18460u);  // ICT's 9230 face quads
+  ASSERT_EQ(rig.shapeCount(), 53);
+  EXPECT_EQ(rig.shapes.front().name, "browDown_L");
+  EXPECT_EQ(rig.shapes[26].name, "jawOpen");
+  EXPECT_EQ(rig.shapes.back().name, "noseSneer_R");
+
+  test::TempDir dir;
+  const Outcome run = mocap("solve --mesh '" + (sampleDir / "ict_face_rig.glb").string() + "' --binding '" +
+                                (sampleDir / "Facial-Sing.ict_face_rig.binding.json").string() + "' --take " + sample() +
+                                " " + kStabilize + " -o '" + dir.file("w.csv").string() + "' --json",
+                            dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue json = parseJson(run.out, "solve --json");
+  EXPECT_EQ(json.find("shapes", "solve")->number("shapes"), 53.0);
+  EXPECT_EQ(json.find("markers", "solve")->number("markers"), 31.0);
+  EXPECT_EQ(json.find("held_frames", "solve")->number("held"), 0.0);
+  // Measured: 2.28 mm mean, 4.36 mm p95; leave-out 1.90 mm (the bound points' residual is 2.45 mm mean).
+  const JsonValue& residual = *json.find("residual_mm", "solve");
+  EXPECT_LT(residual.find("mean", "residual")->number("mean"), 2.5);
+  EXPECT_LT(residual.find("p95", "residual")->number("p95"), 5.0);
+  const double leaveOut = json.find("leave_out_error_mm", "solve")->number("leave_out");
+  EXPECT_LT(leaveOut, 2.2);
+  EXPECT_LT(leaveOut, json.find("leave_out", "solve")->find("rest_error_mm", "leave_out")->number("rest"));
+  EXPECT_EQ(csvLines(readFileBytes(dir.file("w.csv"))).size(), 3001u);
 }
 
 } // namespace
