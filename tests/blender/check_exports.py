@@ -10,6 +10,9 @@ Mesh Cache modifier on the cache; stepping the scene frames must give the cache'
 SAMPLE (optional) is the cache sample FRAME.obj was written from, so the two exports agree.
 With `--glb RIG.glb WEIGHTS.csv`, the blendshape rig `mocap solve` wrote goes through the glTF
 importer: its shape keys and their keyed values must match the weight curves of the same solve.
+With `--mocap MOCAP` as well, Blender exports the imported rig again as GLB (shape keys as morph
+targets) and `mocap rig` must read that file: the same shape names, and the neutral with the
+vertices and triangles Blender wrote.
 Prints "PASS: ..." and exits 0, or "FAIL: ..." and exits 1.
 """
 
@@ -37,9 +40,11 @@ except ImportError:  # no numpy (python3-numpy is only recommended): nothing to 
 if numpy is not None and not hasattr(numpy, "bool"):
     numpy.bool = bool
 
+import json  # noqa: E402
 import math  # noqa: E402
 import os  # noqa: E402
 import struct  # noqa: E402
+import subprocess  # noqa: E402
 import sys  # noqa: E402
 
 import bpy  # noqa: E402
@@ -275,25 +280,76 @@ def check_glb(path, csv_path):
             require(abs(values[f] - weights[f][s]) <= 1e-5,
                     f"{name} frame {f}: Blender keys {values[f]}, the CSV has {weights[f][s]}")
             checked += 1
-    return f"GLB: {len(names)} shape keys, {checked} keyed values equal the CSV within 1e-5"
+    return names, f"GLB: {len(names)} shape keys, {checked} keyed values equal the CSV within 1e-5"
+
+
+def read_glb_json(path):
+    """The JSON chunk of a GLB file."""
+    with open(path, "rb") as f:
+        data = f.read()
+    magic, version = struct.unpack_from("<4sI", data, 0)
+    require(magic == b"glTF" and version == 2, f"{path}: not a GLB version 2 file")
+    length, kind = struct.unpack_from("<II", data, 12)
+    require(kind == 0x4E4F534A, f"{path}: the first chunk is not JSON")
+    return json.loads(data[20:20 + length])
+
+
+def morph_mesh(gltf, path):
+    """The first mesh with morph targets, its vertex count (all primitives) and its triangle count."""
+    for mesh in gltf.get("meshes", []):
+        primitives = mesh["primitives"]
+        if any(p.get("targets") for p in primitives):
+            vertices = sum(gltf["accessors"][p["attributes"]["POSITION"]]["count"] for p in primitives)
+            triangles = sum(gltf["accessors"][p["indices"]]["count"] // 3 if "indices" in p else
+                            gltf["accessors"][p["attributes"]["POSITION"]]["count"] // 3 for p in primitives)
+            return mesh, vertices, triangles
+    raise CheckFailed(f"{path}: no mesh with morph targets")
+
+
+def check_blender_glb_read_back(mocap, names, out_dir):
+    """Blender's own GLB export of the imported rig, read by `mocap rig`."""
+    path = os.path.join(out_dir, "blender_export.glb")
+    bpy.ops.export_scene.gltf(filepath=path, export_format="GLB", export_morph=True)
+    mesh, vertices, triangles = morph_mesh(read_glb_json(path), path)
+    require(mesh.get("extras", {}).get("targetNames") == names,
+            f"Blender wrote target names {mesh.get('extras', {}).get('targetNames')}, not {names}")
+    run = subprocess.run([mocap, "rig", "--mesh", path, "-o", os.path.join(out_dir, "blender_again.glb"), "--json"],
+                         capture_output=True, text=True)
+    require(run.returncode == 0, f"mocap rig could not read Blender's GLB: {run.stderr.strip()}")
+    report = json.loads(run.stdout)
+    require(report["shapes"] == names, f"mocap rig read shapes {report['shapes']} from Blender's GLB, not {names}")
+    require(report["vertices"] == vertices,
+            f"mocap rig read {report['vertices']} vertices, Blender wrote {vertices}")
+    require(report["triangles"] == triangles,
+            f"mocap rig read {report['triangles']} triangles, Blender wrote {triangles}")
+    require(report["moved_vertices"] > 0, "no shape of Blender's GLB moves a vertex")
+    return (f"Blender's GLB export ({vertices} vertices, {triangles} triangles, {len(names)} morph targets) "
+            f"read back by mocap rig with the same names")
 
 
 def main():
     args = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    glb = None
+    glb, mocap = None, None
     if "--glb" in args:
         at = args.index("--glb")
         glb, args = args[at + 1:at + 3], args[:at] + args[at + 3:]
         require(len(glb) == 2, "--glb needs RIG.glb WEIGHTS.csv")
+    if "--mocap" in args:
+        at = args.index("--mocap")
+        require(at + 1 < len(args) and glb, "--mocap needs MOCAP, and --glb")
+        mocap, args = args[at + 1], args[:at] + args[at + 2:]
     if len(args) not in (3, 4):
         raise CheckFailed("usage: blender -b --python check_exports.py -- TAKE.bvh FRAME.obj CACHE.pc2 [SAMPLE]"
-                          " [--glb RIG.glb WEIGHTS.csv]")
+                          " [--glb RIG.glb WEIGHTS.csv [--mocap MOCAP]]")
     bvh, frame_obj, pc2 = args[:3]
     sample = int(args[3]) if len(args) == 4 else None
     bpy.ops.wm.read_factory_settings(use_empty=True)
     results = [check_bvh(bvh), check_obj(frame_obj)[1], check_pc2(pc2, frame_obj if sample is not None else None, sample)]
     if glb:
-        results.append(check_glb(*glb))
+        names, result = check_glb(*glb)
+        results.append(result)
+        if mocap:
+            results.append(check_blender_glb_read_back(mocap, names, os.path.dirname(os.path.abspath(glb[0]))))
     print(f"PASS: Blender {bpy.app.version_string} opened the exports: " + "; ".join(results))
 
 

@@ -2,7 +2,8 @@
 # ctest `blender_import`: writes the animation exports with the built `mocap` CLI (a BVH of the
 # sample take, an OBJ sequence and an OBJ + PC2 cache of the deformed MediaPipe face, a solved
 # blendshape rig as GLB with its weight curves as CSV) and opens
-# them in Blender with check_exports.py. Exits 77 (reported as skipped) when Blender is missing.
+# them in Blender with check_exports.py, which also has Blender export the rig again as GLB and
+# reads that with `mocap rig`. Exits 77 (reported as skipped) when Blender is missing.
 #   run_blender_check.sh MOCAP BLENDER TEST_DATA_DIR SAMPLE_TAKE
 set -eu
 mocap="$1" blender="$2" data="$3" sample="$4"
@@ -60,5 +61,5 @@ fi
 status=0
 "$blender" -b --factory-startup --python-exit-code 1 --python "$here/check_exports.py" -- \
   "$out/take.bvh" "$out/sequence/canonical_face_model_0005.obj" "$out/face.pc2" 4 \
-  ${glb:+--glb "$out/rig.glb" "$out/weights.csv"} || status=$?
+  ${glb:+--glb "$out/rig.glb" "$out/weights.csv" --mocap "$mocap"} || status=$?
 exit "$status"
