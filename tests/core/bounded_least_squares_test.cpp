@@ -91,6 +91,29 @@ TEST(BoundedLeastSquares, MoreWeightsThanEquationsStaysInTheBox)
   EXPECT_LE((a * w - b).norm(), b.norm() + 1e-12);
 }
 
+// As the blendshape solve runs it: correlated columns, weights drifting across both bounds, each
+// frame warm-started from the previous, so the free set changes by a few weights at a time (the
+// factor is updated, not rebuilt). Every frame must still be the exact optimum.
+TEST(BoundedLeastSquares, WarmStartedFramesWithChangingFreeSetsStayOptimal)
+{
+  const Eigen::Index weights = 40;
+  const Eigen::MatrixXd mixing = Eigen::MatrixXd::Identity(weights, weights) + 0.4 * randomMatrix(weights, weights, 3);
+  const Eigen::MatrixXd a = randomMatrix(120, weights, 2) * mixing;
+  const Eigen::VectorXd lower = Eigen::VectorXd::Zero(weights), upper = Eigen::VectorXd::Ones(weights);
+  const BoundedLeastSquares solver(a, lower, upper);
+  Eigen::VectorXd truth = Eigen::VectorXd::Constant(weights, 0.5), previous = lower;
+  for (unsigned frame = 0; frame < 200; ++frame) {
+    truth += 0.15 * randomMatrix(weights, 1, 1000 + frame);  // drifts outside [0, 1] too
+    const Eigen::VectorXd b = a * truth + 0.2 * randomMatrix(120, 1, 5000 + frame);
+    const Eigen::VectorXd w = solver.solve(b, &previous);
+    expectOptimal(a, b, w, lower, upper);
+    if (frame % 20 == 0) {
+      EXPECT_LT((w - solver.solve(b)).cwiseAbs().maxCoeff(), 1e-8) << frame;  // cold start agrees
+    }
+    previous = w;
+  }
+}
+
 TEST(BoundedLeastSquares, BadInputThrows)
 {
   const Eigen::MatrixXd a = randomMatrix(4, 2, 1);

@@ -21,6 +21,68 @@ enum class Bound : std::uint8_t
   Upper
 };
 
+/// The Cholesky factor RᵀR of H restricted to the free weights, kept as weights leave and enter
+/// the free set: removing one is a column deletion restored by Givens rotations, adding one a
+/// new column by forward substitution, each O(#free²) where refactorising costs O(#free³). The
+/// free weights are kept in the order they entered (order()).
+class FreeFactor
+{
+public:
+  explicit FreeFactor(const Eigen::MatrixXd& h) : m_h(h), m_r(h.rows(), h.rows())
+  {
+    m_order.reserve(static_cast<std::size_t>(h.rows()));
+  }
+
+  [[nodiscard]] const std::vector<Eigen::Index>& order() const { return m_order; }
+
+  void add(Eigen::Index weight)
+  {
+    const auto n = static_cast<Eigen::Index>(m_order.size());
+    auto column = m_r.col(n).head(n);
+    for (Eigen::Index a = 0; a < n; ++a)
+      column(a) = m_h(m_order[static_cast<std::size_t>(a)], weight);
+    m_r.topLeftCorner(n, n).triangularView<Eigen::Upper>().transpose().solveInPlace(column);
+    // A numerically semi-definite H (fewer measurements than weights) gets the smallest pivot
+    // that keeps R invertible: the ridge the constructor adds, in effect, once more.
+    const double pivot = m_h(weight, weight) - column.squaredNorm();
+    m_r(n, n) = std::sqrt(std::max(pivot, 1e-12 * std::max(m_h(weight, weight), 1e-300)));
+    m_order.push_back(weight);
+  }
+
+  /// Removes the weight at `position` of order().
+  void remove(std::size_t position)
+  {
+    const auto n = static_cast<Eigen::Index>(m_order.size());
+    const auto p = static_cast<Eigen::Index>(position);
+    for (Eigen::Index j = p; j + 1 < n; ++j)
+      m_r.col(j).head(j + 2) = m_r.col(j + 1).head(j + 2);
+    for (Eigen::Index i = p; i + 1 < n; ++i) {  // zero the subdiagonal the deletion left
+      const double a = m_r(i, i), b = m_r(i + 1, i), r = std::sqrt(a * a + b * b);  // R's scale: no overflow
+      const double c = r > 0.0 ? a / r : 1.0, s = r > 0.0 ? b / r : 0.0;
+      for (Eigen::Index j = i; j + 1 < n; ++j) {
+        const double top = m_r(i, j), bottom = m_r(i + 1, j);
+        m_r(i, j) = c * top + s * bottom;
+        m_r(i + 1, j) = -s * top + c * bottom;
+      }
+    }
+    m_order.erase(m_order.begin() + static_cast<std::ptrdiff_t>(position));
+  }
+
+  /// Solves H_FF·z = rhs in place (#free values, in order()). O(#free²).
+  void solve(Eigen::Ref<Eigen::VectorXd> z) const
+  {
+    const auto n = static_cast<Eigen::Index>(m_order.size());
+    const auto r = m_r.topLeftCorner(n, n).triangularView<Eigen::Upper>();
+    r.transpose().solveInPlace(z);
+    r.solveInPlace(z);
+  }
+
+private:
+  const Eigen::MatrixXd& m_h;
+  Eigen::MatrixXd m_r;  // the top-left #free² upper triangle is R
+  std::vector<Eigen::Index> m_order;
+};
+
 } // namespace
 
 BoundedLeastSquares::BoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,
@@ -84,41 +146,26 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
                                              h.cwiseAbs().maxCoeff() * std::max(boundScale, 1.0), 1e-300});
   const int maxSteps = 10 * static_cast<int>(k) + 20;
 
-  std::vector<Eigen::Index> freeSet;
-  freeSet.reserve(static_cast<std::size_t>(k));
-  Eigen::MatrixXd block(k, k);
-  Eigen::VectorXd rhs(k), z(k), fixed(k), gradient(k);
+  FreeFactor factor(h);  // the factorisation is kept up to date, not redone each step
+  for (Eigen::Index i = 0; i < k; ++i)
+    if (state[static_cast<std::size_t>(i)] == Bound::Free)
+      factor.add(i);
+  Eigen::VectorXd z(k), fixed(k), gradient(k);
+  std::vector<std::size_t> bound;  // positions in the free set that reached a bound in a step
+  bound.reserve(static_cast<std::size_t>(k));
   for (int step = 0; step < maxSteps; ++step) {
     // Make the free weights optimal with the bound ones held, stepping back to the box when the
     // optimum leaves it and binding the weight that blocked the step.
     while (true) {
-      freeSet.clear();
-      for (Eigen::Index i = 0; i < k; ++i) {
-        const bool isFree = state[static_cast<std::size_t>(i)] == Bound::Free;
-        fixed(i) = isFree ? 0.0 : w(i);
-        if (isFree)
-          freeSet.push_back(i);
-      }
+      const std::vector<Eigen::Index>& freeSet = factor.order();
       if (freeSet.empty())
         break;
       const auto nf = static_cast<Eigen::Index>(freeSet.size());
+      for (Eigen::Index i = 0; i < k; ++i)
+        fixed(i) = state[static_cast<std::size_t>(i)] == Bound::Free ? 0.0 : w(i);
       for (Eigen::Index a = 0; a < nf; ++a)
-        rhs(a) = atb(freeSet[static_cast<std::size_t>(a)]) - h.row(freeSet[static_cast<std::size_t>(a)]).dot(fixed);
-      z.head(nf) = rhs.head(nf);
-      for (Eigen::Index a = 0; a < nf; ++a)
-        for (Eigen::Index b = 0; b <= a; ++b)
-          block(a, b) = h(freeSet[static_cast<std::size_t>(a)], freeSet[static_cast<std::size_t>(b)]);
-      Eigen::Ref<Eigen::MatrixXd> view = block.topLeftCorner(nf, nf);
-      const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>, Eigen::Lower> llt(view);
-      if (llt.info() == Eigen::Success) {
-        llt.solveInPlace(z.head(nf));
-      } else {  // numerically semi-definite: the pivoting factorisation copes
-        Eigen::MatrixXd copy(nf, nf);
-        for (Eigen::Index a = 0; a < nf; ++a)
-          for (Eigen::Index b = 0; b < nf; ++b)
-            copy(a, b) = h(freeSet[static_cast<std::size_t>(a)], freeSet[static_cast<std::size_t>(b)]);
-        z.head(nf) = copy.ldlt().solve(rhs.head(nf));
-      }
+        z(a) = atb(freeSet[static_cast<std::size_t>(a)]) - h.col(freeSet[static_cast<std::size_t>(a)]).dot(fixed);  // H symmetric: a contiguous column
+      factor.solve(z.head(nf));
       double alpha = 1.0;
       Eigen::Index blocking = -1;
       for (Eigen::Index j = 0; j < nf; ++j) {
@@ -141,6 +188,7 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
           w(freeSet[static_cast<std::size_t>(j)]) = z(j);
         break;
       }
+      bound.clear();
       for (Eigen::Index j = 0; j < nf; ++j) {
         const Eigen::Index i = freeSet[static_cast<std::size_t>(j)];
         w(i) = std::clamp(w(i) + alpha * (z(j) - w(i)), m_lower(i), m_upper(i));
@@ -150,11 +198,15 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
         if (hitLower) {
           w(i) = m_lower(i);
           state[static_cast<std::size_t>(i)] = Bound::Lower;
+          bound.push_back(static_cast<std::size_t>(j));
         } else if (hitUpper) {
           w(i) = m_upper(i);
           state[static_cast<std::size_t>(i)] = Bound::Upper;
+          bound.push_back(static_cast<std::size_t>(j));
         }
       }
+      for (auto position = bound.rbegin(); position != bound.rend(); ++position)
+        factor.remove(*position);  // from the back, so the earlier positions stay valid
       if (++step >= maxSteps)
         return w;
     }
@@ -171,6 +223,7 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
       const double violation = s == Bound::Lower ? -gradient(i) : gradient(i);
       if (violation > tolerance) {
         state[static_cast<std::size_t>(i)] = Bound::Free;
+        factor.add(i);
         freed = true;
       }
     }

@@ -28,13 +28,15 @@ public:
   [[nodiscard]] Eigen::Index equationCount() const { return m_a.rows(); }
 
   /// The constrained minimiser for `b` (#equations). Starts from all weights at the lower bound
-  /// (or from `start`, clamped, e.g. the previous frame's solution). Each active-set step costs
-  /// O(#free³); there are typically a few per weight. Total O(#equations · #weights + steps · #weights³).
+  /// (or from `start`, clamped, e.g. the previous frame's solution). The Cholesky factor of the
+  /// free weights' block is built once per solve, O(#free³), and then updated as weights bind or
+  /// are freed, O(#free²) each, so an active-set step costs O(#free · #weights). Total
+  /// O(#equations · #weights + #weights³ + steps · #weights²).
   /// Throws InvalidArgument when `b` has the wrong size or a non-finite entry.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::Ref<const Eigen::VectorXd>& b,
                                       const Eigen::VectorXd* start = nullptr) const;
 
-  /// The same from Aᵀb directly, when the caller has it. O(steps · #weights³).
+  /// The same from Aᵀb directly, when the caller has it. O(#weights³ + steps · #weights²).
   [[nodiscard]] Eigen::VectorXd solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb,
                                             const Eigen::VectorXd* start = nullptr) const;
 
