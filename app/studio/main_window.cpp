@@ -265,6 +265,15 @@ void MainWindow::createDocks()
   tabifyDockWidget(cleaningDock, m_blendshapeDock);
   m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
 
+  // Layout planning judges layouts on the rig through the binding on its neutral.
+  m_layoutPlanning->setRigSource([this] {
+    const auto& rig = m_blendshapeSolve->model().rig();
+    const ui::FaceMeshModel& face = m_faceMesh->model();
+    if (!rig || face.mesh().vertexCount() != rig->neutral.vertexCount())
+      return ui::LayoutRig{};
+    return ui::LayoutRig{rig, face.binding()};
+  });
+
   m_weights = new ui::WeightCurveView(*m_document, m_blendshapeSolve->model(), this);
   m_weightsDock = new QDockWidget(tr("Weights"), this);
   m_weightsDock->setObjectName(QStringLiteral("weightsDock"));

@@ -12,6 +12,8 @@
 #include "document/take_document.h"
 #include "panels/blendshape_solve_panel.h"
 #include "panels/face_mesh_panel.h"
+#include "panels/layout_planning_panel.h"
+#include "views/layout_error_plot.h"
 #include "views/blendshape_scene.h"
 #include "views/face_mesh_scene.h"
 #include "views/mesh_layer.h"
@@ -223,6 +225,42 @@ TEST_F(BlendshapeSolvePanelTest, MissingRigBindingOrFolderGiveClearErrors)
   EXPECT_FALSE(model().hasResult());
   EXPECT_FALSE(panel->exportCsv(QString::fromStdString(dir.file("w.csv").string()), false).isEmpty());
   EXPECT_FALSE(std::filesystem::exists(dir.file("w.csv")));
+}
+
+TEST_F(BlendshapeSolvePanelTest, LayoutPlanningJudgesLayoutsOnTheLoadedRig)
+{
+  ui::LayoutPlanningPanel* planning = window->layoutPlanningPanel();
+  ui::LayoutPlanParameters quick;
+  quick.restarts = 5;
+  quick.minK = 3;
+  quick.maxK = 10;
+  quick.randomSubsets = 3;
+  quick.markerPatterns = {QStringLiteral("section*")};
+  planning->setParameters(quick);
+  planning->setJudgeOnRig(true);
+  // No rig yet: Run says what is missing and starts nothing.
+  EXPECT_TRUE(planning->run().contains(QStringLiteral("blendshape rig"))) << planning->statusText().toStdString();
+  EXPECT_FALSE(planning->busy());
+
+  solveSample();
+  ASSERT_EQ(planning->run(), QString()) << planning->statusText().toStdString();
+  planning->waitForRun();
+  const ui::LayoutPlanResult* result = planning->result();
+  ASSERT_NE(result, nullptr) << planning->statusText().toStdString();
+  ASSERT_TRUE(result->rig.has_value()) << result->rigError.toStdString();
+  EXPECT_EQ(result->rig->boundMarkers, 31);
+  EXPECT_LT(result->rig->planned.mse, 1e-12);  // every planned marker is the full set
+  EXPECT_TRUE(planning->plot()->showsRig());
+  planning->plot()->resize(400, 500);
+  const auto pfa = planning->plot()->points(ui::LayoutErrorPlot::Measure::RigWeightMse, ui::LayoutErrorPlot::Curve::Pfa);
+  EXPECT_GE(pfa.size(), 2u);
+  // A reduced layout loses something the full set has.
+  const auto& sizes = result->rig->sizes;
+  const auto judged = [](const LayoutSizeRigErrors& s) { return s.pfa && s.pfa->judged(); };
+  const auto smallest = std::find_if(sizes.begin(), sizes.end(), judged);
+  ASSERT_TRUE(smallest != sizes.end());
+  EXPECT_GT(smallest->pfa->mse, 1e-6);
+  EXPECT_LE(smallest->pfa->boundMarkers, smallest->markerCount);
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -62,7 +63,7 @@ QStringList splitLabels(const QString& text)
 // The worker: the open take (a copy) and the extra take files, planned as `mocap pfa` plans them.
 // Never throws: a failure is the result's error.
 std::shared_ptr<LayoutPlanResult> planInBackground(Take openTake, const QStringList& extraTakes,
-                                                   const LayoutRequest& request,
+                                                   const LayoutRequest& request, const LayoutRig& rig,
                                                    const std::shared_ptr<std::atomic<bool>>& cancel,
                                                    const std::shared_ptr<std::atomic<int>>& progress)
 {
@@ -72,12 +73,28 @@ std::shared_ptr<LayoutPlanResult> planInBackground(Take openTake, const QStringL
     takes.push_back(std::move(openTake));
     for (const QString& path : extraTakes)
       takes.push_back(readTake(path.toStdString()));
-    RunControl control;
-    control.cancel = cancel.get();
-    control.progress = [progress](double fraction) {
-      progress->store(static_cast<int>(std::lround(1000.0 * std::clamp(fraction, 0.0, 1.0))));
+    // With a rig, planning takes the first 60 % of the bar and judging the layouts the rest.
+    const double planShare = rig.rig ? 0.6 : 1.0;
+    const auto part = [cancel, progress](double begin, double end) {
+      RunControl control;
+      control.cancel = cancel.get();
+      control.progress = [progress, begin, end](double fraction) {
+        const double done = begin + (end - begin) * std::clamp(fraction, 0.0, 1.0);
+        progress->store(static_cast<int>(std::lround(1000.0 * done)));
+      };
+      return control;
     };
-    static_cast<LayoutResult&>(*result) = planLayout(takes, request, control);
+    static_cast<LayoutResult&>(*result) = planLayout(takes, request, part(0.0, planShare));
+    if (rig.rig && !result->plan.cancelled) {
+      try {
+        LayoutRigErrorOptions options;
+        options.randomSubsets = request.plan.randomSubsets;
+        options.seed = request.plan.pfa.seed;
+        result->rig = planRigErrors(takes, *result, *rig.rig, rig.binding, options, part(planShare, 1.0));
+      } catch (const std::exception& e) {  // the plan stands without the rig measure
+        result->rigError = QString::fromStdString(e.what());
+      }
+    }
     result->pairSource = request.pairsFile.empty()
                              ? QCoreApplication::translate("mocap::ui::LayoutPlanningPanel", "detected")
                              : QFileInfo(QString::fromStdString(request.pairsFile)).fileName();
@@ -255,6 +272,11 @@ void LayoutPlanningPanel::buildForm()
   m_exclude->setToolTip(tr("Markers left out of the plan, comma-separated; * and ? match any run and any character "
                            "(unlabelled points and the reference markers always are)"));
   form->addRow(tr("Leave out:"), m_exclude);
+  m_judgeOnRig = new QCheckBox(tr("Judge layouts on the blendshape rig"), this);
+  m_judgeOnRig->setToolTip(tr("Also solve the loaded rig's weights from each layout and from every bound marker, "
+                              "and plot their MSE (the seed paper's measure on a semantic rig; mocap pfa --rig)"));
+  connect(m_judgeOnRig, &QCheckBox::toggled, this, [this] { writeSettings(); });
+  form->addRow(m_judgeOnRig);
   layout->addLayout(form);
 
   auto* runRow = new QHBoxLayout;
@@ -285,7 +307,16 @@ void LayoutPlanningPanel::buildForm()
   m_markers->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_markers->setToolTip(tr("The selected layout's markers; the frequency is the share of k-means restarts "
                            "that chose the marker's pair (PFA only)"));
-  splitter->addWidget(m_plot);
+  auto* plotBox = new QWidget(splitter);
+  auto* plotLayout = new QVBoxLayout(plotBox);
+  plotLayout->setContentsMargins(0, 0, 0, 0);
+  m_plot->setParent(plotBox);
+  plotLayout->addWidget(m_plot, 1);
+  m_rigSummary = new QLabel(plotBox);
+  m_rigSummary->setWordWrap(true);
+  m_rigSummary->hide();
+  plotLayout->addWidget(m_rigSummary);
+  splitter->addWidget(plotBox);
   splitter->addWidget(m_markers);
   splitter->setStretchFactor(0, 3);
   splitter->setStretchFactor(1, 2);
@@ -364,6 +395,13 @@ void LayoutPlanningPanel::readSettings()
   p.excludePatterns = settings.value(kGroup + QStringLiteral("exclude")).toStringList();
   p.extraTakes = settings.value(kGroup + QStringLiteral("extraTakes")).toStringList();
   setParameters(p);
+  const QSignalBlocker blocker(m_judgeOnRig);
+  m_judgeOnRig->setChecked(settings.value(kGroup + QStringLiteral("judgeOnRig"), false).toBool());
+}
+
+void LayoutPlanningPanel::setJudgeOnRig(bool on)
+{
+  m_judgeOnRig->setChecked(on);
 }
 
 void LayoutPlanningPanel::writeSettings() const
@@ -384,6 +422,7 @@ void LayoutPlanningPanel::writeSettings() const
   settings.setValue(kGroup + QStringLiteral("markers"), p.markerPatterns);
   settings.setValue(kGroup + QStringLiteral("exclude"), p.excludePatterns);
   settings.setValue(kGroup + QStringLiteral("extraTakes"), p.extraTakes);
+  settings.setValue(kGroup + QStringLiteral("judgeOnRig"), m_judgeOnRig->isChecked());
 }
 
 QString LayoutPlanningPanel::run()
@@ -404,6 +443,13 @@ QString LayoutPlanningPanel::run()
   LayoutRequest request;
   if (problem.isEmpty())
     problem = checkedRequest(p, reference, request);
+  LayoutRig rig;
+  if (problem.isEmpty() && m_judgeOnRig->isChecked()) {
+    rig = m_rigSource ? m_rigSource() : LayoutRig{};
+    if (!rig.rig || rig.binding.markers.empty())
+      problem = tr("Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its "
+                   "neutral (Face Mesh panel); or switch it off.");
+  }
   if (!problem.isEmpty()) {
     showError(problem);
     return problem;
@@ -418,7 +464,7 @@ QString LayoutPlanningPanel::run()
   setIdle(false);
   m_progressTimer->start();
   m_watcher.setFuture(QtConcurrent::run(planInBackground, m_document.take(), p.extraTakes, std::move(request),
-                                        m_cancelFlag, m_progressValue));
+                                        std::move(rig), m_cancelFlag, m_progressValue));
   return {};
 }
 
@@ -520,7 +566,12 @@ void LayoutPlanningPanel::onFinished()
                              .arg(static_cast<qlonglong>(frames.droppedFrames))
                              .arg(100.0 * plan.explainedVariance, 0, 'f', 1)
                              .arg(QString::fromStdString(plan.recommendationRule)));
-    m_plot->setPlan(plan);
+    m_plot->setPlan(plan, m_result->rig ? &*m_result->rig : nullptr);
+    if (!m_result->rigError.isEmpty())
+      m_status->setText(m_status->text() + QLatin1Char('\n') +
+                        tr("Not judged on the rig: %1").arg(m_result->rigError));
+    else if (m_result->rig && m_result->rig->cancelled)
+      m_status->setText(m_status->text() + QLatin1Char('\n') + tr("Judging on the rig was cancelled."));
     showSelectedSize();
   }
   setIdle(true);
@@ -539,8 +590,34 @@ std::vector<std::string> LayoutPlanningPanel::selectedLabels() const
   return layout ? m_result->labelsOf(layout->markers) : std::vector<std::string>{};
 }
 
+namespace {
+
+/// "PFA 0.035 · greedy 0.062 · random 0.073" for one size's rig measure ("—" where not judged).
+QString rigSizeText(const LayoutSizeRigErrors& size)
+{
+  const auto value = [](const std::optional<RigLayoutError>& e) {
+    return e && e->judged() ? QString::number(e->mse, 'g', 3) : QStringLiteral("—");
+  };
+  return LayoutPlanningPanel::tr("PFA %1 · greedy %2 · random %3")
+      .arg(value(size.pfa), value(size.greedy),
+           size.randomCount > 0 && std::isfinite(size.randomMse) ? QString::number(size.randomMse, 'g', 3)
+                                                                 : QStringLiteral("—"));
+}
+
+} // namespace
+
 void LayoutPlanningPanel::showSelectedSize()
 {
+  const LayoutSizeRigErrors* rigSize = m_result && m_result->rig ? m_result->rig->size(m_plot->selectedSize()) : nullptr;
+  m_rigSummary->setVisible(rigSize != nullptr);
+  if (rigSize)
+    m_rigSummary->setText(tr("Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4")
+                              .arg(static_cast<qlonglong>(rigSize->markerCount))
+                              .arg(static_cast<qlonglong>(rigSize->pfa ? rigSize->pfa->boundMarkers
+                                                          : rigSize->greedy ? rigSize->greedy->boundMarkers
+                                                                            : 0))
+                              .arg(static_cast<qlonglong>(m_result->rig->boundMarkers))
+                              .arg(rigSizeText(*rigSize)));
   m_markers->setRowCount(0);
   const ScoredLayout* layout = selectedLayout();
   if (!layout) {

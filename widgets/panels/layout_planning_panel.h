@@ -1,6 +1,9 @@
 #pragma once
 
+#include "mocap/evaluation/layout_rig_error.h"
 #include "mocap/layout/layout_planning.h"
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/model/blendshape_rig.h"
 
 #include <QFutureWatcher>
 #include <QString>
@@ -8,10 +11,12 @@
 #include <QWidget>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -58,6 +63,16 @@ struct LayoutPlanResult : LayoutResult
 {
   QString pairSource;  ///< where the pairs came from, in words
   QString error;       ///< non-empty when the run failed
+  std::optional<PlanRigErrors> rig;  ///< the layouts judged on the blendshape rig, when asked
+  QString rigError;                  ///< why they could not be (the plan itself stands)
+};
+
+/// The blendshape rig and binding layouts may be judged on (the studio: the Blendshape Solve
+/// panel's rig and the Face Mesh panel's binding on its neutral).
+struct LayoutRig
+{
+  std::shared_ptr<const BlendshapeRig> rig;
+  MeshBinding binding;
 };
 
 /// The marker layout planning dock (Wellein et al. 2007 via layout_planning.h, the planning `mocap pfa`
@@ -77,6 +92,10 @@ public:
   ~LayoutPlanningPanel() override;
 
   [[nodiscard]] LayoutPlanParameters parameters() const;
+  /// Where Run takes the rig from when "Judge on the blendshape rig" is on (asked at each Run).
+  void setRigSource(std::function<LayoutRig()> source) { m_rigSource = std::move(source); }
+  /// Judge layouts on the rig too (as `mocap pfa --rig`); remembered.
+  void setJudgeOnRig(bool on);
   void setParameters(const LayoutPlanParameters& parameters);
 
   /// Starts a run with the current parameters; returns an error message (shown too) when it
@@ -128,6 +147,9 @@ private:
   [[nodiscard]] const ScoredLayout* selectedLayout() const;
 
   TakeDocument& m_document;
+  std::function<LayoutRig()> m_rigSource;
+  QCheckBox* m_judgeOnRig = nullptr;
+  QLabel* m_rigSummary = nullptr;
   QListWidget* m_takes = nullptr;
   QPushButton* m_addTake = nullptr;
   QPushButton* m_removeTake = nullptr;

@@ -38,7 +38,7 @@ constexpr std::array<LayoutErrorPlot::Curve, 3> kCurves = {
 
 std::size_t index(LayoutErrorPlot::Measure measure)
 {
-  return measure == LayoutErrorPlot::Measure::ReconstructionRmse ? 0 : 1;
+  return static_cast<std::size_t>(measure);
 }
 
 std::size_t index(LayoutErrorPlot::Curve curve)
@@ -56,8 +56,9 @@ LayoutErrorPlot::LayoutErrorPlot(QWidget* parent) : QWidget(parent)
   setToolTip(tr("Click a marker count (or use ←/→) to show its layout"));
 }
 
-void LayoutErrorPlot::setPlan(const LayoutPlan& plan)
+void LayoutErrorPlot::setPlan(const LayoutPlan& plan, const PlanRigErrors* rig)
 {
+  m_hasRig = rig != nullptr;
   m_rows.clear();
   m_selectable.clear();
   for (const LayoutSize& entry : plan.sizes) {
@@ -75,6 +76,15 @@ void LayoutErrorPlot::setPlan(const LayoutPlan& plan)
       row.value[index(Measure::ReconstructionRmse)][index(Curve::Random)] = entry.randomReconstructionRmse;
       row.value[index(Measure::BlendshapeMse)][index(Curve::Random)] = entry.randomBlendshapeError;
     }
+    if (const LayoutSizeRigErrors* judged = rig ? rig->size(entry.markerCount) : nullptr) {
+      auto& values = row.value[index(Measure::RigWeightMse)];
+      if (judged->pfa && judged->pfa->judged())
+        values[index(Curve::Pfa)] = judged->pfa->mse;
+      if (judged->greedy && judged->greedy->judged())
+        values[index(Curve::Greedy)] = judged->greedy->mse;
+      if (judged->randomCount > 0 && std::isfinite(judged->randomMse))
+        values[index(Curve::Random)] = judged->randomMse;
+    }
     m_rows.push_back(row);
     if (entry.layout(plan.method))
       m_selectable.push_back(entry.markerCount);
@@ -88,6 +98,7 @@ void LayoutErrorPlot::setPlan(const LayoutPlan& plan)
 
 void LayoutErrorPlot::clear()
 {
+  m_hasRig = false;
   m_rows.clear();
   m_selectable.clear();
   m_recommended = 0;
@@ -109,9 +120,11 @@ bool LayoutErrorPlot::setSelectedSize(Eigen::Index size)
 
 QRectF LayoutErrorPlot::plotArea(Measure measure) const
 {
-  const double height = std::max(10.0, (static_cast<double>(this->height()) - kTop - kBottom - kGap) / 2.0);
+  const double plots = m_hasRig ? 3.0 : 2.0;
+  const double height =
+      std::max(10.0, (static_cast<double>(this->height()) - kTop - kBottom - (plots - 1.0) * kGap) / plots);
   const double width = std::max(10.0, static_cast<double>(this->width()) - kLeft - kRight);
-  const double top = measure == Measure::ReconstructionRmse ? kTop : kTop + height + kGap;
+  const double top = kTop + static_cast<double>(index(measure)) * (height + kGap);
   return {kLeft, top, width, height};
 }
 
@@ -163,6 +176,8 @@ void LayoutErrorPlot::paintEvent(QPaintEvent*)
   paintLegend(painter);
   paintPlot(painter, Measure::ReconstructionRmse);
   paintPlot(painter, Measure::BlendshapeMse);
+  if (m_hasRig)
+    paintPlot(painter, Measure::RigWeightMse);
   painter.setPen(palette().color(QPalette::Text));
   painter.drawText(QRectF(kLeft, height() - 16.0, width() - kLeft - kRight, 16.0), Qt::AlignCenter,
                    tr("markers"));
@@ -234,7 +249,8 @@ void LayoutErrorPlot::paintPlot(QPainter& painter, Measure measure) const
   painter.drawRect(area);
   painter.drawText(QRectF(area.left(), area.top() - 17.0, area.width(), 16.0), Qt::AlignLeft | Qt::AlignBottom,
                    measure == Measure::ReconstructionRmse ? tr("Marker reconstruction RMSE (mm)")
-                                                          : tr("Blend-weight MSE"));
+                   : measure == Measure::BlendshapeMse    ? tr("Blend-weight MSE (key poses)")
+                                                          : tr("Rig-weight MSE (blendshape rig)"));
 
   // Recommended size.
   if (m_recommended > 0) {

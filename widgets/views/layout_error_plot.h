@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mocap/evaluation/layout_rig_error.h"
 #include "mocap/layout/marker_selection.h"
 
 #include <QWidget>
@@ -13,8 +14,9 @@
 namespace mocap::ui {
 
 /// The error-vs-marker-count curve of a layout plan (Wellein et al. 2007 Fig. 2), drawn with
-/// QPainter as two stacked plots sharing the marker-count axis: reconstruction RMSE (mm) above,
-/// blend-weight MSE below, each with the PFA, greedy and random-mean curves. The recommended size
+/// QPainter as stacked plots sharing the marker-count axis: reconstruction RMSE (mm) above,
+/// blend-weight MSE below and, when the layouts were judged on a blendshape rig, the rig-weight
+/// MSE under them, each with the PFA, greedy and random-mean curves. The recommended size
 /// is a dashed line, the selected size a band; a click (nearest size) or ←/→ selects a size among
 /// those the plan's method has a layout for. Painting is O(#sizes).
 class LayoutErrorPlot final : public QWidget
@@ -26,6 +28,7 @@ public:
   {
     ReconstructionRmse,
     BlendshapeMse,
+    RigWeightMse,  ///< only with a rig measure (setPlan's `rig`)
   };
   enum class Curve
   {
@@ -36,8 +39,11 @@ public:
 
   explicit LayoutErrorPlot(QWidget* parent = nullptr);
 
-  /// Shows `plan` (the values are copied); selects the recommended size without emitting.
-  void setPlan(const LayoutPlan& plan);
+  /// Shows `plan` (the values are copied), with the rig measure of its layouts when given;
+  /// selects the recommended size without emitting.
+  void setPlan(const LayoutPlan& plan, const PlanRigErrors* rig = nullptr);
+  /// Whether the rig-weight plot is shown.
+  [[nodiscard]] bool showsRig() const { return m_hasRig; }
   void clear();
 
   /// Sizes a click can select (the plan's method has a layout there), ascending.
@@ -71,7 +77,7 @@ private:
   struct Row
   {
     Eigen::Index markers = 0;
-    std::array<std::array<std::optional<double>, 3>, 2> value;
+    std::array<std::array<std::optional<double>, 3>, 3> value;
   };
 
   [[nodiscard]] QRectF plotArea(Measure measure) const;
@@ -85,6 +91,7 @@ private:
   std::vector<Eigen::Index> m_selectable;
   Eigen::Index m_recommended = 0;
   Eigen::Index m_selected = 0;
+  bool m_hasRig = false;
 };
 
 } // namespace mocap::ui
