@@ -190,7 +190,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+88"/>
+        <location filename="../app/studio/main_window.cpp" line="+91"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -240,7 +240,17 @@
         <translation>Gesichtsnetz</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+14"/>
+        <source>Blendshape Solve</source>
+        <translation>Blendshape-Solve</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Weights</source>
+        <translation>Gewichte</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -709,7 +719,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-681"/>
+        <location line="-739"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -720,6 +730,373 @@
         <location filename="../widgets/document/autosave.cpp" line="+81"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>Der Wiederherstellungsordner %1 kann nicht angelegt werden</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::BlendshapeSolvePanel</name>
+    <message>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+129"/>
+        <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
+        <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rig</source>
+        <translation>Rig</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No rig</source>
+        <translation>Kein Rig</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Load glTF Rig…</source>
+        <translation>glTF-Rig laden…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A .glb or .gltf with the neutral mesh and one morph target per shape</source>
+        <translation>Eine .glb- oder .gltf-Datei mit dem neutralen Mesh und einem Morph-Target je Shape</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load OBJ Rig…</source>
+        <translation>OBJ-Rig laden…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A neutral OBJ/PLY and a folder with one OBJ per shape, named after it</source>
+        <translation>Ein neutrales OBJ/PLY und ein Ordner mit einem OBJ je Shape, nach ihm benannt</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+33"/>
+        <source>Solve</source>
+        <translation>Lösen</translation>
+    </message>
+    <message>
+        <location line="-29"/>
+        <source>Temporal (smooth over time)</source>
+        <translation>Zeitlich (glatt über die Zeit)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ridge (per frame)</source>
+        <translation>Ridge (je Frame)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bounded least squares (per frame)</source>
+        <translation>Beschränkte kleinste Quadrate (je Frame)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method:</source>
+        <translation>Methode:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Automatic (GCV)</source>
+        <translation>Automatisch (GCV)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ridge weight λ, relative to the shapes&apos; mean squared motion</source>
+        <translation>Ridge-Gewicht λ, relativ zur mittleren quadratischen Bewegung der Shapes</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>λ:</source>
+        <translation>λ:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Weight of the weights&apos; second differences over time, as at 100 Hz</source>
+        <translation>Gewicht der zweiten Differenzen der Gewichte über die Zeit, wie bei 100 Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smoothness:</source>
+        <translation>Glätte:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>L1 weight pulling unused shapes to zero</source>
+        <translation>L1-Gewicht, das unbenutzte Shapes auf null zieht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sparsity:</source>
+        <translation>Sparsamkeit:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Solve every frame of the take to the rig&apos;s weights (on a worker; Cancel stops it)</source>
+        <translation>Jeden Frame der Aufnahme auf die Gewichte des Rigs lösen (im Hintergrund; Abbrechen stoppt es)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Shapes</source>
+        <translation>Shapes</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Filter shapes (e.g. mouth)</source>
+        <translation>Shapes filtern (z. B. mouth)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Selected shapes are drawn in the Weights view and edited below</source>
+        <translation>Ausgewählte Shapes werden in der Gewichtsansicht gezeichnet und unten bearbeitet</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scale</source>
+        <translation>Skalieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zero</source>
+        <translation>Nullen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Scale by:</source>
+        <translation>Skalieren um:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smooth</source>
+        <translation>Glätten</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Low-pass:</source>
+        <translation>Tiefpass:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Edits apply to the selected shapes over the frame range selected on the curves (Shift-drag), or the whole take; Ctrl+Z undoes them.</source>
+        <translation>Bearbeitungen gelten für die ausgewählten Shapes im auf den Kurven gewählten Frame-Bereich (Umschalt-Ziehen) oder für die ganze Aufnahme; Strg+Z macht sie rückgängig.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Display and export</source>
+        <translation>Anzeige und Export</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the solved rig in the 3D view</source>
+        <translation>Das gelöste Rig in der 3D-Ansicht zeigen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Beside the markers (else over them)</source>
+        <translation>Neben den Markern (sonst über ihnen)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Export Weights…</source>
+        <translation>Gewichte exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Weight curves as CSV: one column per shape (plain or Live Link Face layout)</source>
+        <translation>Gewichtskurven als CSV: eine Spalte je Shape (einfach oder im Live-Link-Face-Layout)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export Rig GLB…</source>
+        <translation>Rig als GLB exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)</source>
+        <translation>Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>Wait for the running job, or cancel it.</source>
+        <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot read the rig %1: %2</source>
+        <translation>Das Rig %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>%1: %n shape(s), %2 vertices</source>
+        <translation>
+            <numerusform>%1: %n Shape, %2 Vertices</numerusform>
+            <numerusform>%1: %n Shapes, %2 Vertices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.</source>
+        <translation>Rig geladen. Binden Sie die Marker im Face-Mesh-Panel an seine Neutralform (Automatisch binden oder Bindung laden) und lösen Sie dann.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rig loaded. Solve when ready.</source>
+        <translation>Rig geladen. Lösen, sobald bereit.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>A job is already running.</source>
+        <translation>Es läuft bereits ein Auftrag.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open a take first.</source>
+        <translation>Öffnen Sie zuerst eine Aufnahme.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load a rig first.</source>
+        <translation>Laden Sie zuerst ein Rig.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The Face Mesh panel shows another mesh than this rig&apos;s neutral; load the rig again.</source>
+        <translation>Das Face-Mesh-Panel zeigt ein anderes Mesh als die Neutralform dieses Rigs; laden Sie das Rig erneut.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bind the markers to the rig&apos;s neutral in the Face Mesh panel first (Auto-Bind or Load Binding).</source>
+        <translation>Binden Sie zuerst die Marker im Face-Mesh-Panel an die Neutralform des Rigs (Automatisch binden oder Bindung laden).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Solving…</source>
+        <translation>Wird gelöst…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Solve failed: %1</source>
+        <translation>Lösen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cancelled; the weights are as they were.</source>
+        <translation>Abgebrochen; die Gewichte sind unverändert.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Solved %1 frames from %2 markers (%3, λ %4%5) in %6 s; marker residual %7 mm mean, %8 mm max.</source>
+        <translation>%1 Frames aus %2 Markern gelöst (%3, λ %4%5) in %6 s; Marker-Residuum im Mittel %7 mm, höchstens %8 mm.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> by GCV</source>
+        <translation> per GCV</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Warning: %n frame(s) had too few markers and hold the previous frame&apos;s weights (shaded red in the Weights view).</source>
+        <translation>
+            <numerusform>Warnung: %n Frame hatte zu wenige Marker und behält die Gewichte des vorigen Frames (rot schattiert in der Gewichtsansicht).</numerusform>
+            <numerusform>Warnung: %n Frames hatten zu wenige Marker und behalten die Gewichte des vorigen Frames (rot schattiert in der Gewichtsansicht).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>  (peak %1)</source>
+        <translation>  (Spitze %1)</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <location line="+16"/>
+        <source>Solve the take first.</source>
+        <translation>Lösen Sie zuerst die Aufnahme.</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Cannot write the weights: %1</source>
+        <translation>Die Gewichte können nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+14"/>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Cannot write the rig: %1</source>
+        <translation>Das Rig kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Load glTF rig</source>
+        <translation>glTF-Rig laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glTF rigs (*.glb *.gltf);;All files (*)</source>
+        <translation>glTF-Rigs (*.glb *.gltf);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load the rig&apos;s neutral mesh</source>
+        <translation>Das neutrale Mesh des Rigs laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Meshes (*.obj *.ply);;All files (*)</source>
+        <translation>Meshes (*.obj *.ply);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The folder with one OBJ per shape</source>
+        <translation>Der Ordner mit einem OBJ je Shape</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Weight curves (*.csv)</source>
+        <translation>Gewichtskurven (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Live Link Face CSV (*.csv)</source>
+        <translation>Live-Link-Face-CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export weights</source>
+        <translation>Gewichte exportieren</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Export animated rig</source>
+        <translation>Animiertes Rig exportieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>glTF binary (*.glb)</source>
+        <translation>glTF binär (*.glb)</translation>
     </message>
 </context>
 <context>
@@ -776,17 +1153,16 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+169"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+111"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
     <message>
-        <location line="+51"/>
         <source>%1 s</source>
-        <translation>%1 s</translation>
+        <translation type="vanished">%1 s</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+26"/>
         <source>preview</source>
         <translation>Vorschau</translation>
     </message>
@@ -806,12 +1182,11 @@
         <translation>bearbeitet</translation>
     </message>
     <message>
-        <location line="+32"/>
         <source>+%1 more</source>
-        <translation>+%1 weitere</translation>
+        <translation type="vanished">+%1 weitere</translation>
     </message>
     <message>
-        <location line="+287"/>
+        <location line="+292"/>
         <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
         <translation>%1 · Bild %2 (%3 s) · %4 %5 %6</translation>
     </message>
@@ -1035,7 +1410,7 @@
         <translation>Laden Sie zuerst ein Netz.</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Head stabilization: %1</source>
         <translation>Kopfstabilisierung: %1</translation>
     </message>
@@ -1063,9 +1438,13 @@
         <translation>Netz laden…</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>A face mesh as OBJ or PLY</source>
-        <translation>Ein Gesichtsnetz als OBJ oder PLY</translation>
+        <translation type="vanished">Ein Gesichtsnetz als OBJ oder PLY</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A face mesh as OBJ or PLY, or a glTF rig&apos;s neutral</source>
+        <translation>Ein Gesichts-Mesh als OBJ oder PLY oder die Neutralform eines glTF-Rigs</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1099,12 +1478,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+284"/>
+        <location line="+289"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>Wählen Sie einen Marker aus und klicken Sie dann auf seinen Scheitelpunkt im Netz</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-286"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
@@ -1140,18 +1519,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+334"/>
+        <location line="+339"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-333"/>
-        <location line="+333"/>
+        <location line="-338"/>
+        <location line="+338"/>
         <source>Laplacian</source>
         <translation>Laplace</translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-337"/>
         <source>Method:</source>
         <translation>Methode:</translation>
     </message>
@@ -1226,7 +1605,7 @@
         <translation>Das Netz %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+9"/>
         <source>%1: %n vertices</source>
         <translation>
             <numerusform>%1: %n Scheitelpunkt</numerusform>
@@ -1234,7 +1613,7 @@
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>Load the mesh the binding is for first.</source>
         <translation>Laden Sie zuerst das Netz, zu dem die Bindung gehört.</translation>
     </message>
@@ -1313,8 +1692,12 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Meshes (*.obj *.ply *.glb *.gltf);;All files (*)</source>
+        <translation>Meshes (*.obj *.ply *.glb *.gltf);;Alle Dateien (*)</translation>
+    </message>
+    <message>
         <source>Meshes (*.obj *.ply);;All files (*)</source>
-        <translation>Netze (*.obj *.ply);;Alle Dateien (*)</translation>
+        <translation type="vanished">Netze (*.obj *.ply);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -1335,6 +1718,19 @@
         <location line="+1"/>
         <source>Bindings (*.json)</source>
         <translation>Bindungen (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::FrameStripView</name>
+    <message>
+        <location filename="../widgets/views/frame_strip_view.cpp" line="+132"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>+%1 more</source>
+        <translation>+%1 weitere</translation>
     </message>
 </context>
 <context>
@@ -1928,12 +2324,12 @@
         <translation>Klicken Sie auf eine Markeranzahl (oder verwenden Sie ←/→), um ihr Layout anzuzeigen</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+117"/>
         <source>Run the plan to see the error for each marker count.</source>
         <translation>Führen Sie die Planung aus, um den Fehler für jede Markeranzahl zu sehen.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>markers</source>
         <translation>Marker</translation>
     </message>
@@ -1964,14 +2360,23 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Blend-weight MSE (key poses)</source>
+        <translation>Blend-Gewichts-MSE (Schlüsselposen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rig-weight MSE (blendshape rig)</source>
+        <translation>Rig-Gewichts-MSE (Blendshape-Rig)</translation>
+    </message>
+    <message>
         <source>Blend-weight MSE</source>
-        <translation>MSE der Blend-Gewichte</translation>
+        <translation type="vanished">MSE der Blend-Gewichte</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+99"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
@@ -2016,7 +2421,7 @@
         <translation>Greedy (kleinster Rekonstruktionsfehler)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Method:</source>
         <translation>Methode:</translation>
     </message>
@@ -2146,7 +2551,22 @@
         <translation>Aus dem Plan ausgelassene Marker, durch Kommas getrennt; * und ? stehen für beliebig viele bzw. ein beliebiges Zeichen (unbenannte Punkte und die Referenzmarker werden immer ausgelassen)</translation>
     </message>
     <message>
-        <location line="+253"/>
+        <location line="+3"/>
+        <source>Judge layouts on the blendshape rig</source>
+        <translation>Layouts am Blendshape-Rig beurteilen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Also solve the loaded rig&apos;s weights from each layout and from every bound marker, and plot their MSE (the seed paper&apos;s measure on a semantic rig; mocap pfa --rig)</source>
+        <translation>Außerdem die Gewichte des geladenen Rigs aus jedem Layout und aus allen gebundenen Markern lösen und ihren MSE zeichnen (das Maß des Ausgangsartikels an einem semantischen Rig; mocap pfa --rig)</translation>
+    </message>
+    <message>
+        <location line="+174"/>
+        <source>Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its neutral (Face Mesh panel); or switch it off.</source>
+        <translation>Die Beurteilung am Rig braucht ein Blendshape-Rig (Blendshape-Solve-Panel) und an seine Neutralform gebundene Marker (Face-Mesh-Panel); oder schalten Sie sie aus.</translation>
+    </message>
+    <message>
+        <location line="+104"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
@@ -2164,7 +2584,7 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <location line="-272"/>
+        <location line="-301"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -2180,7 +2600,7 @@
         <translation>Auslassen:</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Run</source>
         <translation>Ausführen</translation>
     </message>
@@ -2210,7 +2630,7 @@
         <translation>Die Marker des gewählten Layouts; die Häufigkeit ist der Anteil der k-Means-Neustarts, die das Paar des Markers gewählt haben (nur PFA)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+18"/>
         <source>Export Labels…</source>
         <translation>Namen exportieren…</translation>
     </message>
@@ -2255,7 +2675,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+91"/>
         <source>A plan is already running.</source>
         <translation>Eine Planung läuft bereits.</translation>
     </message>
@@ -2280,7 +2700,7 @@
         <translation>Zum Entfernen der Kopfbewegung sind mindestens drei Referenzmarker nötig (Marker ▸ Referenzmarker…).</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>Planning…</source>
         <translation>Planung läuft…</translation>
     </message>
@@ -2325,7 +2745,27 @@
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+8"/>
+        <source>Not judged on the rig: %1</source>
+        <translation>Nicht am Rig beurteilt: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Judging on the rig was cancelled.</source>
+        <translation>Die Beurteilung am Rig wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>PFA %1 · greedy %2 · random %3</source>
+        <translation>PFA %1 · Greedy %2 · Zufall %3</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4</source>
+        <translation>Rig-Gewichts-MSE bei %1 Markern (%2 davon gebunden; alle %3 gebundenen Marker: 0): %4</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2964,6 +3404,77 @@
         <location line="+5"/>
         <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
         <translation>Die 3D-Ansicht benötigt OpenGL 3.2; diese Anzeige bietet %1.%2.</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::WeightCurveView</name>
+    <message>
+        <location filename="../widgets/views/weight_curve_view.cpp" line="+42"/>
+        <source>Solve the take to see its weights</source>
+        <translation>Lösen Sie die Aufnahme, um ihre Gewichte zu sehen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load a blendshape rig in the Blendshape Solve panel</source>
+        <translation>Laden Sie ein Blendshape-Rig im Blendshape-Solve-Panel</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Click a curve (or pick shapes in the panel) to select its shape</source>
+        <translation>Klicken Sie auf eine Kurve (oder wählen Sie Shapes im Panel), um ihren Shape auszuwählen</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Weights</source>
+        <translation>Gewichte</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Marker residual (%1)</source>
+        <translation>Marker-Residuum (%1)</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>%1 · frame %2 · %3</source>
+        <translation>%1 · Frame %2 · %3</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::WeightEditActions</name>
+    <message>
+        <location filename="../widgets/actions/weight_edit_actions.cpp" line="+23"/>
+        <source>Solve the take first.</source>
+        <translation>Lösen Sie zuerst die Aufnahme.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Select the shapes to edit.</source>
+        <translation>Wählen Sie die zu bearbeitenden Shapes.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Scale weights by %1</source>
+        <translation>Gewichte mit %1 skalieren</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Zero weights</source>
+        <translation>Gewichte nullen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The cut-off must lie between 0 and %1 Hz (half the frame rate).</source>
+        <translation>Die Grenzfrequenz muss zwischen 0 und %1 Hz liegen (die halbe Bildrate).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The take is too short to smooth.</source>
+        <translation>Die Aufnahme ist zu kurz zum Glätten.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Smooth weights (%1 Hz)</source>
+        <translation>Gewichte glätten (%1 Hz)</translation>
     </message>
 </context>
 </TS>

@@ -181,7 +181,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+88"/>
+        <location filename="../app/studio/main_window.cpp" line="+91"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -231,7 +231,17 @@
         <translation>面部网格</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+14"/>
+        <source>Blendshape Solve</source>
+        <translation>混合形状求解</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Weights</source>
+        <translation>权重</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -698,7 +708,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-681"/>
+        <location line="-739"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -709,6 +719,371 @@
         <location filename="../widgets/document/autosave.cpp" line="+81"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>无法创建恢复文件夹 %1</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::BlendshapeSolvePanel</name>
+    <message>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+129"/>
+        <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
+        <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rig</source>
+        <translation>绑定模型</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No rig</source>
+        <translation>无绑定模型</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Load glTF Rig…</source>
+        <translation>加载 glTF 绑定模型…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A .glb or .gltf with the neutral mesh and one morph target per shape</source>
+        <translation>包含中性网格且每个形状一个变形目标的 .glb 或 .gltf 文件</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load OBJ Rig…</source>
+        <translation>加载 OBJ 绑定模型…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A neutral OBJ/PLY and a folder with one OBJ per shape, named after it</source>
+        <translation>一个中性 OBJ/PLY 和一个文件夹，每个形状一个以其命名的 OBJ</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+33"/>
+        <source>Solve</source>
+        <translation>求解</translation>
+    </message>
+    <message>
+        <location line="-29"/>
+        <source>Temporal (smooth over time)</source>
+        <translation>时间平滑</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ridge (per frame)</source>
+        <translation>岭回归（逐帧）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bounded least squares (per frame)</source>
+        <translation>有界最小二乘（逐帧）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Method:</source>
+        <translation>方法：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Automatic (GCV)</source>
+        <translation>自动（GCV）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ridge weight λ, relative to the shapes&apos; mean squared motion</source>
+        <translation>岭权重 λ，相对于形状的均方运动</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>λ:</source>
+        <translation>λ：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Weight of the weights&apos; second differences over time, as at 100 Hz</source>
+        <translation>权重随时间的二阶差分的权重（按 100 Hz）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smoothness:</source>
+        <translation>平滑度：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>L1 weight pulling unused shapes to zero</source>
+        <translation>将未使用的形状拉向零的 L1 权重</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sparsity:</source>
+        <translation>稀疏度：</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Solve every frame of the take to the rig&apos;s weights (on a worker; Cancel stops it)</source>
+        <translation>将拍摄的每一帧求解为绑定模型的权重（在后台运行；取消可停止）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cancelling…</source>
+        <translation>正在取消…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Shapes</source>
+        <translation>形状</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Filter shapes (e.g. mouth)</source>
+        <translation>筛选形状（例如 mouth）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Selected shapes are drawn in the Weights view and edited below</source>
+        <translation>选中的形状在权重视图中绘制，并在下方编辑</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scale</source>
+        <translation>缩放</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zero</source>
+        <translation>清零</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Scale by:</source>
+        <translation>缩放倍数：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Smooth</source>
+        <translation>平滑</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Low-pass:</source>
+        <translation>低通：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Edits apply to the selected shapes over the frame range selected on the curves (Shift-drag), or the whole take; Ctrl+Z undoes them.</source>
+        <translation>编辑作用于选中的形状，范围为曲线上选中的帧范围（Shift 拖动）或整个拍摄；Ctrl+Z 可撤销。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Display and export</source>
+        <translation>显示与导出</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the solved rig in the 3D view</source>
+        <translation>在 3D 视图中显示求解后的绑定模型</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Beside the markers (else over them)</source>
+        <translation>在标记点旁边（否则与其重叠）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Export Weights…</source>
+        <translation>导出权重…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Weight curves as CSV: one column per shape (plain or Live Link Face layout)</source>
+        <translation>权重曲线导出为 CSV：每个形状一列（普通或 Live Link Face 布局）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export Rig GLB…</source>
+        <translation>导出绑定模型 GLB…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)</source>
+        <translation>带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>Wait for the running job, or cancel it.</source>
+        <translation>请等待正在运行的任务，或将其取消。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reading %1…</source>
+        <translation>正在读取 %1…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot read the rig %1: %2</source>
+        <translation>无法读取绑定模型 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>%1: %n shape(s), %2 vertices</source>
+        <translation>
+            <numerusform>%1：%n 个形状，%2 个顶点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.</source>
+        <translation>绑定模型已加载。请在面部网格面板中将标记点绑定到其中性形状（自动绑定或加载绑定），然后求解。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rig loaded. Solve when ready.</source>
+        <translation>绑定模型已加载。准备好后即可求解。</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>A job is already running.</source>
+        <translation>已有任务在运行。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open a take first.</source>
+        <translation>请先打开一个拍摄。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load a rig first.</source>
+        <translation>请先加载绑定模型。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The Face Mesh panel shows another mesh than this rig&apos;s neutral; load the rig again.</source>
+        <translation>面部网格面板显示的网格不是此绑定模型的中性形状；请重新加载绑定模型。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bind the markers to the rig&apos;s neutral in the Face Mesh panel first (Auto-Bind or Load Binding).</source>
+        <translation>请先在面部网格面板中将标记点绑定到绑定模型的中性形状（自动绑定或加载绑定）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Solving…</source>
+        <translation>正在求解…</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Solve failed: %1</source>
+        <translation>求解失败：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cancelled; the weights are as they were.</source>
+        <translation>已取消；权重保持不变。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Solved %1 frames from %2 markers (%3, λ %4%5) in %6 s; marker residual %7 mm mean, %8 mm max.</source>
+        <translation>已从 %2 个标记点求解 %1 帧（%3，λ %4%5），用时 %6 秒；标记点残差平均 %7 毫米，最大 %8 毫米。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> by GCV</source>
+        <translation>（GCV）</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Warning: %n frame(s) had too few markers and hold the previous frame&apos;s weights (shaded red in the Weights view).</source>
+        <translation>
+            <numerusform>警告：%n 帧的标记点太少，沿用上一帧的权重（在权重视图中以红色阴影显示）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>  (peak %1)</source>
+        <translation>  （峰值 %1）</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <location line="+16"/>
+        <source>Solve the take first.</source>
+        <translation>请先求解拍摄。</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Cannot write the weights: %1</source>
+        <translation>无法写入权重：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+14"/>
+        <source>Wrote %1</source>
+        <translation>已写入 %1</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Cannot write the rig: %1</source>
+        <translation>无法写入绑定模型：%1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Load glTF rig</source>
+        <translation>加载 glTF 绑定模型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glTF rigs (*.glb *.gltf);;All files (*)</source>
+        <translation>glTF 绑定模型 (*.glb *.gltf);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load the rig&apos;s neutral mesh</source>
+        <translation>加载绑定模型的中性网格</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Meshes (*.obj *.ply);;All files (*)</source>
+        <translation>网格 (*.obj *.ply);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The folder with one OBJ per shape</source>
+        <translation>每个形状一个 OBJ 的文件夹</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Weight curves (*.csv)</source>
+        <translation>权重曲线 (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Live Link Face CSV (*.csv)</source>
+        <translation>Live Link Face CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export weights</source>
+        <translation>导出权重</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Export animated rig</source>
+        <translation>导出动画绑定模型</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>glTF binary (*.glb)</source>
+        <translation>glTF 二进制 (*.glb)</translation>
     </message>
 </context>
 <context>
@@ -764,17 +1139,16 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+169"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+111"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
     <message>
-        <location line="+51"/>
         <source>%1 s</source>
-        <translation>%1 s</translation>
+        <translation type="vanished">%1 s</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+26"/>
         <source>preview</source>
         <translation>预览</translation>
     </message>
@@ -794,12 +1168,11 @@
         <translation>已编辑</translation>
     </message>
     <message>
-        <location line="+32"/>
         <source>+%1 more</source>
-        <translation>另有 %1 个</translation>
+        <translation type="vanished">另有 %1 个</translation>
     </message>
     <message>
-        <location line="+287"/>
+        <location line="+292"/>
         <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
         <translation>%1 · 第 %2 帧（%3 s）· %4 %5 %6</translation>
     </message>
@@ -1019,7 +1392,7 @@
         <translation>请先加载网格。</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>Head stabilization: %1</source>
         <translation>头部稳定：%1</translation>
     </message>
@@ -1047,9 +1420,13 @@
         <translation>加载网格…</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>A face mesh as OBJ or PLY</source>
-        <translation>OBJ 或 PLY 格式的面部网格</translation>
+        <translation type="vanished">OBJ 或 PLY 格式的面部网格</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A face mesh as OBJ or PLY, or a glTF rig&apos;s neutral</source>
+        <translation>OBJ 或 PLY 格式的面部网格，或 glTF 绑定模型的中性形状</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1083,12 +1460,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+284"/>
+        <location line="+289"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>选择一个标记点，然后在网格上点击其对应的顶点</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-286"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
@@ -1124,18 +1501,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+334"/>
+        <location line="+339"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-333"/>
-        <location line="+333"/>
+        <location line="-338"/>
+        <location line="+338"/>
         <source>Laplacian</source>
         <translation>拉普拉斯</translation>
     </message>
     <message>
-        <location line="-332"/>
+        <location line="-337"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
@@ -1210,14 +1587,14 @@
         <translation>无法读取网格 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+9"/>
         <source>%1: %n vertices</source>
         <translation>
             <numerusform>%1：%n 个顶点</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>Load the mesh the binding is for first.</source>
         <translation>请先加载该绑定所对应的网格。</translation>
     </message>
@@ -1295,8 +1672,12 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Meshes (*.obj *.ply *.glb *.gltf);;All files (*)</source>
+        <translation>网格 (*.obj *.ply *.glb *.gltf);;所有文件 (*)</translation>
+    </message>
+    <message>
         <source>Meshes (*.obj *.ply);;All files (*)</source>
-        <translation>网格 (*.obj *.ply);;所有文件 (*)</translation>
+        <translation type="vanished">网格 (*.obj *.ply);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -1317,6 +1698,19 @@
         <location line="+1"/>
         <source>Bindings (*.json)</source>
         <translation>绑定 (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::FrameStripView</name>
+    <message>
+        <location filename="../widgets/views/frame_strip_view.cpp" line="+132"/>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>+%1 more</source>
+        <translation>另有 %1 个</translation>
     </message>
 </context>
 <context>
@@ -1907,12 +2301,12 @@
         <translation>点击某个标记点数量（或使用 ←/→）以显示其布局</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+117"/>
         <source>Run the plan to see the error for each marker count.</source>
         <translation>运行规划以查看每个标记点数量的误差。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>markers</source>
         <translation>标记点数</translation>
     </message>
@@ -1943,14 +2337,23 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>Blend-weight MSE (key poses)</source>
+        <translation>混合权重 MSE（关键姿势）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rig-weight MSE (blendshape rig)</source>
+        <translation>绑定模型权重 MSE（混合形状绑定模型）</translation>
+    </message>
+    <message>
         <source>Blend-weight MSE</source>
-        <translation>混合权重 MSE</translation>
+        <translation type="vanished">混合权重 MSE</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+82"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+99"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
@@ -1995,7 +2398,7 @@
         <translation>贪心（最小重建误差）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
@@ -2125,7 +2528,22 @@
         <translation>不参与规划的标记，以逗号分隔；* 和 ? 分别匹配任意长度和任意一个字符（未标注的点和参考标记总是不参与）</translation>
     </message>
     <message>
-        <location line="+253"/>
+        <location line="+3"/>
+        <source>Judge layouts on the blendshape rig</source>
+        <translation>在混合形状绑定模型上评估布局</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Also solve the loaded rig&apos;s weights from each layout and from every bound marker, and plot their MSE (the seed paper&apos;s measure on a semantic rig; mocap pfa --rig)</source>
+        <translation>同时从每个布局和所有已绑定标记点求解已加载绑定模型的权重，并绘制其 MSE（种子论文的度量，用于语义绑定模型；mocap pfa --rig）</translation>
+    </message>
+    <message>
+        <location line="+174"/>
+        <source>Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its neutral (Face Mesh panel); or switch it off.</source>
+        <translation>在绑定模型上评估需要一个混合形状绑定模型（混合形状求解面板）以及绑定到其中性形状的标记点（面部网格面板）；或关闭此选项。</translation>
+    </message>
+    <message>
+        <location line="+104"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
@@ -2142,7 +2560,7 @@
         <translation>未去除头部运动：没有参考标记点</translation>
     </message>
     <message>
-        <location line="-272"/>
+        <location line="-301"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
@@ -2158,7 +2576,7 @@
         <translation>排除：</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>Run</source>
         <translation>运行</translation>
     </message>
@@ -2188,7 +2606,7 @@
         <translation>所选布局的标记点；频率是选中该标记点所在配对的 k-means 重启次数所占比例（仅 PFA）</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+18"/>
         <source>Export Labels…</source>
         <translation>导出名称…</translation>
     </message>
@@ -2233,7 +2651,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+91"/>
         <source>A plan is already running.</source>
         <translation>已有规划正在运行。</translation>
     </message>
@@ -2258,7 +2676,7 @@
         <translation>去除头部运动至少需要三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>Planning…</source>
         <translation>正在规划…</translation>
     </message>
@@ -2303,7 +2721,27 @@
         <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+8"/>
+        <source>Not judged on the rig: %1</source>
+        <translation>未在绑定模型上评估：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Judging on the rig was cancelled.</source>
+        <translation>在绑定模型上的评估已取消。</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>PFA %1 · greedy %2 · random %3</source>
+        <translation>PFA %1 · 贪心 %2 · 随机 %3</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4</source>
+        <translation>%1 个标记点时的绑定模型权重 MSE（其中 %2 个已绑定；全部 %3 个已绑定标记点：0）：%4</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>—</source>
         <translation>—</translation>
     </message>
@@ -2938,6 +3376,77 @@
         <location line="+5"/>
         <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
         <translation>3D 视图需要 OpenGL 3.2，当前显示仅提供 %1.%2。</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::WeightCurveView</name>
+    <message>
+        <location filename="../widgets/views/weight_curve_view.cpp" line="+42"/>
+        <source>Solve the take to see its weights</source>
+        <translation>求解拍摄后即可查看其权重</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load a blendshape rig in the Blendshape Solve panel</source>
+        <translation>请在混合形状求解面板中加载混合形状绑定模型</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Click a curve (or pick shapes in the panel) to select its shape</source>
+        <translation>单击曲线（或在面板中选择形状）以选中其形状</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Weights</source>
+        <translation>权重</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Marker residual (%1)</source>
+        <translation>标记点残差（%1）</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>%1 · frame %2 · %3</source>
+        <translation>%1 · 第 %2 帧 · %3</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::WeightEditActions</name>
+    <message>
+        <location filename="../widgets/actions/weight_edit_actions.cpp" line="+23"/>
+        <source>Solve the take first.</source>
+        <translation>请先求解拍摄。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Select the shapes to edit.</source>
+        <translation>请选择要编辑的形状。</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Scale weights by %1</source>
+        <translation>将权重缩放 %1 倍</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Zero weights</source>
+        <translation>权重清零</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The cut-off must lie between 0 and %1 Hz (half the frame rate).</source>
+        <translation>截止频率必须在 0 到 %1 Hz 之间（帧率的一半）。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The take is too short to smooth.</source>
+        <translation>拍摄太短，无法平滑。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Smooth weights (%1 Hz)</source>
+        <translation>平滑权重（%1 Hz）</translation>
     </message>
 </context>
 </TS>
