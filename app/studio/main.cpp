@@ -122,7 +122,7 @@ int main(int argc, char** argv)
   for (const QString& name : docks)
     if (!window.showDock(name))
       std::cerr << "mocap-studio: no dock named " << name.toStdString() << '\n';
-  QTimer::singleShot(200, &window, [&window, docks] {
+  QTimer::singleShot(0, &window, [&window, docks] {
     for (const QString& name : docks)
       (void)window.showDock(name);
   });

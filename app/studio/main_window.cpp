@@ -57,6 +57,7 @@
 #include <QTemporaryFile>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTableView>
 #include <QToolBar>
 #include <QUndoStack>
@@ -860,6 +861,12 @@ bool MainWindow::showDock(const QString& name)
         dock->windowTitle().compare(name, Qt::CaseInsensitive) == 0) {
       dock->show();
       dock->raise();
+      // A tabified dock shown while the window was hidden may not take its tab's place on
+      // raise(); its tab then brings it forward.
+      for (QTabBar* tabs : findChildren<QTabBar*>())
+        for (int i = 0; i < tabs->count(); ++i)
+          if (tabs->tabText(i) == dock->windowTitle() && tabs->isVisible())
+            tabs->setCurrentIndex(i);
       return true;
     }
   return false;
