@@ -6,6 +6,8 @@
 #include "document/take_document.h"
 #include "panels/face_mesh_panel.h"
 #include "panels/job_progress_row.h"
+#include "panels/panel_folder.h"
+#include "panels/status_line.h"
 #include "views/blendshape_scene.h"
 #include "views/face_mesh_scene.h"
 
@@ -44,15 +46,6 @@ QString settingKey(const char* name)
   return kGroup + QLatin1String(name);
 }
 
-QString lastFolder()
-{
-  return QSettings().value(settingKey("folder")).toString();
-}
-
-void rememberFolder(const QString& path)
-{
-  QSettings().setValue(settingKey("folder"), QFileInfo(path).absolutePath());
-}
 
 RigLoad readRigInBackground(const QString& path, const QString& shapeFolder)
 {
@@ -577,27 +570,26 @@ QString BlendshapeSolvePanel::statusText() const
 
 void BlendshapeSolvePanel::showStatus(const QString& text, bool error)
 {
-  m_status->setStyleSheet(error ? QStringLiteral("color: #d04040;") : QString());
-  m_status->setText(text);
+  showStatusLine(*m_status, text, error);
 }
 
 void BlendshapeSolvePanel::loadGltfDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load glTF rig"), lastFolder(),
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load glTF rig"), panelFolder(kGroup),
                                                     tr("glTF rigs (*.glb *.gltf);;All files (*)"));
   if (path.isEmpty())
     return;
-  rememberFolder(path);
+  rememberPanelFolder(kGroup, path);
   (void)loadRig(path);
 }
 
 void BlendshapeSolvePanel::loadObjDialog()
 {
-  const QString neutral = QFileDialog::getOpenFileName(this, tr("Load the rig's neutral mesh"), lastFolder(),
+  const QString neutral = QFileDialog::getOpenFileName(this, tr("Load the rig's neutral mesh"), panelFolder(kGroup),
                                                        tr("Meshes (*.obj *.ply);;All files (*)"));
   if (neutral.isEmpty())
     return;
-  rememberFolder(neutral);
+  rememberPanelFolder(kGroup, neutral);
   const QString folder = QFileDialog::getExistingDirectory(this, tr("The folder with one OBJ per shape"),
                                                            QFileInfo(neutral).absolutePath());
   if (folder.isEmpty())
@@ -609,24 +601,24 @@ void BlendshapeSolvePanel::exportCsvDialog()
 {
   const QString plain = tr("Weight curves (*.csv)"), liveLink = tr("Live Link Face CSV (*.csv)");
   QString filter = plain;
-  QString path = QFileDialog::getSaveFileName(this, tr("Export weights"), lastFolder(), plain + QStringLiteral(";;") + liveLink,
+  QString path = QFileDialog::getSaveFileName(this, tr("Export weights"), panelFolder(kGroup), plain + QStringLiteral(";;") + liveLink,
                                               &filter);
   if (path.isEmpty())
     return;
   if (QFileInfo(path).suffix().isEmpty())
     path += QStringLiteral(".csv");
-  rememberFolder(path);
+  rememberPanelFolder(kGroup, path);
   (void)exportCsv(path, filter == liveLink);
 }
 
 void BlendshapeSolvePanel::exportGlbDialog()
 {
-  QString path = QFileDialog::getSaveFileName(this, tr("Export animated rig"), lastFolder(), tr("glTF binary (*.glb)"));
+  QString path = QFileDialog::getSaveFileName(this, tr("Export animated rig"), panelFolder(kGroup), tr("glTF binary (*.glb)"));
   if (path.isEmpty())
     return;
   if (QFileInfo(path).suffix().isEmpty())
     path += QStringLiteral(".glb");
-  rememberFolder(path);
+  rememberPanelFolder(kGroup, path);
   (void)exportGlb(path);
 }
 

@@ -3,7 +3,9 @@
 #include "commands/rebind_marker_command.h"
 #include "document/face_mesh_model.h"
 #include "document/take_document.h"
+#include "panels/panel_folder.h"
 #include "panels/reference_markers_row.h"
+#include "panels/status_line.h"
 #include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
@@ -50,15 +52,6 @@ QString settingKey(const char* name)
   return kGroup + QLatin1String(name);
 }
 
-QString lastFolder()
-{
-  return QSettings().value(settingKey("folder")).toString();
-}
-
-void rememberFolder(const QString& path)
-{
-  QSettings().setValue(settingKey("folder"), QFileInfo(path).absolutePath());
-}
 
 QString nameText(std::string_view name)
 {
@@ -528,37 +521,36 @@ void FaceMeshPanel::updateRigStatus()
 
 void FaceMeshPanel::showError(const QString& message)
 {
-  m_status->setStyleSheet(QStringLiteral("color: #d04040;"));
-  m_status->setText(message);
+  showStatusLine(*m_status, message, true);
 }
 
 void FaceMeshPanel::loadMeshDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load face mesh"), lastFolder(),
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load face mesh"), panelFolder(kGroup),
                                                     tr("Meshes (*.obj *.ply *.glb *.gltf);;All files (*)"));
   if (path.isEmpty())
     return;
-  rememberFolder(path);
+  rememberPanelFolder(kGroup, path);
   (void)loadMesh(path);
 }
 
 void FaceMeshPanel::loadBindingDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load marker binding"), lastFolder(),
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load marker binding"), panelFolder(kGroup),
                                                     tr("Bindings (*.json);;All files (*)"));
   if (path.isEmpty())
     return;
-  rememberFolder(path);
+  rememberPanelFolder(kGroup, path);
   (void)loadBinding(path);
 }
 
 void FaceMeshPanel::saveBindingDialog()
 {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save marker binding"), lastFolder(),
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save marker binding"), panelFolder(kGroup),
                                                     tr("Bindings (*.json)"));
   if (path.isEmpty())
     return;
-  rememberFolder(path);
+  rememberPanelFolder(kGroup, path);
   (void)saveBinding(path);
 }
 
