@@ -190,7 +190,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+91"/>
+        <location filename="../app/studio/main_window.cpp" line="+92"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -613,12 +613,12 @@
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-202"/>
+        <location line="-208"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -735,7 +735,12 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+129"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+105"/>
+        <source>The take has changed since this solve; Solve again to update the weights.</source>
+        <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
@@ -1049,7 +1054,7 @@
         <translation>Das Rig kann nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>Load glTF rig</source>
         <translation>glTF-Rig laden</translation>
     </message>
@@ -1423,7 +1428,7 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+93"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+86"/>
         <source>Mesh and binding</source>
         <translation>Netz und Bindung</translation>
     </message>
@@ -1686,7 +1691,7 @@
         <translation>Neutralbild %1; Vorbereitung %2 ms</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Load face mesh</source>
         <translation>Gesichtsnetz laden</translation>
     </message>

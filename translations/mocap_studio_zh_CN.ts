@@ -181,7 +181,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+91"/>
+        <location filename="../app/studio/main_window.cpp" line="+92"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -602,12 +602,12 @@
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-202"/>
+        <location line="-208"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -724,7 +724,12 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+129"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+105"/>
+        <source>The take has changed since this solve; Solve again to update the weights.</source>
+        <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
@@ -1036,7 +1041,7 @@
         <translation>无法写入绑定模型：%1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>Load glTF rig</source>
         <translation>加载 glTF 绑定模型</translation>
     </message>
@@ -1405,7 +1410,7 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+93"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+86"/>
         <source>Mesh and binding</source>
         <translation>网格与绑定</translation>
     </message>
@@ -1666,7 +1671,7 @@
         <translation>中性帧 %1；预处理 %2 ms</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Load face mesh</source>
         <translation>加载面部网格</translation>
     </message>

@@ -7,6 +7,7 @@
 #include "sample_window.h"
 
 #include "actions/weight_edit_actions.h"
+#include "commands/apply_patches_command.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/take_document.h"
@@ -20,6 +21,7 @@
 #include "views/weight_curve_view.h"
 
 #include "mocap/base/file_io.h"
+#include "mocap/model/sample_patch.h"
 
 #include <QDockWidget>
 #include <QListWidget>
@@ -143,6 +145,15 @@ TEST_F(BlendshapeSolvePanelTest, WeightEditsApplyToTheSelectedShapesOverTheRange
   }
   EXPECT_GE(model().weights().minCoeff(), 0.0);
   EXPECT_LE(model().weights().maxCoeff(), 1.0);
+
+  // Editing the take after the solve: the weights stay, and the status says they are stale.
+  const Eigen::Index marker = *document().take().markerIndex("section1-1");
+  const Eigen::Matrix<double, 1, 3> moved = document().take().position(500, marker).transpose() +
+                                            Eigen::RowVector3d(1.0, 0.0, 0.0);
+  document().undoStack()->push(new ui::ApplyPatchesCommand(
+      document(), {makePatch(marker, {500}, moved, SampleState::Edited)}, QStringLiteral("nudge")));
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("changed since"))) << panel->statusText().toStdString();
+  undo.undo();
 
   // A new solve replaces the weights: the older edits no longer apply and undo leaves it alone.
   ASSERT_EQ(panel->solve(), QString());

@@ -99,6 +99,13 @@ BlendshapeSolvePanel::BlendshapeSolvePanel(TakeDocument& document, FaceMeshPanel
   connect(m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
   connect(m_model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeSolvePanel::fillShapeList);
   connect(&document, &TakeDocument::takeReset, m_model, &BlendshapeSolveModel::clearResult);
+  // Weights solved before an edit of the take no longer follow it: say so (they stay, as a product).
+  const auto stale = [this] {
+    if (m_model->hasResult() && !busy())
+      showStatus(tr("The take has changed since this solve; Solve again to update the weights."));
+  };
+  connect(&document, &TakeDocument::samplesChanged, this, stale);
+  connect(&document, &TakeDocument::markersChanged, this, stale);
 }
 
 BlendshapeSolvePanel::~BlendshapeSolvePanel()
