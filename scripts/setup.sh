@@ -12,6 +12,7 @@ packages=(
   libvtk9-dev libeigen3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libtinygltf-dev
+  libopencv-videoio-dev libopencv-imgproc-dev
   xvfb xauth libgl1-mesa-dri
 )
 
