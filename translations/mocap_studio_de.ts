@@ -190,7 +190,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+92"/>
+        <location filename="../app/studio/main_window.cpp" line="+94"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -246,11 +246,16 @@
     </message>
     <message>
         <location line="+21"/>
+        <source>Reference Video</source>
+        <translation>Referenzvideo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+70"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -719,7 +724,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-739"/>
+        <location line="-756"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -3168,6 +3173,84 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::ReferenceVideoPanel</name>
+    <message>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+29"/>
+        <source>Add Reference Video…</source>
+        <translation>Referenzvideo hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A video of the session (MP4, MOV, AVI, MKV) shown at the take&apos;s current frame</source>
+        <translation>Ein Video der Aufnahmesitzung (MP4, MOV, AVI, MKV), gezeigt beim aktuellen Frame der Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Offset:</source>
+        <translation>Versatz:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Video time at the take&apos;s first frame: video time = (take frame − first) / take rate + offset</source>
+        <translation>Videozeit beim ersten Frame der Aufnahme: Videozeit = (Aufnahme-Frame − erster) / Aufnahmerate + Versatz</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>−1 frame</source>
+        <translation>−1 Frame</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move the video one of its frames earlier (Alt+,)</source>
+        <translation>Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>+1 frame</source>
+        <translation>+1 Frame</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move the video one of its frames later (Alt+.)</source>
+        <translation>Das Video um eines seiner Frames später setzen (Alt+.)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Cannot show %1: %2</source>
+        <translation>%1 kann nicht gezeigt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>No reference video</source>
+        <translation>Kein Referenzvideo</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2×%3, %4 fps, %5 frames (%6 s), %7</source>
+        <translation>%1: %2×%3, %4 fps, %5 Frames (%6 s), %7</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Add reference video</source>
+        <translation>Referenzvideo hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
+        <translation>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
         <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
@@ -3396,6 +3479,24 @@
         <location line="+10"/>
         <source>Gap of %1 at frame %2 (%3 frames)</source>
         <translation>Lücke von %1 bei Frame %2 (%3 Frames)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::VideoView</name>
+    <message>
+        <location filename="../widgets/views/video_view.cpp" line="+35"/>
+        <source>No reference video</source>
+        <translation>Kein Referenzvideo</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No video at this frame</source>
+        <translation>Kein Video bei diesem Frame</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>video frame %1 · %2 s</source>
+        <translation>Videoframe %1 · %2 s</translation>
     </message>
 </context>
 <context>

@@ -181,7 +181,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+92"/>
+        <location filename="../app/studio/main_window.cpp" line="+94"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -237,11 +237,16 @@
     </message>
     <message>
         <location line="+21"/>
+        <source>Reference Video</source>
+        <translation>参考视频</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Weights</source>
         <translation>权重</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+70"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -708,7 +713,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-739"/>
+        <location line="-756"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -3141,6 +3146,84 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::ReferenceVideoPanel</name>
+    <message>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+29"/>
+        <source>Add Reference Video…</source>
+        <translation>添加参考视频…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A video of the session (MP4, MOV, AVI, MKV) shown at the take&apos;s current frame</source>
+        <translation>拍摄现场的视频（MP4、MOV、AVI、MKV），按拍摄的当前帧显示</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Offset:</source>
+        <translation>偏移：</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> s</source>
+        <translation>秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Video time at the take&apos;s first frame: video time = (take frame − first) / take rate + offset</source>
+        <translation>拍摄第一帧时的视频时间：视频时间 = (拍摄帧 − 第一帧) / 拍摄帧率 + 偏移</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>−1 frame</source>
+        <translation>−1 帧</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move the video one of its frames earlier (Alt+,)</source>
+        <translation>将视频提前一帧（Alt+,）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>+1 frame</source>
+        <translation>+1 帧</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move the video one of its frames later (Alt+.)</source>
+        <translation>将视频推后一帧（Alt+.）</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Cannot show %1: %2</source>
+        <translation>无法显示 %1：%2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>No reference video</source>
+        <translation>无参考视频</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2×%3, %4 fps, %5 frames (%6 s), %7</source>
+        <translation>%1：%2×%3，%4 fps，%5 帧（%6 秒），%7</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Add reference video</source>
+        <translation>添加参考视频</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
+        <translation>视频 (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
         <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
@@ -3368,6 +3451,24 @@
         <location line="+10"/>
         <source>Gap of %1 at frame %2 (%3 frames)</source>
         <translation>%1 在第 %2 帧处的缺口（%3 帧）</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::VideoView</name>
+    <message>
+        <location filename="../widgets/views/video_view.cpp" line="+35"/>
+        <source>No reference video</source>
+        <translation>无参考视频</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No video at this frame</source>
+        <translation>此帧没有视频</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>video frame %1 · %2 s</source>
+        <translation>视频第 %1 帧 · %2 秒</translation>
     </message>
 </context>
 <context>

@@ -82,7 +82,13 @@ int main(int argc, char** argv)
   const QCommandLineOption rigShapes(QStringLiteral("rig-shapes"),
                                      QStringLiteral("The folder of shape OBJs of an OBJ rig."), QStringLiteral("DIR"));
   const QCommandLineOption solve(QStringLiteral("solve"), QStringLiteral("Solve the take to the rig's weights."));
-  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding, showDock, rig, rigShapes, solve});
+  const QCommandLineOption video(QStringLiteral("video"), QStringLiteral("Show a reference video beside the take."),
+                                 QStringLiteral("VIDEO"));
+  const QCommandLineOption videoOffset(QStringLiteral("video-offset"),
+                                       QStringLiteral("The video's time at the take's first frame, in seconds."),
+                                       QStringLiteral("S"));
+  parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding, showDock, rig, rigShapes, solve,
+                     video, videoOffset});
   parser.process(app);
 
   mocap::studio::MainWindow window;
@@ -111,6 +117,20 @@ int main(int argc, char** argv)
   if (parser.isSet(rig)) {
     const QString error = window.loadRig(parser.value(rig), parser.value(rigShapes),
                                          parser.isSet(mesh) ? QString() : parser.value(binding), parser.isSet(solve));
+    if (!error.isEmpty()) {
+      std::cerr << "mocap-studio: " << error.toStdString() << '\n';
+      if (parser.isSet(screenshot))
+        return 1;
+    }
+  }
+  if (parser.isSet(video)) {
+    bool ok = true;
+    const double offset = parser.isSet(videoOffset) ? parser.value(videoOffset).toDouble(&ok) : 0.0;
+    if (!ok) {
+      std::cerr << "mocap-studio: --video-offset needs a number of seconds\n";
+      return 2;
+    }
+    const QString error = window.openReferenceVideo(parser.value(video), offset);
     if (!error.isEmpty()) {
       std::cerr << "mocap-studio: " << error.toStdString() << '\n';
       if (parser.isSet(screenshot))

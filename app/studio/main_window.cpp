@@ -24,6 +24,8 @@
 #include "panels/head_stabilization_step.h"
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
+#include "panels/reference_video_panel.h"
+#include "document/reference_video.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
@@ -275,6 +277,14 @@ void MainWindow::createDocks()
     return ui::LayoutRig{rig, face.binding()};
   });
 
+  m_referenceVideo = new ui::ReferenceVideoPanel(*m_document, this);
+  auto* videoDock = new QDockWidget(tr("Reference Video"), this);
+  videoDock->setObjectName(QStringLiteral("referenceVideoDock"));
+  videoDock->setWidget(m_referenceVideo);
+  addDockWidget(Qt::RightDockWidgetArea, videoDock);
+  tabifyDockWidget(cleaningDock, videoDock);
+  videoDock->hide();  // View ▸ Reference Video shows it
+
   m_weights = new ui::WeightCurveView(*m_document, m_blendshapeSolve->model(), this);
   m_weightsDock = new QDockWidget(tr("Weights"), this);
   m_weightsDock->setObjectName(QStringLiteral("weightsDock"));
@@ -291,6 +301,15 @@ void MainWindow::createDocks()
     m_weightsDock->show();
     m_weightsDock->raise();
   });
+}
+
+QString MainWindow::openReferenceVideo(const QString& path, double offset)
+{
+  const QString error = m_referenceVideo->openVideo(path);
+  if (error.isEmpty())
+    m_referenceVideo->video().setOffset(offset);
+  (void)showDock(QStringLiteral("referenceVideoDock"));
+  return error;
 }
 
 QString MainWindow::loadRig(const QString& rigPath, const QString& shapeFolder, const QString& bindingPath, bool solve)

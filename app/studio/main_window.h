@@ -25,6 +25,7 @@ class MarkerEditActions;
 struct Preferences;
 class CleaningPanel;
 class BlendshapeSolvePanel;
+class ReferenceVideoPanel;
 class FaceMeshPanel;
 class WeightCurveView;
 class GapListPanel;
@@ -62,6 +63,7 @@ public:
   [[nodiscard]] ui::FaceMeshPanel* faceMeshPanel() const { return m_faceMesh; }
   [[nodiscard]] ui::BlendshapeSolvePanel* blendshapeSolvePanel() const { return m_blendshapeSolve; }
   [[nodiscard]] ui::WeightCurveView* weightView() const { return m_weights; }
+  [[nodiscard]] ui::ReferenceVideoPanel* referenceVideoPanel() const { return m_referenceVideo; }
   [[nodiscard]] ui::GapListPanel* gapListPanel() const { return m_gapList; }
   /// Shows and raises the dock with this object name or title (any case); false when none has it.
   bool showDock(const QString& name);
@@ -74,6 +76,9 @@ public:
   /// line's --rig, --solve). Returns the error, or "".
   QString loadRig(const QString& rigPath, const QString& shapeFolder = {}, const QString& bindingPath = {},
                   bool solve = false);
+  /// Opens `path` in the Reference Video dock (with `offset` seconds) and shows the dock.
+  /// Returns the error message, empty on success.
+  QString openReferenceVideo(const QString& path, double offset = 0.0);
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether
@@ -145,6 +150,7 @@ private:
   ui::FaceMeshPanel* m_faceMesh = nullptr;
   ui::BlendshapeSolvePanel* m_blendshapeSolve = nullptr;
   ui::WeightCurveView* m_weights = nullptr;
+  ui::ReferenceVideoPanel* m_referenceVideo = nullptr;
   QDockWidget* m_blendshapeDock = nullptr;
   QDockWidget* m_weightsDock = nullptr;
   ui::GapListPanel* m_gapList = nullptr;
