@@ -92,6 +92,19 @@ TEST(ReferenceVideo, ShowsTheExactVideoFrameForEachTakeFrameWithTheOffset)
     EXPECT_EQ(decodeBars(video.image()), expected) << "take frame " << n;
   }
   EXPECT_TRUE(panel->view().caption().startsWith(QStringLiteral("video frame")));
+  // Idle, the worker decodes ahead: the next video frames are cached, and stepping onto one shows
+  // it at once, without waiting for the worker.
+  const Eigen::Index shown = video.imageFrame();
+  QElapsedTimer clock;
+  clock.start();
+  while (!video.isCached(shown + 4) && clock.elapsed() < 5000)
+    QTest::qWait(5);
+  ASSERT_TRUE(video.isCached(shown + 4));
+  const Eigen::Index ahead = 1300 + 16;  // (1316/100 + 0.52)·25 = shown + 4
+  document.setCurrentFrame(ahead);
+  ASSERT_EQ(video.wantedFrame(), shown + 4);
+  EXPECT_EQ(video.imageFrame(), shown + 4) << "a cached frame is shown without a round trip to the worker";
+  EXPECT_EQ(decodeBars(video.image()), shown + 4);
   // Nudging by one video frame moves the offset by 1/25 s.
   video.nudge(1);
   EXPECT_NEAR(video.offset(), 0.56, 1e-12);

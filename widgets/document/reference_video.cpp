@@ -9,6 +9,17 @@
 
 namespace mocap::ui {
 
+namespace {
+constexpr int kLookAhead = 12;         // frames decoded ahead of the newest request
+constexpr std::size_t kCacheSize = 48; // decoded frames kept (the farthest from the request go first)
+
+QImage toImage(const VideoImage& decoded)
+{
+  return QImage(decoded.rgb.data(), decoded.width, decoded.height, decoded.width * 3, QImage::Format_RGB888)
+      .copy();  // own the pixels: `decoded` goes away
+}
+} // namespace
+
 ReferenceVideo::ReferenceVideo(TakeDocument& document, QObject* parent) : QObject(parent), m_document(document)
 {
   connect(&document, &TakeDocument::currentFrameChanged, this, &ReferenceVideo::request);
@@ -38,6 +49,9 @@ QString ReferenceVideo::open(const QString& path)
     const std::lock_guard lock(m_mutex);
     m_stop = false;
     m_request = -1;
+    m_ahead = -1;
+    m_aheadLeft = 0;
+    m_cache.clear();
   }
   m_worker = std::thread([this, s = std::move(source)]() mutable { decodeLoop(std::move(s)); });
   emit changed();
@@ -100,11 +114,26 @@ void ReferenceVideo::request()
   }
   if (*wanted == m_imageFrame)
     return;
+  QImage cached;
   {
     const std::lock_guard lock(m_mutex);
-    m_request = *wanted;
+    if (const auto hit = m_cache.find(*wanted); hit != m_cache.end()) {
+      cached = hit->second;
+      m_ahead = *wanted + 1;  // keep decoding ahead of where playback is
+      m_aheadLeft = kLookAhead;
+    } else {
+      m_request = *wanted;
+    }
   }
   m_wake.notify_all();
+  if (!cached.isNull())
+    deliver(std::move(cached), *wanted, QString());
+}
+
+bool ReferenceVideo::isCached(Eigen::Index frame)
+{
+  const std::lock_guard lock(m_mutex);
+  return m_cache.count(frame) > 0;
 }
 
 void ReferenceVideo::deliver(QImage image, Eigen::Index frame, QString error)
@@ -120,25 +149,46 @@ void ReferenceVideo::deliver(QImage image, Eigen::Index frame, QString error)
 void ReferenceVideo::decodeLoop(std::unique_ptr<VideoSource> source)
 {
   const QPointer<ReferenceVideo> self(this);
+  const Eigen::Index frames = source->info().frames;
   while (true) {
     Eigen::Index frame = -1;
+    bool asked = false;  // a request (delivered) rather than a look-ahead (cached only)
     {
       std::unique_lock lock(m_mutex);
-      m_wake.wait(lock, [this] { return m_stop || m_request >= 0; });
+      m_wake.wait(lock, [&] { return m_stop || m_request >= 0 || (m_aheadLeft > 0 && m_ahead < frames); });
       if (m_stop)
         return;
-      frame = m_request;
-      m_request = -1;  // taken; a newer request replaces it while this one decodes
+      if (m_request >= 0) {
+        frame = m_request;
+        m_request = -1;  // taken; a newer request replaces it while this one decodes
+        asked = true;
+        m_ahead = frame + 1;
+        m_aheadLeft = kLookAhead;
+      } else {
+        frame = m_ahead++;
+        --m_aheadLeft;
+        if (m_cache.count(frame) > 0)
+          continue;
+      }
     }
     QImage image;
     QString error;
     try {
-      const VideoImage decoded = source->frame(frame);
-      image = QImage(decoded.rgb.data(), decoded.width, decoded.height, decoded.width * 3, QImage::Format_RGB888)
-                  .copy();  // own the pixels: `decoded` goes away
+      image = toImage(source->frame(frame));
     } catch (const std::exception& e) {
       error = QString::fromStdString(e.what());
     }
+    {
+      const std::lock_guard lock(m_mutex);
+      if (!image.isNull())
+        m_cache[frame] = image;
+      while (m_cache.size() > kCacheSize) {  // drop the frame farthest from this one
+        const auto first = m_cache.begin(), last = std::prev(m_cache.end());
+        m_cache.erase(frame - first->first > last->first - frame ? first : last);
+      }
+    }
+    if (!asked)
+      continue;
     QMetaObject::invokeMethod(
         this,
         [self, image = std::move(image), frame, error = std::move(error)]() mutable {

@@ -8,6 +8,7 @@
 #include <QString>
 
 #include <condition_variable>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -21,7 +22,9 @@ class TakeDocument;
 /// − first) / take rate + offset), and a decoder thread that turns the document's current frame
 /// into the matching video frame. Requests never wait: the UI asks for a frame and keeps the last
 /// delivered one until the worker has decoded the newest request (older requests it has not
-/// started are dropped, so scrubbing never queues work). Opening reads only the header.
+/// started are dropped, so scrubbing never queues work). When idle the worker decodes ahead of the
+/// last request into a small cache, so playback finds its next frames already decoded. Opening
+/// reads only the header.
 class ReferenceVideo final : public QObject
 {
   Q_OBJECT
@@ -47,6 +50,8 @@ public:
   /// The last decoded image and its video frame (−1: none yet).
   [[nodiscard]] const QImage& image() const { return m_image; }
   [[nodiscard]] Eigen::Index imageFrame() const { return m_imageFrame; }
+  /// Whether video frame `frame` is decoded and waiting in the look-ahead cache.
+  [[nodiscard]] bool isCached(Eigen::Index frame);
   /// Why the last decode failed, or "".
   [[nodiscard]] const QString& error() const { return m_error; }
 
@@ -74,6 +79,9 @@ private:
   std::mutex m_mutex;
   std::condition_variable m_wake;
   Eigen::Index m_request = -1;  // the newest frame asked for; −1: none
+  Eigen::Index m_ahead = -1;    // the next frame to decode ahead; −1: none
+  int m_aheadLeft = 0;          // how many more to decode ahead before idling
+  std::map<Eigen::Index, QImage> m_cache;
   bool m_stop = false;
   std::thread m_worker;
 };
