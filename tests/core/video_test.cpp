@@ -1,13 +1,13 @@
 // Reference video: the take ↔ video frame mapping, and frame-exact decoding of videos the test
 // makes itself with OpenCV — each frame shows its own number as a bar code — read back in order,
 // backwards and by jumps, as MJPEG AVI and (where FFmpeg has an H.264 encoder) MP4.
+#include "coded_video.h"
 #include "test_support.h"
 
 #include "mocap/base/error.h"
 #include "mocap/video/video_source.h"
 #include "mocap/video/video_sync.h"
 
-#include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
 #include <gtest/gtest.h>
@@ -18,38 +18,19 @@
 namespace mocap {
 namespace {
 
-constexpr int kBits = 12;  // bar code width: frames 0 … 4095
 constexpr int kWidth = 320, kHeight = 240;
 
-/// Writes `frames` frames at `rate` whose bars spell their index (white = 1, most significant
-/// first). False when this FFmpeg cannot encode `fourcc`.
 bool writeCodedVideo(const std::filesystem::path& path, int fourcc, double rate, int frames)
 {
-  cv::VideoWriter writer(path.string(), cv::CAP_FFMPEG, fourcc, rate, cv::Size(kWidth, kHeight));
-  if (!writer.isOpened())
-    return false;
-  const int bar = kWidth / kBits;
-  for (int f = 0; f < frames; ++f) {
-    cv::Mat image(kHeight, kWidth, CV_8UC3, cv::Scalar(0, 0, 0));
-    for (int b = 0; b < kBits; ++b)
-      if ((f >> (kBits - 1 - b)) & 1)
-        cv::rectangle(image, cv::Rect(b * bar, 0, bar, kHeight), cv::Scalar(255, 255, 255), cv::FILLED);
-    writer.write(image);
-  }
-  return true;
+  return test::writeCodedVideo(path, fourcc, rate, frames, kWidth, kHeight);
 }
 
-/// The number a decoded frame's bars spell (read across the middle row).
 Eigen::Index decodeBars(const VideoImage& image)
 {
-  const int bar = image.width / kBits;
-  Eigen::Index value = 0;
-  for (int b = 0; b < kBits; ++b) {
-    const std::size_t at = (static_cast<std::size_t>(image.height / 2) * static_cast<std::size_t>(image.width) +
-                            static_cast<std::size_t>(b * bar + bar / 2)) * 3;
-    value = 2 * value + (image.rgb[at + 1] > 128 ? 1 : 0);
-  }
-  return value;
+  return test::codedFrameNumber(image.width, image.height, [&](int x, int y) {
+    const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 3;
+    return image.rgb[at + 1] > 128;
+  });
 }
 
 /// Reads `order` and expects each decoded frame to be the one asked for.

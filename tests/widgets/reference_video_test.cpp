@@ -1,6 +1,7 @@
 // The Reference Video dock under Xvfb: a video the test writes (each frame shows its number as a
 // bar code, at 25 fps against the sample's 100 Hz), stepped through with the take — forward,
 // backwards and by jumps — shows exactly the video frame the offset maps each take frame to.
+#include "../core/coded_video.h"
 #include "../core/test_support.h"
 
 #include "main_window.h"
@@ -11,7 +12,6 @@
 #include "panels/reference_video_panel.h"
 #include "views/video_view.h"
 
-#include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
 #include <QDockWidget>
@@ -25,32 +25,18 @@
 namespace mocap {
 namespace {
 
-constexpr int kBits = 12;
 constexpr int kWidth = 240, kHeight = 136;
 constexpr double kVideoRate = 25.0;
 
 void writeCodedVideo(const std::filesystem::path& path, int frames)
 {
-  cv::VideoWriter writer(path.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), kVideoRate,
-                         cv::Size(kWidth, kHeight));
-  ASSERT_TRUE(writer.isOpened());
-  const int bar = kWidth / kBits;
-  for (int f = 0; f < frames; ++f) {
-    cv::Mat image(kHeight, kWidth, CV_8UC3, cv::Scalar(0, 0, 0));
-    for (int b = 0; b < kBits; ++b)
-      if ((f >> (kBits - 1 - b)) & 1)
-        cv::rectangle(image, cv::Rect(b * bar, 0, bar, kHeight), cv::Scalar(255, 255, 255), cv::FILLED);
-    writer.write(image);
-  }
+  ASSERT_TRUE(test::writeCodedVideo(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), kVideoRate, frames, kWidth, kHeight));
 }
 
 Eigen::Index decodeBars(const QImage& image)
 {
-  const int bar = image.width() / kBits;
-  Eigen::Index value = 0;
-  for (int b = 0; b < kBits; ++b)
-    value = 2 * value + (qGreen(image.pixel(b * bar + bar / 2, image.height() / 2)) > 128 ? 1 : 0);
-  return value;
+  return test::codedFrameNumber(image.width(), image.height(),
+                                [&](int x, int y) { return qGreen(image.pixel(x, y)) > 128; });
 }
 
 /// Waits (processing events, at most 5 s) until the video has delivered `frame`.

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <functional>
+
+namespace mocap::test {
+
+/// Bar codes of frame numbers: each frame of a test video shows its own index as 12 vertical
+/// bars (white = 1, most significant first), which survive MJPEG and H.264 compression.
+constexpr int kCodedBits = 12;
+
+/// Writes `frames` frames of `width` × `height` at `rate` with OpenCV, each showing its number.
+/// False when this FFmpeg cannot encode `fourcc`.
+bool writeCodedVideo(const std::filesystem::path& path, int fourcc, double rate, int frames, int width, int height);
+
+/// The number a decoded frame's bars spell, read across its middle row; `whiteAt(x, y)` says
+/// whether the pixel there is light.
+[[nodiscard]] Eigen::Index codedFrameNumber(int width, int height, const std::function<bool(int, int)>& whiteAt);
+
+} // namespace mocap::test
