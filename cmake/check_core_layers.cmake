@@ -2,9 +2,10 @@
 # Fails when a file of a lower core group includes a header of a higher one. Groups, lowest first
 # (a group may include its own and lower ranks; groups of one rank do not include each other):
 #   0 base · 1 model · 2 io, math, video · 3 cleaning (with cleaning/fill) · 4 tracking, layout, deform ·
-#   5 evaluation
+#   5 evaluation · 6 batch
 # cleaning sits below tracking, layout and deform because they use its head stabilization and
-# smoothers; nothing in cleaning needs them.
+# smoothers; nothing in cleaning needs them. batch (archives cleaned with a preset, and their
+# reports) sits on top so it may run any method below.
 set(rank_base 0)
 set(rank_model 1)
 set(rank_io 2)
@@ -15,6 +16,7 @@ set(rank_tracking 4)
 set(rank_layout 4)
 set(rank_deform 4)
 set(rank_evaluation 5)
+set(rank_batch 6)
 
 if(NOT CORE)
   message(FATAL_ERROR "check_core_layers: pass -DCORE=<core directory>")

@@ -256,6 +256,13 @@ namespace {
 
 } // namespace
 
+bool JsonValue::boolean(const std::string& what) const
+{
+  if (m_type != Type::Boolean)
+    wrongType(what, "true or false");
+  return m_boolean;
+}
+
 double JsonValue::number(const std::string& what) const
 {
   if (m_type != Type::Number)

@@ -18,12 +18,14 @@ public:
   JsonValue() = default;
   [[nodiscard]] Type type() const { return m_type; }
   [[nodiscard]] bool isNull() const { return m_type == Type::Null; }
+  [[nodiscard]] bool isBoolean() const { return m_type == Type::Boolean; }
   [[nodiscard]] bool isNumber() const { return m_type == Type::Number; }
   [[nodiscard]] bool isString() const { return m_type == Type::String; }
   [[nodiscard]] bool isArray() const { return m_type == Type::Array; }
   [[nodiscard]] bool isObject() const { return m_type == Type::Object; }
 
   /// The value as the type asked for; throws InvalidArgument naming `what` when it is another type.
+  [[nodiscard]] bool boolean(const std::string& what) const;
   [[nodiscard]] double number(const std::string& what) const;
   [[nodiscard]] const std::string& string(const std::string& what) const;
   [[nodiscard]] const std::vector<JsonValue>& array(const std::string& what) const;
