@@ -47,21 +47,19 @@ void basisFunctions(const std::vector<double>& knots, Eigen::Index span, int deg
 
 // Bᵀy for K columns at once: column c of the samples is y[c · yStride + i]; control j's sum for
 // column c goes to out[j · outStride + c]. Samples come in span order, so the (degree + 1) · K sums
-// of one span stay in registers and are stored once per span (no store-to-load chains).
+// of one span stay local and are stored once per span (no store-to-load chains). The sums of one
+// column are contiguous (acc[c][r]) so that vector code loads exactly what it stored.
 template <int P, int K>
 void accumulateSpans(const double* basis, const Eigen::Index* first, Eigen::Index n, const double* y,
                      Eigen::Index yStride, double* out, Eigen::Index outStride)
 {
-  constexpr auto kSums = static_cast<std::size_t>((P + 1) * K);
-  std::array<double, kSums> acc{};
+  std::array<std::array<double, static_cast<std::size_t>(P + 1)>, static_cast<std::size_t>(K)> acc{};
   Eigen::Index current = first[0];
   const auto flush = [&] {
     for (int r = 0; r <= P; ++r)
-      for (int c = 0; c < K; ++c) {
-        const auto a = static_cast<std::size_t>(r * K + c);
-        out[(current + r) * outStride + c] += acc[a];
-        acc[a] = 0.0;
-      }
+      for (int c = 0; c < K; ++c)
+        out[(current + r) * outStride + c] += acc[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)];
+    acc = {};
   };
   for (Eigen::Index i = 0; i < n; ++i) {
     if (first[i] != current) {
@@ -71,8 +69,9 @@ void accumulateSpans(const double* basis, const Eigen::Index* first, Eigen::Inde
     const double* values = basis + i * (P + 1);
     for (int c = 0; c < K; ++c) {
       const double yi = y[c * yStride + i];
+      auto& sums = acc[static_cast<std::size_t>(c)];
       for (int r = 0; r <= P; ++r)
-        acc[static_cast<std::size_t>(r * K + c)] += values[r] * yi;
+        sums[static_cast<std::size_t>(r)] += values[r] * yi;
     }
   }
   flush();
@@ -108,6 +107,55 @@ void withDegree(int degree, F&& f)
   case 6: f(std::integral_constant<int, 6>{}); break;
   default: f(std::integral_constant<int, 7>{}); break;
   }
+}
+
+// Coefficients of the uniform blending functions of eq 12 as polynomials in t:
+// F_{k,n}(t) = Σ_d coefficient[k][d] tᵈ, expanded once per degree from eq 12's sum (the integer
+// sums are exact in doubles up to n = 7; one rounding when divided by n!). O(n³) once per degree.
+using UniformPolynomials = std::array<std::array<double, kMaxBasis>, kMaxBasis>;
+
+UniformPolynomials uniformPolynomials(int n)
+{
+  UniformPolynomials coefficient{};
+  double factorial = 1.0;
+  for (int i = 2; i <= n; ++i)
+    factorial *= static_cast<double>(i);
+  for (int k = 0; k <= n; ++k) {
+    auto& c = coefficient[static_cast<std::size_t>(k)];
+    for (int j = 0; j <= n - k; ++j) {
+      // (−1)ʲ C(n + 1, j) (t + a)ⁿ with a = n − k − j, expanded by the binomial theorem.
+      const double sign = (j % 2 == 0) ? 1.0 : -1.0;
+      const double a = static_cast<double>(n - k - j);
+      for (int d = 0; d <= n; ++d)
+        c[static_cast<std::size_t>(d)] += sign * binomial(n + 1, j) * binomial(n, d) * std::pow(a, n - d);
+    }
+    for (double& value : c)
+      value /= factorial;
+  }
+  return coefficient;
+}
+
+const UniformPolynomials& uniformPolynomialsOf(int n)
+{
+  static const std::array<UniformPolynomials, kMaxBasis> all = [] {
+    std::array<UniformPolynomials, kMaxBasis> table{};
+    for (int d = kMinBSplineDegree; d <= kMaxBSplineDegree; ++d)
+      table[static_cast<std::size_t>(d)] = uniformPolynomials(d);
+    return table;
+  }();
+  return all[static_cast<std::size_t>(n)];
+}
+
+// The P + 1 basis values of an interior span at t ∈ [0, 1] (eq 12 by Horner's rule, column d of
+// `coefficient` holding the tᵈ coefficients): on spans whose 2P surrounding knots are all uniform,
+// Cox–de Boor reduces to these polynomials, without its chain of divisions.
+template <int P>
+Eigen::Matrix<double, P + 1, 1> uniformBasis(const Eigen::Matrix<double, P + 1, P + 1>& coefficient, double t)
+{
+  Eigen::Matrix<double, P + 1, 1> values = coefficient.col(P);
+  for (int d = P - 1; d >= 0; --d)
+    values = values * t + coefficient.col(d);
+  return values;
 }
 
 } // namespace
@@ -170,31 +218,56 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
   BandedCholesky::Band normal = BandedCholesky::Band::Zero(m - 2, p + 1);
   m_startCoupling = Eigen::VectorXd::Zero(m - 2);
   m_endCoupling = Eigen::VectorXd::Zero(m - 2);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i);
-    const auto spanIndex = std::min(s - 1, static_cast<Eigen::Index>(std::floor(t / h)));
-    const Eigen::Index span = p + std::max(Eigen::Index{0}, spanIndex);
-    double* values = m_basis.row(i).data();
-    basisFunctions(knots, span, p, t, values);
-    const Eigen::Index first = span - p;
-    m_firstControl[static_cast<std::size_t>(i)] = first;
-    // Normal equations of the inner controls 1..m−2 (the end controls are pinned), and how each
-    // inner control couples to the pinned ones (moved to the right-hand side when fitting).
-    for (int r = 0; r <= p; ++r) {
-      const Eigen::Index a = first + r;
-      if (a < 1 || a > m - 2)
-        continue;
-      for (int q = 0; q <= r; ++q) {
-        const Eigen::Index b = first + q;
-        if (b >= 1)
-          normal(a - 1, r - q) += values[r] * values[q];
+  withDegree(p, [&](auto degree) {
+    constexpr int P = decltype(degree)::value;
+    using Values = Eigen::Matrix<double, P + 1, 1>;
+    Eigen::Matrix<double, P + 1, P + 1> polynomials;
+    for (int k = 0; k <= P; ++k)
+      for (int d = 0; d <= P; ++d)
+        polynomials(k, d) = uniformPolynomialsOf(P)[static_cast<std::size_t>(k)][static_cast<std::size_t>(d)];
+    // Span j's knots j + 1 .. j + 2P (of the knot vector) are uniform for P − 1 ≤ j ≤ S − P.
+    const Eigen::Index firstUniform = P - 1, lastUniform = s - P;
+    // Products of one span's basis values (fixed-size, so they stay in registers), added to the
+    // band once per span.
+    Eigen::Matrix<double, P + 1, P + 1> products = Eigen::Matrix<double, P + 1, P + 1>::Zero();
+    Eigen::Index current = 0;
+    const auto flush = [&] {
+      // Normal equations of the inner controls 1..m−2 (the end controls are pinned), and how each
+      // inner control couples to the pinned ones (moved to the right-hand side when fitting).
+      for (int r = 0; r <= P; ++r) {
+        const Eigen::Index a = current + r;
+        if (a < 1 || a > m - 2)
+          continue;
+        for (int q = 0; q <= r; ++q)
+          if (current + q >= 1)
+            normal(a - 1, r - q) += products(r, q);
+        if (current == 0)
+          m_startCoupling(a - 1) += products(r, 0);
+        if (current + P == m - 1)
+          m_endCoupling(a - 1) += products(r, P);
       }
-      if (first == 0)
-        m_startCoupling(a - 1) += values[r] * values[0];
-      if (first + p == m - 1)
-        m_endCoupling(a - 1) += values[r] * values[p];
+      products.setZero();
+    };
+    Values values;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double t = static_cast<double>(i);
+      const double spanPosition = t / h;
+      // t / h ≥ 0, so truncation is the floor.
+      const auto spanIndex = std::min(s - 1, static_cast<Eigen::Index>(spanPosition));
+      if (spanIndex >= firstUniform && spanIndex <= lastUniform)
+        values = uniformBasis<P>(polynomials, spanPosition - static_cast<double>(spanIndex));
+      else
+        basisFunctions(knots, P + spanIndex, P, t, values.data());
+      m_basis.row(i) = values.transpose();
+      m_firstControl[static_cast<std::size_t>(i)] = spanIndex;
+      if (spanIndex != current) {
+        flush();
+        current = spanIndex;
+      }
+      products.noalias() += values * values.transpose();
     }
-  }
+    flush();
+  });
   m_normal = BandedCholesky(std::move(normal));
 }
 

@@ -82,10 +82,17 @@ private:
   const BSplineFitter& fitter(Eigen::Index length)
   {
     auto it = m_fitters.find(length);
-    if (it == m_fitters.end())
+    if (it == m_fitters.end()) {
+      // A take whose runs all differ in length would otherwise keep a basis table per run (40 bytes
+      // a sample: tens of MB of fresh pages for a long take); the usual repeated lengths stay cached.
+      if (m_fitters.size() >= kMaxFitters)
+        m_fitters.clear();
       it = m_fitters.emplace(length, BSplineFitter(length, {m_options.degree, m_options.knotSpacing})).first;
+    }
     return it->second;
   }
+
+  static constexpr std::size_t kMaxFitters = 32;
 
   SmoothOptions m_options;
   double m_frameRate;

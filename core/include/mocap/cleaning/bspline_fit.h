@@ -32,8 +32,8 @@ void checkBSplineFitOptions(const BSplineFitOptions& options);
 
 /// Eq 12: the uniform B-spline blending function F_{k,n}(t) = 1/n! Σ_{j=0}^{n−k} (−1)^j C(n+1, j)
 /// (t + n − k − j)^n for k = 0..n, t ∈ [0, 1]: the weight of control point P_{i+k} in span i
-/// (eq 11). The fit evaluates the same functions by the Cox–de Boor recursion, which reduces to
-/// this on interior spans and also covers the clamped end spans. O(n²).
+/// (eq 11). The fit evaluates this polynomial (expanded once per degree) on interior spans and the
+/// Cox–de Boor recursion, which reduces to it there, on the clamped end spans. O(n²).
 [[nodiscard]] double uniformBSplineBasis(int k, int n, double t);
 
 /// A least-squares fit of a clamped ("quasi-uniform", the paper's triple-vertex construction
@@ -47,8 +47,8 @@ void checkBSplineFitOptions(const BSplineFitOptions& options);
 /// sample, so the curve passes through both end points; the other S + n − 2 control points minimise the
 /// squared error (eqs 11–12 fitted, not interpolated). Polynomials of degree ≤ n are reproduced exactly.
 ///
-/// Construction O(N · n²) (basis by Cox–de Boor, banded normal equations of half-bandwidth n,
-/// banded LDLᵀ); each fit O(N · n) per column.
+/// Construction O(N · n²) (basis by eq 12, by Cox–de Boor on the end spans; banded normal
+/// equations of half-bandwidth n, banded LDLᵀ); each fit O(N · n) per column.
 class BSplineFitter
 {
 public:
