@@ -14,6 +14,7 @@ packages=(
   nlohmann-json3-dev libtinygltf-dev
   libopencv-videoio-dev libopencv-imgproc-dev
   xvfb xauth libgl1-mesa-dri
+  parallel chromium  # GNU parallel runs `mocap clean --index` in a cli test; Chromium renders the archive report (gui)
 )
 
 install_missing_packages() {

@@ -3,7 +3,9 @@
 #include "cli_error.h"
 #include "commands.h"
 
-#include "mocap/io/bvh_writer.h"
+#include "mocap/batch/batch_runner.h"
+#include "mocap/batch/clean_preset.h"
+#include "mocap/batch/clean_run.h"
 #include "mocap/cleaning/clean_pipeline.h"
 #include "mocap/cleaning/smoothing.h"
 #include "mocap/cleaning/spike_detection.h"
@@ -11,9 +13,9 @@
 #include "mocap/base/json_writer.h"
 #include "mocap/io/take_io.h"
 
+#include <cstdlib>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace mocap::cli {
 
@@ -34,6 +36,9 @@ struct CleanArguments
   std::optional<std::string> stabilize;
   bool keepStabilized = false;
   std::optional<std::string> report;
+  std::optional<std::string> preset, manifest;
+  std::optional<long long> index;
+  bool resume = false;
 };
 
 std::optional<SpikeOptions> spikeOptions(const CleanArguments& arguments)
@@ -157,58 +162,11 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   return json.str() + "\n";
 }
 
-/// One history step per pipeline step that ran, so the written take says how it was cleaned.
-void appendHistory(Take& take, const CleanOptions& options, const CleanReport& report)
+/// The options of the command line, or of --preset when given.
+CleanOptions cleanOptions(const CleanArguments& arguments)
 {
-  auto step = [&take](std::string operation, std::vector<std::pair<std::string, std::string>> parameters,
-                      std::int64_t samples) {
-    ProcessingStep s;
-    s.operation = std::move(operation);
-    s.parameters = std::move(parameters);
-    s.firstFrame = take.firstFrame();
-    s.lastFrame = take.firstFrame() + take.frameCount() - 1;
-    s.samples = samples;
-    s.time = currentUtcTime();
-    s.tool = "mocap clean";
-    take.history().push_back(std::move(s));
-  };
-  auto number = [](double v) {
-    std::ostringstream text;
-    text << v;
-    return text.str();
-  };
-  if (!options.stabilizeLabels.empty()) {
-    std::string labels;
-    for (const std::string& label : options.stabilizeLabels)
-      labels += (labels.empty() ? "" : ",") + label;
-    step("stabilize head", {{"reference markers", labels}, {"kept", options.keepStabilized ? "yes" : "no"}}, 0);
-  }
-  if (options.spikes)
-    step("repair spikes",
-         {{"method", std::string(spikeMethodName(options.spikes->method))},
-          {"factor", number(options.spikes->factor)},
-          {"threshold", number(options.spikes->threshold)}},
-         static_cast<std::int64_t>(report.spikes.size()));
-  if (options.fill) {
-    const Eigen::Index longest = longestGapFrames(*options.fill, take.frameRate());
-    step("fill gaps",
-         {{"method", std::string(fillMethodName(options.fill->method))},
-          {"max gap", longest == 0 ? std::string("unlimited") : std::to_string(longest) + " frames"},
-          {"extrapolate", options.fill->extrapolate ? "yes" : "no"},
-          {"min valid", number(options.fill->minValidFraction)},
-          {"neighbours", std::to_string(options.fill->neighbours)}},
-         static_cast<std::int64_t>(report.filledSamples));
-  }
-  if (options.smooth)
-    step("smooth", {{"method", std::string(smoothMethodName(options.smooth->method))}},
-         static_cast<std::int64_t>(report.smoothedSamples));
-}
-
-int runClean(const CleanArguments& arguments)
-{
-  const std::string& input = arguments.input;
-  const std::string& output = arguments.output;
-  (void)formatFromPath(output);  // reject an unknown output type before the read
+  if (arguments.preset)
+    return readCleanPreset(*arguments.preset);
   CleanOptions options;
   options.spikes = spikeOptions(arguments);
   options.fill = fillOptions(arguments);
@@ -216,17 +174,73 @@ int runClean(const CleanArguments& arguments)
   if (arguments.stabilize)
     options.stabilizeLabels = splitList(*arguments.stabilize, "--stabilize");
   options.keepStabilized = arguments.keepStabilized;
+  return options;
+}
+
+/// The manifest line to run: --index, else the array index the cluster's scheduler sets.
+std::size_t manifestIndex(const CleanArguments& arguments, std::size_t count)
+{
+  std::optional<long long> index = arguments.index;
+  std::string from = "--index";
+  for (const char* variable : {"SLURM_ARRAY_TASK_ID", "JOB_COMPLETION_INDEX"}) {
+    const char* value = std::getenv(variable);
+    if (index || value == nullptr || *value == '\0')
+      continue;
+    char* end = nullptr;
+    const long long parsed = std::strtoll(value, &end, 10);
+    if (*end != '\0')
+      throw UsageError(std::string(variable) + "='" + value + "' is not a whole number");
+    index = parsed;
+    from = variable;
+  }
+  if (!index)
+    throw UsageError("--manifest needs --index I (or SLURM_ARRAY_TASK_ID / JOB_COMPLETION_INDEX set)");
+  if (*index < 0 || static_cast<std::size_t>(*index) >= count)
+    throw UsageError(from + " " + std::to_string(*index) + ": the manifest has " + std::to_string(count) +
+                     " takes (0.." + std::to_string(count - 1) + ")");
+  return static_cast<std::size_t>(*index);
+}
+
+/// `mocap clean --manifest F --index I -o OUTDIR`: take I as `mocap batch` would clean it.
+int runManifestTake(const CleanArguments& arguments, const CleanOptions& options)
+{
+  if (arguments.report)
+    throw UsageError("--report: with --manifest the report goes beside the take (OUTDIR/...report.json)");
+  const TakeManifest manifest = readManifest(*arguments.manifest, arguments.output);
+  const std::size_t index = manifestIndex(arguments, manifest.takes.size());
+  BatchOptions batch;
+  batch.outDir = arguments.output;
+  batch.preset = options;
+  batch.resume = arguments.resume;
+  prepareOutDir(manifest, batch.outDir);
+  const BatchTakeResult result = runBatchTake(manifest, index, batch);
+  const ManifestEntry& entry = manifest.takes[index];
+  const TakeOutputs outputs = takeOutputs(entry, batch.outDir);
+  if (result.status == TakeStatus::Failed) {
+    std::cerr << "mocap clean: " << entry.input.string() << ": " << result.error << '\n';
+    return kExitBadInput;
+  }
+  std::cout << takeStatusName(result.status) << ' ' << entry.input.string() << " -> " << outputs.take.string()
+            << '\n';
+  return kExitOk;
+}
+
+int runClean(const CleanArguments& arguments)
+{
+  const CleanOptions options = cleanOptions(arguments);
+  if (arguments.manifest)
+    return runManifestTake(arguments, options);
+  if (arguments.resume)
+    throw UsageError("--resume needs --manifest");
+  if (arguments.input.empty())
+    throw UsageError("the take to clean is missing: give IN or --manifest F");
+  const std::string& input = arguments.input;
+  const std::string& output = arguments.output;
+  (void)formatFromPath(output);  // reject an unknown output type before the read
 
   Take take = readInputTake(input);
-  const CleanReport report = cleanTake(take, options);
-  appendHistory(take, options, report);
-  if (formatFromPath(output) == TakeFormat::Bvh && report.headMotion && !options.keepStabilized) {
-    // BVH carries the head motion in its root joint; the markers go in head space.
-    removeHeadMotion(take, *report.headMotion);
-    writeBvh(take, output, BvhOptions{report.headMotion->poses});
-  } else {
-    writeTake(take, output);
-  }
+  const CleanReport report = cleanAndRecord(take, options, "mocap clean");
+  writeCleanedTake(take, report, options, output);
   if (arguments.report)
     writeFileAtomically(*arguments.report, reportJson(input, output, take, options, report));
   return kExitOk;
@@ -248,8 +262,10 @@ Command addClean(CLI::App& mocap)
   CLI::App* command =
       mocap.add_subcommand("clean", "stabilize, remove spikes, fill gaps, smooth; write OUT and a JSON report");
   const auto a = std::make_shared<CleanArguments>();
-  command->add_option("IN", a->input, "the take to clean")->required();
-  command->add_option("-o,--output", a->output, "the cleaned take; its extension names the format")
+  CLI::Option* input = command->add_option("IN", a->input, "the take to clean");
+  command
+      ->add_option("-o,--output", a->output,
+                   "the cleaned take, its extension naming the format; with --manifest the OUTDIR of mocap batch")
       ->required()
       ->type_name("OUT");
   oneOf(command->add_option("--spikes", a->spikes, "spike detector"), spikeMethodNames() + "|off")
@@ -304,6 +320,25 @@ Command addClean(CLI::App& mocap)
   command->add_flag("--keep-stabilized", a->keepStabilized, "write the markers in head space");
   command->add_option("--report", a->report, "write a JSON report of every step and every gap")
       ->type_name("FILE.json");
+  CLI::Option* preset =
+      command->add_option("--preset", a->preset, "the cleaning options from a preset (mocap batch --preset)")
+          ->type_name("PRESET.json");
+  for (CLI::Option* option : command->get_options())
+    if (option != preset && option != input && option->get_name() != "--output" && option->get_name() != "--report" &&
+        option->get_name() != "--help" && option->get_name() != "-h")
+      preset->excludes(option);
+  CLI::Option* manifest = command
+                              ->add_option("--manifest", a->manifest,
+                                           "clean one take of a mocap batch manifest into OUTDIR, as the batch would")
+                              ->type_name("F")
+                              ->excludes(input);
+  wholeNumberIn(command->add_option("--index", a->index,
+                                    "the manifest's take to clean, 0-based (blank, # and repeated lines do not "
+                                    "count); default: $SLURM_ARRAY_TASK_ID or $JOB_COMPLETION_INDEX")
+                    ->type_name("I")
+                    ->needs(manifest),
+                0, 1LL << 40);
+  command->add_flag("--resume", a->resume, "with --manifest: skip the take when OUTDIR holds it from the same input and preset");
   return {command, [a] { return runClean(*a); }};
 }
 

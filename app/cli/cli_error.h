@@ -18,6 +18,8 @@ enum ExitCode : int
   kExitOk = 0,
   kExitBadInput = 1,
   kExitBadUsage = 2,
+  kExitQuality = 3,        ///< `mocap batch`: every take processed, some below --min-valid
+  kExitInterrupted = 130,  ///< stopped by SIGINT/SIGTERM (128 + SIGINT, the shells' convention)
 };
 
 } // namespace mocap::cli

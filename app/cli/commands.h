@@ -20,8 +20,13 @@ struct Command
 Command addInfo(CLI::App& mocap);
 /// `mocap convert IN OUT`: reads IN and writes OUT, formats by extension, optionally rescaled.
 Command addConvert(CLI::App& mocap);
-/// `mocap clean IN -o OUT`: stabilize, spikes, fill, smooth (issue 3).
+/// `mocap clean IN -o OUT`: stabilize, spikes, fill, smooth (issue 3); `--manifest F --index I`
+/// cleans one take of a batch manifest (a cluster array task).
 Command addClean(CLI::App& mocap);
+/// `mocap batch MANIFEST -o OUTDIR`: every take of a manifest cleaned in parallel (issue 17).
+Command addBatch(CLI::App& mocap);
+/// `mocap summarize OUTDIR -o report.html`: the archive report of a batch (issue 17).
+Command addSummarize(CLI::App& mocap);
 /// `mocap eval-fill TAKE`: gap-filling methods against hidden truth (Gløersen & Federolf protocol).
 Command addEvalFill(CLI::App& mocap);
 /// `mocap eval-spikes TAKE`: recall and false alarms of the spike detectors.

@@ -59,7 +59,7 @@ int main(int argc, char** argv)
   mocap.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // a repeated option: the last wins
   mocap.require_subcommand(1);
   const std::vector<Command> commands = {
-      addInfo(mocap),     addConvert(mocap),  addClean(mocap),      addEvalFill(mocap), addEvalSpikes(mocap),
+      addInfo(mocap),     addConvert(mocap),  addClean(mocap),      addBatch(mocap),      addSummarize(mocap),  addEvalFill(mocap), addEvalSpikes(mocap),
       addEvalSmooth(mocap), addSmoothTable(mocap), addPfa(mocap),   addTrack(mocap),    addFixSwaps(mocap),
       addEvalTrack(mocap), addBind(mocap),    addDeform(mocap),     addRig(mocap),      addSolve(mocap),
   };

@@ -1,0 +1,489 @@
+// `mocap batch`, `mocap clean --manifest --index` and `mocap summarize` end to end (issue 17):
+// results independent of --jobs, resume, failures recorded, no partial files, Ctrl+C, GNU parallel.
+#include "../core/test_support.h"
+#include "shell_run.h"
+
+#include "mocap/base/content_hash.h"
+#include "mocap/base/file_io.h"
+#include "mocap/base/json_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace mocap {
+namespace {
+
+namespace fs = std::filesystem;
+using test::shellQuote;
+
+/// Fixed history time, so two runs write identical takes.
+const std::string kEpoch = "SOURCE_DATE_EPOCH=1780000000 ";
+
+test::ShellResult mocap(const std::string& arguments, const test::TempDir& dir, const std::string& environment = kEpoch)
+{
+  return test::runShell(environment + shellQuote(std::string(MOCAP_CLI)) + " " + arguments, dir.path());
+}
+
+/// An archive of real takes in two sessions, and a manifest listing them relative to itself.
+struct Archive
+{
+  explicit Archive(const test::TempDir& dir) : root(dir.file("archive"))
+  {
+    const std::vector<std::pair<std::string, std::string>> takes = {
+        {"c3d/sample01/Eb015pi.c3d", "session1/Eb015pi.c3d"},
+        {"c3d/sample01/Eb015vi.c3d", "session1/Eb015vi.c3d"},
+        {"c3d/sample02/dec_real.c3d", "session2/day1/dec_real.c3d"},
+        {"c3d/sample02/pc_real.c3d", "session2/pc_real.c3d"},
+        {"c3d/sample08/TESTAPI.c3d", "session2/TESTAPI.c3d"},
+    };
+    std::string manifest = "# test archive\n";
+    for (const auto& [from, to] : takes) {
+      fs::create_directories((root / to).parent_path());
+      fs::copy_file(test::dataFile(from), root / to);
+      manifest += to + "\n";
+      relative.push_back(to);
+    }
+    writeFileAtomically(root / "takes.txt", manifest);
+  }
+  fs::path manifest() const { return root / "takes.txt"; }
+
+  fs::path root;
+  std::vector<std::string> relative;
+};
+
+/// Every regular file below `folder`, by relative path.
+std::map<std::string, std::string> filesBelow(const fs::path& folder)
+{
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.is_regular_file())
+      files[entry.path().lexically_relative(folder).string()] = readFileBytes(entry.path());
+  return files;
+}
+
+/// Names of temporary files an interrupted atomic write would leave.
+std::vector<std::string> temporaries(const fs::path& folder)
+{
+  std::vector<std::string> found;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.path().filename().string().find(".tmp") != std::string::npos)
+      found.push_back(entry.path().string());
+  return found;
+}
+
+/// A per-take report without its "timings" (the one part that differs between runs).
+std::string withoutTimings(const std::string& report)
+{
+  const std::size_t at = report.find("\"timings\"");
+  if (at == std::string::npos)
+    return report;
+  return report.substr(0, at) + report.substr(report.find('}', at) + 1);
+}
+
+const JsonValue& member(const JsonValue& object, const std::string& key)
+{
+  const JsonValue* value = object.find(key, "test");
+  if (value == nullptr)
+    throw std::runtime_error("no key " + key);
+  return *value;
+}
+
+/// The status of each take in OUTDIR/batch.json, by output path.
+std::map<std::string, std::string> statuses(const fs::path& outDir)
+{
+  const JsonValue report = parseJson(readFileBytes(outDir / "batch.json"), "batch.json");
+  std::map<std::string, std::string> result;
+  for (const JsonValue& take : member(report, "takes").array("takes"))
+    result[member(take, "output").string("output")] = member(take, "status").string("status");
+  return result;
+}
+
+TEST(BatchCli, ResultsAreByteIdenticalWhateverTheNumberOfJobs)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  const auto one = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("one")) + " --jobs 1", dir);
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  EXPECT_NE(one.out.find("cleaned 5, skipped 0, failed 0"), std::string::npos) << one.out;
+  const auto three = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("three")) + " --jobs 3", dir);
+  ASSERT_EQ(three.exitCode, 0) << three.err;
+
+  auto a = filesBelow(dir.file("one")), b = filesBelow(dir.file("three"));
+  a.erase("batch.json");
+  b.erase("batch.json");
+  ASSERT_EQ(a.size(), 10u);  // each take and its report, the tree mirrored
+  ASSERT_EQ(b.size(), a.size());
+  for (const std::string& take : archive.relative) {
+    ASSERT_TRUE(a.count(take)) << take;
+    EXPECT_TRUE(a.at(take) == b.at(take)) << take << " differs between --jobs 1 and 3";
+    const std::string report = take + ".report.json";
+    ASSERT_TRUE(a.count(report));
+    EXPECT_EQ(withoutTimings(a.at(report)), withoutTimings(b.at(report)));
+    const JsonValue parsed = parseJson(a.at(report), report);
+    EXPECT_EQ(member(parsed, "input_hash").string(""),
+              hashText(contentHash(readFileBytes(archive.root / take))));
+    EXPECT_EQ(member(parsed, "output").string(""), take);
+    EXPECT_EQ(member(parsed, "status").string(""), "cleaned");
+    EXPECT_GT(member(parsed, "valid_fraction_after").number(""), 0.0);
+    EXPECT_FALSE(member(parsed, "markers").array("").empty());
+  }
+  EXPECT_NE(a.at("session1/Eb015pi.c3d"), readFileBytes(archive.root / "session1/Eb015pi.c3d"));  // it was cleaned
+  for (const auto& [take, status] : statuses(dir.file("three")))
+    EXPECT_EQ(status, "cleaned") << take;
+}
+
+TEST(BatchCli, ResumeSkipsTakesDoneWithTheSameInputAndPreset)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  const std::string batch = "batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out"));
+  ASSERT_EQ(mocap(batch, dir).exitCode, 0);
+  const auto again = mocap(batch + " --resume", dir);
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.out.find("cleaned 0, skipped 5"), std::string::npos) << again.out;
+
+  // A changed input is cleaned again; so is every take when the preset changes.
+  fs::copy_file(test::dataFile("c3d/sample01/Eb015si.c3d"), archive.root / "session1/Eb015pi.c3d",
+                fs::copy_options::overwrite_existing);
+  const auto changed = mocap(batch + " --resume", dir);
+  ASSERT_EQ(changed.exitCode, 0) << changed.err;
+  EXPECT_NE(changed.out.find("cleaned 1, skipped 4"), std::string::npos) << changed.out;
+  EXPECT_EQ(statuses(dir.file("out")).at("session1/Eb015pi.c3d"), "cleaned");
+  writeFileAtomically(dir.file("preset.json"), R"({"smooth": {"method": "bspline"}})");
+  const auto preset = mocap(batch + " --resume --preset " + shellQuote(dir.file("preset.json")), dir);
+  ASSERT_EQ(preset.exitCode, 0) << preset.err;
+  EXPECT_NE(preset.out.find("cleaned 5, skipped 0"), std::string::npos) << preset.out;
+  const JsonValue report =
+      parseJson(readFileBytes(dir.file("out/session2/pc_real.c3d.report.json")), "report");
+  EXPECT_EQ(member(member(member(report, "preset"), "smooth"), "method").string(""), "bspline");
+}
+
+TEST(BatchCli, BadTakesAreRecordedWithTheirErrorAndTheBatchGoesOn)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  fs::copy_file(test::dataFile("c3d/sample18/bad_parameter_section.c3d"), archive.root / "session1/corrupt.c3d");
+  writeFileAtomically(archive.root / "bad.txt",
+                      "session1/Eb015pi.c3d\nsession1/missing.c3d\nsession1/corrupt.c3d\n\nsession1/Eb015pi.c3d\n");
+  const auto run = mocap("batch " + shellQuote(archive.root / "bad.txt") + " -o " + shellQuote(dir.file("out")), dir);
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  EXPECT_NE(run.err.find("bad.txt:5: repeats line 1 (session1/Eb015pi.c3d); run once"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("missing.c3d"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("corrupt.c3d: parameter section corrupt"), std::string::npos) << run.err;
+  const auto status = statuses(dir.file("out"));
+  ASSERT_EQ(status.size(), 3u);
+  EXPECT_EQ(status.at("Eb015pi.c3d"), "cleaned");
+  EXPECT_EQ(status.at("missing.c3d"), "failed");
+  EXPECT_EQ(status.at("corrupt.c3d"), "failed");
+  EXPECT_TRUE(fs::exists(dir.file("out/Eb015pi.c3d")));
+  EXPECT_FALSE(fs::exists(dir.file("out/corrupt.c3d")));  // no output for a failed take, only its report
+  const JsonValue failed = parseJson(readFileBytes(dir.file("out/corrupt.c3d.report.json")), "report");
+  EXPECT_EQ(member(failed, "status").string(""), "failed");
+  EXPECT_NE(member(failed, "error").string("").find("parameter section corrupt"), std::string::npos);
+  EXPECT_TRUE(temporaries(dir.file("out")).empty());
+}
+
+TEST(BatchCli, ATakeBelowMinValidAfterCleaningFailsTheQualityCheckWithExitThree)
+{
+  test::TempDir dir;
+  writeFileAtomically(dir.file("list.txt"), test::sampleTake().string() + "\n");
+  const auto run =
+      mocap("batch " + shellQuote(dir.file("list.txt")) + " -o " + shellQuote(dir.file("out")) + " --min-valid 0.999", dir);
+  EXPECT_EQ(run.exitCode, 3) << run.err;
+  EXPECT_NE(run.err.find("is below --min-valid 0.999"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::exists(dir.file("out/Facial-Sing.c3d")));  // kept, flagged
+  const auto pass =
+      mocap("batch " + shellQuote(dir.file("list.txt")) + " -o " + shellQuote(dir.file("out")) + " --min-valid 0.5 --resume", dir);
+  EXPECT_EQ(pass.exitCode, 0) << pass.err;
+}
+
+TEST(BatchCli, AnUnwritableOutDirIsOneClearErrorAndNothingRuns)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  writeFileAtomically(dir.file("file"), "in the way");
+  const auto run = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("file") / "out"), dir);
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.err.find("cannot create the folder"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  const auto same = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(archive.root), dir);
+  EXPECT_EQ(same.exitCode, 2);
+  EXPECT_NE(same.err.find("would overwrite them"), std::string::npos) << same.err;
+}
+
+// A full disk, simulated with the file size limit (ulimit -f, in 512-byte blocks in sh): writes
+// past it fail with EFBIG as they would with ENOSPC. The small takes fit, the large ones do not.
+TEST(BatchCli, AFullDiskFailsTheTakesThatDoNotFitAndLeavesNothingPartial)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  const std::string command = "trap '' XFSZ; ulimit -f 400; export " + kEpoch + "; exec " + shellQuote(std::string(MOCAP_CLI)) +
+                              " batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out"));
+  const auto run = test::runShell("sh -c " + shellQuote(command), dir.path());
+  EXPECT_EQ(run.exitCode, 1) << run.err;
+  const auto status = statuses(dir.file("out"));
+  std::size_t failed = 0;
+  for (const std::string& take : archive.relative) {
+    const bool small = fs::file_size(archive.root / take) < 100000;
+    EXPECT_EQ(status.at(take), small ? "cleaned" : "failed") << take;
+    EXPECT_EQ(fs::exists(dir.file("out") / take), small) << take;
+    failed += small ? 0 : 1;
+  }
+  EXPECT_GE(failed, 1u);
+  EXPECT_NE(run.err.find("File too large"), std::string::npos) << run.err;
+  EXPECT_TRUE(temporaries(dir.file("out")).empty());
+}
+
+TEST(BatchCli, AFolderManifestIsSearchedAndALinkLoopIsNotFollowed)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  fs::create_directory_symlink(archive.root, archive.root / "session2/loop");
+  const auto run = mocap("batch " + shellQuote(archive.root) + " -o " + shellQuote(dir.file("out")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(run.err.find("(a folder loop); not followed"), std::string::npos) << run.err;
+  const JsonValue report = parseJson(run.out, "stdout");
+  EXPECT_EQ(member(member(report, "counts"), "cleaned").number(""), 5.0);
+  EXPECT_EQ(run.out, readFileBytes(dir.file("out/batch.json")));
+}
+
+TEST(BatchCli, CtrlCStopsCleanlyKeepingFinishedTakesAndResumeFinishes)
+{
+  test::TempDir dir;
+  fs::create_directories(dir.file("many"));
+  for (int i = 0; i < 40; ++i)
+    fs::copy_file(test::dataFile("c3d/sample01/Eb015pr.c3d"), dir.file("many") / ("take" + std::to_string(i) + ".c3d"));
+  const fs::path out = dir.file("out");
+  // Start the batch, wait for its first finished take, then interrupt it.
+  const std::string script = kEpoch + shellQuote(std::string(MOCAP_CLI)) + " batch " + shellQuote(dir.file("many")) +
+                             " -o " + shellQuote(out) + " --jobs 2 & pid=$!; i=0; while [ $i -lt 600 ] && ! ls " +
+                             shellQuote(out) + "/*.report.json >/dev/null 2>&1; do sleep 0.05; i=$((i+1)); done; " +
+                             "kill -INT $pid; wait $pid; echo exit=$?";
+  const auto run = test::runShell(script, dir.path());
+  ASSERT_NE(run.out.find("exit=130"), std::string::npos) << run.out << run.err;
+  EXPECT_NE(run.err.find("stopped;"), std::string::npos) << run.err;
+  const auto status = statuses(out);
+  std::size_t cleaned = 0, notRun = 0;
+  for (const auto& [take, state] : status) {
+    cleaned += state == "cleaned" ? 1u : 0u;
+    notRun += state == "not_run" ? 1u : 0u;
+    EXPECT_EQ(fs::exists(out / take), state == "cleaned") << take;
+    EXPECT_EQ(fs::exists(out / (take + ".report.json")), state == "cleaned") << take;
+  }
+  EXPECT_GE(cleaned, 1u);
+  EXPECT_GE(notRun, 1u);
+  EXPECT_EQ(cleaned + notRun, 40u);
+  EXPECT_TRUE(temporaries(out).empty());
+  const JsonValue report = parseJson(readFileBytes(out / "batch.json"), "batch.json");
+  EXPECT_TRUE(member(report, "cancelled").boolean(""));
+
+  const auto resumed = mocap("batch " + shellQuote(dir.file("many")) + " -o " + shellQuote(out) + " --resume", dir);
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("cleaned " + std::to_string(notRun) + ", skipped " + std::to_string(cleaned)),
+            std::string::npos)
+      << resumed.out;
+}
+
+// The README's GNU parallel line, on the test takes: one `mocap clean --manifest --index` per
+// take writes exactly what `mocap batch` writes.
+TEST(BatchCli, GnuParallelOverManifestIndicesWritesWhatTheBatchWrites)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  ASSERT_EQ(mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("batch")), dir).exitCode, 0);
+  const std::string command = "export " + kEpoch + "; seq 0 4 | parallel --halt now,fail=1 -j 2 " +
+                              shellQuote(std::string(MOCAP_CLI)) + " clean --manifest " +
+                              shellQuote(archive.manifest()) + " --index {} -o " + shellQuote(dir.file("parallel"));
+  const auto run = test::runShell(command, dir.path());
+  ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
+  auto batch = filesBelow(dir.file("batch")), parallel = filesBelow(dir.file("parallel"));
+  batch.erase("batch.json");
+  ASSERT_EQ(parallel.size(), batch.size());
+  for (const auto& [name, bytes] : batch)
+    EXPECT_EQ(withoutTimings(parallel.at(name)), withoutTimings(bytes)) << name;
+}
+
+TEST(BatchCli, CleanManifestTakesItsIndexFromTheArrayVariables)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  const std::string clean = "clean --manifest " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out"));
+  const auto slurm = mocap(clean, dir, kEpoch + "SLURM_ARRAY_TASK_ID=2 ");
+  ASSERT_EQ(slurm.exitCode, 0) << slurm.err;
+  EXPECT_TRUE(fs::exists(dir.file("out/session2/day1/dec_real.c3d")));
+  const auto k8s = mocap(clean, dir, kEpoch + "JOB_COMPLETION_INDEX=4 ");
+  ASSERT_EQ(k8s.exitCode, 0) << k8s.err;
+  EXPECT_TRUE(fs::exists(dir.file("out/session2/TESTAPI.c3d")));
+  EXPECT_FALSE(fs::exists(dir.file("out/session1")));  // only the two takes asked for were written
+  EXPECT_EQ(test::entryCount(dir.file("out/session2")), 3u);  // day1/, TESTAPI.c3d and its report
+
+  const auto outside = mocap(clean + " --index 5", dir);
+  EXPECT_EQ(outside.exitCode, 2);
+  EXPECT_NE(outside.err.find("--index 5: the manifest has 5 takes (0..4)"), std::string::npos) << outside.err;
+  const auto none = mocap(clean, dir, "");
+  EXPECT_EQ(none.exitCode, 2);
+  EXPECT_NE(none.err.find("--manifest needs --index I"), std::string::npos) << none.err;
+  EXPECT_EQ(mocap("clean " + shellQuote(archive.root / "session1/Eb015pi.c3d") + " --index 1 -o x.c3d", dir).exitCode, 2);
+}
+
+TEST(BatchCli, APresetIsReadStrictlyAndReplacesTheCleaningOptions)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  writeFileAtomically(dir.file("bad.json"), R"({"fill": {"method": "auto", "max_gap_s": 1}})");
+  const auto bad = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")) +
+                             " --preset " + shellQuote(dir.file("bad.json")),
+                         dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("bad.json: preset fill: unknown key 'max_gap_s'"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir.file("out")));
+
+  // The same options as a preset and as flags clean a take to the same bytes.
+  writeFileAtomically(dir.file("p.json"), R"({"spikes": {"method": "off"}, "smooth": {"method": "bspline"}})");
+  const std::string take = shellQuote(archive.root / "session1/Eb015pi.c3d");
+  ASSERT_EQ(mocap("clean " + take + " -o " + shellQuote(dir.file("a.c3d")) + " --preset " + shellQuote(dir.file("p.json")), dir)
+                .exitCode,
+            0);
+  ASSERT_EQ(mocap("clean " + take + " -o " + shellQuote(dir.file("b.c3d")) + " --spikes off --smooth bspline", dir).exitCode,
+            0);
+  EXPECT_TRUE(readFileBytes(dir.file("a.c3d")) == readFileBytes(dir.file("b.c3d")));
+  const auto both = mocap("clean " + take + " -o " + shellQuote(dir.file("c.c3d")) + " --preset " +
+                              shellQuote(dir.file("p.json")) + " --smooth bspline",
+                          dir);
+  EXPECT_EQ(both.exitCode, 2);
+}
+
+/// Whether `text` is well-formed XML (tags nest and close, attributes are quoted, '&' starts an
+/// entity), with one root element named `root`; `error` says where it is not.
+bool wellFormed(const std::string& text, const std::string& root, std::string& error)
+{
+  std::vector<std::string> open;
+  std::size_t roots = 0;
+  std::size_t i = 0;
+  const auto fail = [&](const std::string& what) {
+    error = what + " at byte " + std::to_string(i);
+    return false;
+  };
+  while (i < text.size()) {
+    if (text[i] == '&') {
+      const std::size_t end = text.find(';', i);
+      static const std::set<std::string> entities = {"amp", "lt", "gt", "quot", "#39"};
+      if (end == std::string::npos || entities.count(text.substr(i + 1, end - i - 1)) == 0)
+        return fail("a bare '&'");
+      i = end + 1;
+      continue;
+    }
+    if (text[i] != '<') {
+      if (text[i] == '>')
+        return fail("a bare '>'");
+      ++i;
+      continue;
+    }
+    if (text.compare(i, 9, "<!DOCTYPE") == 0) {
+      i = text.find('>', i) + 1;
+      continue;
+    }
+    const std::size_t end = text.find('>', i);
+    if (end == std::string::npos)
+      return fail("an unclosed tag");
+    std::string tag = text.substr(i + 1, end - i - 1);
+    if (!tag.empty() && tag[0] == '/') {
+      if (open.empty() || open.back() != tag.substr(1))
+        return fail("</" + tag.substr(1) + "> closes " + (open.empty() ? std::string("nothing") : "<" + open.back() + ">"));
+      open.pop_back();
+      i = end + 1;
+      continue;
+    }
+    const bool selfClosing = !tag.empty() && tag.back() == '/';
+    if (selfClosing)
+      tag.pop_back();
+    const std::size_t nameEnd = std::min(tag.find(' '), tag.size());
+    const std::string name = tag.substr(0, nameEnd);
+    // Attributes: name="value" pairs.
+    for (std::size_t a = nameEnd; a < tag.size();) {
+      if (tag[a] == ' ') {
+        ++a;
+        continue;
+      }
+      const std::size_t eq = tag.find('=', a);
+      if (eq == std::string::npos || eq + 1 >= tag.size() || tag[eq + 1] != '"')
+        return fail("an unquoted attribute in <" + name + ">");
+      const std::size_t close = tag.find('"', eq + 2);
+      if (close == std::string::npos)
+        return fail("an unclosed attribute in <" + name + ">");
+      a = close + 1;
+    }
+    if (open.empty())
+      ++roots;
+    if (open.empty() && name != root)
+      return fail("root <" + name + ">");
+    if (!selfClosing)
+      open.push_back(name);
+    i = end + 1;
+  }
+  if (!open.empty())
+    return fail("<" + open.back() + "> never closed");
+  if (roots != 1)
+    return fail(std::to_string(roots) + " root elements");
+  return true;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what)
+{
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+TEST(SummarizeCli, WritesOneWellFormedPageWithThePlotsAndTheTakesToReview)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  fs::copy_file(test::dataFile("c3d/sample18/bad_parameter_section.c3d"), archive.root / "session1/corrupt.c3d");
+  writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) + "session1/corrupt.c3d\n");
+  ASSERT_EQ(mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir).exitCode, 1);
+  const auto run =
+      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::string html = readFileBytes(dir.file("report.html"));
+  std::string error;
+  EXPECT_TRUE(wellFormed(html, "html", error)) << error;
+  EXPECT_EQ(html.find("http://www.w3.org/1999/xhtml"), html.find("http"));  // no link but the namespaces
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  for (const std::string id : {"valid-fraction", "gap-lengths", "spikes-per-marker", "missing-heat-map"})
+    EXPECT_NE(html.find("<svg class=\"plot\" id=\"" + id + "\""), std::string::npos) << id;
+  EXPECT_EQ(occurrences(html, "<g class=\"take\""), 5u);  // the five cleaned takes, before and after
+  EXPECT_EQ(occurrences(html, "<rect class=\"failed\""), 1u);
+  EXPECT_GT(occurrences(html, "<rect class=\"cell\""), 5u);
+  EXPECT_EQ(occurrences(html, "<rect class=\"bar\" data-label=\"1\" data-count=\""), 1u);
+
+  const JsonValue summary = parseJson(run.out, "stdout");
+  EXPECT_EQ(member(summary, "takes").number(""), 6.0);
+  EXPECT_EQ(member(summary, "failed").number(""), 1.0);
+  const auto& review = member(summary, "review").array("");
+  ASSERT_FALSE(review.empty());
+  EXPECT_EQ(member(review.front(), "take").string(""), "session1/corrupt.c3d");  // worst first
+  EXPECT_NE(member(review.front(), "reason").string("").find("failed: "), std::string::npos);
+  // Every gap of the reports is in the histogram.
+  double gaps = 0, histogram = 0;
+  for (const auto& [name, bytes] : filesBelow(dir.file("out")))
+    if (name.size() > 12 && name.substr(name.size() - 12) == ".report.json") {
+      const JsonValue report = parseJson(bytes, name);
+      if (const JsonValue* markers = report.find("markers", name))
+        for (const JsonValue& marker : markers->array(""))
+          gaps += static_cast<double>(member(marker, "gap_lengths").array("").size());
+    }
+  for (const JsonValue& bin : member(summary, "gap_length_histogram").array(""))
+    histogram += member(bin, "gaps").number("");
+  EXPECT_EQ(histogram, gaps);
+  EXPECT_GT(gaps, 0.0);
+}
+
+} // namespace
+} // namespace mocap
