@@ -41,7 +41,8 @@ std::string gapBinLabel(std::size_t bin)
   return low == 1 ? std::string("1") : std::to_string(low) + "–" + std::to_string(2 * low - 1);
 }
 
-/// What the plots show, gathered once. O(#takes · #markers).
+/// What the plots show, gathered once. A marker's missing share sums over the takes that have it
+/// (a take of another marker set does not make it "missing"). O(#takes · #markers).
 struct Figures
 {
   std::size_t cleaned = 0, failed = 0;
@@ -139,9 +140,9 @@ std::string heatColour(double fraction)
 void validFractionPlot(std::string& html, const ArchiveSummary& summary)
 {
   const std::size_t n = summary.reports.size();
-  const double left = 50, top = 10, width = 860, height = 220;
+  const double left = 50, top = 20, width = 860, height = 220;
   const double step = n > 0 ? width / static_cast<double>(n) : width;
-  html += "<svg class=\"plot\" id=\"valid-fraction\" xmlns=\"http://www.w3.org/2000/svg\" width=\"940\" height=\"270\">\n";
+  html += "<svg class=\"plot\" id=\"valid-fraction\" xmlns=\"http://www.w3.org/2000/svg\" width=\"940\" height=\"340\">\n";
   html += "<rect x=\"" + fixed(left, 0) + "\" y=\"" + fixed(top, 0) + "\" width=\"" + fixed(width, 0) + "\" height=\"" +
           fixed(height, 0) + "\" fill=\"#f7f7f7\" stroke=\"#999\"/>\n";
   for (int tick = 0; tick <= 4; ++tick) {
@@ -151,30 +152,34 @@ void validFractionPlot(std::string& html, const ArchiveSummary& summary)
             "\" text-anchor=\"end\" font-size=\"11\">" + std::to_string(tick * 25) + " %</text>\n";
   }
   const auto yOf = [&](double fraction) { return top + height * (1.0 - std::clamp(fraction, 0.0, 1.0)); };
+  const double barWidth = std::clamp(step * 0.4, 0.5, 18.0);
+  const auto bar = [&](double x, double fraction, const char* colour) {
+    return "<rect x=\"" + fixed(x, 2) + "\" y=\"" + fixed(yOf(fraction), 1) + "\" width=\"" + fixed(barWidth, 2) +
+           "\" height=\"" + fixed(top + height - yOf(fraction), 1) + "\" fill=\"" + colour + "\"/>";
+  };
   for (std::size_t t = 0; t < n; ++t) {
     const TakeReport& report = summary.reports[t];
     const double x = left + step * (static_cast<double>(t) + 0.5);
     const std::string name = escape(takeName(report));
+    if (n <= 40) {  // few enough takes to name each under its bars
+      const double y = top + height + 10;
+      html += "<text x=\"" + fixed(x - 4, 1) + "\" y=\"" + fixed(y, 1) + "\" font-size=\"10\" transform=\"rotate(30 " +
+              fixed(x - 4, 1) + " " + fixed(y, 1) + ")\">" + name + "</text>\n";
+    }
     if (report.failed()) {
-      html += "<rect class=\"failed\" data-take=\"" + name + "\" x=\"" + fixed(x - std::max(step * 0.4, 1.0), 1) +
-              "\" y=\"" + fixed(top, 0) + "\" width=\"" + fixed(std::max(step * 0.8, 2.0), 1) + "\" height=\"" +
-              fixed(height, 0) + "\" fill=\"#d62728\" fill-opacity=\"0.25\"><title>" + name +
-              ": failed</title></rect>\n";
+      const double w = std::max(2.0 * barWidth, 2.0);
+      html += "<rect class=\"failed\" data-take=\"" + name + "\" x=\"" + fixed(x - w / 2, 2) + "\" y=\"" +
+              fixed(top, 0) + "\" width=\"" + fixed(w, 2) + "\" height=\"" + fixed(height, 0) +
+              "\" fill=\"#d62728\" fill-opacity=\"0.35\"><title>" + name + ": failed</title></rect>\n";
       continue;
     }
-    const double r = std::clamp(step * 0.35, 1.5, 5.0);
     html += "<g class=\"take\" data-take=\"" + name + "\" data-before=\"" + fixed(report.validBefore, 4) +
             "\" data-after=\"" + fixed(report.validAfter, 4) + "\"><title>" + name + ": " +
-            percent(report.validBefore) + " → " + percent(report.validAfter) + "</title>";
-    html += "<line x1=\"" + fixed(x, 1) + "\" x2=\"" + fixed(x, 1) + "\" y1=\"" + fixed(yOf(report.validBefore), 1) +
-            "\" y2=\"" + fixed(yOf(report.validAfter), 1) + "\" stroke=\"#888\"/>";
-    html += "<circle cx=\"" + fixed(x, 1) + "\" cy=\"" + fixed(yOf(report.validBefore), 1) + "\" r=\"" + fixed(r, 1) +
-            "\" fill=\"#ff7f0e\"/>";
-    html += "<circle cx=\"" + fixed(x, 1) + "\" cy=\"" + fixed(yOf(report.validAfter), 1) + "\" r=\"" + fixed(r, 1) +
-            "\" fill=\"#1f77b4\"/></g>\n";
+            percent(report.validBefore) + " → " + percent(report.validAfter) + "</title>" +
+            bar(x - barWidth, report.validBefore, "#ff7f0e") + bar(x, report.validAfter, "#1f77b4") + "</g>\n";
   }
   html += "<text x=\"" + fixed(left, 0) +
-          "\" y=\"262\" font-size=\"12\"><tspan fill=\"#ff7f0e\">● before</tspan>  <tspan fill=\"#1f77b4\">● after "
+          "\" y=\"16\" font-size=\"12\" dy=\"-4\"><tspan fill=\"#ff7f0e\">▮ before</tspan>  <tspan fill=\"#1f77b4\">▮ after "
           "cleaning</tspan>  <tspan fill=\"#d62728\">▮ failed</tspan>  (takes in path order)</text>\n";
   html += "</svg>\n";
 }
@@ -215,7 +220,7 @@ void missingHeatMap(std::string& html, const ArchiveSummary& summary, const Figu
   const double width = left + cellW * static_cast<double>(figures.heatTakes.size()) + 20;
   const double height = top + cellH * static_cast<double>(figures.heatMarkers.size()) + 30;
   html += "<svg class=\"plot\" id=\"missing-heat-map\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
-          fixed(std::max(width, 300.0), 0) + "\" height=\"" + fixed(height, 0) + "\">\n";
+          fixed(std::max(width, 640.0), 0) + "\" height=\"" + fixed(height, 0) + "\">\n";
   for (std::size_t m = 0; m < figures.heatMarkers.size(); ++m) {
     const std::string& label = figures.heatMarkers[m];
     const double y = top + cellH * static_cast<double>(m);
@@ -223,19 +228,21 @@ void missingHeatMap(std::string& html, const ArchiveSummary& summary, const Figu
             "\" text-anchor=\"end\" font-size=\"11\">" + escape(label) + "</text>\n";
     for (std::size_t c = 0; c < figures.heatTakes.size(); ++c) {
       const TakeReport& report = summary.reports[figures.heatTakes[c]];
-      double fraction = 1.0;  // a marker the take does not have is missing throughout
-      for (const MarkerQuality& marker : report.markers)
-        if (marker.label == label)
-          fraction = 1.0 - marker.validBefore;
+      const auto marker = std::find_if(report.markers.begin(), report.markers.end(),
+                                       [&label](const MarkerQuality& q) { return q.label == label; });
+      const bool present = marker != report.markers.end();  // another marker set: grey, not "missing"
+      const double fraction = present ? 1.0 - marker->validBefore : 0.0;
       html += "<rect class=\"cell\" data-marker=\"" + escape(label) + "\" data-take=\"" + escape(takeName(report)) +
-              "\" data-missing=\"" + fixed(fraction, 4) + "\" x=\"" + fixed(left + cellW * static_cast<double>(c), 2) +
-              "\" y=\"" + fixed(y, 1) + "\" width=\"" + fixed(cellW, 2) + "\" height=\"" + fixed(cellH, 1) +
-              "\" fill=\"" + heatColour(fraction) + "\"><title>" + escape(label) + " in " +
-              escape(takeName(report)) + ": " + percent(fraction) + " missing</title></rect>\n";
+              "\" data-missing=\"" + (present ? fixed(fraction, 4) : std::string("absent")) + "\" x=\"" +
+              fixed(left + cellW * static_cast<double>(c), 2) + "\" y=\"" + fixed(y, 1) + "\" width=\"" +
+              fixed(cellW, 2) + "\" height=\"" + fixed(cellH, 1) + "\" fill=\"" +
+              (present ? heatColour(fraction) : std::string("#c8c8c8")) + "\"><title>" + escape(label) + " in " +
+              escape(takeName(report)) + ": " + (present ? percent(fraction) + " missing" : std::string("not in this take")) +
+              "</title></rect>\n";
     }
   }
   html += "<text x=\"" + fixed(left, 0) + "\" y=\"" + fixed(height - 8, 0) +
-          "\" font-size=\"12\">takes (columns, path order) · white: never missing, red: always missing</text>\n";
+          "\" font-size=\"12\">takes (columns, path order) · white: never missing, red: always missing, grey: not in the take</text>\n";
   html += "</svg>\n";
 }
 
