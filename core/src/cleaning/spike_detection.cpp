@@ -7,11 +7,16 @@
 
 #include <Eigen/Dense>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <utility>
 
 namespace mocap {
 
@@ -54,18 +59,131 @@ void order(double& a, double& b)
   a = low;
 }
 
+// The same medians for kLanes neighbouring windows at once (one window per lane of a vector
+// register): each lane goes through the very operations of the scalar code, so the results are
+// the scalar results bit for bit. std::min(a, b) is minsd with b first and std::max(a, b) maxsd
+// with b first, which is what the vector forms below do (the same answer for equal or signed zeros).
+#if defined(__SSE2__)
+constexpr Eigen::Index kLanes = 2;
+struct Lanes
+{
+  __m128d v;
+};
+Lanes loadLanes(const double* p)
+{
+  return {_mm_loadu_pd(p)};
+}
+double lane(const Lanes& a, std::size_t l)
+{
+  alignas(16) double values[kLanes];
+  _mm_store_pd(values, a.v);
+  return values[l];
+}
+Lanes operator+(const Lanes& a, const Lanes& b)
+{
+  return {_mm_add_pd(a.v, b.v)};
+}
+Lanes operator-(const Lanes& a, const Lanes& b)
+{
+  return {_mm_sub_pd(a.v, b.v)};
+}
+Lanes operator*(double a, const Lanes& b)
+{
+  return {_mm_mul_pd(_mm_set1_pd(a), b.v)};
+}
+Lanes operator*(const Lanes& a, double b)
+{
+  return {_mm_mul_pd(a.v, _mm_set1_pd(b))};
+}
+void order(Lanes& a, Lanes& b)
+{
+  const __m128d low = _mm_min_pd(b.v, a.v);
+  b.v = _mm_max_pd(b.v, a.v);
+  a.v = low;
+}
+#else
+constexpr Eigen::Index kLanes = 2;
+struct Lanes
+{
+  std::array<double, static_cast<std::size_t>(kLanes)> v;
+};
+Lanes loadLanes(const double* p)
+{
+  return {{p[0], p[1]}};
+}
+double lane(const Lanes& a, std::size_t l)
+{
+  return a.v[l];
+}
+template <typename Op>
+Lanes each(const Lanes& a, const Lanes& b, Op op)
+{
+  Lanes r;
+  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l)
+    r.v[l] = op(a.v[l], b.v[l]);
+  return r;
+}
+Lanes operator+(const Lanes& a, const Lanes& b)
+{
+  return each(a, b, [](double x, double y) { return x + y; });
+}
+Lanes operator-(const Lanes& a, const Lanes& b)
+{
+  return each(a, b, [](double x, double y) { return x - y; });
+}
+Lanes operator*(double a, const Lanes& b)
+{
+  return each({{a, a}}, b, [](double x, double y) { return x * y; });
+}
+Lanes operator*(const Lanes& a, double b)
+{
+  return each(a, {{b, b}}, [](double x, double y) { return x * y; });
+}
+void order(Lanes& a, Lanes& b)
+{
+  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l)
+    order(a.v[l], b.v[l]);
+}
+#endif
+
+// Calls f(std::integral_constant<std::size_t, k>{}) for k = 0..N−1, unrolled at compile time so
+// the lanes of the networks below stay in registers (-O2 does not unroll these loops).
+template <typename F, std::size_t... K>
+void unrolledSequence(F& f, std::index_sequence<K...> /*unused*/)
+{
+  (f(std::integral_constant<std::size_t, K>{}), ...);
+}
+
+template <std::size_t N, typename F>
+void unrolled(F&& f)
+{
+  unrolledSequence(f, std::make_index_sequence<N>{});
+}
+
+double middle(double a, double b)
+{
+  return 0.5 * (a + b);
+}
+
+Lanes middle(const Lanes& a, const Lanes& b)
+{
+  return 0.5 * (a + b);
+}
+
 // Medians of 6 and 7 values through optimal sorting networks (12 and 16 compare-exchanges).
-double median6(double* v)
+template <typename T>
+T median6(T* v)
 {
   order(v[0], v[5]), order(v[1], v[3]), order(v[2], v[4]);
   order(v[1], v[2]), order(v[3], v[4]);
   order(v[0], v[3]), order(v[2], v[5]);
   order(v[0], v[1]), order(v[2], v[3]), order(v[4], v[5]);
   order(v[1], v[2]), order(v[3], v[4]);
-  return 0.5 * (v[2] + v[3]);
+  return middle(v[2], v[3]);
 }
 
-double median7(double* v)
+template <typename T>
+T median7(T* v)
 {
   order(v[0], v[6]), order(v[2], v[3]), order(v[4], v[5]);
   order(v[0], v[2]), order(v[1], v[4]), order(v[3], v[6]);
@@ -78,7 +196,8 @@ double median7(double* v)
 
 // Median of 11 values: the comparators of Batcher's odd-even merge sort (16 inputs) that reach
 // the middle output, 32 compare-exchanges.
-double median11(double* v)
+template <typename T>
+T median11(T* v)
 {
   order(v[0], v[1]), order(v[2], v[3]), order(v[4], v[5]), order(v[6], v[7]), order(v[8], v[9]);
   order(v[0], v[2]), order(v[1], v[3]), order(v[4], v[6]), order(v[5], v[7]), order(v[8], v[10]);
@@ -173,27 +292,63 @@ struct RobustWork
   std::vector<char> suspect;
 };
 
+// Stage 1 (below) for sample i, its window shifted inward at the run ends.
+void medianLineResidualAt(const Trajectory& xyz, const Run& run, Eigen::Index i, Eigen::VectorXd& r)
+{
+  std::array<double, 2 * kLineHalfWidth + 1> values{};
+  const Run w = windowAround(run, i, kLineHalfWidth);
+  const auto count = static_cast<std::size_t>(w.size());
+  Eigen::RowVector3d level;
+  for (Eigen::Index c = 0; c < 3; ++c) {
+    for (Eigen::Index j = w.first; j < w.last; ++j)
+      values[static_cast<std::size_t>(j - w.first)] = xyz(j + 1, c) - xyz(j, c);
+    const double slope =
+        count == 7 ? median6(values.data()) : smallMedian(values.data(), values.data() + count - 1);
+    for (Eigen::Index j = w.first; j <= w.last; ++j)
+      values[static_cast<std::size_t>(j - w.first)] = xyz(j, c) - slope * static_cast<double>(j - i);
+    level(c) = count == 7 ? median7(values.data()) : smallMedian(values.data(), values.data() + count);
+  }
+  r(i - run.first) = (xyz.row(i) - level).norm();
+}
+
+// Interior samples i..i + kLanes − 1 (full 7-sample windows), one window per lane: the same
+// values through the same networks as medianLineResidualAt.
+void medianLineResidualsAt(const Trajectory& xyz, const Run& run, Eigen::Index i, Eigen::VectorXd& r)
+{
+  constexpr Eigen::Index width = 2 * kLineHalfWidth + 1;
+  std::array<Lanes, 3> level{};
+  for (Eigen::Index c = 0; c < 3; ++c) {
+    const double* x = xyz.col(c).data() + (i - kLineHalfWidth);  // x[l + k]: sample k of lane l's window
+    std::array<Lanes, width> values;
+    unrolled<width - 1>([&](auto k) { values[k] = loadLanes(x + k + 1) - loadLanes(x + k); });
+    const Lanes slope = median6(values.data());
+    unrolled<width>([&](auto k) {
+      values[k] = loadLanes(x + k) - slope * static_cast<double>(static_cast<Eigen::Index>(k()) - kLineHalfWidth);
+    });
+    level[static_cast<std::size_t>(c)] = median7(values.data());
+  }
+  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
+    const Eigen::Index f = i + static_cast<Eigen::Index>(l);
+    const Eigen::RowVector3d at(lane(level[0], l), lane(level[1], l), lane(level[2], l));
+    r(f - run.first) = (xyz.row(f) - at).norm();
+  }
+}
+
 // Stage 1: a local line fitted by medians per axis over 7 samples (slope: median of the first
 // differences; level at i: median of the samples detrended to i). Up to 3 bad samples in the
 // window cannot move it, so they stand out, but it rounds off sharp turns, which stage 2 undoes.
 void medianLineResiduals(const Trajectory& xyz, const Run& run, Eigen::VectorXd& r)
 {
-  std::array<double, 2 * kLineHalfWidth + 1> values{};
-  for (Eigen::Index i = run.first; i <= run.last; ++i) {
-    const Run w = windowAround(run, i, kLineHalfWidth);
-    const auto count = static_cast<std::size_t>(w.size());
-    Eigen::RowVector3d level;
-    for (Eigen::Index c = 0; c < 3; ++c) {
-      for (Eigen::Index j = w.first; j < w.last; ++j)
-        values[static_cast<std::size_t>(j - w.first)] = xyz(j + 1, c) - xyz(j, c);
-      const double slope =
-          count == 7 ? median6(values.data()) : smallMedian(values.data(), values.data() + count - 1);
-      for (Eigen::Index j = w.first; j <= w.last; ++j)
-        values[static_cast<std::size_t>(j - w.first)] = xyz(j, c) - slope * static_cast<double>(j - i);
-      level(c) = count == 7 ? median7(values.data()) : smallMedian(values.data(), values.data() + count);
-    }
-    r(i - run.first) = (xyz.row(i) - level).norm();
+  Eigen::Index i = run.first;
+  if (run.size() > 2 * kLineHalfWidth + 1) {
+    // Interior samples, whose windows are centred, kLanes at a time.
+    for (; i < run.first + kLineHalfWidth; ++i)
+      medianLineResidualAt(xyz, run, i, r);
+    for (; i + kLanes - 1 <= run.last - kLineHalfWidth; i += kLanes)
+      medianLineResidualsAt(xyz, run, i, r);
   }
+  for (; i <= run.last; ++i)
+    medianLineResidualAt(xyz, run, i, r);
 }
 
 // Tricube-weighted quadratic fits over a window of 9 samples that leave out the sample at `centre`
@@ -333,10 +488,49 @@ double predictionResidual(const Trajectory& xyz, const Run& run, Eigen::Index i,
   return (xyz.row(i) - value).norm() / std::sqrt(1.0 + variance);
 }
 
+// Stage 2 for interior samples i..i + kLanes − 1 whose centred windows hold no suspect: the
+// precomputed filter, one sample per lane, summed in the order predictionResidual sums.
+void filteredResiduals(const Trajectory& xyz, const Run& run, Eigen::Index i, RobustWork& work)
+{
+  const LeaveOneOutFit& fit = leaveOneOutFits()[static_cast<std::size_t>(kQuadraticHalfWidth)];
+  std::array<Lanes, 3> value{};
+  for (Eigen::Index c = 0; c < 3; ++c) {
+    const double* x = xyz.col(c).data() + (i - kQuadraticHalfWidth);
+    Lanes& sum = value[static_cast<std::size_t>(c)];
+    unrolled<kWindow>([&](auto k) { sum = sum + fit.filter[k] * loadLanes(x + k); });
+  }
+  const double deviation = std::sqrt(1.0 + fit.variance);
+  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
+    const Eigen::Index f = i + static_cast<Eigen::Index>(l);
+    const Eigen::RowVector3d prediction(lane(value[0], l), lane(value[1], l), lane(value[2], l));
+    work.fitResidual(f - run.first) = (xyz.row(f) - prediction).norm() / deviation;
+  }
+}
+
 // Stage 2 for every sample of the run, each with its window shifted inward at the run ends.
 void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
 {
-  for (Eigen::Index i = run.first; i <= run.last; ++i)
+  Eigen::Index i = run.first;
+  if (run.size() > kWindow) {
+    const auto suspect = [&](Eigen::Index f) { return work.suspect[static_cast<std::size_t>(f - run.first)] != 0; };
+    for (; i < run.first + kQuadraticHalfWidth; ++i)
+      work.fitResidual(i - run.first) =
+          predictionResidual(xyz, run, i, windowAround(run, i, kQuadraticHalfWidth), work);
+    while (i + kLanes - 1 <= run.last - kQuadraticHalfWidth) {
+      bool clean = true;
+      for (Eigen::Index f = i - kQuadraticHalfWidth; f <= i + kLanes - 1 + kQuadraticHalfWidth && clean; ++f)
+        clean = !suspect(f);
+      if (clean) {
+        filteredResiduals(xyz, run, i, work);
+        i += kLanes;
+      } else {
+        work.fitResidual(i - run.first) =
+            predictionResidual(xyz, run, i, windowAround(run, i, kQuadraticHalfWidth), work);
+        ++i;
+      }
+    }
+  }
+  for (; i <= run.last; ++i)
     work.fitResidual(i - run.first) =
         predictionResidual(xyz, run, i, windowAround(run, i, kQuadraticHalfWidth), work);
 }
@@ -385,7 +579,17 @@ void localSigma(const Eigen::VectorXd& r, double floor, Eigen::VectorXd& sigma)
     return;
   }
   sigma.resize(n);
-  for (Eigen::Index centre = kScaleHalfWidth; centre < n - kScaleHalfWidth; ++centre) {
+  Eigen::Index centre = kScaleHalfWidth;
+  for (; centre + kLanes - 1 < n - kScaleHalfWidth; centre += kLanes) {
+    // kLanes neighbouring windows at once, one per lane.
+    const double* x = r.data() + centre - kScaleHalfWidth;
+    std::array<Lanes, width> lanes;
+    unrolled<width>([&](auto k) { lanes[k] = loadLanes(x + k); });
+    const Lanes median = median11(lanes.data());
+    for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l)
+      sigma(centre + static_cast<Eigen::Index>(l)) = toSigma(lane(median, l));
+  }
+  for (; centre < n - kScaleHalfWidth; ++centre) {
     std::copy(r.data() + centre - kScaleHalfWidth, r.data() + centre + kScaleHalfWidth + 1, values.data());
     sigma(centre) = toSigma(median11(values.data()));
   }
