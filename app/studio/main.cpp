@@ -125,7 +125,9 @@ int main(int argc, char** argv)
   }
   if (parser.isSet(video)) {
     bool ok = true;
-    const double offset = parser.isSet(videoOffset) ? parser.value(videoOffset).toDouble(&ok) : 0.0;
+    std::optional<double> offset;  // unset: the offset the take remembers for the video, else 0
+    if (parser.isSet(videoOffset))
+      offset = parser.value(videoOffset).toDouble(&ok);
     if (!ok) {
       std::cerr << "mocap-studio: --video-offset needs a number of seconds\n";
       return 2;

@@ -283,7 +283,9 @@ void MainWindow::createDocks()
   videoDock->setWidget(m_referenceVideo);
   addDockWidget(Qt::RightDockWidgetArea, videoDock);
   tabifyDockWidget(cleaningDock, videoDock);
-  videoDock->hide();  // View ▸ Reference Video shows it
+  videoDock->hide();  // View ▸ Reference Video shows it, and opening a take that remembers videos
+  connect(m_referenceVideo, &ui::ReferenceVideoPanel::videosRestored, this,
+          [this] { (void)showDock(QStringLiteral("referenceVideoDock")); });
 
   m_weights = new ui::WeightCurveView(*m_document, m_blendshapeSolve->model(), this);
   m_weightsDock = new QDockWidget(tr("Weights"), this);
@@ -303,11 +305,11 @@ void MainWindow::createDocks()
   });
 }
 
-QString MainWindow::openReferenceVideo(const QString& path, double offset)
+QString MainWindow::openReferenceVideo(const QString& path, std::optional<double> offset)
 {
   const QString error = m_referenceVideo->openVideo(path);
-  if (error.isEmpty())
-    m_referenceVideo->video().setOffset(offset);
+  if (error.isEmpty() && offset)
+    m_referenceVideo->video().setOffset(*offset);
   (void)showDock(QStringLiteral("referenceVideoDock"));
   return error;
 }

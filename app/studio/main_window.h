@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -76,9 +77,9 @@ public:
   /// line's --rig, --solve). Returns the error, or "".
   QString loadRig(const QString& rigPath, const QString& shapeFolder = {}, const QString& bindingPath = {},
                   bool solve = false);
-  /// Opens `path` in the Reference Video dock (with `offset` seconds) and shows the dock.
-  /// Returns the error message, empty on success.
-  QString openReferenceVideo(const QString& path, double offset = 0.0);
+  /// Opens `path` in the Reference Video dock (with `offset` seconds, else the offset the take
+  /// remembers for it, else 0) and shows the dock. Returns the error message, empty on success.
+  QString openReferenceVideo(const QString& path, std::optional<double> offset = std::nullopt);
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether

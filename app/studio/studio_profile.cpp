@@ -8,6 +8,9 @@
 #include "panels/cleaning_panel.h"
 #include "panels/cleaning_step.h"
 #include "panels/face_mesh_panel.h"
+#include "panels/reference_video_panel.h"
+#include "document/reference_video.h"
+#include "mocap/base/random.h"
 #include "views/face_mesh_scene.h"
 
 #include <QApplication>
@@ -106,6 +109,36 @@ void profilePreviews(MainWindow& window, UiStallMeter& meter)
   std::cout << '}';
 }
 
+// With a reference video shown: the UI thread's longest stall while the timeline is scrubbed
+// as a drag does (a frame change every 16 ms: jumps across the take, steps back and forward),
+// and how often the exact video frame was already shown when the next change came.
+void profileVideoScrub(MainWindow& window, UiStallMeter& meter)
+{
+  ui::ReferenceVideoPanel* panel = window.referenceVideoPanel();
+  if (panel == nullptr || !panel->video().isOpen())
+    return;
+  auto& document = window.document();
+  const Eigen::Index frames = document.take().frameCount();
+  constexpr int kChanges = 240;
+  Random random(7);
+  int exact = 0;
+  meter.start();
+  for (int i = 0; i < kChanges; ++i) {
+    const Eigen::Index now = document.currentFrame();
+    const Eigen::Index next = i % 3 == 0 ? static_cast<Eigen::Index>(random.uniform() * static_cast<double>(frames - 1))
+                                         : std::clamp<Eigen::Index>(now + (i % 3 == 1 ? -5 : 1), 0, frames - 1);
+    document.setCurrentFrame(next);
+    QEventLoop wait;
+    QTimer::singleShot(16, &wait, &QEventLoop::quit);
+    wait.exec();
+    if (panel->video().wantedFrame() == panel->video().imageFrame())
+      ++exact;
+  }
+  std::cout << ", \"video_scrub_stall_ms\": " << meter.stop() << ", \"video_scrub_changes\": " << kChanges
+            << ", \"video_exact_within_16ms\": " << exact << ", \"video_size\": \"" << panel->video().info().width
+            << 'x' << panel->video().info().height << '"';
+}
+
 } // namespace
 
 int profileStudio(MainWindow& window, const OpenFigures& open, Eigen::Index maxFrames)
@@ -119,6 +152,7 @@ int profileStudio(MainWindow& window, const OpenFigures& open, Eigen::Index maxF
   std::cout << ", \"take_rate_hz\": " << document.take().frameRate();
 
   UiStallMeter meter;
+  profileVideoScrub(window, meter);
   const int start = document.undoStack()->index();
   meter.start();
   window.labellingActions()->trackAndLabel();

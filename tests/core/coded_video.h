@@ -15,6 +15,13 @@ constexpr int kCodedBits = 12;
 /// False when this FFmpeg cannot encode `fourcc`.
 bool writeCodedVideo(const std::filesystem::path& path, int fourcc, double rate, int frames, int width, int height);
 
+/// writeCodedVideo as an MJPEG QuickTime file (.mov) whose frames from `slowFrom` on last two
+/// frame intervals each (a variable frame rate: frame i ≥ slowFrom is at (2i − slowFrom) / rate):
+/// written at a constant rate with OpenCV, then its sample-time table ('stts') and durations are
+/// rewritten. False when this FFmpeg cannot write it or the file is not laid out as expected.
+bool writeVariableRateCodedVideo(const std::filesystem::path& path, double rate, int frames, int width, int height,
+                                 int slowFrom);
+
 /// The number a decoded frame's bars spell, read across its middle row; `whiteAt(x, y)` says
 /// whether the pixel there is light.
 [[nodiscard]] Eigen::Index codedFrameNumber(int width, int height, const std::function<bool(int, int)>& whiteAt);

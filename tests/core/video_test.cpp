@@ -5,6 +5,7 @@
 #include "test_support.h"
 
 #include "mocap/base/error.h"
+#include "mocap/model/take.h"
 #include "mocap/video/video_source.h"
 #include "mocap/video/video_sync.h"
 
@@ -80,6 +81,8 @@ TEST(VideoSource, DecodesEveryFrameExactlyInOrderBackwardsAndByJumps)
   EXPECT_EQ(video.info().width, kWidth);
   EXPECT_EQ(video.info().codec, "MJPG");
   EXPECT_NEAR(video.info().seconds(), 6.25, 1e-9);
+  EXPECT_FALSE(video.info().variableRate);
+  EXPECT_TRUE(video.info().frameTimes.empty());
   expectExactFrames(video, kOrder);
 }
 
@@ -128,6 +131,86 @@ TEST(VideoSource, BadFilesAndFramesGiveClearErrors)
   EXPECT_THROW((void)video.frame(5), InvalidArgument);
   EXPECT_THROW((void)video.frame(-1), InvalidArgument);
   EXPECT_EQ(decodeBars(video.frame(4)), 4);  // still usable after the refusals
+  // A video file with no frames in it: refused, the file named.
+  const auto empty = dir.file("empty.avi");
+  {
+    cv::VideoWriter writer(empty.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 24.0,
+                           cv::Size(kWidth, kHeight));
+    ASSERT_TRUE(writer.isOpened());
+  }
+  try {
+    VideoSource none(empty);
+    ADD_FAILURE() << "a video with no frames opened";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("empty.avi"), std::string::npos) << e.what();
+  }
+}
+
+TEST(VideoSync, MapsByTimestampsForAVariableFrameRate)
+{
+  const std::vector<double> times = {0.0, 0.04, 0.08, 0.16, 0.24, 0.5};
+  const VideoSync sync{100.0, 25.0, 0.0};
+  EXPECT_EQ(videoFrameAt(sync, 0, times), Eigen::Index{0});
+  EXPECT_EQ(videoFrameAt(sync, 11, times), Eigen::Index{2});   // 0.11 s: 0.08 s is nearer than 0.16 s
+  EXPECT_EQ(videoFrameAt(sync, 20, times), Eigen::Index{4});   // a tie (0.16 / 0.24) goes to the later frame
+  EXPECT_EQ(videoFrameAt(sync, 40, times), Eigen::Index{5});
+  EXPECT_EQ(videoFrameAt(sync, 62, times), Eigen::Index{5});   // within half the last interval (0.13 s)
+  EXPECT_FALSE(videoFrameAt(sync, 64, times).has_value());     // past it
+  EXPECT_FALSE(videoFrameAt({100.0, 25.0, -0.03}, 0, times).has_value());  // before the first frame's half
+  EXPECT_FALSE(videoFrameAt(sync, 0, std::vector<double>{}).has_value());
+  // Regular times agree with the constant-rate mapping.
+  std::vector<double> regular;
+  for (int i = 0; i < 200; ++i)
+    regular.push_back(i / 25.0);
+  for (Eigen::Index n = 0; n < 900; ++n)
+    EXPECT_EQ(videoFrameAt({100.0, 25.0, 0.371}, n, regular), videoFrameAt({100.0, 25.0, 0.371}, n, 200)) << n;
+  const double offset = offsetMatching(sync, 30, 4, times);
+  EXPECT_DOUBLE_EQ(offset, 0.24 - 0.30);
+  EXPECT_EQ(videoFrameAt({100.0, 25.0, offset}, 30, times), Eigen::Index{4});
+  EXPECT_THROW((void)offsetMatching(sync, 30, 6, times), InvalidArgument);
+}
+
+TEST(VideoSync, FindsTheTakesSyncEventAndItsFrame)
+{
+  std::vector<Event> events = {{"Foot Strike", "Left", "", "", 1.0}, {"Start", "General", "", "", 0.5}};
+  EXPECT_EQ(syncEventIndex(events), std::size_t{1});
+  events.push_back({"Camera", "General", "TTL sync pulse", "", 2.0});  // named in the description
+  EXPECT_EQ(syncEventIndex(events), std::size_t{2}) << "sync is preferred to start";
+  EXPECT_FALSE(syncEventIndex({{"Foot Off", "Right", "", "", 1.0}}).has_value());
+  EXPECT_FALSE(syncEventIndex({}).has_value());
+  // Event times count from the trial's frame 1.
+  EXPECT_EQ(takeFrameOfEvent(0.0, 100.0, 1), 0);
+  EXPECT_EQ(takeFrameOfEvent(2.5, 100.0, 1), 250);
+  EXPECT_EQ(takeFrameOfEvent(2.5, 100.0, 201), 50);  // a take trimmed to start at frame 201
+  EXPECT_EQ(takeFrameOfEvent(0.1249, 120.0, 1), 15);
+}
+
+TEST(VideoSource, AVariableFrameRateFileIsSaidSoAndMappedByItsTimestamps)
+{
+  test::TempDir dir;
+  const auto path = dir.file("phone.mov");
+  constexpr int kFrames = 120, kSlowFrom = 60;
+  if (!test::writeVariableRateCodedVideo(path, 25.0, kFrames, kWidth, kHeight, kSlowFrom))
+    GTEST_SKIP() << "this FFmpeg cannot write MJPEG QuickTime";
+  VideoSource video(path);
+  const VideoInfo& info = video.info();
+  EXPECT_TRUE(info.variableRate);
+  ASSERT_EQ(info.frames, kFrames);
+  ASSERT_EQ(info.frameTimes.size(), static_cast<std::size_t>(kFrames));
+  for (int i = 0; i < kFrames; ++i) {
+    const double expected = (i < kSlowFrom ? i : 2 * i - kSlowFrom) / 25.0;
+    EXPECT_NEAR(info.frameTimes[static_cast<std::size_t>(i)], expected, 1e-3) << i;
+  }
+  EXPECT_NEAR(info.seconds(), (2 * kFrames - kSlowFrom) / 25.0, 1e-3);
+  // Exact frames also when seeking, which goes by timestamp here.
+  expectExactFrames(video, {0, 1, 2, 100, 101, 59, 60, 61, 119, 118, 117, 30, 90, 5, 110, 61, 60, 59});
+  // Take time 3.2 s is frame 70 by its timestamp ((2·70 − 60) / 25), not frame 80 as the first
+  // frames' 25 fps says, nor what the average rate (FFmpeg's nominal one here) says.
+  const VideoSync sync{100.0, info.rate, 0.3};
+  EXPECT_EQ(videoFrameAt(sync, 290, info.frameTimes), Eigen::Index{70});
+  EXPECT_EQ(videoFrameAt({100.0, 25.0, 0.3}, 290, info.frames), Eigen::Index{80});
+  EXPECT_NE(videoFrameAt(sync, 290, info.frames), Eigen::Index{70});
+  EXPECT_EQ(decodeBars(video.frame(70)), 70);
 }
 
 } // namespace

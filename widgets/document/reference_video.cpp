@@ -5,6 +5,7 @@
 #include <QMetaObject>
 #include <QPointer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace mocap::ui {
@@ -42,6 +43,7 @@ QString ReferenceVideo::open(const QString& path)
   stopWorker();
   m_path = path;
   m_info = source->info();
+  m_held.reset();
   m_image = QImage();
   m_imageFrame = -1;
   m_error.clear();
@@ -61,11 +63,18 @@ QString ReferenceVideo::open(const QString& path)
 
 void ReferenceVideo::close()
 {
+  setUnavailable(QString(), QString());
+}
+
+void ReferenceVideo::setUnavailable(const QString& path, const QString& why)
+{
   stopWorker();
-  m_path.clear();
+  m_path = path;
   m_info = {};
+  m_held.reset();
   m_image = QImage();
   m_imageFrame = -1;
+  m_error = why;
   emit changed();
   emit frameShown();
 }
@@ -97,15 +106,70 @@ void ReferenceVideo::nudge(int frames)
     setOffset(m_offset + static_cast<double>(frames) / m_info.rate);
 }
 
-std::optional<Eigen::Index> ReferenceVideo::wantedFrame() const
+void ReferenceVideo::hold(std::optional<Eigen::Index> frame)
+{
+  if (frame && isOpen())
+    frame = std::clamp<Eigen::Index>(*frame, 0, m_info.frames - 1);
+  else
+    frame.reset();
+  if (frame == m_held)
+    return;
+  m_held = frame;
+  emit changed();
+  request();
+}
+
+void ReferenceVideo::syncTo(Eigen::Index takeFrame, Eigen::Index videoFrame)
+{
+  if (!isOpen() || m_document.take().frameRate() <= 0.0)
+    return;
+  const VideoSync sync{m_document.take().frameRate(), m_info.rate, m_offset};
+  const Eigen::Index frame = std::clamp<Eigen::Index>(videoFrame, 0, m_info.frames - 1);
+  m_held.reset();
+  const double offset = m_info.variableRate ? offsetMatching(sync, takeFrame, frame, m_info.frameTimes)
+                                            : offsetMatching(sync, takeFrame, frame);
+  if (offset == m_offset)
+    emit changed();  // the hold ended
+  setOffset(offset);
+  request();
+}
+
+double ReferenceVideo::timeOf(Eigen::Index frame) const
+{
+  if (m_info.variableRate && frame >= 0 && static_cast<std::size_t>(frame) < m_info.frameTimes.size())
+    return m_info.frameTimes[static_cast<std::size_t>(frame)];
+  return m_info.rate > 0.0 ? static_cast<double>(frame) / m_info.rate : 0.0;
+}
+
+void ReferenceVideo::setActive(bool active)
+{
+  if (active == m_active)
+    return;
+  m_active = active;
+  if (m_active)
+    request();
+}
+
+std::optional<Eigen::Index> ReferenceVideo::frameForTake(Eigen::Index takeFrame) const
 {
   if (!isOpen() || m_document.take().frameRate() <= 0.0)
     return std::nullopt;
-  return videoFrameAt({m_document.take().frameRate(), m_info.rate, m_offset}, m_document.currentFrame(), m_info.frames);
+  const VideoSync sync{m_document.take().frameRate(), m_info.rate, m_offset};
+  return m_info.variableRate ? videoFrameAt(sync, takeFrame, m_info.frameTimes)
+                             : videoFrameAt(sync, takeFrame, m_info.frames);
+}
+
+std::optional<Eigen::Index> ReferenceVideo::wantedFrame() const
+{
+  if (m_held && isOpen())
+    return m_held;
+  return frameForTake(m_document.currentFrame());
 }
 
 void ReferenceVideo::request()
 {
+  if (!m_active)
+    return;
   const std::optional<Eigen::Index> wanted = wantedFrame();
   if (!wanted) {
     if (isOpen())

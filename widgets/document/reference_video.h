@@ -24,7 +24,9 @@ class TakeDocument;
 /// delivered one until the worker has decoded the newest request (older requests it has not
 /// started are dropped, so scrubbing never queues work). When idle the worker decodes ahead of the
 /// last request into a small cache, so playback finds its next frames already decoded. Opening
-/// reads only the header.
+/// reads the header and checks the frame timestamps (a variable-frame-rate file maps by them).
+/// The video can be held at one of its frames while the user finds the same moment in the take
+/// (then syncTo lines the two up). A hidden video (setActive(false)) decodes nothing.
 class ReferenceVideo final : public QObject
 {
   Q_OBJECT
@@ -36,6 +38,8 @@ public:
   /// Opens `path` (replacing any video); returns "" or why it cannot be shown.
   QString open(const QString& path);
   void close();
+  /// Names a video that cannot be opened (a missing file): closed, with `path` and `why` kept to show.
+  void setUnavailable(const QString& path, const QString& why);
   [[nodiscard]] bool isOpen() const { return m_info.frames > 0; }
   [[nodiscard]] const QString& path() const { return m_path; }
   [[nodiscard]] const VideoInfo& info() const { return m_info; }
@@ -45,8 +49,25 @@ public:
   /// Moves the offset by `frames` video frames (a nudge while lining up the video).
   void nudge(int frames);
 
-  /// The video frame for the document's current frame, or nullopt outside the video.
+  /// Holds the video at `frame` (clamped to the video) whatever the take's frame, or follows the
+  /// take again (nullopt).
+  void hold(std::optional<Eigen::Index> frame);
+  [[nodiscard]] std::optional<Eigen::Index> heldFrame() const { return m_held; }
+  /// Sets the offset that shows video frame `videoFrame` at take frame `takeFrame` (by the
+  /// frame's timestamp in a variable-frame-rate video) and follows the take again.
+  void syncTo(Eigen::Index takeFrame, Eigen::Index videoFrame);
+  /// Video frame `frame`'s time (s): its timestamp, or frame / rate.
+  [[nodiscard]] double timeOf(Eigen::Index frame) const;
+
+  /// Only an active video decodes (the dock shows one video at a time); activating asks for the
+  /// current frame.
+  void setActive(bool active);
+  [[nodiscard]] bool isActive() const { return m_active; }
+
+  /// The held frame, else the video frame for the document's current frame; nullopt outside the video.
   [[nodiscard]] std::optional<Eigen::Index> wantedFrame() const;
+  /// The video frame for take frame `takeFrame` with the current offset, or nullopt outside the video.
+  [[nodiscard]] std::optional<Eigen::Index> frameForTake(Eigen::Index takeFrame) const;
   /// The last decoded image and its video frame (−1: none yet).
   [[nodiscard]] const QImage& image() const { return m_image; }
   [[nodiscard]] Eigen::Index imageFrame() const { return m_imageFrame; }
@@ -71,6 +92,8 @@ private:
   QString m_path;
   VideoInfo m_info;
   double m_offset = 0.0;
+  std::optional<Eigen::Index> m_held;
+  bool m_active = true;
   QImage m_image;
   Eigen::Index m_imageFrame = -1;
   QString m_error;

@@ -31,16 +31,16 @@ QRectF VideoView::imageRect() const
 
 QString VideoView::caption() const
 {
-  if (!m_video.isOpen())
-    return tr("No reference video");
   if (!m_video.error().isEmpty())
     return m_video.error();
+  if (!m_video.isOpen())
+    return tr("No reference video");
   const std::optional<Eigen::Index> wanted = m_video.wantedFrame();
   if (!wanted)
     return tr("No video at this frame");
-  return tr("video frame %1 · %2 s")
-      .arg(static_cast<qlonglong>(*wanted))
-      .arg(static_cast<double>(*wanted) / m_video.info().rate, 0, 'f', 3);
+  const QString text =
+      tr("video frame %1 · %2 s").arg(static_cast<qlonglong>(*wanted)).arg(m_video.timeOf(*wanted), 0, 'f', 3);
+  return m_video.heldFrame() ? tr("%1 · held").arg(text) : text;
 }
 
 void VideoView::paintEvent(QPaintEvent*)
@@ -55,7 +55,7 @@ void VideoView::paintEvent(QPaintEvent*)
   const QString text = caption();
   painter.setPen(QColor(230, 230, 230));
   if (!wanted) {
-    painter.drawText(rect(), Qt::AlignCenter, text);
+    painter.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap, text);
     return;
   }
   const QRectF box(6.0, 6.0, painter.fontMetrics().horizontalAdvance(text) + 10.0, 18.0);
