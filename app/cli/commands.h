@@ -56,4 +56,7 @@ Command addRig(CLI::App& mocap);
 /// or a PC2 cache.
 Command addSolve(CLI::App& mocap);
 
+/// `mocap review TAKE -o OUT.mp4`: a review video (playblast) of the 3D view (issue 16).
+Command addReview(CLI::App& mocap);
+
 } // namespace mocap::cli

@@ -4,6 +4,7 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "frame_range.h"
 #include "leave_out_cli.h"
 
 #include "mocap/evaluation/deformation_evaluation.h"
@@ -21,7 +22,6 @@
 #include "mocap/io/take_io.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -62,20 +62,6 @@ FaceRigOptions parseSettings(const DeformArguments& arguments)
   return settings;
 }
 
-std::pair<Eigen::Index, Eigen::Index> frameRange(const std::optional<std::string>& text, const Take& take)
-{
-  if (!text)
-    return {0, take.frameCount()};
-  const std::size_t colon = text->find(':');
-  long long first = 0, last = 0;
-  if (colon == std::string::npos || std::sscanf(text->c_str(), "%lld:%lld", &first, &last) != 2)
-    throw UsageError("--frames needs FIRST:LAST frame numbers, not '" + *text + "'");
-  const long long begin = first - take.firstFrame(), end = last - take.firstFrame() + 1;
-  if (begin < 0 || end > take.frameCount() || begin >= end)
-    throw UsageError("--frames " + *text + " is outside the take or empty");
-  return {static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(end)};
-}
-
 int runDeform(const DeformArguments& arguments)
 {
   const std::string& meshPath = arguments.meshPath;
@@ -97,7 +83,7 @@ int runDeform(const DeformArguments& arguments)
   const Retarget& retarget = rig.retarget();
   const double setupSeconds = rig.setupSeconds();
 
-  const auto [begin, end] = frameRange(arguments.frames, take);
+  const auto [begin, end] = parseFrameRange(arguments.frames, take);
   const MeshSequenceFormat format = lowerExtension(out) == "pc2" ? MeshSequenceFormat::ObjPlusPc2
                                      : arguments.ply            ? MeshSequenceFormat::PlySequence
                                                                  : MeshSequenceFormat::ObjSequence;

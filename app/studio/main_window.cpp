@@ -12,6 +12,7 @@
 #include "dialogs/job_dialog.h"
 #include "dialogs/preferences_dialog.h"
 #include "dialogs/read_warnings_dialog.h"
+#include "dialogs/review_export_dialog.h"
 #include "document/autosave.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
@@ -32,6 +33,7 @@
 #include "views/weight_curve_view.h"
 #include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
+#include "views/review_scene.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
@@ -51,6 +53,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressDialog>
 #include <QScreen>
 #include <QScrollArea>
 #include <QTimer>
@@ -365,6 +368,48 @@ void MainWindow::exportAnimation()
   dialog.exec();
 }
 
+ui::ReviewSource MainWindow::reviewSource() const
+{
+  return {m_document, m_view3d, &m_faceMesh->scene(), &m_blendshapeSolve->scene()};
+}
+
+void MainWindow::exportReviewVideo()
+{
+  if (!m_document->hasTake())
+    return;
+  const ui::ReferenceVideo& video = m_referenceVideo->video();
+  ui::ReviewExportDialog dialog(*m_document, video.isOpen() ? video.path() : QString(), video.offset(), this);
+  if (dialog.exec() != QDialog::Accepted)
+    return;
+  const ui::ReviewRequest request = dialog.request();
+  QProgressDialog progress(tr("Rendering the review video…"), tr("Cancel"), 0,
+                           static_cast<int>(request.last - request.first + 1), this);
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(300);
+  // Frames render on this thread (the view's GL context is here); events are served between them.
+  const ui::ReviewOutcome outcome = ui::exportReview(reviewSource(), request, [&progress](long long done, long long) {
+    progress.setValue(static_cast<int>(done));
+    QCoreApplication::processEvents();
+    return !progress.wasCanceled();
+  });
+  progress.reset();
+  if (outcome.cancelled) {
+    statusBar()->showMessage(tr("Review video cancelled; nothing was written."), 5000);
+    return;
+  }
+  if (!outcome.done) {
+    QMessageBox::warning(this, tr("Export Review Video"), tr("The review video was not written: %1").arg(outcome.error));
+    return;
+  }
+  const QString written = QString::fromStdString(outcome.encoding.path.string());
+  const QString codec = QString::fromStdString(outcome.encoding.codec);
+  if (outcome.encoding.path != request.output)
+    QMessageBox::information(this, tr("Export Review Video"),
+                             tr("This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1")
+                                 .arg(written));
+  statusBar()->showMessage(tr("Wrote %1 (%2 frames, %3)").arg(written).arg(outcome.frames).arg(codec), 8000);
+}
+
 void MainWindow::createActions()
 {
   QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -375,6 +420,8 @@ void MainWindow::createActions()
   file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
   file->addAction(tr("Export Ani&mation…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this,
                   &MainWindow::exportAnimation);
+  file->addAction(tr("Export Re&view Video…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_E), this,
+                  &MainWindow::exportReviewVideo);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 

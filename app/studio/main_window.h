@@ -34,6 +34,7 @@ class CurveView;
 class LayoutPlanningPanel;
 class MarkerTableModel;
 class MarkerView3d;
+struct ReviewSource;
 class TakeDocument;
 class TimelineWidget;
 } // namespace mocap::ui
@@ -80,6 +81,11 @@ public:
   /// Opens `path` in the Reference Video dock (with `offset` seconds, else the offset the take
   /// remembers for it, else 0) and shows the dock. Returns the error message, empty on success.
   QString openReferenceVideo(const QString& path, std::optional<double> offset = std::nullopt);
+  /// What a review video draws: the 3D view, the face mesh scene and the posed rig as shown now.
+  [[nodiscard]] ui::ReviewSource reviewSource() const;
+  /// File ▸ Export Review Video…: asks for the file, size and frames, then renders with progress
+  /// and Cancel (a cancelled or failed export leaves no file).
+  void exportReviewVideo();
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether

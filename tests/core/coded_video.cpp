@@ -2,9 +2,10 @@
 
 #include "mocap/base/file_io.h"
 
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -12,18 +13,31 @@
 
 namespace mocap::test {
 
+VideoImage codedImage(Eigen::Index frame, int width, int height)
+{
+  VideoImage image;
+  image.frame = frame;
+  image.width = width;
+  image.height = height;
+  image.rgb.assign(VideoImage::byteCount(width, height), 0);
+  const int bar = width / kCodedBits;
+  for (int b = 0; b < kCodedBits; ++b) {
+    if (((frame >> (kCodedBits - 1 - b)) & 1) == 0)
+      continue;
+    for (int y = 0; y < height; ++y)
+      std::fill_n(image.rgb.begin() + (static_cast<std::ptrdiff_t>(y) * width + b * bar) * 3, bar * 3, std::uint8_t{255});
+  }
+  return image;
+}
+
 bool writeCodedVideo(const std::filesystem::path& path, int fourcc, double rate, int frames, int width, int height)
 {
   cv::VideoWriter writer(path.string(), cv::CAP_FFMPEG, fourcc, rate, cv::Size(width, height));
   if (!writer.isOpened())
     return false;
-  const int bar = width / kCodedBits;
   for (int f = 0; f < frames; ++f) {
-    cv::Mat image(height, width, CV_8UC3, cv::Scalar(0, 0, 0));
-    for (int b = 0; b < kCodedBits; ++b)
-      if ((f >> (kCodedBits - 1 - b)) & 1)
-        cv::rectangle(image, cv::Rect(b * bar, 0, bar, height), cv::Scalar(255, 255, 255), cv::FILLED);
-    writer.write(image);
+    VideoImage image = codedImage(f, width, height);  // black and white: RGB and BGR alike
+    writer.write(cv::Mat(height, width, CV_8UC3, image.rgb.data()));
   }
   return true;
 }

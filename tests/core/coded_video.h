@@ -1,5 +1,7 @@
 #pragma once
 
+#include "mocap/video/video_source.h"
+
 #include <Eigen/Core>
 
 #include <filesystem>
@@ -10,6 +12,9 @@ namespace mocap::test {
 /// Bar codes of frame numbers: each frame of a test video shows its own index as 12 vertical
 /// bars (white = 1, most significant first), which survive MJPEG and H.264 compression.
 constexpr int kCodedBits = 12;
+
+/// One frame showing the number `frame` as bars, RGB (white bars on black).
+[[nodiscard]] VideoImage codedImage(Eigen::Index frame, int width, int height);
 
 /// Writes `frames` frames of `width` × `height` at `rate` with OpenCV, each showing its number.
 /// False when this FFmpeg cannot encode `fourcc`.

@@ -26,6 +26,7 @@ public:
                   QObject* parent = nullptr);
   ~BlendshapeScene() override;
 
+  [[nodiscard]] BlendshapeSolveModel& model() const { return m_model; }
   void setShown(bool shown);
   [[nodiscard]] bool shown() const { return m_shown; }
   /// Beside the markers instead of over them.

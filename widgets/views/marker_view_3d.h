@@ -53,6 +53,7 @@ public:
   [[nodiscard]] int trailFrames() const { return m_trailFrames; }
   /// Sphere radius as a fraction of the take's size.
   void setMarkerScale(double fraction);
+  [[nodiscard]] double markerScale() const { return m_markerScale; }
   /// Unit of the hover read-out (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
   /// Labelling mode: a click on a drawn marker emits labelPointClicked instead of selecting it.
@@ -109,6 +110,8 @@ public:
   void clearLayoutHighlight();
   /// The highlight shown, empty when none.
   [[nodiscard]] const std::vector<bool>& layoutHighlight() const { return m_layoutKept; }
+  /// The highlight's reference markers left out (empty when none).
+  [[nodiscard]] const std::vector<bool>& layoutReference() const { return m_layoutReference; }
 
 signals:
   void labelPointClicked(Eigen::Index marker);

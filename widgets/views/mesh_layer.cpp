@@ -120,6 +120,13 @@ void MeshLayer::setEdgesVisible(bool visible)
   m_actor->GetProperty()->SetEdgeVisibility(visible);
 }
 
+void MeshLayer::copyAppearance(const MeshLayer& other)
+{
+  m_actor->GetProperty()->DeepCopy(other.m_actor->GetProperty());
+  if (hasMesh())
+    setVisible(other.isVisible());
+}
+
 Eigen::Index MeshLayer::vertexAt(const QPoint& pixel) const
 {
   if (!isVisible() || m_picker->Pick(pixel.x(), pixel.y(), 0.0, m_renderer) == 0)

@@ -174,6 +174,34 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
   file.commit();
 }
 
+std::filesystem::path temporaryPathBeside(const std::filesystem::path& path)
+{
+  const std::filesystem::path directory = path.parent_path().empty() ? "." : path.parent_path();
+  std::random_device random;
+  return directory / ("." + path.filename().string() + ".tmp" + std::to_string(random()) + path.extension().string());
+}
+
+void publishFile(const std::filesystem::path& temporary, const std::filesystem::path& path)
+{
+  std::error_code ec;
+  const auto failed = [&](const std::string& what) {
+    std::filesystem::remove(temporary, ec);
+    throw IoError(path.string() + ": " + what);
+  };
+  const int fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+    failed("cannot reopen the written file (" + describeErrno() + ")");
+  const bool flushed = ::fsync(fd) == 0;
+  const std::string reason = flushed ? std::string() : describeErrno();
+  ::close(fd);
+  if (!flushed)
+    failed("cannot flush to disk (" + reason + ")");
+  std::filesystem::rename(temporary, path, ec);
+  if (ec)
+    failed("cannot replace (" + ec.message() + ")");
+  syncDirectory(path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path());
+}
+
 std::string lowerExtension(const std::filesystem::path& path)
 {
   std::string ext = path.extension().string();

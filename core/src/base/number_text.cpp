@@ -1,6 +1,9 @@
 #include "mocap/base/number_text.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 
 namespace mocap {
 
@@ -9,6 +12,19 @@ void appendNumber(std::string& out, double value)
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   out.append(buffer, result.ptr);
+}
+
+std::string timecodeText(double seconds, double frameRate)
+{
+  const long long fps = std::max(1LL, std::llround(frameRate));
+  const double frames = seconds * static_cast<double>(fps);
+  const auto whole = static_cast<long long>(std::floor(frames + 1e-9));
+  const auto thousandths = std::min(999LL, static_cast<long long>(std::llround((frames - static_cast<double>(whole)) * 1000.0)));
+  const long long totalSeconds = whole / fps;
+  char text[128];
+  std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld:%02lld.%03lld", totalSeconds / 3600, totalSeconds / 60 % 60,
+                totalSeconds % 60, whole % fps, std::max(0LL, thousandths));
+  return text;
 }
 
 } // namespace mocap

@@ -10,23 +10,6 @@
 
 namespace mocap {
 
-namespace {
-
-std::string timecode(double seconds, double frameRate)
-{
-  const long long fps = std::max(1LL, std::llround(frameRate));
-  const double frames = seconds * static_cast<double>(fps);
-  const auto whole = static_cast<long long>(std::floor(frames + 1e-9));
-  const auto thousandths = std::min(999LL, static_cast<long long>(std::llround((frames - static_cast<double>(whole)) * 1000.0)));
-  const long long totalSeconds = whole / fps;
-  char text[128];
-  std::snprintf(text, sizeof text, "%02lld:%02lld:%02lld:%02lld.%03lld", totalSeconds / 3600, totalSeconds / 60 % 60,
-                totalSeconds % 60, whole % fps, std::max(0LL, thousandths));
-  return text;
-}
-
-} // namespace
-
 std::string weightsCsvText(const std::vector<std::string>& names, const Eigen::Ref<const Eigen::MatrixXd>& weights,
                            long long firstFrame, double frameRate, WeightsCsvLayout layout)
 {
@@ -44,7 +27,7 @@ std::string weightsCsvText(const std::vector<std::string>& names, const Eigen::R
   for (Eigen::Index f = 0; f < weights.rows(); ++f) {
     const double seconds = static_cast<double>(f) / frameRate;
     if (layout == WeightsCsvLayout::LiveLink) {
-      out += timecode(seconds, frameRate);
+      out += timecodeText(seconds, frameRate);
       out += ',' + std::to_string(weights.cols());
     } else {
       out += std::to_string(firstFrame + f) + ',';

@@ -62,6 +62,16 @@ private:
   std::FILE* m_file = nullptr;
 };
 
+/// A fresh name for a temporary file beside `path` ending in `path`'s own extension (".x.mp4.tmp123.mp4"
+/// for "x.mp4"), for writers that pick a format by extension and write the file themselves (a video
+/// encoder); publishFile() then puts it in place.
+[[nodiscard]] std::filesystem::path temporaryPathBeside(const std::filesystem::path& path);
+
+/// Flushes the complete file `temporary` to the disk and renames it over `path` (then syncs the
+/// folder), as AtomicFileWriter::commit does for its own file. Throws IoError naming `path` (and
+/// removes `temporary`) when a step fails.
+void publishFile(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
 /// Lower-case extension without the dot ("c3d" for "take.C3D").
 [[nodiscard]] std::string lowerExtension(const std::filesystem::path& path);
 

@@ -1,0 +1,188 @@
+// Review videos under Xvfb: the studio's export and `mocap review` render the 3D view frame by
+// frame beside a reference video the test writes (each frame shows its number as a bar code, at
+// 25 fps against the sample's 100 Hz). Read back with OpenCV: the frame count, size and rate, the
+// exact video frame beside each take frame, and the view half matching a screenshot of the view.
+// A cancelled export leaves no file.
+#include "../core/coded_video.h"
+#include "../core/test_support.h"
+
+#include "image_difference.h"
+#include "main_window.h"
+#include "sample_window.h"
+
+#include "dialogs/review_export.h"
+#include "document/take_document.h"
+#include "mocap/video/review_frame.h"
+#include "mocap/video/video_source.h"
+#include "views/marker_view_3d.h"
+#include "views/review_scene.h"
+#include "views/vtk_viewport.h"
+
+#include <opencv2/videoio.hpp>
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mocap {
+namespace {
+
+constexpr double kVideoRate = 25.0;
+constexpr double kOffset = 0.52;
+const QSize kSize(640, 360);
+
+std::filesystem::path writeWitnessVideo(const test::TempDir& dir)
+{
+  const auto path = dir.file("witness.avi");
+  EXPECT_TRUE(test::writeCodedVideo(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), kVideoRate, 400, 240, 136));
+  return path;
+}
+
+/// The part `rect` of a decoded frame, as an image.
+QImage part(const VideoImage& frame, const PixelRect& rect)
+{
+  const QImage whole(frame.rgb.data(), frame.width, frame.height, frame.width * 3, QImage::Format_RGB888);
+  return whole.copy(rect.x, rect.y, rect.width, rect.height);
+}
+
+Eigen::Index decodeBars(const QImage& image)
+{
+  // The witness video is letterboxed into its half: read the bars across the middle row.
+  return test::codedFrameNumber(image.width(), image.height(), [&](int x, int y) { return qGreen(image.pixel(x, y)) > 128; });
+}
+
+Eigen::Index expectedVideoFrame(Eigen::Index takeFrame)
+{
+  return static_cast<Eigen::Index>(std::round((static_cast<double>(takeFrame) / 100.0 + kOffset) * kVideoRate));
+}
+
+/// Checks a review video of take frames first…last written beside the witness video.
+void expectReviewVideo(const std::filesystem::path& path, Eigen::Index first, Eigen::Index last)
+{
+  VideoSource video(path);
+  ASSERT_EQ(video.info().frames, last - first + 1);
+  EXPECT_EQ(video.info().width, kSize.width());
+  EXPECT_EQ(video.info().height, kSize.height());
+  EXPECT_NEAR(video.info().rate, 100.0, 1e-3);
+  const ReviewLayout layout = reviewLayout(kSize.width(), kSize.height(), true);
+  // The witness frame is letterboxed: 240 × 136 scaled to the half's width, centred.
+  const double scale = std::min(layout.video.width / 240.0, layout.video.height / 136.0);
+  const int shownHeight = static_cast<int>(std::lround(136 * scale));
+  const PixelRect shown{layout.video.x, (layout.video.height - shownHeight) / 2, layout.video.width, shownHeight};
+  for (Eigen::Index i = 0; i < video.info().frames; ++i) {
+    const VideoImage frame = video.frame(i);
+    EXPECT_EQ(decodeBars(part(frame, shown)), expectedVideoFrame(first + i)) << "review frame " << i;
+  }
+}
+
+TEST(ReviewExport, WritesTheViewBesideTheExactVideoFrameAndMatchesTheView)
+{
+  test::TempDir dir;
+  const auto witness = writeWitnessVideo(dir);
+  const auto window = test::openSampleWindow(1280, 800);
+  ASSERT_NE(window, nullptr);
+  ASSERT_EQ(window->selectLabels({QStringLiteral("section5-1")}), 1);
+  ui::ReviewRequest request;
+  request.output = dir.file("review.mp4");
+  request.size = kSize;
+  request.first = 990;
+  request.last = 1009;
+  request.video = QString::fromStdString(witness.string());
+  request.videoOffset = kOffset;
+  request.takeName = "Facial-Sing";
+  long long calls = 0;
+  const ui::ReviewOutcome outcome = ui::exportReview(window->reviewSource(), request, [&calls](long long done, long long total) {
+    ++calls;
+    EXPECT_EQ(total, 20);
+    EXPECT_EQ(done, calls);
+    return true;
+  });
+  ASSERT_TRUE(outcome.done) << outcome.error.toStdString();
+  EXPECT_EQ(outcome.frames, 20);
+  EXPECT_EQ(window->document().currentFrame(), 0) << "the studio's own frame stays";
+  std::cout << "review export: " << outcome.encoding.codec << " in " << outcome.encoding.container << ", "
+            << static_cast<double>(outcome.frames) / outcome.seconds << " frames/s at 640 x 360\n";
+  ASSERT_NO_FATAL_FAILURE(expectReviewVideo(outcome.encoding.path, request.first, request.last));
+
+  // The view half of frame 1000 is what the studio's 3D view shows at that size and frame.
+  const ReviewLayout layout = reviewLayout(kSize.width(), kSize.height(), true);
+  ui::ReviewScene scene(window->reviewSource(), QSize(layout.view.width, layout.view.height));
+  const QImage rendered = scene.render(1000);
+  ui::VtkViewport* viewport = window->markerView()->viewport();
+  viewport->setFixedSize(layout.view.width, layout.view.height);
+  window->document().setCurrentFrame(1000);
+  QTest::qWait(200);
+  const QImage screenshot = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
+  EXPECT_TRUE(test::matchesImage(rendered, screenshot, QStringLiteral("ReviewSceneMatchesView")));
+  VideoSource video(outcome.encoding.path);
+  const QImage decoded = part(video.frame(10), layout.view);
+  const test::ImageDifference difference = test::compareImages(decoded, screenshot);
+  EXPECT_FALSE(difference.sizesDiffer);
+  // Compression blurs the markers' edges: a few per cent of the pixels, never the picture.
+  EXPECT_LT(difference.fraction(), 0.02) << difference.differing << " of " << difference.total << " pixels differ";
+  const QImage otherFrame = scene.render(100);
+  EXPECT_GT(test::compareImages(otherFrame, screenshot).differing, difference.differing)
+      << "the comparison tells frames apart";
+}
+
+TEST(ReviewExport, CancelledLeavesNoFile)
+{
+  test::TempDir dir;
+  const auto window = test::openSampleWindow(1280, 800);
+  ASSERT_NE(window, nullptr);
+  ui::ReviewRequest request;
+  request.output = dir.file("cancelled.mp4");
+  request.size = kSize;
+  request.first = 0;
+  request.last = 99;
+  const ui::ReviewOutcome outcome =
+      ui::exportReview(window->reviewSource(), request, [](long long done, long long) { return done < 5; });
+  EXPECT_TRUE(outcome.cancelled);
+  EXPECT_FALSE(outcome.done);
+  EXPECT_EQ(test::entryCount(dir.path()), 0u);
+  request.last = 100000;  // past the take
+  const ui::ReviewOutcome outside = ui::exportReview(window->reviewSource(), request, {});
+  EXPECT_FALSE(outside.done);
+  EXPECT_FALSE(outside.error.isEmpty());
+  EXPECT_EQ(test::entryCount(dir.path()), 0u);
+}
+
+TEST(ReviewExport, MocapReviewWritesTheVideoItReports)
+{
+  test::TempDir dir;
+  const auto witness = writeWitnessVideo(dir);
+  const QString out = QString::fromStdString(dir.file("cli.mp4").string());
+  QProcess mocap;
+  mocap.start(QStringLiteral(MOCAP_BIN_DIR "/mocap"),
+              {QStringLiteral("review"), QString::fromStdString(test::sampleTake().string()), QStringLiteral("-o"), out,
+               QStringLiteral("--frames"), QStringLiteral("1100:1129"), QStringLiteral("--size"), QStringLiteral("640x360"),
+               QStringLiteral("--video"), QString::fromStdString(witness.string()), QStringLiteral("--offset"),
+               QString::number(kOffset), QStringLiteral("--select"), QStringLiteral("section5-1"), QStringLiteral("--json")});
+  ASSERT_TRUE(mocap.waitForFinished(120000));
+  ASSERT_EQ(mocap.exitCode(), 0) << mocap.readAllStandardError().toStdString();
+  const QJsonObject report = QJsonDocument::fromJson(mocap.readAllStandardOutput()).object();
+  EXPECT_EQ(report.value(QStringLiteral("frames")).toInt(), 30);
+  EXPECT_EQ(report.value(QStringLiteral("width")).toInt(), 640);
+  EXPECT_DOUBLE_EQ(report.value(QStringLiteral("frame_rate")).toDouble(), 100.0);
+  const std::filesystem::path written = report.value(QStringLiteral("output")).toString().toStdString();
+  ASSERT_TRUE(std::filesystem::exists(written));
+  // The take numbers its frames from 1: take frame 1100 is index 1099.
+  ASSERT_NO_FATAL_FAILURE(expectReviewVideo(written, 1099, 1128));
+
+  QProcess bad;
+  bad.start(QStringLiteral(MOCAP_BIN_DIR "/mocap"),
+            {QStringLiteral("review"), QString::fromStdString(test::sampleTake().string()), QStringLiteral("-o"),
+             QString::fromStdString(dir.file("bad.mp4").string()), QStringLiteral("--size"), QStringLiteral("641x360")});
+  ASSERT_TRUE(bad.waitForFinished(60000));
+  EXPECT_EQ(bad.exitCode(), 2);
+  EXPECT_TRUE(bad.readAllStandardError().contains("even"));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("bad.mp4")));
+}
+
+} // namespace
+} // namespace mocap
