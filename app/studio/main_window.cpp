@@ -78,6 +78,8 @@
 #include "mocap/model/marker_set.h"
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/io/take_io.h"
+#include "mocap/base/file_io.h"
+#include "mocap/batch/clean_preset.h"
 
 namespace mocap::studio {
 
@@ -422,6 +424,7 @@ void MainWindow::createActions()
                   &MainWindow::exportAnimation);
   file->addAction(tr("Export Re&view Video…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_E), this,
                   &MainWindow::exportReviewVideo);
+  file->addAction(tr("Save &Cleaning Preset…"), this, &MainWindow::saveCleaningPresetDialog);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -801,6 +804,30 @@ bool MainWindow::saveAs()
   m_confirmedOverwrite = true;  // the user chose this file
   addRecent(path);
   return true;
+}
+
+QString MainWindow::saveCleaningPreset(const QString& path)
+{
+  try {
+    writeFileAtomically(path.toStdString(), cleanPresetJson(m_cleaning->cleanOptions()));
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+void MainWindow::saveCleaningPresetDialog()
+{
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save Cleaning Preset"),
+                                                    QFileInfo(m_document->filePath()).absolutePath(),
+                                                    tr("Cleaning presets (*.json)"));
+  if (path.isEmpty())
+    return;
+  const QString error = saveCleaningPreset(path);
+  if (!error.isEmpty())
+    QMessageBox::warning(this, tr("Save Cleaning Preset"), tr("The preset was not saved: %1").arg(error));
+  else
+    statusBar()->showMessage(tr("Saved the cleaning preset %1").arg(path), 5000);
 }
 
 void MainWindow::exportDialog()

@@ -99,6 +99,9 @@ public:
   bool changeReferenceMarkers(std::vector<Eigen::Index> markers);
   /// The Label menu's Track and Label and swap search (on workers, undoable).
   [[nodiscard]] ui::LabellingActions* labellingActions() const { return m_labelling; }
+  /// Writes the Cleaning dock's settings as a cleaning preset (the JSON `mocap batch --preset`
+  /// and `mocap clean --preset` read), atomically. Returns the error message, empty on success.
+  QString saveCleaningPreset(const QString& path);
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -117,6 +120,8 @@ private:
   /// File ▸ Export Animation: BVH of the markers, and the face mesh deformed by the take when
   /// one is loaded.
   void exportAnimation();
+  /// File ▸ Save Cleaning Preset…: asks for the file, then saveCleaningPreset.
+  void saveCleaningPresetDialog();
   void createMarkerMenu();
   void createLabelMenu();
   void editPreferences();

@@ -143,6 +143,17 @@ std::vector<CleaningStep*> CleaningPanel::steps() const
   return steps;
 }
 
+CleanOptions CleaningPanel::cleanOptions() const
+{
+  CleanOptions options;
+  options.spikes.reset();  // each step the panel has turns its part on
+  options.fill.reset();
+  options.smooth.reset();
+  for (const CleaningStep* step : steps())
+    step->addToPreset(options);
+  return options;
+}
+
 bool CleaningPanel::busy() const
 {
   return m_watcher.isRunning();

@@ -54,6 +54,9 @@ public:
   [[nodiscard]] bool previewReady() const { return !busy() && m_resultGeneration == m_generation; }
   /// The added steps, in tab order.
   [[nodiscard]] std::vector<CleaningStep*> steps() const;
+  /// The steps' current parameters as `mocap clean` options (a step the panel lacks is off):
+  /// what File ▸ Save Cleaning Preset… writes.
+  [[nodiscard]] CleanOptions cleanOptions() const;
   /// Blocks until the running computation (if any) has delivered its preview. For tests.
   void waitForPreview();
   [[nodiscard]] const StepResult& lastResult() const { return m_result; }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/base/job_control.h"
+#include "mocap/cleaning/clean_pipeline.h"
 #include "mocap/model/sample_patch.h"
 
 #include <QString>
@@ -81,6 +82,9 @@ public:
   virtual void showResult(const StepResult& result) { (void)result; }
   /// Told the patches Apply pushed (before the push changes the take). Called on the UI thread.
   virtual void applied(const std::vector<SamplePatch>& patches) { (void)patches; }
+  /// Puts this step's current parameters into `options` (File ▸ Save Cleaning Preset…, the
+  /// preset `mocap batch --preset` reads). A step that is no pipeline step leaves it alone.
+  virtual void addToPreset(CleanOptions& options) const { (void)options; }
   /// Set by the panel before job() and patchesToApply().
   void setScope(StepScope scope) { m_scope = std::move(scope); }
   [[nodiscard]] const StepScope& scope() const { return m_scope; }

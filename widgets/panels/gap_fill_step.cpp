@@ -189,7 +189,7 @@ void GapFillStep::showMaxGap()
   m_maxGapFrames->setValue(static_cast<int>(std::min<Eigen::Index>(frames, m_maxGapFrames->maximum())));
 }
 
-StepJob GapFillStep::job() const
+FillOptions GapFillStep::currentOptions() const
 {
   FillOptions options;
   options.method = static_cast<FillMethod>(m_method->currentData().toInt());
@@ -198,6 +198,17 @@ StepJob GapFillStep::job() const
   options.maxGapSeconds = m_maxGapSeconds;
   options.extrapolate = m_extrapolate->isChecked();
   options.minValidFraction = m_minValid->value() / 100.0;
+  return options;
+}
+
+void GapFillStep::addToPreset(CleanOptions& preset) const
+{
+  preset.fill = currentOptions();
+}
+
+StepJob GapFillStep::job() const
+{
+  FillOptions options = currentOptions();
   const StepScope scope = this->scope();
   if (scope.markersOnly)
     options.fillAnyway = scope.markers;  // a technician who selects a marker means it

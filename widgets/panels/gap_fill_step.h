@@ -26,12 +26,15 @@ public:
   [[nodiscard]] QString title() const override;
   [[nodiscard]] StepJob job() const override;
   void showResult(const StepResult& result) override;
+  void addToPreset(CleanOptions& options) const override;
 
   /// The longest gap to fill in seconds; 0 = unlimited. Shown in frames too.
   [[nodiscard]] double maxGapSeconds() const { return m_maxGapSeconds; }
   void setMaxGapSeconds(double seconds);
 
 private:
+  /// The parameters, without the selection (a preset is for any take).
+  [[nodiscard]] FillOptions currentOptions() const;
   [[nodiscard]] double frameRate() const;
   void showMaxGap();
 

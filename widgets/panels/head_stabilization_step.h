@@ -25,6 +25,8 @@ public:
   [[nodiscard]] QString title() const override;
   [[nodiscard]] StepJob job() const override;
   [[nodiscard]] bool wholeTake() const override { return true; }
+  /// The document's reference markers by label (the preset runs on other takes).
+  void addToPreset(CleanOptions& options) const override;
 
 signals:
   /// The user asked to edit the reference markers (the main window opens the one editor).

@@ -120,7 +120,7 @@ QString SmoothingStep::title() const
   return tr("Smoothing");
 }
 
-StepJob SmoothingStep::job() const
+SmoothOptions SmoothingStep::currentOptions() const
 {
   SmoothOptions options;
   options.method = static_cast<SmoothMethod>(m_method->currentData().toInt());
@@ -128,7 +128,17 @@ StepJob SmoothingStep::job() const
   options.knotSpacing = m_knotSpacing->value();
   options.cutoffHz = m_cutoff->value();
   options.savgolWindow = m_window->value() | 1;  // odd
-  return [options, unit = m_displayUnit](const Take& take, const JobControl& control) {
+  return options;
+}
+
+void SmoothingStep::addToPreset(CleanOptions& preset) const
+{
+  preset.smooth = currentOptions();
+}
+
+StepJob SmoothingStep::job() const
+{
+  return [options = currentOptions(), unit = m_displayUnit](const Take& take, const JobControl& control) {
     StepResult result;
     result.patches = smoothTake(take, options, control);
     result.summary = QCoreApplication::translate("SmoothingStep", "%1 smoothing")

@@ -25,8 +25,10 @@ public:
   [[nodiscard]] StepJob job() const override;
   /// Unit of the change the summary reports (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
+  void addToPreset(CleanOptions& options) const override;
 
 private:
+  [[nodiscard]] SmoothOptions currentOptions() const;
   void updateEnabled();
 
   QComboBox* m_method = nullptr;

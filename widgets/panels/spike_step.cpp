@@ -103,14 +103,24 @@ QString SpikeStep::title() const
   return tr("Bad points");
 }
 
-StepJob SpikeStep::job() const
+SpikeOptions SpikeStep::currentOptions() const
 {
   SpikeOptions options;
   options.method = static_cast<SpikeMethod>(m_method->currentData().toInt());
   options.factor = m_factor->value();
   options.threshold = m_threshold->value();
   options.maxPasses = m_settle->isChecked() ? 100 : 1;
-  return [options, repairs = m_repairs](const Take& take, const JobControl& control) {
+  return options;
+}
+
+void SpikeStep::addToPreset(CleanOptions& preset) const
+{
+  preset.spikes = currentOptions();
+}
+
+StepJob SpikeStep::job() const
+{
+  return [options = currentOptions(), repairs = m_repairs](const Take& take, const JobControl& control) {
     StepResult result;
     result.detection = true;
     const std::vector<SpikeFlag> flags = detectSpikes(take, options, control);

@@ -27,8 +27,11 @@ public:
   void showResult(const StepResult& result) override;
   /// Remembers the repaired samples, so the next detection says which flags sit beside them.
   void applied(const std::vector<SamplePatch>& patches) override;
+  void addToPreset(CleanOptions& options) const override;
 
 private:
+  [[nodiscard]] SpikeOptions currentOptions() const;
+
   std::vector<SamplePatch> m_repairs;  // the last Apply's, while the take still holds them
   TakeDocument& m_document;
   QComboBox* m_method = nullptr;
