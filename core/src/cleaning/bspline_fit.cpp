@@ -229,8 +229,8 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
     const Eigen::Index firstUniform = P - 1, lastUniform = s - P;
     // Products of one span's basis values (fixed-size, so they stay in registers), added to the
     // band once per span.
-    Eigen::Matrix<double, P + 1, P + 1> products = Eigen::Matrix<double, P + 1, P + 1>::Zero();
-    Eigen::Index current = 0;
+    Eigen::Matrix<double, P + 1, P + 1> products;
+    Eigen::Index current = -1;
     const auto flush = [&] {
       // Normal equations of the inner controls 1..m−2 (the end controls are pinned), and how each
       // inner control couples to the pinned ones (moved to the right-hand side when fitting).
@@ -246,12 +246,14 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
         if (current + P == m - 1)
           m_endCoupling(a - 1) += products(r, P);
       }
-      products.setZero();
     };
     Values values;
+    // A multiplication, not a division per sample; a sample on a knot may then fall in the span
+    // before it, where the basis has the same values (the spline is continuous there).
+    const double perFrame = 1.0 / h;
     for (Eigen::Index i = 0; i < n; ++i) {
       const double t = static_cast<double>(i);
-      const double spanPosition = t / h;
+      const double spanPosition = t * perFrame;
       // t / h ≥ 0, so truncation is the floor.
       const auto spanIndex = std::min(s - 1, static_cast<Eigen::Index>(spanPosition));
       if (spanIndex >= firstUniform && spanIndex <= lastUniform)
@@ -261,10 +263,13 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
       m_basis.row(i) = values.transpose();
       m_firstControl[static_cast<std::size_t>(i)] = spanIndex;
       if (spanIndex != current) {
-        flush();
+        if (current >= 0)
+          flush();
         current = spanIndex;
+        products.noalias() = values * values.transpose();  // (assigned: no zeroing per span)
+      } else {
+        products.noalias() += values * values.transpose();
       }
-      products.noalias() += values * values.transpose();
     }
     flush();
   });
