@@ -343,6 +343,16 @@ TEST(BatchCli, APresetIsReadStrictlyAndReplacesTheCleaningOptions)
   EXPECT_NE(bad.err.find("bad.json: preset fill: unknown key 'max_gap_s'"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(dir.file("out")));
 
+  // A preset a take cannot satisfy (head markers it lacks) fails that take, with the reason.
+  writeFileAtomically(dir.file("head.json"), R"({"stabilize": {"markers": ["head1", "head2", "head3"]}})");
+  const auto head = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")) +
+                              " --preset " + shellQuote(dir.file("head.json")),
+                          dir);
+  EXPECT_EQ(head.exitCode, 1);
+  EXPECT_NE(head.err.find("Eb015pi.c3d: the take has no marker labelled 'head1'"), std::string::npos) << head.err;
+  EXPECT_FALSE(fs::exists(dir.file("out/session1/Eb015pi.c3d")));
+  EXPECT_EQ(statuses(dir.file("out")).at("session1/Eb015pi.c3d"), "failed");
+
   // The same options as a preset and as flags clean a take to the same bytes.
   writeFileAtomically(dir.file("p.json"), R"({"spikes": {"method": "off"}, "smooth": {"method": "bspline"}})");
   const std::string take = shellQuote(archive.root / "session1/Eb015pi.c3d");
