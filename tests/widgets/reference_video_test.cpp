@@ -352,6 +352,12 @@ TEST(ReferenceVideo, AVariableFrameRateVideoIsSaidSoAndShownByItsTimestamps)
   ui::ReferenceVideoPanel* panel = window->referenceVideoPanel();
   ASSERT_EQ(panel->openVideo(qPath(path)), QString());
   ui::ReferenceVideo& video = panel->video();
+  // The worker checks the timestamps after opening; the dock then says so.
+  QElapsedTimer clock;
+  clock.start();
+  while (!video.timesChecked() && clock.elapsed() < 5000)
+    QTest::qWait(5);
+  ASSERT_TRUE(video.timesChecked());
   EXPECT_TRUE(video.info().variableRate);
   // Take frame 320 is 3.2 s: frame 70 by its timestamp ((2·70 − 60) / 25), not 80.
   window->document().setCurrentFrame(320);

@@ -8,16 +8,33 @@
 #include <algorithm>
 #include <cmath>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace mocap::ui {
 
 namespace {
 constexpr int kLookAhead = 12;         // frames decoded ahead of the newest request
 constexpr std::size_t kCacheSize = 48; // decoded frames kept (the farthest from the request go first)
 
+/// Decoding yields to the UI thread: on Linux a thread has its own nice value, and the threads it
+/// starts inherit it. Elsewhere a no-op.
+void lowerThisThreadsPriority()
+{
+#ifdef __linux__
+  (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
+}
+
 QImage toImage(const VideoImage& decoded)
 {
+  // Converted here, on the worker, to the format QPainter scales fastest (and owning its pixels:
+  // `decoded` goes away); an RGB888 image would be converted on the UI thread at every paint.
   return QImage(decoded.rgb.data(), decoded.width, decoded.height, decoded.width * 3, QImage::Format_RGB888)
-      .copy();  // own the pixels: `decoded` goes away
+      .convertToFormat(QImage::Format_RGB32);
 }
 } // namespace
 
@@ -36,13 +53,16 @@ QString ReferenceVideo::open(const QString& path)
 {
   std::unique_ptr<VideoSource> source;
   try {
-    source = std::make_unique<VideoSource>(path.toStdString());
+    // The header and one frame here; the worker checks the timestamps (it may decode a group of pictures).
+    source = std::make_unique<VideoSource>(path.toStdString(), VideoSource::FrameTimes::Later);
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
   stopWorker();
   m_path = path;
   m_info = source->info();
+  m_timesChecked = false;
+  ++m_generation;
   m_held.reset();
   m_image = QImage();
   m_imageFrame = -1;
@@ -71,6 +91,8 @@ void ReferenceVideo::setUnavailable(const QString& path, const QString& why)
   stopWorker();
   m_path = path;
   m_info = {};
+  m_timesChecked = false;
+  ++m_generation;
   m_held.reset();
   m_image = QImage();
   m_imageFrame = -1;
@@ -210,9 +232,57 @@ void ReferenceVideo::deliver(QImage image, Eigen::Index frame, QString error)
   emit frameShown();
 }
 
+void ReferenceVideo::deliverFrom(unsigned generation, QImage image, Eigen::Index frame, QString error)
+{
+  if (generation == m_generation)  // else it is of a video closed since
+    deliver(std::move(image), frame, std::move(error));
+}
+
+void ReferenceVideo::checked(unsigned generation, VideoInfo info, QString error)
+{
+  if (generation != m_generation)
+    return;
+  m_timesChecked = true;
+  if (!error.isEmpty()) {  // nothing decodes after all
+    setUnavailable(m_path, error);
+    return;
+  }
+  const bool same = info.frames == m_info.frames && info.variableRate == m_info.variableRate;
+  m_info = std::move(info);
+  if (m_held)
+    m_held = std::min(*m_held, m_info.frames - 1);
+  emit changed();
+  if (!same) {
+    m_imageFrame = -1;  // the mapping changed: ask again
+    request();
+  }
+}
+
 void ReferenceVideo::decodeLoop(std::unique_ptr<VideoSource> source)
 {
   const QPointer<ReferenceVideo> self(this);
+  const unsigned generation = m_generation;  // set before the thread started
+  lowerThisThreadsPriority();
+  QString timesError;
+  try {
+    // Reopened here: FFmpeg's decoding threads start with the decoder, and so share this thread's
+    // lower priority (the UI thread goes first when the cores are busy).
+    const std::filesystem::path path = source->path();
+    source.reset();
+    source = std::make_unique<VideoSource>(path, VideoSource::FrameTimes::Later);
+    source->checkFrameTimes();
+  } catch (const std::exception& e) {
+    timesError = QString::fromStdString(e.what());
+  }
+  QMetaObject::invokeMethod(
+      this,
+      [self, generation, info = source ? source->info() : VideoInfo{}, timesError]() mutable {
+        if (self)
+          self->checked(generation, std::move(info), std::move(timesError));
+      },
+      Qt::QueuedConnection);
+  if (!timesError.isEmpty())
+    return;
   const Eigen::Index frames = source->info().frames;
   while (true) {
     Eigen::Index frame = -1;
@@ -255,9 +325,9 @@ void ReferenceVideo::decodeLoop(std::unique_ptr<VideoSource> source)
       continue;
     QMetaObject::invokeMethod(
         this,
-        [self, image = std::move(image), frame, error = std::move(error)]() mutable {
+        [self, generation, image = std::move(image), frame, error = std::move(error)]() mutable {
           if (self)
-            self->deliver(std::move(image), frame, std::move(error));
+            self->deliverFrom(generation, std::move(image), frame, std::move(error));
         },
         Qt::QueuedConnection);
   }

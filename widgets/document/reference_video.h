@@ -24,7 +24,8 @@ class TakeDocument;
 /// delivered one until the worker has decoded the newest request (older requests it has not
 /// started are dropped, so scrubbing never queues work). When idle the worker decodes ahead of the
 /// last request into a small cache, so playback finds its next frames already decoded. Opening
-/// reads the header and checks the frame timestamps (a variable-frame-rate file maps by them).
+/// reads the header and one frame; the worker then checks the frame timestamps first (info()
+/// changes when the file's frame rate varies: it then maps by them, see timesChecked()).
 /// The video can be held at one of its frames while the user finds the same moment in the take
 /// (then syncTo lines the two up). A hidden video (setActive(false)) decodes nothing.
 class ReferenceVideo final : public QObject
@@ -43,6 +44,8 @@ public:
   [[nodiscard]] bool isOpen() const { return m_info.frames > 0; }
   [[nodiscard]] const QString& path() const { return m_path; }
   [[nodiscard]] const VideoInfo& info() const { return m_info; }
+  /// Whether the worker has checked the frame timestamps of the open video (info() is final).
+  [[nodiscard]] bool timesChecked() const { return m_timesChecked; }
 
   void setOffset(double seconds);
   [[nodiscard]] double offset() const { return m_offset; }
@@ -85,12 +88,17 @@ signals:
 private:
   void request();
   void deliver(QImage image, Eigen::Index frame, QString error);
+  // Results of the worker of opening `generation` (dropped when the video changed since).
+  void deliverFrom(unsigned generation, QImage image, Eigen::Index frame, QString error);
+  void checked(unsigned generation, VideoInfo info, QString error);
   void decodeLoop(std::unique_ptr<VideoSource> source);
   void stopWorker();
 
   TakeDocument& m_document;
   QString m_path;
   VideoInfo m_info;
+  bool m_timesChecked = false;
+  unsigned m_generation = 0;  // which opening the worker's results belong to
   double m_offset = 0.0;
   std::optional<Eigen::Index> m_held;
   bool m_active = true;

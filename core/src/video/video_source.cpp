@@ -29,6 +29,7 @@ struct VideoSource::Decoder
   double firstTime = 0.0;  // the first frame's timestamp (s): frame times count from it
   std::vector<Eigen::Index> keyFrames;  // ascending; empty: unknown
   bool keyFramesRead = false;
+  bool timesChecked = false;
   cv::Mat bgr;
 };
 
@@ -39,7 +40,11 @@ namespace {
 constexpr Eigen::Index kSkipAhead = 48;
 
 /// Frames whose timestamps opening checks against frame / rate (besides the last).
-constexpr Eigen::Index kProbeFrames = 30;
+constexpr Eigen::Index kProbeFrames = 24;
+/// The frames at the end whose timestamps and count opening checks.
+constexpr Eigen::Index kTailFrames = 16;
+/// The most frames at the end a decoder may hand out without a timestamp (drained B-frame delay).
+constexpr std::size_t kDrainedFrames = 4;
 
 /// The timestamp (s) of the frame grab() read last.
 double grabbedTime(const cv::VideoCapture& capture)
@@ -115,7 +120,8 @@ std::string fourcc(double code)
 
 } // namespace
 
-VideoSource::VideoSource(const std::filesystem::path& path) : m_decoder(std::make_unique<Decoder>()), m_path(path)
+VideoSource::VideoSource(const std::filesystem::path& path, FrameTimes times)
+    : m_decoder(std::make_unique<Decoder>()), m_path(path)
 {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
@@ -132,7 +138,11 @@ VideoSource::VideoSource(const std::filesystem::path& path) : m_decoder(std::mak
     throw FormatError(path.string(), "the video has no frame rate");
   if (m_info.frames <= 0 || m_info.width <= 0 || m_info.height <= 0)
     throw FormatError(path.string(), "the video has no frames");
-  checkFrameTimes();
+  if (!capture.grab())
+    throw FormatError(path.string(), "the video has no frames (none decodes)");
+  capture.set(cv::CAP_PROP_POS_FRAMES, 0.0);
+  if (times == FrameTimes::Check)
+    checkFrameTimes();
 }
 
 double VideoInfo::seconds() const
@@ -145,7 +155,11 @@ double VideoInfo::seconds() const
 void VideoSource::checkFrameTimes()
 {
   Decoder& d = *m_decoder;
+  if (d.timesChecked)
+    return;
+  d.timesChecked = true;
   cv::VideoCapture& capture = d.streams[0].capture;
+  capture.set(cv::CAP_PROP_POS_FRAMES, 0.0);
   const Eigen::Index probe = std::min(m_info.frames, kProbeFrames);
   bool regular = true;
   Eigen::Index read = 0;
@@ -155,17 +169,22 @@ void VideoSource::checkFrameTimes()
       d.firstTime = time;
     regular = regular && onRate(time - d.firstTime, read, m_info.rate);
   }
-  if (read == 0)
-    throw FormatError(m_path.string(), "the video has no frames (none decodes)");
   regular = regular && read == probe;
-  if (regular && m_info.frames > probe) {
-    // The last frame must sit where frame / rate puts it, with nothing after it.
-    double last = std::numeric_limits<double>::quiet_NaN();
+  if (regular && m_info.frames > probe + kTailFrames) {
+    // The last frames must sit where frame / rate puts them, with none after them. (OpenCV seeks
+    // to time frame / rate, so a file slower at the end has more frames after that time, one
+    // faster fewer.) The decoder's last frames, drained at the end, may come without a timestamp.
+    const Eigen::Index from = m_info.frames - kTailFrames;
     Eigen::Index after = 0;
-    if (capture.set(cv::CAP_PROP_POS_FRAMES, static_cast<double>(m_info.frames - 1)))
-      for (; after <= m_info.frames && capture.grab(); ++after)
-        last = grabbedTime(capture);
-    regular = after == 1 && onRate(last - d.firstTime, m_info.frames - 1, m_info.rate);
+    double previous = -1.0;
+    if (capture.set(cv::CAP_PROP_POS_FRAMES, static_cast<double>(from)))
+      for (; after <= kTailFrames && capture.grab(); ++after) {
+        const double time = grabbedTime(capture) - d.firstTime;
+        if (time > previous)
+          regular = regular && onRate(time, from + after, m_info.rate);
+        previous = std::max(previous, time);
+      }
+    regular = regular && after == kTailFrames;
   }
   if (!regular)
     readFrameTimes();
@@ -188,6 +207,8 @@ void VideoSource::readFrameTimes()
   bool regular = true, ascending = true;
   for (std::size_t i = 0; i < times.size(); ++i) {
     times[i] -= d.firstTime;
+    if (i > 0 && times[i] <= times[i - 1] && times.size() - i <= kDrainedFrames)
+      times[i] = times[i - 1] + (i > 1 ? times[i - 1] - times[i - 2] : 1.0 / m_info.rate);  // drained: no timestamp
     regular = regular && onRate(times[i], static_cast<Eigen::Index>(i), m_info.rate);
     ascending = ascending && (i == 0 || times[i] > times[i - 1]);
   }

@@ -34,12 +34,6 @@ struct VideoImage
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgb;
-
-  /// The bytes of a `width` × `height` RGB image (0 for a negative side).
-  [[nodiscard]] static std::size_t byteCount(int width, int height)
-  {
-    return width > 0 && height > 0 ? static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3 : 0;
-  }
 };
 
 /// A reference video read frame by frame through OpenCV's videoio (FFmpeg: MP4/H.264, MOV, AVI,
@@ -55,9 +49,13 @@ struct VideoImage
 class VideoSource
 {
 public:
+  /// Whether opening checks the frame timestamps (Check) or leaves it to checkFrameTimes()
+  /// (Later: opening then reads only the header and one frame, for a caller that checks on a worker).
+  enum class FrameTimes { Check, Later };
+
   /// Throws IoError for a file that does not exist or cannot be opened as a video, and
   /// FormatError for one with no frames (none decodes) or no frame rate.
-  explicit VideoSource(const std::filesystem::path& path);
+  explicit VideoSource(const std::filesystem::path& path, FrameTimes times = FrameTimes::Check);
   ~VideoSource();
   VideoSource(VideoSource&&) noexcept;
   VideoSource& operator=(VideoSource&&) noexcept;
@@ -69,9 +67,14 @@ public:
   /// FormatError when the file cannot be decoded there. O(1) for the next frame, O(GOP) for a jump.
   [[nodiscard]] VideoImage frame(Eigen::Index index);
 
+  /// Checks the timestamps of the first frames and of the last ones against frame / rate (once;
+  /// opening does it unless told Later); when they disagree, reads every frame's timestamp
+  /// (O(frames) decoding) and info() then says variableRate (or corrects the frame count).
+  /// Otherwise O(kTail + one group of pictures) decoding.
+  void checkFrameTimes();
+
 private:
   struct Decoder;
-  void checkFrameTimes();
   void readFrameTimes();
   /// The decoder to reach frame `index` with, and whether it decodes on to it (else it seeks):
   /// one that has it next or can decode on to it for no more than a seek costs, else the one
