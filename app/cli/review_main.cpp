@@ -52,6 +52,7 @@ QString setUp(studio::MainWindow& window, const ReviewArguments& a)
 /// Progress on stderr: one updating line on a terminal, a line per tenth otherwise.
 bool reportProgress(long long done, long long total)
 {
+  QCoreApplication::processEvents();
   static const bool terminal = ::isatty(STDERR_FILENO) != 0;
   if (terminal)
     std::fprintf(stderr, "\rmocap review: frame %lld of %lld", done, total);

@@ -182,6 +182,8 @@ ReviewOutcome exportReview(const ReviewSource& source, const ReviewRequest& requ
     ReviewScene scene(source, QSize(layout.view.width, layout.view.height));
     if (!scene.usable())
       return failed(QCoreApplication::translate("ReviewExport", "The 3D view cannot render here: %1").arg(scene.failureReason()));
+    if (source.resetCamera)
+      scene.frameCamera(request.first, last);
     ReviewEncoderThread encoder(request, take, layout);
     const long long total = last - request.first + 1;
     for (Eigen::Index frame = request.first; frame <= last; ++frame) {

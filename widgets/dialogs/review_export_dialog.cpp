@@ -38,6 +38,7 @@ ReviewExportDialog::ReviewExportDialog(const TakeDocument& document, const QStri
   const QString stem = takeFile.completeBaseName().isEmpty() ? QStringLiteral("take") : takeFile.completeBaseName();
 
   m_output = new QLineEdit(QDir(folder).filePath(stem + QStringLiteral(".review.mp4")), this);
+  m_output->setMinimumWidth(m_output->fontMetrics().horizontalAdvance(QLatin1Char('x')) * 48);
   auto* browse = new QPushButton(tr("Browse…"), this);
   connect(browse, &QPushButton::clicked, this, &ReviewExportDialog::browse);
   auto* outputRow = new QHBoxLayout;

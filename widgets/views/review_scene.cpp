@@ -13,10 +13,13 @@
 #include <QWidget>
 
 #include <vtkCamera.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkMath.h>
 #include <vtkRenderer.h>
 
+#include <cmath>
 #include <stdexcept>
-#include <utility>
+#include <algorithm>
 
 namespace mocap::ui {
 
@@ -32,6 +35,23 @@ std::vector<Eigen::Index> hiddenMarkers(const TakeDocument& document)
   return hidden;
 }
 
+/// The source view's camera for a view of `size`: the same view, widened when the review is
+/// narrower than the source (VTK keeps the vertical angle, so a narrower view would crop the sides).
+void copyCamera(const MarkerView3d& from, vtkCamera* camera, QSize size)
+{
+  vtkCamera* source = from.viewport()->renderer()->GetActiveCamera();
+  camera->DeepCopy(source);
+  const QWidget* view = from.viewport();
+  if (view->width() <= 0 || view->height() <= 0 || size.isEmpty() || camera->GetParallelProjection())
+    return;
+  const double sourceAspect = static_cast<double>(view->width()) / view->height();
+  const double aspect = static_cast<double>(size.width()) / size.height();
+  if (aspect >= sourceAspect)
+    return;
+  const double halfAngle = vtkMath::RadiansFromDegrees(source->GetViewAngle() / 2.0);
+  camera->SetViewAngle(2.0 * vtkMath::DegreesFromRadians(std::atan(std::tan(halfAngle) * sourceAspect / aspect)));
+}
+
 void copyViewSettings(const MarkerView3d& from, MarkerView3d& to)
 {
   to.setUpAxis(from.upAxis());
@@ -43,7 +63,6 @@ void copyViewSettings(const MarkerView3d& from, MarkerView3d& to)
   to.setFollowHead(from.followHead());
   if (!from.layoutHighlight().empty())
     to.setLayoutHighlight(from.layoutHighlight(), from.layoutReference());
-  to.viewport()->renderer()->GetActiveCamera()->DeepCopy(from.viewport()->renderer()->GetActiveCamera());
 }
 
 } // namespace
@@ -66,13 +85,17 @@ ReviewScene::ReviewScene(const ReviewSource& source, QSize size)
   layout->addWidget(m_view);
   const qreal ratio = m_window->devicePixelRatioF();
   m_window->setFixedSize(QSize(static_cast<int>(size.width() / ratio), static_cast<int>(size.height() / ratio)));
+  // Antialiased by FXAA, one cheap pass, instead of VTK's default 8× multisampling: under llvmpipe
+  // (Xvfb, a render server) multisampling shades every pixel eight times and was 3–4× slower.
+  m_view->viewport()->renderWindow()->SetMultiSamples(0);
+  m_view->viewport()->renderer()->UseFXAAOn();
   m_window->show();
   copyViewSettings(*source.view, *m_view);
+  copyCamera(*source.view, m_view->viewport()->renderer()->GetActiveCamera(), size);
   if (source.faceMesh)
     copyFaceMesh(*source.faceMesh);
   if (source.blendshapes && m_faceMesh)
     copyBlendshapes(*source.blendshapes);
-  m_resetCamera = source.resetCamera;
 }
 
 ReviewScene::~ReviewScene()
@@ -114,6 +137,32 @@ void ReviewScene::copyBlendshapes(const BlendshapeScene& source)
   m_blendshapes->layer().copyAppearance(source.layer());
 }
 
+void ReviewScene::frameCamera(Eigen::Index first, Eigen::Index last)
+{
+  const Take& take = m_document->take();
+  first = std::clamp<Eigen::Index>(first, 0, take.frameCount() - 1);
+  last = std::clamp<Eigen::Index>(last, first, take.frameCount() - 1);
+  m_document->setCurrentFrame(first);
+  m_view->resetCamera();  // the direction the studio faces the take from
+  double bounds[6] = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
+  const Eigen::Index step = std::max<Eigen::Index>(1, (last - first + 1) / 500);
+  for (Eigen::Index f = first; f <= last; f += step)
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+      if (!take.isValid(f, m) || m_document->isHidden(m))
+        continue;
+      const Eigen::Vector3d p = m_view->displayPosition(f, m);
+      for (int axis = 0; axis < 3; ++axis) {
+        bounds[2 * axis] = std::min(bounds[2 * axis], p[axis]);
+        bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], p[axis]);
+      }
+    }
+  if (bounds[0] > bounds[1])
+    return;  // nothing valid: the current frame's framing stays
+  vtkRenderer* renderer = m_view->viewport()->renderer();
+  renderer->ResetCamera(bounds);
+  renderer->GetActiveCamera()->Zoom(1.25);  // ResetCamera fits a bounding sphere; a face is flatter
+}
+
 bool ReviewScene::usable() const
 {
   return m_view->viewport()->usable();
@@ -130,8 +179,6 @@ QImage ReviewScene::render(Eigen::Index frame)
   if (!viewport->usable())
     return {};
   m_document->setCurrentFrame(frame);
-  if (std::exchange(m_resetCamera, false))
-    m_view->resetCamera();  // around the markers where the review starts (the head moves in the lab)
   viewport->requestRender();
   QImage image = viewport->grabFramebuffer();
   if (image.isNull())

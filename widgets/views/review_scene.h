@@ -27,8 +27,8 @@ struct ReviewSource
   const MarkerView3d* view = nullptr;
   const FaceMeshScene* faceMesh = nullptr;
   const BlendshapeScene* blendshapes = nullptr;
-  /// Frame the take afresh at the review's size instead of keeping the view's camera (the
-  /// command line, whose view was never shown).
+  /// Frame the reviewed frames afresh (ReviewScene::frameCamera) instead of keeping the view's
+  /// camera (the command line, whose view was never shown).
   bool resetCamera = false;
 };
 
@@ -54,6 +54,11 @@ public:
   [[nodiscard]] const TakeDocument& document() const { return *m_document; }
   [[nodiscard]] MarkerView3d& view() const { return *m_view; }
 
+  /// Frames the camera on every marker drawn over take frames first…last (in the studio's viewing
+  /// direction), so a moving head stays in the picture. O(#frames · #markers), at most 500 frames
+  /// sampled.
+  void frameCamera(Eigen::Index first, Eigen::Index last);
+
   /// The view at take frame `frame` (0-based), `size` pixels, RGB. Null when the view is not usable.
   /// O(one render).
   [[nodiscard]] QImage render(Eigen::Index frame);
@@ -70,7 +75,6 @@ private:
   std::unique_ptr<BlendshapeSolveModel> m_blendshapeModel;
   std::unique_ptr<BlendshapeScene> m_blendshapes;
   QSize m_size;
-  bool m_resetCamera = false;  // at the first render
 };
 
 } // namespace mocap::ui
