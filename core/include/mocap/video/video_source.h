@@ -34,6 +34,12 @@ struct VideoImage
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgb;
+
+  /// The bytes of a `width` × `height` RGB image (0 for a negative side).
+  [[nodiscard]] static std::size_t byteCount(int width, int height)
+  {
+    return width > 0 && height > 0 ? static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3 : 0;
+  }
 };
 
 /// A reference video read frame by frame through OpenCV's videoio (FFmpeg: MP4/H.264, MOV, AVI,
