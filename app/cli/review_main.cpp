@@ -19,6 +19,7 @@
 #include <QFileInfo>
 #include <QSurfaceFormat>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -124,13 +125,18 @@ int review(const ReviewArguments& a)
 
 int main(int argc, char** argv)
 {
-  CLI::App command("renders a review video of a take", "mocap review");
-  command.formatter(std::make_shared<UsageFormatter>());
-  command.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  // Parsed as `mocap review`, so the usage and errors read as mocap's own.
+  CLI::App mocap("the batch command line of Mocap Studio", "mocap");
+  mocap.formatter(std::make_shared<UsageFormatter>());
+  mocap.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  CLI::App& command = *mocap.add_subcommand("review", "renders a review video of a take");
   ReviewArguments arguments;
   defineReviewOptions(command, arguments);
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
+  args.emplace_back("review");
   try {
-    command.parse(argc, argv);
+    mocap.parse(args);
   } catch (const CLI::CallForHelp&) {
     std::cout << command.help();
     return kExitOk;

@@ -13,7 +13,6 @@
 #include <QWidget>
 
 #include <vtkCamera.h>
-#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkMath.h>
 #include <vtkRenderer.h>
 
@@ -85,10 +84,6 @@ ReviewScene::ReviewScene(const ReviewSource& source, QSize size)
   layout->addWidget(m_view);
   const qreal ratio = m_window->devicePixelRatioF();
   m_window->setFixedSize(QSize(static_cast<int>(size.width() / ratio), static_cast<int>(size.height() / ratio)));
-  // Antialiased by FXAA, one cheap pass, instead of VTK's default 8× multisampling: under llvmpipe
-  // (Xvfb, a render server) multisampling shades every pixel eight times and was 3–4× slower.
-  m_view->viewport()->renderWindow()->SetMultiSamples(0);
-  m_view->viewport()->renderer()->UseFXAAOn();
   m_window->show();
   copyViewSettings(*source.view, *m_view);
   copyCamera(*source.view, m_view->viewport()->renderer()->GetActiveCamera(), size);

@@ -44,6 +44,11 @@ public:
   [[nodiscard]] vtkRenderer* renderer() const;
   [[nodiscard]] vtkGenericOpenGLRenderWindow* renderWindow() const;
   [[nodiscard]] bool usable() const { return m_usable; }
+  /// Whether OpenGL runs on the CPU (Mesa's llvmpipe under Xvfb or in a VM): then the view
+  /// antialiases by FXAA instead of multisampling. Known once the context is up.
+  [[nodiscard]] bool softwareRendered() const { return m_softwareRendered; }
+  /// Whether a GL_RENDERER string names a CPU rasterizer.
+  [[nodiscard]] static bool isSoftwareRenderer(const QString& renderer);
   [[nodiscard]] const QString& failureReason() const { return m_failure; }
 
   /// Asks for a VTK render at the next paint.
@@ -90,6 +95,7 @@ private:
   vtkNew<vtkRenderer> m_renderer;
   std::vector<unsigned long> m_observers;
   bool m_usable = false;
+  bool m_softwareRendered = false;
   bool m_renderPending = true;
   bool m_inPaint = false;
   QString m_failure;
