@@ -98,7 +98,7 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+67"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>Keine Referenzmarker: Wählen Sie sie unter Marker ▸ Referenzmarker… aus</translation>
     </message>
@@ -156,9 +156,37 @@
     </message>
 </context>
 <context>
+    <name>ReviewExport</name>
+    <message>
+        <location filename="../widgets/dialogs/review_export.cpp" line="+141"/>
+        <source>No video at this frame</source>
+        <translation>Kein Video bei diesem Frame</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>There is no take to review.</source>
+        <translation>Es ist keine Aufnahme zum Prüfen geöffnet.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The frames to review are outside the take.</source>
+        <translation>Die zu prüfenden Frames liegen außerhalb der Aufnahme.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The 3D view cannot render here: %1</source>
+        <translation>Die 3D-Ansicht kann hier nicht rendern: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The 3D view did not render frame %1.</source>
+        <translation>Die 3D-Ansicht hat Frame %1 nicht gerendert.</translation>
+    </message>
+</context>
+<context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+144"/>
         <source>%1 smoothing</source>
         <translation>Glättung: %1</translation>
     </message>
@@ -171,7 +199,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+121"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+131"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>%n Ausreißer gefunden</numerusform>
@@ -190,7 +218,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+94"/>
+        <location filename="../app/studio/main_window.cpp" line="+99"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -250,7 +278,7 @@
         <translation>Referenzvideo</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
@@ -265,7 +293,43 @@
         <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
+        <source>Rendering the review video…</source>
+        <translation>Das Prüfvideo wird gerendert…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Review video cancelled; nothing was written.</source>
+        <translation>Prüfvideo abgebrochen; es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+6"/>
+        <source>Export Review Video</source>
+        <translation>Prüfvideo exportieren</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>The review video was not written: %1</source>
+        <translation>Das Prüfvideo wurde nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1</source>
+        <translation>Dieses System hat keinen MP4-Encoder, daher wurde das Video als Motion-JPEG-AVI geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wrote %1 (%2 frames, %3)</source>
+        <translation>%1 geschrieben (%2 Frames, %3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -300,7 +364,17 @@
         <translation>Ani&amp;mation exportieren…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>Export Re&amp;view Video…</source>
+        <translation>&amp;Prüfvideo exportieren…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save &amp;Cleaning Preset…</source>
+        <translation>&amp;Bereinigungsvorgabe speichern…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -613,7 +687,28 @@
         <translation>Alle Warnungen beim Lesen der Datei anzeigen</translation>
     </message>
     <message>
-        <location line="+180"/>
+        <location line="+76"/>
+        <location line="+7"/>
+        <source>Save Cleaning Preset</source>
+        <translation>Bereinigungsvorgabe speichern</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Cleaning presets (*.json)</source>
+        <translation>Bereinigungsvorgaben (*.json)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The preset was not saved: %1</source>
+        <translation>Die Vorgabe wurde nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Saved the cleaning preset %1</source>
+        <translation>Bereinigungsvorgabe %1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+119"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
@@ -623,7 +718,7 @@
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-232"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -654,7 +749,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+39"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
@@ -724,7 +819,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-756"/>
+        <location line="-827"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1137,7 +1232,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+113"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -1832,7 +1927,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+68"/>
         <source>%1, frames %2–%3 (%4)</source>
         <translation>%1, Frames %2–%3 (%4)</translation>
     </message>
@@ -2135,7 +2230,7 @@
 <context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-53"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>Am Kopf befestigte Marker, die sich nur mit dem Kopf bewegen: An ihnen wird die Kopfhaltung jedes Bildes gemessen.</translation>
     </message>
@@ -3175,7 +3270,12 @@
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+29"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+61"/>
+        <source>The take&apos;s reference videos: the one picked here is shown</source>
+        <translation>Die Referenzvideos der Aufnahme: Das hier gewählte wird angezeigt</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Add Reference Video…</source>
         <translation>Referenzvideo hinzufügen…</translation>
     </message>
@@ -3186,8 +3286,23 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Locate…</source>
+        <translation>Suchen…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find a video that is no longer where the take remembers it</source>
+        <translation>Ein Video suchen, das nicht mehr dort liegt, wo die Aufnahme es erwartet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove the shown video from the take</source>
+        <translation>Das angezeigte Video aus der Aufnahme entfernen</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -3211,49 +3326,263 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>Move the video one of its frames earlier (Alt+,)</source>
-        <translation>Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
+        <source>Show the video one of its frames earlier (Alt+,)</source>
+        <translation>Das Video um einen seiner Frames früher zeigen (Alt+,)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the video one of its frames later (Alt+.)</source>
+        <translation>Das Video um einen seiner Frames später zeigen (Alt+.)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Video frame:</source>
+        <translation>Videoframe:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The video frame shown. Type or step it to hold the video at a moment, step the take to the same moment, then press Sync here</source>
+        <translation>Der angezeigte Videoframe. Eingeben oder schrittweise ändern, um das Video an einem Moment anzuhalten, die Aufnahme auf denselben Moment stellen und dann „Hier synchronisieren“ drücken</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Sync here</source>
+        <translation>Hier synchronisieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set the offset so the held video frame shows at the take&apos;s current frame</source>
+        <translation>Den Versatz so setzen, dass der angehaltene Videoframe beim aktuellen Frame der Aufnahme erscheint</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Follow take</source>
+        <translation>Aufnahme folgen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop holding the video: show the frame for the take&apos;s current frame again</source>
+        <translation>Das Video nicht mehr anhalten: wieder den Frame zum aktuellen Frame der Aufnahme zeigen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Event:</source>
+        <translation>Ereignis:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The take&apos;s events (C3D EVENT parameters); a sync event is picked first</source>
+        <translation>Die Ereignisse der Aufnahme (C3D-EVENT-Parameter); ein Sync-Ereignis wird zuerst gewählt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sync to event</source>
+        <translation>Auf Ereignis synchronisieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set the offset so the event shows the video&apos;s first frame, or the held one</source>
+        <translation>Den Versatz so setzen, dass beim Ereignis der erste Videoframe erscheint, oder der angehaltene</translation>
+    </message>
+    <message>
+        <location line="+424"/>
+        <source>Locate %1</source>
+        <translation>%1 suchen</translation>
+    </message>
+    <message>
+        <source>Move the video one of its frames earlier (Alt+,)</source>
+        <translation type="vanished">Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
+    </message>
+    <message>
+        <location line="-453"/>
         <source>+1 frame</source>
         <translation>+1 Frame</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Move the video one of its frames later (Alt+.)</source>
-        <translation>Das Video um eines seiner Frames später setzen (Alt+.)</translation>
+        <translation type="vanished">Das Video um eines seiner Frames später setzen (Alt+.)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+146"/>
+        <location line="+37"/>
+        <location line="+172"/>
         <source>Cannot show %1: %2</source>
         <translation>%1 kann nicht gezeigt werden: %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-148"/>
+        <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
+        <translation>Halten Sie das Video zuerst an einem Moment an: Frame eingeben oder schrittweise ändern, dann die Aufnahme auf denselben Moment stellen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Video frame %1 now shows at take frame %2 (offset %3 s)</source>
+        <translation>Videoframe %1 erscheint jetzt bei Aufnahme-Frame %2 (Versatz %3 s)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The event “%1” (%2 s) lies outside the take&apos;s frames</source>
+        <translation>Das Ereignis „%1“ (%2 s) liegt außerhalb der Frames der Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Video frame %1 now shows at the event “%2” (take frame %3; offset %4 s)</source>
+        <translation>Videoframe %1 erscheint jetzt beim Ereignis „%2“ (Aufnahme-Frame %3; Versatz %4 s)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>%1 (missing)</source>
+        <translation>%1 (fehlt)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
         <source>No reference video</source>
         <translation>Kein Referenzvideo</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-1"/>
+        <source>%1 is not available</source>
+        <translation>%1 ist nicht verfügbar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: %2×%3, %4 fps, %5 frames (%6 s), %7</source>
         <translation>%1: %2×%3, %4 fps, %5 Frames (%6 s), %7</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+9"/>
+        <source>; variable frame rate: frames are placed by their timestamps</source>
+        <translation>; variable Bildrate: Frames werden nach ihren Zeitstempeln platziert</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1%2 · frame %3</source>
+        <translation>%1%2 · Frame %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The take has no events</source>
+        <translation>Die Aufnahme hat keine Ereignisse</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
+        <translation>Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
+        <translation>%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+20"/>
+        <source>%n of the take&apos;s reference videos cannot be found where the take remembers them. Pick one and press Locate… to find it; they stay remembered meanwhile.</source>
+        <translation>
+            <numerusform>%n Referenzvideo der Aufnahme ist nicht dort, wo die Aufnahme es erwartet. Wählen Sie es und drücken Sie „Suchen…“; es bleibt so lange gemerkt.</numerusform>
+            <numerusform>%n Referenzvideos der Aufnahme sind nicht dort, wo die Aufnahme sie erwartet. Wählen Sie eines und drücken Sie „Suchen…“; sie bleiben so lange gemerkt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Cannot remember the videos beside the take: %1</source>
+        <translation>Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Add reference video</source>
         <translation>Referenzvideo hinzufügen</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+17"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
+    <name>mocap::ui::ReviewExportDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+33"/>
+        <location line="+54"/>
+        <source>Export Review Video</source>
+        <translation>Prüfvideo exportieren</translation>
+    </message>
+    <message>
+        <location line="-45"/>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reference video beside the 3D view</source>
+        <translation>Referenzvideo neben der 3D-Ansicht</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Add a reference video in the Reference Video dock to draw it beside the view.</source>
+        <translation>Fügen Sie im Dock „Referenzvideo“ ein Referenzvideo hinzu, um es neben der Ansicht zu zeigen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Size:</source>
+        <translation>Größe:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frames:</source>
+        <translation>Frames:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>MP4 video (*.mp4);;Motion JPEG AVI (*.avi)</source>
+        <translation>MP4-Video (*.mp4);;Motion-JPEG-AVI (*.avi)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Name the video .mp4 or .avi.</source>
+        <translation>Benennen Sie das Video mit .mp4 oder .avi.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The first frame comes after the last.</source>
+        <translation>Der erste Frame liegt nach dem letzten.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 exists. Replace it?</source>
+        <translation>%1 existiert. Ersetzen?</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>untitled take</source>
+        <translation>unbenannte Aufnahme</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-78"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV-Glättungsspline (Woltring)</translation>
     </message>
@@ -3322,7 +3651,7 @@
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-72"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-82"/>
         <source>Robust (local fit + MAD)</source>
         <translation>Robust (lokale Anpassung + MAD)</translation>
     </message>
@@ -3387,7 +3716,7 @@
         <translation>Ausreißer</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>%1 at frame %2</source>
         <translation>%1 bei Frame %2</translation>
     </message>
@@ -3484,25 +3813,30 @@
 <context>
     <name>mocap::ui::VideoView</name>
     <message>
-        <location filename="../widgets/views/video_view.cpp" line="+35"/>
+        <location filename="../widgets/views/video_view.cpp" line="+37"/>
         <source>No reference video</source>
         <translation>Kein Referenzvideo</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>No video at this frame</source>
         <translation>Kein Video bei diesem Frame</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>video frame %1 · %2 s</source>
         <translation>Videoframe %1 · %2 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 · held</source>
+        <translation>%1 · angehalten</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+159"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+167"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>

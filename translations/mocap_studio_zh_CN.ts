@@ -91,7 +91,7 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+67"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>没有参考标记点：请在“标记点 ▸ 参考标记点…”中选择</translation>
     </message>
@@ -149,9 +149,37 @@
     </message>
 </context>
 <context>
+    <name>ReviewExport</name>
+    <message>
+        <location filename="../widgets/dialogs/review_export.cpp" line="+141"/>
+        <source>No video at this frame</source>
+        <translation>此帧没有视频</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>There is no take to review.</source>
+        <translation>没有可审阅的录制。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The frames to review are outside the take.</source>
+        <translation>要审阅的帧超出了录制范围。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The 3D view cannot render here: %1</source>
+        <translation>3D 视图无法在此渲染：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The 3D view did not render frame %1.</source>
+        <translation>3D 视图未能渲染第 %1 帧。</translation>
+    </message>
+</context>
+<context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+144"/>
         <source>%1 smoothing</source>
         <translation>%1 平滑</translation>
     </message>
@@ -164,7 +192,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+121"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+131"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>发现 %n 个坏点</numerusform>
@@ -181,7 +209,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+94"/>
+        <location filename="../app/studio/main_window.cpp" line="+99"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -241,7 +269,7 @@
         <translation>参考视频</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Weights</source>
         <translation>权重</translation>
     </message>
@@ -256,7 +284,43 @@
         <translation>无法导出面部网格：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
+        <source>Rendering the review video…</source>
+        <translation>正在渲染审阅视频…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Review video cancelled; nothing was written.</source>
+        <translation>审阅视频已取消；未写入任何内容。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+6"/>
+        <source>Export Review Video</source>
+        <translation>导出审阅视频</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>The review video was not written: %1</source>
+        <translation>审阅视频未写入：%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1</source>
+        <translation>此系统没有 MP4 编码器，因此视频以 Motion JPEG AVI 写入：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wrote %1 (%2 frames, %3)</source>
+        <translation>已写入 %1（%2 帧，%3）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -291,7 +355,17 @@
         <translation>导出动画(&amp;M)…</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>Export Re&amp;view Video…</source>
+        <translation>导出审阅视频(&amp;V)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save &amp;Cleaning Preset…</source>
+        <translation>保存清理预设(&amp;C)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -602,7 +676,28 @@
         <translation>显示读取文件时的所有警告</translation>
     </message>
     <message>
-        <location line="+180"/>
+        <location line="+76"/>
+        <location line="+7"/>
+        <source>Save Cleaning Preset</source>
+        <translation>保存清理预设</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Cleaning presets (*.json)</source>
+        <translation>清理预设 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The preset was not saved: %1</source>
+        <translation>预设未保存：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Saved the cleaning preset %1</source>
+        <translation>已保存清理预设 %1</translation>
+    </message>
+    <message>
+        <location line="+119"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
@@ -612,7 +707,7 @@
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-232"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -643,7 +738,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+39"/>
         <source>Export</source>
         <translation>导出</translation>
     </message>
@@ -713,7 +808,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-756"/>
+        <location line="-827"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1124,7 +1219,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+113"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -1812,7 +1907,7 @@
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+68"/>
         <source>%1, frames %2–%3 (%4)</source>
         <translation>%1，第 %2–%3 帧（%4）</translation>
     </message>
@@ -2114,7 +2209,7 @@
 <context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-53"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>仅随头部运动的头戴标记点：每一帧的头部姿态都基于它们测得。</translation>
     </message>
@@ -3148,7 +3243,12 @@
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+29"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+61"/>
+        <source>The take&apos;s reference videos: the one picked here is shown</source>
+        <translation>录制的参考视频：显示此处选中的视频</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Add Reference Video…</source>
         <translation>添加参考视频…</translation>
     </message>
@@ -3159,8 +3259,23 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Locate…</source>
+        <translation>定位…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Find a video that is no longer where the take remembers it</source>
+        <translation>查找已不在录制所记位置的视频</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Remove</source>
         <translation>移除</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove the shown video from the take</source>
+        <translation>从录制中移除所显示的视频</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -3184,49 +3299,262 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>Move the video one of its frames earlier (Alt+,)</source>
-        <translation>将视频提前一帧（Alt+,）</translation>
+        <source>Show the video one of its frames earlier (Alt+,)</source>
+        <translation>将视频提前一帧显示 (Alt+,)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the video one of its frames later (Alt+.)</source>
+        <translation>将视频推后一帧显示 (Alt+.)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Video frame:</source>
+        <translation>视频帧：</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The video frame shown. Type or step it to hold the video at a moment, step the take to the same moment, then press Sync here</source>
+        <translation>所显示的视频帧。输入或步进以将视频停在某一时刻，将录制步进到同一时刻，然后按“在此同步”</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Sync here</source>
+        <translation>在此同步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set the offset so the held video frame shows at the take&apos;s current frame</source>
+        <translation>设置偏移，使停住的视频帧显示在录制的当前帧</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Follow take</source>
+        <translation>跟随录制</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop holding the video: show the frame for the take&apos;s current frame again</source>
+        <translation>不再停住视频：重新显示录制当前帧对应的视频帧</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Event:</source>
+        <translation>事件：</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The take&apos;s events (C3D EVENT parameters); a sync event is picked first</source>
+        <translation>录制的事件（C3D EVENT 参数）；优先选择同步事件</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sync to event</source>
+        <translation>同步到事件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set the offset so the event shows the video&apos;s first frame, or the held one</source>
+        <translation>设置偏移，使事件处显示视频的第一帧或停住的帧</translation>
+    </message>
+    <message>
+        <location line="+424"/>
+        <source>Locate %1</source>
+        <translation>定位 %1</translation>
+    </message>
+    <message>
+        <source>Move the video one of its frames earlier (Alt+,)</source>
+        <translation type="vanished">将视频提前一帧（Alt+,）</translation>
+    </message>
+    <message>
+        <location line="-453"/>
         <source>+1 frame</source>
         <translation>+1 帧</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Move the video one of its frames later (Alt+.)</source>
-        <translation>将视频推后一帧（Alt+.）</translation>
+        <translation type="vanished">将视频推后一帧（Alt+.）</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+146"/>
+        <location line="+37"/>
+        <location line="+172"/>
         <source>Cannot show %1: %2</source>
         <translation>无法显示 %1：%2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-148"/>
+        <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
+        <translation>请先将视频停在某一时刻：输入或步进其帧，然后将录制步进到同一时刻</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Video frame %1 now shows at take frame %2 (offset %3 s)</source>
+        <translation>视频第 %1 帧现在显示在录制第 %2 帧（偏移 %3 秒）</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The event “%1” (%2 s) lies outside the take&apos;s frames</source>
+        <translation>事件“%1”（%2 秒）在录制的帧范围之外</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Video frame %1 now shows at the event “%2” (take frame %3; offset %4 s)</source>
+        <translation>视频第 %1 帧现在显示在事件“%2”处（录制第 %3 帧；偏移 %4 秒）</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>%1 (missing)</source>
+        <translation>%1（缺失）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
         <source>No reference video</source>
         <translation>无参考视频</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-1"/>
+        <source>%1 is not available</source>
+        <translation>%1 不可用</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: %2×%3, %4 fps, %5 frames (%6 s), %7</source>
         <translation>%1：%2×%3，%4 fps，%5 帧（%6 秒），%7</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+9"/>
+        <source>; variable frame rate: frames are placed by their timestamps</source>
+        <translation>；可变帧率：按时间戳放置帧</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1%2 · frame %3</source>
+        <translation>%1%2 · 第 %3 帧</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The take has no events</source>
+        <translation>录制没有事件</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
+        <translation>无法读取为此录制记住的视频（%1）；该文件保持不变，此处的更改不会被记住。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
+        <translation>%1 缺失：录制记住它位于 %2。“定位…”可找到它；在此之前它仍与录制关联。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+20"/>
+        <source>%n of the take&apos;s reference videos cannot be found where the take remembers them. Pick one and press Locate… to find it; they stay remembered meanwhile.</source>
+        <translation>
+            <numerusform>录制的 %n 个参考视频不在所记的位置。选择一个并按“定位…”查找；在此期间它们仍被记住。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Cannot remember the videos beside the take: %1</source>
+        <translation>无法在录制旁记住视频：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Add reference video</source>
         <translation>添加参考视频</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location line="+17"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>视频 (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
+    <name>mocap::ui::ReviewExportDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+33"/>
+        <location line="+54"/>
+        <source>Export Review Video</source>
+        <translation>导出审阅视频</translation>
+    </message>
+    <message>
+        <location line="-45"/>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>to</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reference video beside the 3D view</source>
+        <translation>在 3D 视图旁显示参考视频</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Add a reference video in the Reference Video dock to draw it beside the view.</source>
+        <translation>在“参考视频”面板中添加参考视频，即可将其显示在视图旁。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>File:</source>
+        <translation>文件：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Size:</source>
+        <translation>尺寸：</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frames:</source>
+        <translation>帧：</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>MP4 video (*.mp4);;Motion JPEG AVI (*.avi)</source>
+        <translation>MP4 视频 (*.mp4);;Motion JPEG AVI (*.avi)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Name the video .mp4 or .avi.</source>
+        <translation>请将视频命名为 .mp4 或 .avi。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The first frame comes after the last.</source>
+        <translation>第一帧在最后一帧之后。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 exists. Replace it?</source>
+        <translation>%1 已存在。要替换吗？</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>untitled take</source>
+        <translation>未命名录制</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-68"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-78"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV 平滑样条（Woltring）</translation>
     </message>
@@ -3295,7 +3623,7 @@
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-72"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-82"/>
         <source>Robust (local fit + MAD)</source>
         <translation>稳健（局部拟合 + MAD）</translation>
     </message>
@@ -3360,7 +3688,7 @@
         <translation>坏点</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>%1 at frame %2</source>
         <translation>%1，第 %2 帧</translation>
     </message>
@@ -3456,25 +3784,30 @@
 <context>
     <name>mocap::ui::VideoView</name>
     <message>
-        <location filename="../widgets/views/video_view.cpp" line="+35"/>
+        <location filename="../widgets/views/video_view.cpp" line="+37"/>
         <source>No reference video</source>
         <translation>无参考视频</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>No video at this frame</source>
         <translation>此帧没有视频</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>video frame %1 · %2 s</source>
         <translation>视频第 %1 帧 · %2 秒</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 · held</source>
+        <translation>%1 · 已停住</translation>
     </message>
 </context>
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+159"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+167"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>
