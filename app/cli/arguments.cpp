@@ -104,11 +104,7 @@ CLI::Option* oneOf(CLI::Option* option, const std::string& choices)
 
 std::string fixedNumber(double value, int decimals)
 {
-  if (!std::isfinite(value))
-    return "-";
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
+  return fixedText(value, decimals, "-");
 }
 
 std::vector<std::string> splitList(const std::string& text, const std::string& option)

@@ -14,6 +14,15 @@ void appendNumber(std::string& out, double value)
   out.append(buffer, result.ptr);
 }
 
+std::string fixedText(double value, int decimals, std::string_view notFinite)
+{
+  if (!std::isfinite(value))
+    return std::string(notFinite);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
 std::string timecodeText(double seconds, double frameRate)
 {
   const long long fps = std::max(1LL, std::llround(frameRate));

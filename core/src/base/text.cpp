@@ -60,6 +60,19 @@ std::vector<std::string_view> split(std::string_view text, char separator)
   }
 }
 
+std::vector<TextLine> contentLines(std::string_view text)
+{
+  std::vector<TextLine> lines;
+  std::size_t number = 0;
+  for (const std::string_view raw : split(text, '\n')) {
+    ++number;
+    const std::string_view line = trim(raw);
+    if (!line.empty() && line.front() != '#')
+      lines.push_back({number, line});
+  }
+  return lines;
+}
+
 // Backtracking to the last `*` only: each `*` resumes one character later, so no recursion.
 bool globMatch(std::string_view pattern, std::string_view text)
 {

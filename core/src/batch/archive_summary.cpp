@@ -1,6 +1,7 @@
 #include "mocap/batch/archive_summary.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/number_text.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/batch/clean_preset.h"
@@ -106,11 +107,7 @@ std::string escape(std::string_view text)
 
 std::string fixed(double value, int decimals)
 {
-  if (!std::isfinite(value))
-    return "0";
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
+  return fixedText(value, decimals, "0");  // coordinates: a number even when the value is not
 }
 
 std::string percent(double fraction)

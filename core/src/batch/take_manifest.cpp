@@ -99,12 +99,7 @@ std::vector<ManifestEntry> readTextManifest(const fs::path& source, std::vector<
   const fs::path base = absoluteNormal(source).parent_path();
   std::vector<ManifestEntry> takes;
   std::map<fs::path, std::size_t> firstLine;
-  std::size_t lineNumber = 0;
-  for (const std::string_view rawLine : split(text, '\n')) {
-    ++lineNumber;
-    const std::string_view line = trim(rawLine);
-    if (line.empty() || line.front() == '#')
-      continue;
+  for (const auto& [lineNumber, line] : contentLines(text)) {
     const fs::path given(std::string{line});
     const fs::path input = (given.is_absolute() ? given : base / given).lexically_normal();
     const auto [it, inserted] = firstLine.emplace(input, lineNumber);

@@ -81,12 +81,7 @@ PointCloud parsePointCloudCsv(std::string_view text, const std::string& sourceNa
   if (!std::isfinite(frameRate) || frameRate <= 0.0)
     throw InvalidArgument("point cloud: the frame rate must be finite and positive");
   std::vector<RawPoint> raw;
-  std::size_t lineNumber = 0;
-  for (const std::string_view rawLine : split(text, '\n')) {
-    ++lineNumber;
-    const std::string_view line = trim(rawLine);
-    if (line.empty() || line.front() == '#')
-      continue;
+  for (const auto& [lineNumber, line] : contentLines(text)) {
     const auto fields = split(line, ',');
     double values[4] = {0.0, 0.0, 0.0, 0.0};
     bool numeric = fields.size() == 4;

@@ -1,12 +1,17 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace mocap {
 
 /// Appends the shortest decimal text that reads back to exactly `value` (std::to_chars), so
 /// text formats round-trip doubles bit for bit. O(1).
 void appendNumber(std::string& out, double value);
+
+/// `value` with `decimals` decimals ("%.*f"), or `notFinite` for NaN and infinities, for text
+/// tables and drawings. O(1).
+[[nodiscard]] std::string fixedText(double value, int decimals, std::string_view notFinite);
 
 /// A time as an SMPTE-style timecode HH:MM:SS:FF.mmm counting frames at `frameRate` rounded to
 /// whole frames per second (Live Link Face's timecode; the thousandths are the fraction of a

@@ -21,6 +21,17 @@ namespace mocap {
 /// Splits on `separator`, keeping empty fields ("a,,b" gives 3 fields).
 [[nodiscard]] std::vector<std::string_view> split(std::string_view text, char separator);
 
+/// One line of a text file that holds content: its number (from 1) and its text, trimmed.
+struct TextLine
+{
+  std::size_t number = 0;
+  std::string_view text;
+};
+
+/// The lines of `text` that are neither blank nor comments (first non-blank character `#`), as
+/// line-based formats read them (manifests, point-cloud CSV). O(|text|).
+[[nodiscard]] std::vector<TextLine> contentLines(std::string_view text);
+
 /// Whether `text` matches the glob `pattern`: `*` any run of characters, `?` any one, others
 /// themselves. O(|pattern| · |text|) worst case.
 [[nodiscard]] bool globMatch(std::string_view pattern, std::string_view text);
