@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 
 namespace mocap {
 namespace {
@@ -167,6 +168,39 @@ TEST(Smoothing, TakePatchesCoverChangedValidSamplesAndUndoExactly)
     for (Eigen::Index m = 0; m < take.markerCount(); ++m)
       ASSERT_EQ(take.trajectory(m), original.trajectory(m));
     EXPECT_TRUE((take.states() == original.states()).all());
+  }
+}
+
+// The batch pipeline's in-place smoothing must leave the take exactly as the studio's patches do,
+// including a valid sample holding a NaN (a gap to the filters) and a still marker whose smoothed
+// positions may equal the measured ones (not marked smoothed).
+TEST(Smoothing, InPlaceLeavesTheTakeAsApplyingThePatches)
+{
+  Take original = readC3d(test::sampleTake());
+  ASSERT_GE(original.markerCount(), 2);
+  original.setPosition(200, 0, {std::nan(""), 1.0, 2.0});
+  original.valid()(200, 0) = true;
+  for (Eigen::Index f = 0; f < original.frameCount(); ++f) {
+    original.setPosition(f, 1, {5.0, 5.0, 5.0});
+    original.valid()(f, 1) = true;
+  }
+  for (const SmoothOptions& options : everyMethod()) {
+    Take patched = original;
+    Eigen::Index patchedCount = 0;
+    for (const SamplePatch& patch : smoothTake(original, options))
+      patchedCount += static_cast<Eigen::Index>(patch.size());
+    applyPatches(patched, smoothTake(original, options));
+    Take inPlace = original;
+    EXPECT_EQ(smoothTakeInPlace(inPlace, options), patchedCount) << describeSmoothOptions(options);
+    EXPECT_GT(patchedCount, 0);
+    for (Eigen::Index m = 0; m < original.markerCount(); ++m) {
+      const auto a = patched.trajectory(m), b = inPlace.trajectory(m);
+      ASSERT_TRUE(((a.array() == b.array()) || (a.array().isNaN() && b.array().isNaN())).all())
+          << describeSmoothOptions(options) << " marker " << m;
+    }
+    EXPECT_TRUE((std::as_const(patched).states() == std::as_const(inPlace).states()).all());
+    EXPECT_TRUE((patched.valid() == inPlace.valid()).all());
+    EXPECT_TRUE((patched.residuals() == inPlace.residuals()).all());
   }
 }
 

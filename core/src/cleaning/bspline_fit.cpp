@@ -53,28 +53,31 @@ template <int P, int K>
 void accumulateSpans(const double* basis, const Eigen::Index* first, Eigen::Index n, const double* y,
                      Eigen::Index yStride, double* out, Eigen::Index outStride)
 {
-  std::array<std::array<double, static_cast<std::size_t>(P + 1)>, static_cast<std::size_t>(K)> acc{};
+  // Fixed-size and never address-taken, so the (P + 1) · K sums stay in registers.
+  using Sums = Eigen::Matrix<double, P + 1, K>;
+  Sums acc = Sums::Zero();
   Eigen::Index current = first[0];
-  const auto flush = [&] {
-    for (int r = 0; r <= P; ++r)
-      for (int c = 0; c < K; ++c)
-        out[(current + r) * outStride + c] += acc[static_cast<std::size_t>(c)][static_cast<std::size_t>(r)];
-    acc = {};
-  };
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (first[i] != current) {
-      flush();
+  for (Eigen::Index i = 0; i <= n; ++i) {
+    if (i == n || first[i] != current) {
+      for (int r = 0; r <= P; ++r)
+        for (int c = 0; c < K; ++c)
+          out[(current + r) * outStride + c] += acc(r, c);
+      if (i == n)
+        break;
+      acc.setZero();
       current = first[i];
     }
-    const double* values = basis + i * (P + 1);
-    for (int c = 0; c < K; ++c) {
-      const double yi = y[c * yStride + i];
-      auto& sums = acc[static_cast<std::size_t>(c)];
-      for (int r = 0; r <= P; ++r)
-        sums[static_cast<std::size_t>(r)] += values[r] * yi;
-    }
+    const Eigen::Map<const Eigen::Matrix<double, P + 1, 1>> values(basis + i * (P + 1));
+    for (int c = 0; c < K; ++c)
+      acc.col(c) += values * y[c * yStride + i];
   }
-  flush();
+}
+
+// True when every sample is finite: x · 0 is 0 for a finite x and NaN otherwise, and the sum is
+// vectorised where allFinite's early-exit test is one scalar compare per element.
+bool allSamplesFinite(const Eigen::Ref<const Eigen::MatrixXd>& samples)
+{
+  return (samples.array() * 0.0).sum() == 0.0;
 }
 
 // The curve at every sample for K columns (eq 11): out[c · outStride + i] = Σ_r B_r(t_i) ·
@@ -281,7 +284,7 @@ BandedCholesky::Band BSplineFitter::solve(const Eigen::Ref<const Eigen::MatrixXd
   if (samples.rows() != m_sampleCount)
     throw InvalidArgument("B-spline fit prepared for " + std::to_string(m_sampleCount) + " samples, got " +
                           std::to_string(samples.rows()));
-  if (!samples.allFinite())
+  if (!allSamplesFinite(samples))
     throw InvalidArgument("B-spline fit: samples must be finite");
   const int p = m_degree;
   const Eigen::Index n = m_sampleCount;
@@ -347,7 +350,7 @@ void BSplineFitter::fit(const Eigen::Ref<const Eigen::MatrixXd>& samples,
 Eigen::MatrixXd fitBSpline(const Eigen::Ref<const Eigen::MatrixXd>& samples, const BSplineFitOptions& options)
 {
   checkBSplineFitOptions(options);
-  if (!samples.allFinite())
+  if (!allSamplesFinite(samples))
     throw InvalidArgument("B-spline fit: samples must be finite");
   if (samples.rows() < minBSplineRunLength(options.degree))
     return samples;

@@ -38,9 +38,7 @@ CleanReport cleanTake(Take& take, const CleanOptions& options)
     applyPatches(take, std::move(filled.patches));
   }
   if (options.smooth) {
-    std::vector<SamplePatch> smoothed = smoothTake(take, *options.smooth);
-    report.smoothedSamples = patchSamples(smoothed);
-    applyPatches(take, std::move(smoothed));
+    report.smoothedSamples = smoothTakeInPlace(take, *options.smooth);
   }
   if (report.headMotion && !options.keepStabilized)
     restoreHeadMotion(take, *report.headMotion);

@@ -55,6 +55,18 @@ public:
   Trajectory smooth(const Eigen::Ref<const Trajectory>& xyz, const ValidMask& usable)
   {
     Trajectory result = xyz;
+    ValidMask changed;
+    smoothRuns(xyz, usable, result, changed);
+    return result;
+  }
+
+  // Writes the smoothed runs into their rows of `out` (the others untouched, so `out` needs no
+  // copy of `xyz`) and sets `changed` (resized to the frames) where a smoothed position differs.
+  void smoothRuns(const Eigen::Ref<const Trajectory>& xyz, const ValidMask& usable, Trajectory& out,
+                  ValidMask& changed)
+  {
+    out.resize(xyz.rows(), 3);
+    changed.setConstant(xyz.rows(), false);
     double cutoff = m_options.cutoffHz;
     if (m_options.method == SmoothMethod::Butterworth && m_options.winterCutoff)
       cutoff = winterCutoff(xyz, usable, m_frameRate).cutoffHz;
@@ -63,19 +75,22 @@ public:
       if (run.length < minLength)
         continue;
       const auto samples = xyz.middleRows(run.first, run.length);
-      auto out = result.middleRows(run.first, run.length);
+      auto smoothed = out.middleRows(run.first, run.length);
       switch (m_options.method) {
-      case SmoothMethod::BSpline: fitter(run.length).fit(samples, out); break;
-      case SmoothMethod::Butterworth: out = butterworthFilter(samples, m_frameRate, cutoff); break;
+      case SmoothMethod::BSpline: fitter(run.length).fit(samples, smoothed); break;
+      case SmoothMethod::Butterworth: smoothed = butterworthFilter(samples, m_frameRate, cutoff); break;
       case SmoothMethod::Gcvspl:
-        out = smoothingSpline(samples, m_frameRate, splineOptions(m_options)).smoothed;
+        smoothed = smoothingSpline(samples, m_frameRate, splineOptions(m_options)).smoothed;
         break;
       case SmoothMethod::SavGol:
-        out = savitzkyGolay(samples, {m_options.savgolWindow, m_options.savgolDegree});
+        smoothed = savitzkyGolay(samples, {m_options.savgolWindow, m_options.savgolDegree});
         break;
       }
+      // Column-wise comparison (contiguous) rather than row by row.
+      changed.segment(run.first, run.length) = (smoothed.col(0).array() != samples.col(0).array()) ||
+                                               (smoothed.col(1).array() != samples.col(1).array()) ||
+                                               (smoothed.col(2).array() != samples.col(2).array());
     }
-    return result;
   }
 
 private:
@@ -98,6 +113,24 @@ private:
   double m_frameRate;
   std::map<Eigen::Index, BSplineFitter> m_fitters;
 };
+
+// Smooths each marker of `take` in turn and calls visit(marker, smoothed, changed): `changed` the
+// marker's usable samples whose position the smoothing changed, `smoothed` holding their new
+// positions (its other rows are undefined). `visit` may write marker `marker` of the take (the
+// smoothing has read it by then).
+template <typename Visit>
+void smoothMarkers(const Take& take, const SmoothOptions& options, const JobControl& job, Visit&& visit)
+{
+  TrajectorySmoother smoother(options, take.frameRate());
+  Trajectory smoothed;  // one buffer for every marker
+  ValidMask changed;
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
+    const auto xyz = take.trajectory(m);
+    smoother.smoothRuns(xyz, TrajectorySmoother::usableSamples(xyz, take.valid().col(m)), smoothed, changed);
+    visit(m, static_cast<const Trajectory&>(smoothed), static_cast<const ValidMask&>(changed));
+  }
+}
 
 std::string number(double value)
 {
@@ -206,18 +239,9 @@ smoothTrajectory(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>
 
 std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options, const JobControl& job)
 {
-  TrajectorySmoother smoother(options, take.frameRate());
   std::vector<SamplePatch> patches;
   patches.reserve(static_cast<std::size_t>(take.markerCount()));
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
-    job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
-    const auto xyz = take.trajectory(m);
-    const ValidMask usable = TrajectorySmoother::usableSamples(xyz, take.valid().col(m));
-    const Trajectory smoothed = smoother.smooth(xyz, usable);
-    // Column-wise comparison (contiguous) rather than row by row.
-    const ValidMask changed = usable && ((smoothed.col(0).array() != xyz.col(0).array()) ||
-                                         (smoothed.col(1).array() != xyz.col(1).array()) ||
-                                         (smoothed.col(2).array() != xyz.col(2).array()));
+  smoothMarkers(take, options, job, [&](Eigen::Index m, const Trajectory& smoothed, const ValidMask& changed) {
     std::vector<Eigen::Index> frames;
     frames.reserve(static_cast<std::size_t>(changed.count()));
     for (Eigen::Index f = 0; f < take.frameCount(); ++f)
@@ -231,8 +255,24 @@ std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& optio
     patch.states.assign(frames.size(), SampleState::Smoothed);
     patch.frames = std::move(frames);
     patches.push_back(std::move(patch));
-  }
+  });
   return patches;
+}
+
+Eigen::Index smoothTakeInPlace(Take& take, const SmoothOptions& options, const JobControl& job)
+{
+  Eigen::Index count = 0;
+  smoothMarkers(take, options, job, [&](Eigen::Index m, const Trajectory& smoothed, const ValidMask& changed) {
+    auto trajectory = take.trajectory(m);
+    auto states = take.states().col(m);
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      if (changed(f)) {
+        trajectory.row(f) = smoothed.row(f);
+        states(f) = static_cast<std::uint8_t>(SampleState::Smoothed);
+        ++count;
+      }
+  });
+  return count;
 }
 
 } // namespace mocap

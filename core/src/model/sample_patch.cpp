@@ -65,24 +65,26 @@ SamplePatch deleteSamples(const Take& take, Eigen::Index marker, Eigen::Index fi
 
 SamplePatch swapSamples(Take& take, SamplePatch patch)
 {
-  checkPatch(take, patch);
-  auto trajectory = take.trajectory(patch.marker);
-  auto valid = take.valid();
-  auto residuals = take.residuals();
-  auto masks = take.cameraMasks();
+  checkPatch(take, patch);  // every frame inside the take, so the loop indexes unchecked
+  const Eigen::Index m = patch.marker;
+  auto trajectory = take.trajectory(m);
+  auto valid = take.valid().col(m);
+  auto residuals = take.residuals().col(m);
+  auto states = take.states().col(m);
+  auto masks = take.cameraMasks().col(m);
+  const bool withMasks = !patch.cameraMasks.empty();
   for (std::size_t i = 0; i < patch.frames.size(); ++i) {
     const Eigen::Index f = patch.frames[i];
     const auto row = static_cast<Eigen::Index>(i);
-    const Eigen::RowVector3d old = trajectory.row(f);
-    trajectory.row(f) = patch.positions.row(row);
-    patch.positions.row(row) = old;
-    std::swap(valid(f, patch.marker), patch.valid(row));
-    std::swap(residuals(f, patch.marker), patch.residuals(row));
-    const SampleState oldState = take.state(f, patch.marker);
-    take.setState(f, patch.marker, patch.states[i]);
-    patch.states[i] = oldState;
-    if (!patch.cameraMasks.empty())
-      std::swap(masks(f, patch.marker), patch.cameraMasks[i]);
+    for (Eigen::Index c = 0; c < 3; ++c)
+      std::swap(trajectory(f, c), patch.positions(row, c));
+    std::swap(valid(f), patch.valid(row));
+    std::swap(residuals(f), patch.residuals(row));
+    const auto state = static_cast<std::uint8_t>(patch.states[i]);
+    patch.states[i] = static_cast<SampleState>(states(f));
+    states(f) = state;
+    if (withMasks)
+      std::swap(masks(f), patch.cameraMasks[i]);
   }
   return patch;
 }

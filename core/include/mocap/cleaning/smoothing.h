@@ -88,4 +88,11 @@ smoothTrajectory(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>
 [[nodiscard]] std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options,
                                                 const JobControl& job = {});
 
+/// Smooths `take` in place exactly as applying smoothTake's patches would (the same positions and
+/// states), without building them: for pipelines that never undo. Returns the number of samples
+/// changed. Throws as smoothTake before changing anything; JobCancelled leaves the markers smoothed
+/// before it smoothed. Same cost as smoothTake, without its
+/// O(#samples) patch memory.
+Eigen::Index smoothTakeInPlace(Take& take, const SmoothOptions& options, const JobControl& job = {});
+
 } // namespace mocap

@@ -157,6 +157,9 @@ public:
   [[nodiscard]] SampleState state(Eigen::Index frame, Eigen::Index marker) const;
   void setState(Eigen::Index frame, Eigen::Index marker, SampleState state);
   [[nodiscard]] ConstSampleBytesMap states() const { return {m_states.data(), m_frameCount, markerCount()}; }
+  /// The states as bytes (each a SampleState), for loops over many samples without setState's
+  /// index check per sample; write only SampleState values.
+  [[nodiscard]] SampleBytesMap states() { return {m_states.data(), m_frameCount, markerCount()}; }
 
   /// Appends a marker (label made unique) with every sample invalid; returns its index.
   Eigen::Index addMarker(std::string label);
