@@ -39,7 +39,19 @@ struct CleanArguments
   std::optional<std::string> preset, manifest;
   std::optional<long long> index;
   bool resume = false;
+  bool count = false;
+  std::optional<double> minValidAfter;  ///< quality check: exit 3 below this valid fraction after cleaning
 };
+
+/// Exit 3 (the batch's quality exit) when the cleaned take's valid fraction is below --min-valid-after.
+int qualityExit(const CleanArguments& arguments, const std::string& input, double validAfter)
+{
+  if (!arguments.minValidAfter || validAfter >= *arguments.minValidAfter)
+    return kExitOk;
+  std::cerr << "mocap clean: " << input << ": valid fraction after cleaning " << validAfter
+            << " is below --min-valid-after " << *arguments.minValidAfter << '\n';
+  return kExitQuality;
+}
 
 std::optional<SpikeOptions> spikeOptions(const CleanArguments& arguments)
 {
@@ -212,6 +224,7 @@ int runManifestTake(const CleanArguments& arguments, const CleanOptions& options
   batch.outDir = arguments.output;
   batch.preset = options;
   batch.resume = arguments.resume;
+  batch.minValid = arguments.minValidAfter;
   prepareOutDir(manifest, batch.outDir);
   const BatchTakeResult result = runBatchTake(manifest, index, batch);
   const ManifestEntry& entry = manifest.takes[index];
@@ -222,11 +235,25 @@ int runManifestTake(const CleanArguments& arguments, const CleanOptions& options
   }
   std::cout << takeStatusName(result.status) << ' ' << entry.input.string() << " -> " << outputs.take.string()
             << '\n';
+  return qualityExit(arguments, entry.input.string(), result.validAfter);
+}
+
+/// `mocap clean --manifest F --count`: the number of takes, for a job array's size.
+int printManifestCount(const CleanArguments& arguments)
+{
+  const TakeManifest manifest = readManifest(*arguments.manifest, {});
+  for (const std::string& warning : manifest.warnings)
+    std::cerr << "mocap clean: warning: " << warning << '\n';
+  std::cout << manifest.takes.size() << '\n';
   return kExitOk;
 }
 
 int runClean(const CleanArguments& arguments)
 {
+  if (arguments.count)
+    return printManifestCount(arguments);
+  if (arguments.output.empty())
+    throw UsageError("-o OUT is required (with --manifest: -o OUTDIR)");
   const CleanOptions options = cleanOptions(arguments);
   if (arguments.manifest)
     return runManifestTake(arguments, options);
@@ -243,7 +270,7 @@ int runClean(const CleanArguments& arguments)
   writeCleanedTake(take, report, options, output);
   if (arguments.report)
     writeFileAtomically(*arguments.report, reportJson(input, output, take, options, report));
-  return kExitOk;
+  return qualityExit(arguments, input, take.validFraction());
 }
 
 std::vector<std::string> fillChoices()
@@ -265,8 +292,8 @@ Command addClean(CLI::App& mocap)
   CLI::Option* input = command->add_option("IN", a->input, "the take to clean");
   command
       ->add_option("-o,--output", a->output,
-                   "the cleaned take, its extension naming the format; with --manifest the OUTDIR of mocap batch")
-      ->required()
+                   "the cleaned take, its extension naming the format; with --manifest the OUTDIR of mocap batch "
+                   "(required unless --count)")
       ->type_name("OUT");
   oneOf(command->add_option("--spikes", a->spikes, "spike detector"), spikeMethodNames() + "|off")
       ->capture_default_str();
@@ -339,6 +366,14 @@ Command addClean(CLI::App& mocap)
                     ->needs(manifest),
                 0, 1LL << 40);
   command->add_flag("--resume", a->resume, "with --manifest: skip the take when OUTDIR holds it from the same input and preset");
+  command->add_flag("--count", a->count, "with --manifest: print how many takes it lists (the job array's size) and exit")
+      ->needs(manifest)
+      ->excludes(command->get_option("--index"));
+  numberIn(command->add_option("--min-valid-after", a->minValidAfter,
+                               "quality check: exit 3 when the valid fraction after cleaning is below F (the take "
+                               "is still written; mocap batch --min-valid)")
+               ->type_name("F"),
+           0.0, 1.0);
   return {command, [a] { return runClean(*a); }};
 }
 

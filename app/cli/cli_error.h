@@ -18,7 +18,7 @@ enum ExitCode : int
   kExitOk = 0,
   kExitBadInput = 1,
   kExitBadUsage = 2,
-  kExitQuality = 3,        ///< `mocap batch`: every take processed, some below --min-valid
+  kExitQuality = 3,        ///< every take processed, some below `batch --min-valid` / `clean --min-valid-after`
   kExitInterrupted = 130,  ///< stopped by SIGINT/SIGTERM (128 + SIGINT, the shells' convention)
 };
 

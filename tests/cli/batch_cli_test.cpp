@@ -331,6 +331,34 @@ TEST(BatchCli, CleanManifestTakesItsIndexFromTheArrayVariables)
   EXPECT_EQ(mocap("clean " + shellQuote(archive.root / "session1/Eb015pi.c3d") + " --index 1 -o x.c3d", dir).exitCode, 2);
 }
 
+// A job array needs its size: `--count` prints the manifest's takes (what --index counts).
+// --min-valid-after is the batch's quality check for one take: exit 3, the take kept.
+TEST(BatchCli, CleanManifestCountsTheTakesAndChecksTheValidFractionAfterCleaning)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  const auto count = mocap("clean --manifest " + shellQuote(archive.manifest()) + " --count", dir);
+  ASSERT_EQ(count.exitCode, 0) << count.err;
+  EXPECT_EQ(count.out, "5\n");
+  EXPECT_EQ(mocap("clean --manifest " + shellQuote(archive.manifest()) + " --count --index 1", dir).exitCode, 2);
+  EXPECT_EQ(mocap("clean " + shellQuote(test::sampleTake()) + " --count", dir).exitCode, 2);  // needs --manifest
+  const auto noOutput = mocap("clean " + shellQuote(test::sampleTake()), dir);
+  EXPECT_EQ(noOutput.exitCode, 2);
+  EXPECT_NE(noOutput.err.find("-o OUT is required"), std::string::npos) << noOutput.err;
+
+  writeFileAtomically(dir.file("list.txt"), test::sampleTake().string() + "\n");
+  const std::string one = "clean --manifest " + shellQuote(dir.file("list.txt")) + " --index 0 -o " + shellQuote(dir.file("out"));
+  const auto low = mocap(one + " --min-valid-after 0.999", dir);
+  EXPECT_EQ(low.exitCode, 3) << low.err;
+  EXPECT_NE(low.err.find("is below --min-valid-after 0.999"), std::string::npos) << low.err;
+  EXPECT_TRUE(fs::exists(dir.file("out/Facial-Sing.c3d")));  // kept, flagged
+  EXPECT_EQ(mocap(one + " --min-valid-after 0.5 --resume", dir).exitCode, 0);
+  const auto single = mocap("clean " + shellQuote(test::sampleTake()) + " -o " + shellQuote(dir.file("one.c3d")) +
+                                " --min-valid-after 0.999", dir);
+  EXPECT_EQ(single.exitCode, 3) << single.err;
+  EXPECT_TRUE(fs::exists(dir.file("one.c3d")));
+}
+
 TEST(BatchCli, APresetIsReadStrictlyAndReplacesTheCleaningOptions)
 {
   test::TempDir dir;

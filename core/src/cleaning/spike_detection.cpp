@@ -79,9 +79,17 @@ double lane(const Lanes& a, std::size_t l)
   _mm_store_pd(values, a.v);
   return values[l];
 }
+Lanes makeLanes(double first, double second)
+{
+  return {_mm_set_pd(second, first)};
+}
 Lanes operator+(const Lanes& a, const Lanes& b)
 {
   return {_mm_add_pd(a.v, b.v)};
+}
+Lanes operator*(const Lanes& a, const Lanes& b)
+{
+  return {_mm_mul_pd(a.v, b.v)};
 }
 Lanes operator-(const Lanes& a, const Lanes& b)
 {
@@ -123,9 +131,17 @@ Lanes each(const Lanes& a, const Lanes& b, Op op)
     r.v[l] = op(a.v[l], b.v[l]);
   return r;
 }
+Lanes makeLanes(double first, double second)
+{
+  return {{first, second}};
+}
 Lanes operator+(const Lanes& a, const Lanes& b)
 {
   return each(a, b, [](double x, double y) { return x + y; });
+}
+Lanes operator*(const Lanes& a, const Lanes& b)
+{
+  return each(a, b, [](double x, double y) { return x * y; });
 }
 Lanes operator-(const Lanes& a, const Lanes& b)
 {
@@ -433,6 +449,93 @@ double predictFromScratch(const Trajectory& xyz, const Run& w, Eigen::Index i, c
   return g.dot(noise * g);
 }
 
+// The prediction filter of `fit` without the window samples leftOut[0..count) (window indices;
+// at least 4 samples remain): their terms removed from the precomputed sums. Returns the
+// prediction's variance for unit noise.
+double filterWithout(const LeaveOneOutFit& fit, const std::size_t* leftOut, std::size_t count,
+                     std::array<double, kWindow>& filter)
+{
+  Eigen::Matrix3d normal = fit.normal;
+  Eigen::Matrix3d noise = fit.noise;
+  std::array<double, kWindow> weight = fit.weight;
+  for (std::size_t l = 0; l < count; ++l) {
+    const std::size_t k = leftOut[l];
+    const Eigen::Matrix3d outer = fit.phi[k] * fit.phi[k].transpose();
+    normal -= weight[k] * outer;
+    noise -= weight[k] * weight[k] * outer;
+    weight[k] = 0.0;
+  }
+  const Eigen::Vector3d g = leaveOutGain(normal);
+  for (std::size_t k = 0; k < weight.size(); ++k)
+    filter[k] = weight[k] * g.dot(fit.phi[k]);
+  return g.dot(noise * g);
+}
+
+// Stage 2's filter for a centred window by the set of suspects it leaves out (bit k: window
+// sample k; never the centre, at most kMaxLeftOut bits), with the prediction's standard
+// deviation relative to the noise. All 2⁹ sets are computed once (40 kB), so a window with
+// suspects costs what a clean one does.
+struct CentredFilter
+{
+  std::array<double, kWindow> filter{};
+  double deviation = 1.0;  // sqrt(1 + variance of the prediction)
+  bool computed = false;   // false for sets with the centre or more than kMaxLeftOut suspects
+};
+
+using SuspectMask = unsigned;
+constexpr SuspectMask kCentreBit = 1u << kQuadraticHalfWidth;
+
+using CentredFilters = std::array<CentredFilter, std::size_t{1} << kWindow>;
+
+const CentredFilters& centredFilters()
+{
+  static const auto table = [] {
+    CentredFilters all{};
+    const LeaveOneOutFit& fit = leaveOneOutFits()[static_cast<std::size_t>(kQuadraticHalfWidth)];
+    for (SuspectMask mask = 0; mask < all.size(); ++mask) {
+      std::array<std::size_t, kWindow> leftOut{};
+      std::size_t count = 0;
+      for (std::size_t k = 0; k < kWindow; ++k)
+        if ((mask >> k) & 1u)
+          leftOut[count++] = k;
+      if ((mask & kCentreBit) != 0 || count > kMaxLeftOut)
+        continue;
+      CentredFilter& entry = all[mask];
+      const double variance = count == 0 ? fit.variance : filterWithout(fit, leftOut.data(), count, entry.filter);
+      if (count == 0)
+        entry.filter = fit.filter;
+      entry.deviation = std::sqrt(1.0 + variance);
+      entry.computed = true;
+    }
+    return all;
+  }();
+  return table;
+}
+
+// The suspects of window `w` other than `i` that one fit leaves out: all of them, or the
+// kMaxLeftOut (fewer in a short window: at least 3 samples stay for the quadratic) with the
+// largest stage-1 residuals. Writes their frames to leftOut; returns how many.
+std::size_t leftOutSuspects(const Run& run, Eigen::Index i, const Run& w, const RobustWork& work,
+                            std::array<Eigen::Index, kWindow>& leftOut)
+{
+  const auto others = static_cast<std::size_t>(w.size() - 1);
+  const std::size_t maxLeftOut = std::min(kMaxLeftOut, others > 3 ? others - 3 : 0);
+  std::size_t count = 0;
+  for (Eigen::Index j = w.first; j <= w.last; ++j)
+    if (j != i && work.suspect[static_cast<std::size_t>(j - run.first)])
+      leftOut[count++] = j;
+  if (count > maxLeftOut) {
+    const auto byResidual = [&](Eigen::Index a, Eigen::Index b) {
+      return work.lineResidual(a - run.first) > work.lineResidual(b - run.first);
+    };
+    std::partial_sort(leftOut.begin(), leftOut.begin() + static_cast<std::ptrdiff_t>(maxLeftOut),
+                      leftOut.begin() + static_cast<std::ptrdiff_t>(count), byResidual);
+    std::sort(leftOut.begin(), leftOut.begin() + static_cast<std::ptrdiff_t>(maxLeftOut));
+    count = maxLeftOut;
+  }
+  return count;
+}
+
 // Stage 2 for sample `i` and window `w` (9 samples, or the whole of a shorter run): the sample
 // predicted by a tricube-weighted local quadratic without itself and without the (at most 4)
 // worst stage-1 suspects of the window. The prediction error is divided by its standard
@@ -441,93 +544,97 @@ double predictionResidual(const Trajectory& xyz, const Run& run, Eigen::Index i,
                           const RobustWork& work)
 {
   std::array<Eigen::Index, kWindow> leftOut{};
-  // Keep at least 3 samples, enough for the quadratic.
-  const auto others = static_cast<std::size_t>(w.size() - 1);
-  const std::size_t maxLeftOut = std::min(kMaxLeftOut, others > 3 ? others - 3 : 0);
-  std::size_t leftOutCount = 0;
-  for (Eigen::Index j = w.first; j <= w.last; ++j)
-    if (j != i && work.suspect[static_cast<std::size_t>(j - run.first)])
-      leftOut[leftOutCount++] = j;
-  if (leftOutCount > maxLeftOut) {
-    const auto byResidual = [&](Eigen::Index a, Eigen::Index b) {
-      return work.lineResidual(a - run.first) > work.lineResidual(b - run.first);
-    };
-    std::partial_sort(leftOut.begin(), leftOut.begin() + static_cast<std::ptrdiff_t>(maxLeftOut),
-                      leftOut.begin() + static_cast<std::ptrdiff_t>(leftOutCount), byResidual);
-    leftOutCount = maxLeftOut;
-  }
+  const std::size_t leftOutCount = leftOutSuspects(run, i, w, work, leftOut);
   Eigen::RowVector3d value = Eigen::RowVector3d::Zero();
   double variance = 0.0;
   if (w.size() < kWindow) {
     variance = predictFromScratch(xyz, w, i, leftOut.data(), leftOutCount, value);
   } else {
     const LeaveOneOutFit& fit = leaveOneOutFits()[static_cast<std::size_t>(i - w.first)];
-    if (leftOutCount == 0) {
-      for (std::size_t k = 0; k < fit.filter.size(); ++k)
-        value += fit.filter[k] * xyz.row(w.first + static_cast<Eigen::Index>(k));
-      variance = fit.variance;
-    } else {
-      // Remove the left-out samples from the precomputed sums (at least 4 samples remain).
-      Eigen::Matrix3d normal = fit.normal;
-      Eigen::Matrix3d noise = fit.noise;
-      std::array<double, kWindow> weight = fit.weight;
-      for (std::size_t l = 0; l < leftOutCount; ++l) {
-        const auto k = static_cast<std::size_t>(leftOut[l] - w.first);
-        const Eigen::Matrix3d outer = fit.phi[k] * fit.phi[k].transpose();
-        normal -= weight[k] * outer;
-        noise -= weight[k] * weight[k] * outer;
-        weight[k] = 0.0;
-      }
-      const Eigen::Vector3d g = leaveOutGain(normal);
-      for (std::size_t k = 0; k < weight.size(); ++k)
-        if (weight[k] != 0.0)
-          value += (weight[k] * g.dot(fit.phi[k])) * xyz.row(w.first + static_cast<Eigen::Index>(k));
-      variance = g.dot(noise * g);
+    std::array<double, kWindow> filter = fit.filter;
+    variance = fit.variance;
+    if (leftOutCount > 0) {
+      std::array<std::size_t, kWindow> inWindow{};
+      for (std::size_t l = 0; l < leftOutCount; ++l)
+        inWindow[l] = static_cast<std::size_t>(leftOut[l] - w.first);
+      variance = filterWithout(fit, inWindow.data(), leftOutCount, filter);
     }
+    for (std::size_t k = 0; k < filter.size(); ++k)
+      value += filter[k] * xyz.row(w.first + static_cast<Eigen::Index>(k));
   }
   return (xyz.row(i) - value).norm() / std::sqrt(1.0 + variance);
 }
 
-// Stage 2 for interior samples i..i + kLanes − 1 whose centred windows hold no suspect: the
-// precomputed filter, one sample per lane, summed in the order predictionResidual sums.
-void filteredResiduals(const Trajectory& xyz, const Run& run, Eigen::Index i, RobustWork& work)
+// The left-out set of interior sample i's centred window, from `window` (bit k: sample
+// i − 4 + k is a suspect): its suspects other than i, reduced as leftOutSuspects reduces them.
+SuspectMask centredLeftOut(const Run& run, Eigen::Index i, SuspectMask window, const CentredFilters& filters,
+                           const RobustWork& work)
 {
-  const LeaveOneOutFit& fit = leaveOneOutFits()[static_cast<std::size_t>(kQuadraticHalfWidth)];
+  const SuspectMask mask = window & ~kCentreBit;
+  if (filters[mask].computed)
+    return mask;
+  std::array<Eigen::Index, kWindow> leftOut{};
+  const Run w{i - kQuadraticHalfWidth, i + kQuadraticHalfWidth};
+  const std::size_t count = leftOutSuspects(run, i, w, work, leftOut);
+  SuspectMask reduced = 0;
+  for (std::size_t l = 0; l < count; ++l)
+    reduced |= 1u << static_cast<unsigned>(leftOut[l] - w.first);
+  return reduced;
+}
+
+// Stage 2 for interior samples i..i + kLanes − 1 (centred windows), one sample per lane, each
+// with the precomputed filter of its left-out set, summed in the order predictionResidual sums
+// (so the results are predictionResidual's).
+void filteredResiduals(const Trajectory& xyz, const Run& run, Eigen::Index i,
+                       const std::array<SuspectMask, kLanes>& leftOut, const CentredFilters& filters,
+                       RobustWork& work)
+{
+  static_assert(kLanes == 2, "one filter per lane");
+  const CentredFilter& first = filters[leftOut[0]];
+  const CentredFilter& second = filters[leftOut[1]];
   std::array<Lanes, 3> value{};
   for (Eigen::Index c = 0; c < 3; ++c) {
     const double* x = xyz.col(c).data() + (i - kQuadraticHalfWidth);
     Lanes& sum = value[static_cast<std::size_t>(c)];
-    unrolled<kWindow>([&](auto k) { sum = sum + fit.filter[k] * loadLanes(x + k); });
+    unrolled<kWindow>(
+        [&](auto k) { sum = sum + makeLanes(first.filter[k], second.filter[k]) * loadLanes(x + k); });
   }
-  const double deviation = std::sqrt(1.0 + fit.variance);
+  const std::array<double, kLanes> deviation{first.deviation, second.deviation};
   for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
     const Eigen::Index f = i + static_cast<Eigen::Index>(l);
     const Eigen::RowVector3d prediction(lane(value[0], l), lane(value[1], l), lane(value[2], l));
-    work.fitResidual(f - run.first) = (xyz.row(f) - prediction).norm() / deviation;
+    work.fitResidual(f - run.first) = (xyz.row(f) - prediction).norm() / deviation[l];
   }
 }
 
 // Stage 2 for every sample of the run, each with its window shifted inward at the run ends.
+// O(run length): the interior's windows go through the filter table, a rolling mask says
+// which of their samples are suspects.
 void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
 {
   Eigen::Index i = run.first;
   if (run.size() > kWindow) {
-    const auto suspect = [&](Eigen::Index f) { return work.suspect[static_cast<std::size_t>(f - run.first)] != 0; };
+    const auto suspectBit = [&](Eigen::Index f) {
+      return f <= run.last && work.suspect[static_cast<std::size_t>(f - run.first)] != 0 ? SuspectMask{1} : 0u;
+    };
     for (; i < run.first + kQuadraticHalfWidth; ++i)
       work.fitResidual(i - run.first) =
           predictionResidual(xyz, run, i, windowAround(run, i, kQuadraticHalfWidth), work);
-    while (i + kLanes - 1 <= run.last - kQuadraticHalfWidth) {
-      bool clean = true;
-      for (Eigen::Index f = i - kQuadraticHalfWidth; f <= i + kLanes - 1 + kQuadraticHalfWidth && clean; ++f)
-        clean = !suspect(f);
-      if (clean) {
-        filteredResiduals(xyz, run, i, work);
-        i += kLanes;
-      } else {
-        work.fitResidual(i - run.first) =
-            predictionResidual(xyz, run, i, windowAround(run, i, kQuadraticHalfWidth), work);
-        ++i;
+    SuspectMask window = 0;  // bit k: sample i − 4 + k
+    for (unsigned k = 0; k < static_cast<unsigned>(kWindow); ++k)
+      window |= suspectBit(run.first + static_cast<Eigen::Index>(k)) << k;
+    const auto step = [&] {
+      window = (window >> 1) | (suspectBit(i + 1 + kQuadraticHalfWidth) << (kWindow - 1));
+      ++i;
+    };
+    const CentredFilters& filters = centredFilters();
+    for (; i + kLanes - 1 <= run.last - kQuadraticHalfWidth;) {
+      std::array<SuspectMask, kLanes> leftOut{};
+      for (SuspectMask& mask : leftOut) {
+        mask = centredLeftOut(run, i, window, filters, work);
+        step();
       }
+      filteredResiduals(xyz, run, i - kLanes, leftOut, filters, work);
     }
   }
   for (; i <= run.last; ++i)
