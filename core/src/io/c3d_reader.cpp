@@ -80,7 +80,7 @@ public:
     decodeData(layout, take);
     readEvents(take);
     take.parameters() = std::move(m_tree);
-    loadProvenance(take, m_warnings);
+    loadProvenance(take, m_warnings, m_residualCounts);
     return take;
   }
 
@@ -508,6 +508,7 @@ private:
     double* residuals = take.residuals().data();
     std::uint8_t* cameras = take.cameraMasks().data();
     const unsigned char* data = m_data + layout.offset;
+    ResidualCounts counts;  // counted here, so loadProvenance need not read the residuals again
     for (std::size_t first = 0; first < frames; first += kChunkFrames) {
       const std::size_t last = std::min(frames, first + kChunkFrames);
       for (std::size_t m = 0; m < layout.pointCount; ++m) {
@@ -527,11 +528,15 @@ private:
           z[f] = zv;
           valid[sampleBase + f] = ok;
           const auto bits = ok ? static_cast<std::uint32_t>(std::min(word, 65535.0)) : 0u;
-          residuals[sampleBase + f] = ok ? static_cast<double>(bits & 0xFFu) * residualScale : -1.0;
+          const double residual = ok ? static_cast<double>(bits & 0xFFu) * residualScale : -1.0;
+          residuals[sampleBase + f] = residual;
+          counts.valid += ok ? 1 : 0;
+          counts.zero += residual == 0.0 ? 1 : 0;  // (an invalid sample's -1 is never 0)
           cameras[sampleBase + f] = static_cast<std::uint8_t>((bits >> 8) & 0x7Fu);
         }
       }
     }
+    m_residualCounts = counts;
     decodeAnalog(layout, take.analog(), decode);
   }
 
@@ -609,6 +614,7 @@ private:
   const std::string& m_name;
   std::vector<std::string>* m_warnings;
   std::vector<std::string>* m_dataLoss;
+  std::optional<ResidualCounts> m_residualCounts;  // set by decodeFrames
   Processor m_processor = Processor::Intel;
   Header m_header;
   std::size_t m_parameterOffset = 0;

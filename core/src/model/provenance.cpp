@@ -94,15 +94,14 @@ std::vector<const C3dParameter*> parameterParts(const C3dGroup& group, const std
 
 /// Marks valid samples with residual exactly 0 as Filled when the file's residuals are real
 /// (some above 0 and fewer than half at 0); returns how many were marked.
-Eigen::Index markZeroResidualsFilled(Take& take)
+Eigen::Index markZeroResidualsFilled(Take& take, std::optional<ResidualCounts> counts)
 {
-  Eigen::Index zero = 0, positive = 0;
   const auto valid = take.valid();
   const auto residuals = take.residuals();
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
-      if (valid(f, m))
-        (residuals(f, m) == 0.0 ? zero : positive) += 1;
+  if (!counts)
+    counts = ResidualCounts{(valid.array() && residuals.array() == 0.0).count(), valid.count()};
+  const Eigen::Index zero = counts->zero;
+  const Eigen::Index positive = counts->valid - zero;
   if (zero == 0 || positive == 0 || zero * 2 >= zero + positive)
     return 0;
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
@@ -326,11 +325,11 @@ void storeProvenance(const Take& take, C3dParameterTree& tree)
   }
 }
 
-void loadProvenance(Take& take, std::vector<std::string>* warnings)
+void loadProvenance(Take& take, std::vector<std::string>* warnings, std::optional<ResidualCounts> counts)
 {
   const C3dGroup* group = take.parameters().group(kGroup);
   if (!group) {
-    if (const Eigen::Index marked = markZeroResidualsFilled(take); marked > 0)
+    if (const Eigen::Index marked = markZeroResidualsFilled(take, counts); marked > 0)
       warn(warnings, std::to_string(marked) +
                          " sample(s) have residual 0, which C3D writers use for computed (gap-filled) points; "
                          "shown as filled");

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <optional>
 #include <vector>
 
 namespace mocap {
@@ -86,8 +87,15 @@ void storeProvenance(const Take& take, C3dParameterTree& tree);
 /// removes the group (the writer makes it anew). A file without one that has real residuals
 /// (some valid sample above 0, fewer than half at 0) gets its residual-0 samples marked Filled,
 /// the C3D convention for computed points, with a warning saying how many. A malformed group
-/// is skipped with a warning. O(#frames · #markers).
-void loadProvenance(Take& take, std::vector<std::string>* warnings);
+/// is skipped with a warning. O(#frames · #markers); O(1) for a file without the group when
+/// the reader passes the residual counts it made while decoding.
+struct ResidualCounts
+{
+  Eigen::Index zero = 0;   ///< valid samples with residual 0
+  Eigen::Index valid = 0;  ///< valid samples
+};
+void loadProvenance(Take& take, std::vector<std::string>* warnings,
+                    std::optional<ResidualCounts> counts = std::nullopt);
 
 /// Where the provenance of a TRC/CSV file is kept: NAME.provenance.json beside NAME.trc. O(1).
 [[nodiscard]] std::filesystem::path provenanceSidecarPath(const std::filesystem::path& takePath);
