@@ -91,6 +91,18 @@ Lanes operator*(const Lanes& a, const Lanes& b)
 {
   return {_mm_mul_pd(a.v, b.v)};
 }
+Lanes operator/(const Lanes& a, const Lanes& b)
+{
+  return {_mm_div_pd(a.v, b.v)};
+}
+Lanes squareRoot(const Lanes& a)
+{
+  return {_mm_sqrt_pd(a.v)};
+}
+void storeLanes(double* p, const Lanes& a)
+{
+  _mm_storeu_pd(p, a.v);
+}
 Lanes operator-(const Lanes& a, const Lanes& b)
 {
   return {_mm_sub_pd(a.v, b.v)};
@@ -143,6 +155,19 @@ Lanes operator*(const Lanes& a, const Lanes& b)
 {
   return each(a, b, [](double x, double y) { return x * y; });
 }
+Lanes operator/(const Lanes& a, const Lanes& b)
+{
+  return each(a, b, [](double x, double y) { return x / y; });
+}
+Lanes squareRoot(const Lanes& a)
+{
+  return each(a, a, [](double x, double /*unused*/) { return std::sqrt(x); });
+}
+void storeLanes(double* p, const Lanes& a)
+{
+  p[0] = a.v[0];
+  p[1] = a.v[1];
+}
 Lanes operator-(const Lanes& a, const Lanes& b)
 {
   return each(a, b, [](double x, double y) { return x - y; });
@@ -174,6 +199,17 @@ template <std::size_t N, typename F>
 void unrolled(F&& f)
 {
   unrolledSequence(f, std::make_index_sequence<N>{});
+}
+
+// |sample − estimate| for the kLanes samples from frame i (the estimate one Lanes per axis),
+// the squares summed as Eigen's norm() sums a 3-vector, x² + (y² + z²), so each lane is the
+// scalar norm bit for bit; one vector square root for all lanes.
+Lanes distances(const Trajectory& xyz, Eigen::Index i, const std::array<Lanes, 3>& estimate)
+{
+  std::array<Lanes, 3> d;
+  for (Eigen::Index c = 0; c < 3; ++c)
+    d[static_cast<std::size_t>(c)] = loadLanes(xyz.col(c).data() + i) - estimate[static_cast<std::size_t>(c)];
+  return squareRoot(d[0] * d[0] + (d[1] * d[1] + d[2] * d[2]));
 }
 
 double middle(double a, double b)
@@ -343,11 +379,7 @@ void medianLineResidualsAt(const Trajectory& xyz, const Run& run, Eigen::Index i
     });
     level[static_cast<std::size_t>(c)] = median7(values.data());
   }
-  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
-    const Eigen::Index f = i + static_cast<Eigen::Index>(l);
-    const Eigen::RowVector3d at(lane(level[0], l), lane(level[1], l), lane(level[2], l));
-    r(f - run.first) = (xyz.row(f) - at).norm();
-  }
+  storeLanes(r.data() + (i - run.first), distances(xyz, i, level));
 }
 
 // Stage 1: a local line fitted by medians per axis over 7 samples (slope: median of the first
@@ -599,12 +631,8 @@ void filteredResiduals(const Trajectory& xyz, const Run& run, Eigen::Index i,
     unrolled<kWindow>(
         [&](auto k) { sum = sum + makeLanes(first.filter[k], second.filter[k]) * loadLanes(x + k); });
   }
-  const std::array<double, kLanes> deviation{first.deviation, second.deviation};
-  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
-    const Eigen::Index f = i + static_cast<Eigen::Index>(l);
-    const Eigen::RowVector3d prediction(lane(value[0], l), lane(value[1], l), lane(value[2], l));
-    work.fitResidual(f - run.first) = (xyz.row(f) - prediction).norm() / deviation[l];
-  }
+  storeLanes(work.fitResidual.data() + (i - run.first),
+             distances(xyz, i, value) / makeLanes(first.deviation, second.deviation));
 }
 
 // Stage 2 for every sample of the run, each with its window shifted inward at the run ends.
