@@ -4,6 +4,7 @@
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
 #include "mocap/base/json_writer.h"
+#include "mocap/base/number_text.h"
 #include "mocap/math/registration.h"
 
 #include <Eigen/Geometry>
@@ -195,9 +196,11 @@ MeshBinding parseBinding(std::string_view text, const std::string& source, Eigen
   MeshBinding binding;
   binding.meshVertices = vertexCount;
   if (const JsonValue* count = root.find("mesh_vertices", "the binding"))
-    if (numberOf(count, source, "mesh_vertices") != static_cast<double>(vertexCount))
-      throw FormatError(source, "made for a mesh of " + std::to_string(static_cast<long long>(count->number("mesh_vertices"))) +
-                                    " vertices, this one has " + std::to_string(vertexCount));
+    if (const double made = numberOf(count, source, "mesh_vertices"); made != static_cast<double>(vertexCount)) {
+      std::string madeText;  // any number (a cast of 1e26 to an integer would be undefined)
+      appendNumber(madeText, made);
+      throw FormatError(source, "made for a mesh of " + madeText + " vertices, this one has " + std::to_string(vertexCount));
+    }
   // A label given twice keeps its last binding (JSON objects keep the last of repeated keys).
   for (const auto& [label, value] : markers->object("markers")) {
     MarkerBinding marker{label, pointOf(value, source, label, vertexCount), std::nan("")};
