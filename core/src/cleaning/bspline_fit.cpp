@@ -156,6 +156,7 @@ template <int P>
 Eigen::Matrix<double, P + 1, 1> uniformBasis(const Eigen::Matrix<double, P + 1, P + 1>& coefficient, double t)
 {
   Eigen::Matrix<double, P + 1, 1> values = coefficient.col(P);
+#pragma GCC unroll 8  // (unrolled, the P + 1 values stay in registers)
   for (int d = P - 1; d >= 0; --d)
     values = values * t + coefficient.col(d);
   return values;

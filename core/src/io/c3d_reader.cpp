@@ -10,6 +10,10 @@
 #include <cmath>
 #include <map>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
 #error "the C3D reader's Intel fast path assumes a little-endian host"
 #endif
@@ -61,6 +65,83 @@ bool isTextName(std::string_view name)
   return std::all_of(name.begin(), name.end(),
                      [](char c) { return static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7F; });
 }
+
+/// Where one marker's samples go: its coordinate columns and per-sample arrays, by frame.
+struct MarkerColumns
+{
+  double* x;
+  double* y;
+  double* z;
+  bool* valid;
+  double* residuals;
+  std::uint8_t* cameras;
+};
+
+/// One stored sample (x, y, z, residual word at `p`, `bpv` bytes each) into frame `f` of `out`.
+/// A sample is valid when its word is ≥ 0 and its coordinates are finite; the word's low byte
+/// is the residual (× `residualScale`), bits 8–14 the cameras that saw it. O(1).
+template <typename Decode>
+void decodeSample(const unsigned char* p, std::size_t bpv, double coordinateScale, double residualScale,
+                  Decode decode, const MarkerColumns& out, std::size_t f, ResidualCounts& counts)
+{
+  const double word = decode(p + 3 * bpv);
+  const double xv = decode(p) * coordinateScale;
+  const double yv = decode(p + bpv) * coordinateScale;
+  const double zv = decode(p + 2 * bpv) * coordinateScale;
+  const bool ok = word >= 0.0 && std::isfinite(xv + yv + zv);
+  out.x[f] = xv;
+  out.y[f] = yv;
+  out.z[f] = zv;
+  out.valid[f] = ok;
+  const auto bits = ok ? static_cast<std::uint32_t>(std::min(word, 65535.0)) : 0u;
+  const double residual = ok ? static_cast<double>(bits & 0xFFu) * residualScale : -1.0;
+  out.residuals[f] = residual;
+  counts.valid += ok ? 1 : 0;
+  counts.zero += residual == 0.0 ? 1 : 0;  // (an invalid sample's -1 is never 0)
+  out.cameras[f] = static_cast<std::uint8_t>((bits >> 8) & 0x7Fu);
+}
+
+#if defined(__SSE2__)
+/// decodeSample for two frames of an Intel float file at once (records at `p` and `p` +
+/// `frameBytes` into frames `f`, `f` + 1): the two 4-float records are widened and transposed
+/// into x, y, z and word pairs, so each column gets one 16-byte store and the tests run on both
+/// lanes. The same operations in the same order as decodeSample (the coordinate scale of a float
+/// file is 1), so the results are identical. O(1).
+void decodeIntelFloatPair(const unsigned char* p, std::size_t frameBytes, double residualScale,
+                          const MarkerColumns& out, std::size_t f, ResidualCounts& counts)
+{
+  const __m128 a = _mm_loadu_ps(reinterpret_cast<const float*>(p));
+  const __m128 b = _mm_loadu_ps(reinterpret_cast<const float*>(p + frameBytes));
+  const __m128d aXY = _mm_cvtps_pd(a), aZW = _mm_cvtps_pd(_mm_movehl_ps(a, a));
+  const __m128d bXY = _mm_cvtps_pd(b), bZW = _mm_cvtps_pd(_mm_movehl_ps(b, b));
+  const __m128d x = _mm_unpacklo_pd(aXY, bXY), y = _mm_unpackhi_pd(aXY, bXY);
+  const __m128d z = _mm_unpacklo_pd(aZW, bZW), word = _mm_unpackhi_pd(aZW, bZW);
+  _mm_storeu_pd(out.x + f, x);
+  _mm_storeu_pd(out.y + f, y);
+  _mm_storeu_pd(out.z + f, z);
+  const __m128d zero = _mm_setzero_pd();
+  // x + y + z is finite exactly when (x + y + z) · 0 is 0 (NaN otherwise).
+  const __m128d finite = _mm_cmpeq_pd(_mm_mul_pd(_mm_add_pd(_mm_add_pd(x, y), z), zero), zero);
+  const __m128d ok = _mm_and_pd(_mm_cmpge_pd(word, zero), finite);
+  // The words truncated to integers; the 64-bit lane masks narrowed to the two 32-bit lanes.
+  const __m128i okLanes = _mm_shuffle_epi32(_mm_castpd_si128(ok), _MM_SHUFFLE(2, 0, 2, 0));
+  const __m128i bits = _mm_and_si128(_mm_cvttpd_epi32(_mm_min_pd(word, _mm_set1_pd(65535.0))), okLanes);
+  const __m128d scaled =
+      _mm_mul_pd(_mm_cvtepi32_pd(_mm_and_si128(bits, _mm_set1_epi32(0xFF))), _mm_set1_pd(residualScale));
+  const __m128d residual = _mm_or_pd(_mm_and_pd(ok, scaled), _mm_andnot_pd(ok, _mm_set1_pd(-1.0)));
+  _mm_storeu_pd(out.residuals + f, residual);
+  const int okMask = _mm_movemask_pd(ok);
+  const int zeroMask = _mm_movemask_pd(_mm_cmpeq_pd(residual, zero));
+  out.valid[f] = (okMask & 1) != 0;
+  out.valid[f + 1] = (okMask & 2) != 0;
+  counts.valid += (okMask & 1) + (okMask >> 1);
+  counts.zero += (zeroMask & 1) + (zeroMask >> 1);
+  const auto first = static_cast<std::uint32_t>(_mm_cvtsi128_si32(bits));
+  const auto second = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_shuffle_epi32(bits, 1)));
+  out.cameras[f] = static_cast<std::uint8_t>((first >> 8) & 0x7Fu);
+  out.cameras[f + 1] = static_cast<std::uint8_t>((second >> 8) & 0x7Fu);
+}
+#endif
 
 class C3dParser
 {
@@ -475,26 +556,27 @@ private:
     const bool intel = m_processor == Processor::Intel;
     if (layout.isFloat) {
       if (intel)
-        decodeFrames(layout, take, [](const unsigned char* p) {
+        decodeFrames<true>(layout, take, [](const unsigned char* p) {
           float v;
           std::memcpy(&v, p, 4);
           return static_cast<double>(v);
         });
       else
-        decodeFrames(layout, take, [proc = m_processor](const unsigned char* p) {
+        decodeFrames<false>(layout, take, [proc = m_processor](const unsigned char* p) {
           return static_cast<double>(c3d::readF32(p, proc));
         });
     } else {
-      decodeFrames(layout, take, [proc = m_processor](const unsigned char* p) {
+      decodeFrames<false>(layout, take, [proc = m_processor](const unsigned char* p) {
         return static_cast<double>(c3d::readI16(p, proc));
       });
     }
   }
 
-  /// One pass over the data section. `decode` turns one stored value into a double.
+  /// One pass over the data section. `decode` turns one stored value into a double; an Intel
+  /// float file (`IntelFloat`) goes two frames at a time where the CPU has SSE2.
   /// Frames go in chunks that fit the L2 cache: within a chunk each marker's samples are read
   /// with the frame stride and written to its contiguous columns, so both sides stream.
-  template <typename Decode>
+  template <bool IntelFloat, typename Decode>
   void decodeFrames(const DataLayout& layout, Take& take, Decode decode)
   {
     constexpr std::size_t kChunkFrames = 1024;
@@ -503,41 +585,38 @@ private:
     const std::size_t frameBytes = layout.frameBytes();
     const double coordinateScale = layout.isFloat ? 1.0 : layout.scale;
     const double residualScale = layout.scale;
-    double* positions = take.positionData();
-    bool* valid = take.valid().data();
-    double* residuals = take.residuals().data();
-    std::uint8_t* cameras = take.cameraMasks().data();
     const unsigned char* data = m_data + layout.offset;
     ResidualCounts counts;  // counted here, so loadProvenance need not read the residuals again
     for (std::size_t first = 0; first < frames; first += kChunkFrames) {
       const std::size_t last = std::min(frames, first + kChunkFrames);
       for (std::size_t m = 0; m < layout.pointCount; ++m) {
-        double* x = positions + m * frames * 3;
-        double* y = x + frames;
-        double* z = y + frames;
-        const std::size_t sampleBase = m * frames;
+        const MarkerColumns out = markerColumns(take, m);
         const unsigned char* p = data + first * frameBytes + m * 4 * bpv;
-        for (std::size_t f = first; f < last; ++f, p += frameBytes) {
-          const double word = decode(p + 3 * bpv);
-          const double xv = decode(p) * coordinateScale;
-          const double yv = decode(p + bpv) * coordinateScale;
-          const double zv = decode(p + 2 * bpv) * coordinateScale;
-          const bool ok = word >= 0.0 && std::isfinite(xv + yv + zv);
-          x[f] = xv;
-          y[f] = yv;
-          z[f] = zv;
-          valid[sampleBase + f] = ok;
-          const auto bits = ok ? static_cast<std::uint32_t>(std::min(word, 65535.0)) : 0u;
-          const double residual = ok ? static_cast<double>(bits & 0xFFu) * residualScale : -1.0;
-          residuals[sampleBase + f] = residual;
-          counts.valid += ok ? 1 : 0;
-          counts.zero += residual == 0.0 ? 1 : 0;  // (an invalid sample's -1 is never 0)
-          cameras[sampleBase + f] = static_cast<std::uint8_t>((bits >> 8) & 0x7Fu);
-        }
+        std::size_t f = first;
+#if defined(__SSE2__)
+        if constexpr (IntelFloat)
+          for (; f + 1 < last; f += 2, p += 2 * frameBytes)
+            decodeIntelFloatPair(p, frameBytes, residualScale, out, f, counts);
+#endif
+        for (; f < last; ++f, p += frameBytes)
+          decodeSample(p, bpv, coordinateScale, residualScale, decode, out, f, counts);
       }
     }
     m_residualCounts = counts;
     decodeAnalog(layout, take.analog(), decode);
+  }
+
+  static MarkerColumns markerColumns(Take& take, std::size_t marker)
+  {
+    const auto frames = static_cast<std::size_t>(take.frameCount());
+    double* x = take.positionData() + marker * frames * 3;
+    const std::size_t base = marker * frames;
+    return {x,
+            x + frames,
+            x + 2 * frames,
+            take.valid().data() + base,
+            take.residuals().data() + base,
+            take.cameraMasks().data() + base};
   }
 
   template <typename Decode>

@@ -3,7 +3,6 @@
 #include "mocap/base/error.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 
@@ -13,56 +12,77 @@ namespace {
 
 // Substitution with a compile-time bandwidth B and K right-hand sides: the last B solved rows stay
 // in registers, so each row waits on one multiply-add of the previous row instead of on a store
-// and reload. Rows below B go through the generic loop (their band entries reach before row 0).
+// and reload. The loops over the window are unrolled (every index a constant, which is what lets
+// the compiler keep it in registers), and only the B rows at the start of each sweep test whether
+// a band entry reaches outside the matrix.
 template <int B, int K>
 void substitute(const double* factor, Eigen::Index n, double* x)
 {
   constexpr Eigen::Index stride = B + 1;
-  using Row = std::array<double, static_cast<std::size_t>(K)>;
-  std::array<Row, static_cast<std::size_t>(B)> window{};
-  const auto load = [&](Eigen::Index i) {
-    Row row;
-    for (int c = 0; c < K; ++c)
-      row[static_cast<std::size_t>(c)] = x[i * K + c];
-    return row;
+  constexpr auto b = static_cast<std::size_t>(B), k = static_cast<std::size_t>(K);
+  double window[b][k] = {};  // window[d − 1]: the row d rows back along the sweep
+  const auto shiftIn = [&window](const double (&row)[k]) {
+#pragma GCC unroll 8
+    for (std::size_t d = b - 1; d > 0; --d)
+#pragma GCC unroll 8
+      for (std::size_t c = 0; c < k; ++c)
+        window[d][c] = window[d - 1][c];
+#pragma GCC unroll 8
+    for (std::size_t c = 0; c < k; ++c)
+      window[0][c] = row[c];
   };
-  const auto shiftIn = [&](const Row& row) {
-    for (int d = B - 1; d > 0; --d)
-      window[static_cast<std::size_t>(d)] = window[static_cast<std::size_t>(d - 1)];
-    window[0] = row;
+  // row[c] −= Σ_d band(d) · window[d − 1][c], d from B down to 1, skipping the d where `reaches`
+  // is false (band entries outside the matrix).
+  const auto subtractWindow = [&window](double (&row)[k], auto band, auto reaches) {
+#pragma GCC unroll 8
+    for (Eigen::Index d = B; d >= 1; --d) {
+      if (!reaches(d))
+        continue;
+      const double l = band(d);
+      const auto& back = window[static_cast<std::size_t>(d - 1)];
+#pragma GCC unroll 8
+      for (std::size_t c = 0; c < k; ++c)
+        row[c] -= l * back[c];
+    }
   };
+  const auto load = [x](Eigen::Index i, double (&row)[k]) {
+#pragma GCC unroll 8
+    for (std::size_t c = 0; c < k; ++c)
+      row[c] = x[i * K + static_cast<Eigen::Index>(c)];
+  };
+  const auto store = [x](Eigen::Index i, const double (&row)[k], double scale) {
+#pragma GCC unroll 8
+    for (std::size_t c = 0; c < k; ++c)
+      x[i * K + static_cast<Eigen::Index>(c)] = row[c] * scale;
+  };
+  const Eigen::Index edge = std::min<Eigen::Index>(B, n);
   // Forward, L z = r, then z / D written back (the window keeps z for the following rows).
-  for (Eigen::Index i = 0; i < n; ++i) {
-    Row z = load(i);
-    for (int d = B; d >= 1; --d) {
-      if (d > i)
-        continue;
-      const double l = factor[i * stride + d];
-      for (int c = 0; c < K; ++c)
-        z[static_cast<std::size_t>(c)] -=
-            l * window[static_cast<std::size_t>(d - 1)][static_cast<std::size_t>(c)];
-    }
+  const auto forward = [&](Eigen::Index i, auto reaches) {
+    double z[k];
+    load(i, z);
+    subtractWindow(z, [&](Eigen::Index d) { return factor[i * stride + d]; }, reaches);
     shiftIn(z);
-    const double inverse = 1.0 / factor[i * stride];
-    for (int c = 0; c < K; ++c)
-      x[i * K + c] = z[static_cast<std::size_t>(c)] * inverse;
-  }
+    store(i, z, 1.0 / factor[i * stride]);
+  };
+  for (Eigen::Index i = 0; i < edge; ++i)
+    forward(i, [i](Eigen::Index d) { return d <= i; });
+  for (Eigen::Index i = edge; i < n; ++i)
+    forward(i, [](Eigen::Index) { return true; });
   // Backward, Lᵀ x = z / D.
-  window = {};
-  for (Eigen::Index i = n - 1; i >= 0; --i) {
-    Row v = load(i);
-    for (int d = B; d >= 1; --d) {
-      if (i + d > n - 1)
-        continue;
-      const double l = factor[(i + d) * stride + d];
-      for (int c = 0; c < K; ++c)
-        v[static_cast<std::size_t>(c)] -=
-            l * window[static_cast<std::size_t>(d - 1)][static_cast<std::size_t>(c)];
-    }
+  for (auto& row : window)
+    for (double& value : row)
+      value = 0.0;
+  const auto backward = [&](Eigen::Index i, auto reaches) {
+    double v[k];
+    load(i, v);
+    subtractWindow(v, [&](Eigen::Index d) { return factor[(i + d) * stride + d]; }, reaches);
     shiftIn(v);
-    for (int c = 0; c < K; ++c)
-      x[i * K + c] = v[static_cast<std::size_t>(c)];
-  }
+    store(i, v, 1.0);
+  };
+  for (Eigen::Index i = n - 1; i >= n - edge; --i)
+    backward(i, [i, n](Eigen::Index d) { return i + d <= n - 1; });
+  for (Eigen::Index i = n - edge - 1; i >= 0; --i)
+    backward(i, [](Eigen::Index) { return true; });
 }
 
 template <int K>
