@@ -648,6 +648,40 @@ TEST_F(StudioWindow, ChangedColoursReachTheViewport)
   EXPECT_LT(corner.green(), 60);
 }
 
+// Under a CPU rasterizer, frame changes in quick succession render without the FXAA pass (a third
+// of a frame's time there), the view is redone antialiased once they pause, and a grab is always
+// antialiased: it matches the settled view exactly.
+TEST_F(StudioWindow, QuickFrameChangesSkipAntialiasingUntilTheySettle)
+{
+  ui::VtkViewport* viewport = window->markerView()->viewport();
+  ASSERT_TRUE(viewport->usable()) << viewport->failureReason().toStdString();
+  if (!viewport->softwareRendered())
+    GTEST_SKIP() << "hardware rendering multisamples every frame";
+  TakeDocument& doc = window->document();
+  doc.setCurrentFrame(400);
+  // (The window's first renders, as it lays out and its previews arrive, come in quick succession.)
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !viewport->lastRenderQuick(); }, 5000));
+  int quick = 0;
+  for (Eigen::Index f = 401; f <= 410; ++f) {
+    doc.setCurrentFrame(f);
+    QTest::qWait(16);
+    quick += viewport->lastRenderQuick() ? 1 : 0;
+  }
+  EXPECT_GE(quick, 5) << "renders 16 ms apart skip the antialiasing";
+  EXPECT_TRUE(viewport->lastRenderQuick());
+  const QImage grabbed = viewport->grabFramebuffer();
+  EXPECT_FALSE(viewport->lastRenderQuick()) << "a grab renders antialiased";
+  QTest::qWait(ui::VtkViewport::kSettleMs + 150);
+  doc.setCurrentFrame(411);
+  QTest::qWait(16);
+  doc.setCurrentFrame(410);
+  QTest::qWait(16);
+  EXPECT_TRUE(viewport->lastRenderQuick());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !viewport->lastRenderQuick(); }, 2000))
+      << "the pause brought the antialiased render";
+  EXPECT_TRUE(test::compareImages(viewport->grabFramebuffer(), grabbed).matches());
+}
+
 TEST_F(StudioWindow, AFlaggedBadPointIsDrawnInTheFlagColour)
 {
   ui::VtkViewport* viewport = window->markerView()->viewport();

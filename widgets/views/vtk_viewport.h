@@ -1,11 +1,13 @@
 #pragma once
 
 #include <QColor>
+#include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QPoint>
 #include <QRect>
 #include <QString>
+#include <QTimer>
 
 #include <vtkNew.h>
 
@@ -53,6 +55,14 @@ public:
 
   /// Asks for a VTK render at the next paint.
   void requestRender();
+  /// On a CPU rasterizer, renders that follow each other within kSettleMs (playback, scrubbing,
+  /// orbiting) skip the antialiasing pass, and the last of them is redone antialiased once they
+  /// pause; a grab always is (hides QOpenGLWidget's, which is not virtual: a grabbed image is kept).
+  [[nodiscard]] QImage grabFramebuffer();
+  /// Whether the last render skipped antialiasing for speed (its antialiased redo is due).
+  [[nodiscard]] bool lastRenderQuick() const { return m_lastRenderQuick; }
+  /// How long renders must pause before the antialiased one.
+  static constexpr int kSettleMs = 150;
   /// Background: `color` at the bottom in a gradient to a lighter shade at the top.
   void setBackground(const QColor& color);
   /// Fits the camera to the visible props.
@@ -90,6 +100,8 @@ private:
   [[nodiscard]] bool contextIsCurrent() const;
   void fail(const QString& reason);
   void blitToWidget();
+  /// Renders the scene, antialiased unless another render came less than kSettleMs before.
+  void renderScene();
 
   vtkNew<vtkGenericOpenGLRenderWindow> m_window;
   vtkNew<vtkRenderer> m_renderer;
@@ -98,6 +110,10 @@ private:
   bool m_softwareRendered = false;
   bool m_renderPending = true;
   bool m_inPaint = false;
+  bool m_lastRenderQuick = false;
+  bool m_settled = false;       // the settle timer fired: the next render is antialiased
+  QElapsedTimer m_sinceRender;  // started at the first render
+  QTimer m_settle;              // fires kSettleMs after a render without antialiasing
   QString m_failure;
   QPoint m_pressPosition;
   QPoint m_lastPosition;
