@@ -193,6 +193,20 @@ TEST(TakeReport, RoundTripsThroughJson)
   EXPECT_THROW((void)parseTakeReport(R"({"format": "other"})", "r.json"), InvalidArgument);
 }
 
+TEST(BatchRunner, HandsOutTheLargestTakesFirst)
+{
+  test::TempDir dir;
+  writeFileAtomically(dir.file("small.c3d"), std::string(10, 'x'));
+  writeFileAtomically(dir.file("large.c3d"), std::string(300, 'x'));
+  writeFileAtomically(dir.file("medium.c3d"), std::string(100, 'x'));
+  writeFileAtomically(dir.file("also_medium.c3d"), std::string(100, 'x'));
+  writeFileAtomically(dir.file("list.txt"), "small.c3d\nmissing.c3d\nmedium.c3d\nlarge.c3d\nalso_medium.c3d\n");
+  const TakeManifest manifest = readManifest(dir.file("list.txt"));
+  ASSERT_EQ(manifest.takes.size(), 5u);
+  // Ties keep the manifest's order; the missing take (size unknown) goes with the smallest.
+  EXPECT_EQ(batchTakeOrder(manifest), (std::vector<std::size_t>{3, 2, 4, 0, 1}));
+}
+
 TEST(BatchRunner, RefusesAnOutDirThatIsTheInputsFolder)
 {
   test::TempDir dir;

@@ -10,7 +10,9 @@
 #include "mocap/batch/clean_run.h"
 #include "mocap/io/take_io.h"
 
+#include <algorithm>
 #include <mutex>
+#include <numeric>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -216,6 +218,20 @@ void prepareOutDir(const TakeManifest& manifest, const fs::path& outDir)
   ensureFolder(outDir);
 }
 
+std::vector<std::size_t> batchTakeOrder(const TakeManifest& manifest)
+{
+  std::vector<std::uintmax_t> sizes(manifest.takes.size(), 0);
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(manifest.takes[i].input, error);
+    sizes[i] = error ? 0 : size;
+  }
+  std::vector<std::size_t> order(sizes.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
+  return order;
+}
+
 BatchResult runBatch(const TakeManifest& manifest, const BatchOptions& options)
 {
   const Stopwatch clock;
@@ -230,7 +246,9 @@ BatchResult runBatch(const TakeManifest& manifest, const BatchOptions& options)
   std::mutex progressMutex;
   BatchProgress progress;
   progress.total = manifest.takes.size();
-  const auto body = [&](std::size_t i) {
+  const std::vector<std::size_t> order = batchTakeOrder(manifest);
+  const auto body = [&](std::size_t k) {
+    const std::size_t i = order[k];
     BatchTakeResult take = runBatchTake(manifest, i, options);
     const std::lock_guard<std::mutex> lock(progressMutex);
     ++progress.done;

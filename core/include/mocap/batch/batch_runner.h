@@ -83,8 +83,15 @@ BatchTakeResult runBatchTake(const TakeManifest& manifest, std::size_t index, co
 /// inputs) and IoError when it cannot be created. O(path length).
 void prepareOutDir(const TakeManifest& manifest, const std::filesystem::path& outDir);
 
+/// The order runBatch hands the takes to its jobs: the largest input first (ties and unreadable
+/// files in manifest order), so that a long take does not start last and leave the other jobs
+/// idle while it runs (longest-processing-time-first scheduling; the results are stored by
+/// index, so the files written do not depend on it). O(n log n) after one stat per take.
+[[nodiscard]] std::vector<std::size_t> batchTakeOrder(const TakeManifest& manifest);
+
 /// runBatchTake for every take, `options.jobs` at a time (parallelFor; each take on one thread, so
-/// the files written do not depend on the number of jobs), then OUTDIR/batch.json (batchReportJson).
+/// the files written do not depend on the number of jobs; the largest inputs start first), then
+/// OUTDIR/batch.json (batchReportJson).
 /// Throws InvalidArgument when OUTDIR would overwrite the inputs and IoError when OUTDIR cannot be
 /// created or written. A stop via `options.cancel` returns with cancelled set.
 [[nodiscard]] BatchResult runBatch(const TakeManifest& manifest, const BatchOptions& options);
