@@ -260,11 +260,14 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
       const double spanPosition = t * perFrame;
       // t / h ≥ 0, so truncation is the floor.
       const auto spanIndex = std::min(s - 1, static_cast<Eigen::Index>(spanPosition));
-      if (spanIndex >= firstUniform && spanIndex <= lastUniform)
+      if (spanIndex >= firstUniform && spanIndex <= lastUniform) {
         values = uniformBasis<P>(polynomials, spanPosition - static_cast<double>(spanIndex));
-      else
-        basisFunctions(knots, P + spanIndex, P, t, values.data());
-      m_basis.row(i) = values.transpose();
+      } else {
+        Values edge;  // (its own: `values`, never address-taken, stays in registers)
+        basisFunctions(knots, P + spanIndex, P, t, edge.data());
+        values = edge;
+      }
+      Eigen::Map<Values>(m_basis.data() + i * (P + 1)) = values;  // fixed-size: two stores, no loop
       m_firstControl[static_cast<std::size_t>(i)] = spanIndex;
       if (spanIndex != current) {
         if (current >= 0)
