@@ -13,6 +13,7 @@
 #include "document/take_document.h"
 #include "mocap/base/json_writer.h"
 #include "views/marker_view_3d.h"
+#include "views/redraw_memory.h"
 #include "views/vtk_viewport.h"
 
 #include <QApplication>
@@ -144,6 +145,7 @@ int main(int argc, char** argv)
     std::cerr << "mocap review: " << e.what() << '\n' << usageHint(command) << '\n';
     return kExitBadUsage;
   }
+  ui::keepRedrawMemoryMapped();
   QSurfaceFormat::setDefaultFormat(ui::VtkViewport::defaultFormat());  // before QApplication
   QApplication application(argc, argv);
   // Settings of their own: a review looks the same whatever the studio last remembered.

@@ -6,6 +6,7 @@
 #include "ui_stall_meter.h"
 
 #include "document/take_document.h"
+#include "views/redraw_memory.h"
 #include "views/vtk_viewport.h"
 
 #include <QApplication>
@@ -41,6 +42,7 @@ void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
 
 int main(int argc, char** argv)
 {
+  mocap::ui::keepRedrawMemoryMapped();
   QSurfaceFormat::setDefaultFormat(mocap::ui::VtkViewport::defaultFormat());  // before QApplication
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("MocapStudio"));
