@@ -33,6 +33,7 @@
 #include "views/weight_curve_view.h"
 #include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
+#include "views/steady_label.h"
 #include "views/review_scene.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
@@ -127,10 +128,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   // The status line follows both the frame and the selection it names.
   auto updateStatusLine = [this] {
     const Take& take = m_document->take();
-    m_status->setText(tr("Frame %1 of %2 — %3 markers selected")
-                          .arg(static_cast<qlonglong>(take.firstFrame() + m_document->currentFrame()))
-                          .arg(static_cast<qlonglong>(take.frameCount()))
-                          .arg(m_document->selection().size()));
+    const auto text = [&](Eigen::Index frame, std::size_t selected) {
+      return tr("Frame %1 of %2 — %3 markers selected")
+          .arg(static_cast<qlonglong>(take.firstFrame() + frame))
+          .arg(static_cast<qlonglong>(take.frameCount()))
+          .arg(static_cast<qulonglong>(selected));
+    };
+    const std::pair<Eigen::Index, Eigen::Index> fitted{take.frameCount(), take.markerCount()};
+    if (fitted != m_statusFitsTake) {  // sized for the take's widest line
+      ui::fixLabelSizeFor(*m_status, text(take.frameCount() - 1, static_cast<std::size_t>(take.markerCount())));
+      m_statusFitsTake = fitted;
+    }
+    m_status->setText(text(m_document->currentFrame(), m_document->selection().size()));
   };
   connect(m_document, &ui::TakeDocument::currentFrameChanged, this, updateStatusLine);
   connect(m_document, &ui::TakeDocument::selectionChanged, this, updateStatusLine);

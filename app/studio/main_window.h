@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QAction;
@@ -177,6 +178,7 @@ private:
   QAction* m_trails = nullptr;
   QAction* m_headStabilizedView = nullptr;
   QLabel* m_status = nullptr;
+  std::pair<Eigen::Index, Eigen::Index> m_statusFitsTake{-1, -1};  // frames, markers m_status is sized for
   QToolButton* m_warningsButton = nullptr;
   QTimer* m_layoutSaver = nullptr;
   bool m_firstRun = false;  // saves the window layout shortly after every change

@@ -121,6 +121,7 @@ void profileVideoScrub(MainWindow& window, UiStallMeter& meter)
   auto& document = window.document();
   const Eigen::Index frames = document.take().frameCount();
   constexpr int kChanges = 240;
+  int over30 = 0, over16 = 0;
   auto scrub = [&](int& exact) {
     Random random(7);
     exact = 0;
@@ -138,14 +139,21 @@ void profileVideoScrub(MainWindow& window, UiStallMeter& meter)
       if (panel->video().wantedFrame() == panel->video().imageFrame())
         ++exact;
     }
-    return meter.stop();
+    const double longest = meter.stop();
+    over30 = meter.stallsOver(30.0);
+    over16 = meter.stallsOver(16.0);
+    return longest;
   };
   int exact = 0;
   panel->video().setActive(false);
   const double without = scrub(exact);
+  const int pausedOver30 = over30, pausedOver16 = over16;
   panel->video().setActive(true);
   const double with = scrub(exact);
   std::cout << ", \"video_scrub_stall_ms\": " << with << ", \"scrub_stall_ms_video_paused\": " << without
+            << ", \"video_scrub_stalls_over_16ms\": " << over16 << ", \"video_scrub_stalls_over_30ms\": " << over30
+            << ", \"paused_scrub_stalls_over_16ms\": " << pausedOver16
+            << ", \"paused_scrub_stalls_over_30ms\": " << pausedOver30
             << ", \"video_scrub_changes\": " << kChanges << ", \"video_exact_within_16ms\": " << exact
             << ", \"video_size\": \"" << panel->video().info().width << 'x' << panel->video().info().height << '"';
 }

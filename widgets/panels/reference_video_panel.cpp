@@ -359,7 +359,9 @@ void ReferenceVideoPanel::updateInfo()
     const QSignalBlocker blockOffset(m_offset);
     m_offset->setValue(shown.offset());
     const QSignalBlocker blockFrame(m_frame);
-    m_frame->setMaximum(open ? static_cast<int>(std::min<Eigen::Index>(shown.info().frames - 1, 1 << 30)) : 0);
+    const int last = open ? static_cast<int>(std::min<Eigen::Index>(shown.info().frames - 1, 1 << 30)) : 0;
+    if (m_frame->maximum() != last)  // setMaximum relayouts the window even when it stays
+      m_frame->setMaximum(last);
     m_frame->setValue(static_cast<int>(shown.wantedFrame().value_or(0)));
   }
   m_offset->setEnabled(m_current >= 0);

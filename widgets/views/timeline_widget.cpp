@@ -2,6 +2,7 @@
 
 #include "document/take_document.h"
 #include "views/sample_colors.h"
+#include "views/steady_label.h"
 
 #include "mocap/model/gaps.h"
 
@@ -28,6 +29,12 @@ namespace mocap::ui {
 
 namespace {
 const QColor kGapTickColor(55, 55, 65);  // "missing": apart from the flag red, the state colours and the style's blue
+
+/// The time readout of `frame`.
+QString timeText(const Take& take, Eigen::Index frame)
+{
+  return QStringLiteral("%1 s").arg(take.timeOf(frame), 0, 'f', 3);
+}
 } // namespace
 
 /// The frame slider with the marks of gaps, bad points and the selected range under the handle.
@@ -184,7 +191,6 @@ TimelineWidget::TimelineWidget(TakeDocument& document, QWidget* parent) : QWidge
   m_frame->setToolTip(tr("Frame"));
   layout->addWidget(m_frame);
   m_time = new QLabel(this);
-  m_time->setMinimumWidth(80);
   layout->addWidget(m_time);
   m_speedBox = new QComboBox(this);
   for (double s : {0.1, 0.25, 0.5, 1.0, 2.0, 4.0})
@@ -232,9 +238,15 @@ void TimelineWidget::syncFromDocument()
   const QSignalBlocker frameBlock(m_frame);
   m_slider->setRange(0, last);
   m_slider->setValue(frame);
-  m_frame->setRange(static_cast<int>(take.firstFrame()), static_cast<int>(take.firstFrame()) + last);
-  m_frame->setValue(static_cast<int>(take.firstFrame()) + frame);
-  m_time->setText(QStringLiteral("%1 s").arg(take.timeOf(frame), 0, 'f', 3));
+  // A spin box's setRange relayouts its window even when the range stays (3 ms a frame under
+  // Xvfb while scrubbing), so only a new take's range is set.
+  const int firstFrame = static_cast<int>(take.firstFrame());
+  if (m_frame->minimum() != firstFrame || m_frame->maximum() != firstFrame + last) {
+    m_frame->setRange(firstFrame, firstFrame + last);
+    fixLabelSizeFor(*m_time, timeText(take, last), 80);
+  }
+  m_frame->setValue(firstFrame + frame);
+  m_time->setText(timeText(take, frame));
 }
 
 bool TimelineWidget::isPlaying() const

@@ -181,6 +181,9 @@ void VtkViewport::initializeGL()
     return;
   }
   m_window->SetForceMaximumHardwareLineWidth(1);
+  // blitToWidget copies VTK's frame to the widget; VTK's own copy at the end of each render
+  // (BlitToCurrent, into the widget's framebuffer too) was a second full-view blit.
+  m_window->SetFrameBlitModeToNoBlit();
   const auto* renderer = reinterpret_cast<const char*>(ctx->functions()->glGetString(GL_RENDERER));
   m_softwareRendered = isSoftwareRenderer(QString::fromLatin1(renderer ? renderer : ""));
   if (m_softwareRendered) {
