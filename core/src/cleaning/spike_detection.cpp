@@ -201,15 +201,30 @@ void unrolled(F&& f)
   unrolledSequence(f, std::make_index_sequence<N>{});
 }
 
-// |sample − estimate| for the kLanes samples from frame i (the estimate one Lanes per axis),
-// the squares summed as Eigen's norm() sums a 3-vector, x² + (y² + z²), so each lane is the
-// scalar norm bit for bit; one vector square root for all lanes.
-Lanes distances(const Trajectory& xyz, Eigen::Index i, const std::array<Lanes, 3>& estimate)
+// |sample − estimate|² for the kLanes samples from frame i (the estimate one Lanes per axis),
+// the squares summed as Eigen's norm() sums a 3-vector, x² + (y² + z²), so each lane's square
+// root is the scalar norm bit for bit. The roots are taken later, a whole run at a time
+// (rootsOf): one root per call here waited out the square root's latency every two samples,
+// a fifth of the detector's time.
+Lanes squaredDistances(const Trajectory& xyz, Eigen::Index i, const std::array<Lanes, 3>& estimate)
 {
   std::array<Lanes, 3> d;
   for (Eigen::Index c = 0; c < 3; ++c)
     d[static_cast<std::size_t>(c)] = loadLanes(xyz.col(c).data() + i) - estimate[static_cast<std::size_t>(c)];
-  return squareRoot(d[0] * d[0] + (d[1] * d[1] + d[2] * d[2]));
+  return d[0] * d[0] + (d[1] * d[1] + d[2] * d[2]);
+}
+
+// r[k] = sqrt(r[k]) / divisor[k] for k in [from, to) (divisor null: 1), in independent lanes,
+// so the roots overlap. The same correctly rounded operations as one sample at a time.
+void rootsOf(double* r, const double* divisor, Eigen::Index from, Eigen::Index to)
+{
+  Eigen::Index k = from;
+  for (; k + kLanes <= to; k += kLanes) {
+    const Lanes root = squareRoot(loadLanes(r + k));
+    storeLanes(r + k, divisor ? root / loadLanes(divisor + k) : root);
+  }
+  for (; k < to; ++k)
+    r[k] = divisor ? std::sqrt(r[k]) / divisor[k] : std::sqrt(r[k]);
 }
 
 double middle(double a, double b)
@@ -340,6 +355,7 @@ struct RobustWork
 {
   Eigen::VectorXd lineResidual;
   Eigen::VectorXd fitResidual;
+  Eigen::VectorXd deviation;  // of the interior's stage-2 predictions, until fitResidual is rooted
   Eigen::VectorXd sigma;
   std::vector<char> suspect;
 };
@@ -379,7 +395,7 @@ void medianLineResidualsAt(const Trajectory& xyz, const Run& run, Eigen::Index i
     });
     level[static_cast<std::size_t>(c)] = median7(values.data());
   }
-  storeLanes(r.data() + (i - run.first), distances(xyz, i, level));
+  storeLanes(r.data() + (i - run.first), squaredDistances(xyz, i, level));  // rooted by the caller
 }
 
 // Stage 1: a local line fitted by medians per axis over 7 samples (slope: median of the first
@@ -392,8 +408,10 @@ void medianLineResiduals(const Trajectory& xyz, const Run& run, Eigen::VectorXd&
     // Interior samples, whose windows are centred, kLanes at a time.
     for (; i < run.first + kLineHalfWidth; ++i)
       medianLineResidualAt(xyz, run, i, r);
+    const Eigen::Index lanesFrom = i;
     for (; i + kLanes - 1 <= run.last - kLineHalfWidth; i += kLanes)
       medianLineResidualsAt(xyz, run, i, r);
+    rootsOf(r.data(), nullptr, lanesFrom - run.first, i - run.first);
   }
   for (; i <= run.last; ++i)
     medianLineResidualAt(xyz, run, i, r);
@@ -631,8 +649,9 @@ void filteredResiduals(const Trajectory& xyz, const Run& run, Eigen::Index i,
     unrolled<kWindow>(
         [&](auto k) { sum = sum + makeLanes(first.filter[k], second.filter[k]) * loadLanes(x + k); });
   }
-  storeLanes(work.fitResidual.data() + (i - run.first),
-             distances(xyz, i, value) / makeLanes(first.deviation, second.deviation));
+  // Rooted and divided by the deviation by the caller.
+  storeLanes(work.fitResidual.data() + (i - run.first), squaredDistances(xyz, i, value));
+  storeLanes(work.deviation.data() + (i - run.first), makeLanes(first.deviation, second.deviation));
 }
 
 // Stage 2 for every sample of the run, each with its window shifted inward at the run ends.
@@ -656,6 +675,8 @@ void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
       ++i;
     };
     const CentredFilters& filters = centredFilters();
+    const Eigen::Index lanesFrom = i;
+    work.deviation.resize(run.size());
     for (; i + kLanes - 1 <= run.last - kQuadraticHalfWidth;) {
       std::array<SuspectMask, kLanes> leftOut{};
       for (SuspectMask& mask : leftOut) {
@@ -664,6 +685,7 @@ void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
       }
       filteredResiduals(xyz, run, i - kLanes, leftOut, filters, work);
     }
+    rootsOf(work.fitResidual.data(), work.deviation.data(), lanesFrom - run.first, i - run.first);
   }
   for (; i <= run.last; ++i)
     work.fitResidual(i - run.first) =
