@@ -355,7 +355,9 @@ struct RobustWork
 {
   Eigen::VectorXd lineResidual;
   Eigen::VectorXd fitResidual;
-  Eigen::VectorXd deviation;  // of the interior's stage-2 predictions, until fitResidual is rooted
+  // The local scale; while stage 2 runs (stage 1's scale is used up by then), the deviations of
+  // the interior's predictions until fitResidual is rooted: a buffer of its own cost a fresh
+  // allocation, and the page faults of its memory, per marker.
   Eigen::VectorXd sigma;
   std::vector<char> suspect;
 };
@@ -651,7 +653,7 @@ void filteredResiduals(const Trajectory& xyz, const Run& run, Eigen::Index i,
   }
   // Rooted and divided by the deviation by the caller.
   storeLanes(work.fitResidual.data() + (i - run.first), squaredDistances(xyz, i, value));
-  storeLanes(work.deviation.data() + (i - run.first), makeLanes(first.deviation, second.deviation));
+  storeLanes(work.sigma.data() + (i - run.first), makeLanes(first.deviation, second.deviation));
 }
 
 // Stage 2 for every sample of the run, each with its window shifted inward at the run ends.
@@ -676,7 +678,7 @@ void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
     };
     const CentredFilters& filters = centredFilters();
     const Eigen::Index lanesFrom = i;
-    work.deviation.resize(run.size());
+    work.sigma.resize(run.size());
     for (; i + kLanes - 1 <= run.last - kQuadraticHalfWidth;) {
       std::array<SuspectMask, kLanes> leftOut{};
       for (SuspectMask& mask : leftOut) {
@@ -685,7 +687,7 @@ void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
       }
       filteredResiduals(xyz, run, i - kLanes, leftOut, filters, work);
     }
-    rootsOf(work.fitResidual.data(), work.deviation.data(), lanesFrom - run.first, i - run.first);
+    rootsOf(work.fitResidual.data(), work.sigma.data(), lanesFrom - run.first, i - run.first);
   }
   for (; i <= run.last; ++i)
     work.fitResidual(i - run.first) =
