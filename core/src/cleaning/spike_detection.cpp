@@ -279,6 +279,32 @@ T median11(T* v)
   return v[5];
 }
 
+// The 5th and 6th smallest of 10 values (left in v[4], v[5]; the rest reordered): Waksman's
+// 29-comparator sorting network less the 3 comparators that cannot change those two.
+template <typename T>
+void middlePairOf10(T* v)
+{
+  order(v[2], v[7]), order(v[1], v[6]), order(v[0], v[5]);
+  order(v[1], v[4]), order(v[6], v[9]), order(v[5], v[8]);
+  order(v[0], v[2]), order(v[3], v[6]), order(v[7], v[9]);
+  order(v[0], v[1]), order(v[2], v[4]), order(v[5], v[7]), order(v[8], v[9]);
+  order(v[1], v[2]), order(v[4], v[6]), order(v[7], v[8]), order(v[3], v[5]);
+  order(v[2], v[5]), order(v[6], v[8]), order(v[1], v[3]), order(v[4], v[7]);
+  order(v[2], v[3]), order(v[6], v[7]);
+  order(v[3], v[4]), order(v[5], v[6]);
+  order(v[4], v[5]);
+}
+
+// The median of 11 values given the middle pair (s₄ ≤ s₅) of 10 of them and the 11th, x:
+// max(s₄, min(x, s₅)), one of the values, so the median11 network's answer.
+template <typename T>
+T medianWithMiddlePair(T low, T high, T x)
+{
+  order(x, high);  // x = min(x, s₅)
+  order(low, x);   // x = max(s₄, x)
+  return x;
+}
+
 // Median of a few values (reorders them): insertion sort beats selection below ~16 values.
 double smallMedian(double* begin, double* end)
 {
@@ -739,6 +765,26 @@ void localSigma(const Eigen::VectorXd& r, double floor, Eigen::VectorXd& sigma)
   }
   sigma.resize(n);
   Eigen::Index centre = kScaleHalfWidth;
+  // Four windows at a time: the windows at c and c + 1 share 10 samples, so one middle pair of
+  // those 10 gives both medians (medianWithMiddlePair), half the comparisons of two median11
+  // networks. Lane 0 takes the windows at c, c + 1, lane 1 those at c + 2, c + 3.
+  static_assert(kLanes == 2, "two pairs of windows");
+  for (; centre + 3 < n - kScaleHalfWidth; centre += 4) {
+    const double* x = r.data() + centre;
+    std::array<Lanes, width - 1> shared;
+    unrolled<width - 1>([&](auto k) {
+      const auto at = static_cast<Eigen::Index>(k()) - (kScaleHalfWidth - 1);
+      shared[k] = makeLanes(x[at], x[at + 2]);
+    });
+    middlePairOf10(shared.data());
+    const Lanes left = medianWithMiddlePair(shared[4], shared[5], makeLanes(x[-kScaleHalfWidth], x[2 - kScaleHalfWidth]));
+    const Lanes right =
+        medianWithMiddlePair(shared[4], shared[5], makeLanes(x[1 + kScaleHalfWidth], x[3 + kScaleHalfWidth]));
+    sigma(centre) = toSigma(lane(left, 0));
+    sigma(centre + 1) = toSigma(lane(right, 0));
+    sigma(centre + 2) = toSigma(lane(left, 1));
+    sigma(centre + 3) = toSigma(lane(right, 1));
+  }
   for (; centre + kLanes - 1 < n - kScaleHalfWidth; centre += kLanes) {
     // kLanes neighbouring windows at once, one per lane.
     const double* x = r.data() + centre - kScaleHalfWidth;
