@@ -8,7 +8,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # Never libvtk9-qt-dev: it drags in the Qt 5 stack.
 packages=(
   cmake make g++ clang pkg-config
-  qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-l10n-tools
+  qt6-base-dev qt6-tools-dev qt6-l10n-tools
   libvtk9-dev libeigen3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libtinygltf-dev

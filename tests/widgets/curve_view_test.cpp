@@ -2,6 +2,7 @@
 // frame), the 3D view's colours, follow-head camera and stabilized indicator, and the smoothing
 // step's summary.
 #include "../core/test_support.h"
+#include "screen_pixels.h"
 
 #include "document/take_document.h"
 #include "main_window.h"
@@ -341,6 +342,15 @@ TEST_F(StudioViews, CtrlBShowsTheStabilizedIndicatorUntilTheLabFrameIsBack)
   ASSERT_NE(indicator, nullptr);
   EXPECT_TRUE(indicator->isVisible());
   EXPECT_EQ(indicator->text(), view->statusText());
+  // And on the screen, above the 3D view's native window (a plain child widget would be under
+  // it, visible() though never seen): its text colour shows where the label is.
+  const QColor text(0xff, 0xd2, 0x7a);
+  qsizetype shown = 0;
+  QElapsedTimer clock;
+  clock.start();
+  while ((shown = test::pixelsNear(test::shownOnScreen(*indicator), text, 40)) < 20 && clock.elapsed() < 3000)
+    QTest::qWait(20);
+  EXPECT_GE(shown, 20) << "the indicator's text is not on the screen";
   stabilize->trigger();  // back to the lab frame
   EXPECT_TRUE(view->headReference().empty());
   EXPECT_TRUE(view->statusText().isEmpty());

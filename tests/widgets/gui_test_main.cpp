@@ -1,5 +1,5 @@
 // GoogleTest main for GUI tests: one QApplication with the surface format VTK needs.
-// Run under Xvfb (scripts/test.sh does): an offscreen platform gives QOpenGLWidget no context.
+// Run under Xvfb (scripts/test.sh does): the offscreen platform has no OpenGL for the 3D view.
 #include "views/vtk_viewport.h"
 
 #include <QApplication>

@@ -1,6 +1,7 @@
 // The studio end to end under Xvfb: open, select, edit with undo/redo, save, render, errors.
 #include "../core/test_support.h"
 #include "image_difference.h"
+#include "screen_pixels.h"
 
 #include "commands/apply_patches_command.h"
 #include "commands/insert_marker_command.h"
@@ -35,6 +36,7 @@
 #include <QMouseEvent>
 #include <QSettings>
 #include <QCheckBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QTableView>
 #include <QToolTip>
@@ -437,6 +439,17 @@ TEST_F(StudioWindow, RubberBandSelectsTheMarkersInsideIt)
   QMouseEvent move(QEvent::MouseMove, QPointF(band.bottomRight()), viewport->mapToGlobal(QPointF(band.bottomRight())),
                    Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
   QApplication::sendEvent(viewport, &move);
+  // The band is drawn over the scene on the screen (no widget shows above the native window):
+  // its top edge is a light line across the band.
+  const QRect topEdge(band.left(), band.top(), band.width(), 1);
+  qsizetype lit = 0;
+  QElapsedTimer clock;
+  clock.start();
+  while ((lit = test::pixelsNear(test::shownOnScreen(*viewport, topEdge), QColor(242, 242, 242), 16)) <
+             band.width() * 9 / 10 &&
+         clock.elapsed() < 3000)
+    QTest::qWait(20);
+  EXPECT_GE(lit, band.width() * 9 / 10) << "the rubber band is not on the screen";
   QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ControlModifier, band.bottomRight());
   EXPECT_EQ(doc.selection(), inside);
   EXPECT_TRUE(std::find(inside.begin(), inside.end(), a) != inside.end());

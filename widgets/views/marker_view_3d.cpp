@@ -118,12 +118,15 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   m_stack->addWidget(m_viewport);
   m_stack->addWidget(m_failure);
   // Says what the view shows when it is not the plain lab frame; a child of the viewport, so
-  // it stays in its corner and out of the rendered image the baseline test compares.
+  // it stays in its corner and out of the rendered image the baseline test compares. The
+  // viewport draws in a native window, which covers plain child widgets: the label is a native
+  // window too, stacked above it, and opaque (native windows do not blend).
   m_status = new QLabel(m_viewport);
   m_status->setObjectName(QStringLiteral("viewStatus"));
   m_status->setAttribute(Qt::WA_TransparentForMouseEvents);
-  m_status->setStyleSheet(QStringLiteral("QLabel { color: #ffd27a; background: rgba(0, 0, 0, 150); "
-                                         "padding: 3px 6px; border-radius: 3px; font-weight: bold; }"));
+m_status->setAttribute(Qt::WA_NativeWindow);
+  m_status->setStyleSheet(QStringLiteral("QLabel { color: #ffd27a; background: #141519; "
+                                         "padding: 3px 6px; font-weight: bold; }"));
   m_status->move(8, 8);
   m_status->hide();
   connect(m_viewport, &VtkViewport::failed, this, [this](const QString& reason) {
@@ -348,6 +351,7 @@ void MarkerView3d::updateStatus()
   m_status->setText(text);
   m_status->adjustSize();
   m_status->setVisible(!text.isEmpty());
+  m_status->raise();
 }
 
 std::vector<Eigen::Index> MarkerView3d::markersToFollow() const

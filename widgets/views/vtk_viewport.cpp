@@ -2,13 +2,18 @@
 
 #include "views/sample_colors.h"
 
+#include <QCoreApplication>
+#include <QExposeEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
-#include <QOpenGLExtraFunctions>
-#include <QRubberBand>
+#include <QOpenGLFunctions>
+#include <QResizeEvent>
+#include <QShowEvent>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
+#include <QWindow>
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
@@ -17,6 +22,7 @@
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLState.h>
 #include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +31,51 @@ namespace mocap::ui {
 
 namespace {
 constexpr int kClickSlop = 4;  // pixels a press may move and still count as a click
+constexpr int kBandWidth = 1;  // the rubber band's outline, in device pixels
 } // namespace
+
+/// The native window the viewport draws into. Its input goes to the viewport widget (its
+/// handlers, and event filters installed on it, see it as their own), its exposure and update
+/// requests to the viewport's present().
+class VtkViewport::Surface final : public QWindow
+{
+public:
+  explicit Surface(VtkViewport& owner) : m_owner(&owner)
+  {
+    setSurfaceType(QSurface::OpenGLSurface);
+    setFormat(VtkViewport::defaultFormat());
+  }
+  void detach() { m_owner = nullptr; }
+
+protected:
+  void exposeEvent(QExposeEvent*) override
+  {
+    if (m_owner && isExposed())
+      m_owner->present();
+  }
+
+  bool event(QEvent* event) override
+  {
+    if (!m_owner)
+      return QWindow::event(event);
+    switch (event->type()) {
+    case QEvent::UpdateRequest: m_owner->present(); return true;
+    case QEvent::MouseButtonPress:
+    case QEvent::MouseButtonRelease:
+    case QEvent::MouseButtonDblClick:
+    case QEvent::MouseMove:
+    case QEvent::Wheel:
+    case QEvent::KeyPress:
+    case QEvent::KeyRelease:
+      QCoreApplication::sendEvent(m_owner, event);  // a key not taken goes on to the widget's parents
+      return true;
+    default: return QWindow::event(event);
+    }
+  }
+
+private:
+  VtkViewport* m_owner;
+};
 
 bool VtkViewport::isSoftwareRenderer(const QString& renderer)
 {
@@ -52,12 +102,16 @@ QSurfaceFormat VtkViewport::defaultFormat()
   return format;
 }
 
-VtkViewport::VtkViewport(QWidget* parent) : QOpenGLWidget(parent)
+VtkViewport::VtkViewport(QWidget* parent) : QWidget(parent)
 {
   setFocusPolicy(Qt::StrongFocus);
   setMouseTracking(true);  // hover reports (labels under the cursor)
+  m_surface = new Surface(*this);
+  m_container = QWidget::createWindowContainer(m_surface, this);
+  m_container->setFocusPolicy(Qt::NoFocus);  // the viewport widget takes the focus and the keys
+  m_container->setGeometry(rect());
   m_window->AddRenderer(m_renderer);
-  m_window->SetReadyForRendering(false);  // until initializeGL gives VTK a context
+  m_window->SetReadyForRendering(false);  // until initializeContext gives VTK a context
   for (unsigned long id : {vtkCommand::WindowMakeCurrentEvent, vtkCommand::WindowIsCurrentEvent,
                            vtkCommand::WindowFrameEvent})
     m_observers.push_back(m_window->AddObserver(id, this, &VtkViewport::onWindowEvent));
@@ -83,10 +137,13 @@ void VtkViewport::setBackground(const QColor& color)
 
 VtkViewport::~VtkViewport()
 {
-  if (m_usable) {
-    makeCurrent();  // VTK releases its GL resources in our context
-    m_window->Finalize();
-    doneCurrent();
+  m_surface->detach();
+  delete m_container;  // and the window: nothing presents while VTK lets go
+  m_surface = nullptr;
+  m_container = nullptr;
+  if (m_usable && m_context->makeCurrent(m_offscreen.get())) {
+    m_window->Finalize();  // VTK releases its GL resources in our context
+    m_context->doneCurrent();
   }
   for (unsigned long id : m_observers)
     m_window->RemoveObserver(id);
@@ -106,7 +163,17 @@ vtkGenericOpenGLRenderWindow* VtkViewport::renderWindow() const
 void VtkViewport::requestRender()
 {
   m_renderPending = true;
-  update();
+  schedulePresent();
+}
+
+void VtkViewport::schedulePresent()
+{
+  // Posted rather than QWindow::requestUpdate, which waits for a 60 Hz tick: the render then
+  // follows the frame change in the same turn of the event loop as the other views' repaints.
+  if (m_presentQueued || !m_surface || !m_surface->isExposed())
+    return;
+  m_presentQueued = true;
+  QMetaObject::invokeMethod(this, &VtkViewport::present, Qt::QueuedConnection);
 }
 
 void VtkViewport::resetCamera()
@@ -142,16 +209,28 @@ void VtkViewport::fail(const QString& reason)
 
 bool VtkViewport::contextIsCurrent() const
 {
-  const QOpenGLContext* current = QOpenGLContext::currentContext();
-  return current && current == context();
+  return m_context && QOpenGLContext::currentContext() == m_context.get();
+}
+
+bool VtkViewport::makeCurrent()
+{
+  if (!m_context)
+    return false;
+  if (m_surface && m_surface->isExposed())
+    return m_context->makeCurrent(m_surface);
+  return m_context->makeCurrent(m_offscreen.get());
+}
+
+QSize VtkViewport::deviceSize() const
+{
+  const double ratio = devicePixelRatioF();
+  return {static_cast<int>(std::lround(width() * ratio)), static_cast<int>(std::lround(height() * ratio))};
 }
 
 void VtkViewport::onWindowEvent(vtkObject*, unsigned long eventId, void* callData)
 {
   switch (eventId) {
   case vtkCommand::WindowMakeCurrentEvent:
-    // Only when not current already: makeCurrent() rebinds Qt's framebuffer, which breaks VTK
-    // while it is creating its own framebuffers (a blank or garbage view).
     if (!contextIsCurrent())
       makeCurrent();
     break;
@@ -160,31 +239,41 @@ void VtkViewport::onWindowEvent(vtkObject*, unsigned long eventId, void* callDat
     break;
   case vtkCommand::WindowFrameEvent:
     if (!m_inPaint)
-      update();  // VTK rendered outside paintGL (e.g. a direct Render() call): show it
+      schedulePresent();  // VTK rendered outside present (e.g. a direct Render() call): show it
     break;
   default: break;
   }
 }
 
-void VtkViewport::initializeGL()
+bool VtkViewport::initializeContext()
 {
-  QOpenGLContext* ctx = context();
-  if (!ctx || !ctx->isValid()) {
+  if (m_context)
+    return m_usable;
+  m_context = std::make_unique<QOpenGLContext>();
+  m_context->setFormat(defaultFormat());
+  m_offscreen = std::make_unique<QOffscreenSurface>();
+  if (!m_context->create()) {
     fail(tr("No OpenGL context is available, so the 3D view cannot be shown."));
-    return;
+    return false;
   }
-  const QSurfaceFormat format = ctx->format();
+  const QSurfaceFormat format = m_context->format();
   if (format.majorVersion() * 10 + format.minorVersion() < 32) {
     fail(tr("The 3D view needs OpenGL 3.2; this display offers %1.%2.")
              .arg(format.majorVersion())
              .arg(format.minorVersion()));
-    return;
+    return false;
+  }
+  m_offscreen->setFormat(format);
+  m_offscreen->create();
+  if (!m_context->makeCurrent(m_offscreen.get())) {
+    fail(tr("The OpenGL context cannot be used, so the 3D view cannot be shown."));
+    return false;
   }
   m_window->SetForceMaximumHardwareLineWidth(1);
-  // blitToWidget copies VTK's frame to the widget; VTK's own copy at the end of each render
-  // (BlitToCurrent, into the widget's framebuffer too) was a second full-view blit.
+  // blitToWindow copies VTK's frame to the window; VTK's own copy at the end of each render
+  // (BlitToCurrent) would be a second full-view blit.
   m_window->SetFrameBlitModeToNoBlit();
-  const auto* renderer = reinterpret_cast<const char*>(ctx->functions()->glGetString(GL_RENDERER));
+  const auto* renderer = reinterpret_cast<const char*>(m_context->functions()->glGetString(GL_RENDERER));
   m_softwareRendered = isSoftwareRenderer(QString::fromLatin1(renderer ? renderer : ""));
   if (m_softwareRendered) {
     // A CPU rasterizer (Xvfb, a VM, a remote desktop) shades every pixel once per sample: VTK's
@@ -195,44 +284,73 @@ void VtkViewport::initializeGL()
   m_window->SetReadyForRendering(true);
   m_window->SetOwnContext(0);
   m_window->OpenGLInitContext();
+  const QSize size = deviceSize();
+  m_window->SetSize(std::max(size.width(), 1), std::max(size.height(), 1));
   m_usable = true;
   m_renderPending = true;
+  return true;
 }
 
-void VtkViewport::resizeGL(int width, int height)
+void VtkViewport::showEvent(QShowEvent* event)
 {
-  const double ratio = devicePixelRatioF();
-  m_window->SetSize(static_cast<int>(std::lround(width * ratio)), static_cast<int>(std::lround(height * ratio)));
+  QWidget::showEvent(event);
+  initializeContext();
+}
+
+void VtkViewport::resizeEvent(QResizeEvent* event)
+{
+  QWidget::resizeEvent(event);
+  m_container->setGeometry(rect());
+  const QSize size = deviceSize();
+  m_window->SetSize(std::max(size.width(), 1), std::max(size.height(), 1));
   m_renderPending = true;
+  schedulePresent();
 }
 
-void VtkViewport::paintGL()
+void VtkViewport::renderIfPending()
 {
-  QOpenGLExtraFunctions* gl = context() ? context()->extraFunctions() : nullptr;
-  if (!m_usable || !gl) {
-    if (gl) {
-      gl->glClearColor(0.12f, 0.13f, 0.15f, 1.0f);
-      gl->glClear(GL_COLOR_BUFFER_BIT);
-    }
+  if (!m_renderPending)
     return;
-  }
-  if (m_renderPending) {
-    m_inPaint = true;
-    emit aboutToRender();
-    renderScene();
-    m_inPaint = false;
-    m_renderPending = false;
-  }
-  makeCurrent();  // rendering may have switched contexts (e.g. progress updates elsewhere)
-  blitToWidget();
+  m_inPaint = true;
+  emit aboutToRender();
+  renderScene();
+  m_inPaint = false;
+  m_renderPending = false;
+}
+
+void VtkViewport::present()
+{
+  m_presentQueued = false;
+  if (!m_usable || !m_surface || !m_surface->isExposed() || !m_context->makeCurrent(m_surface))
+    return;
+  renderIfPending();
+  if (!m_context->makeCurrent(m_surface))  // rendering may have switched surfaces or contexts
+    return;
+  const QSize size = m_surface->size() * m_surface->devicePixelRatio();
+  blitToWindow(size);
+drawRubberBand(size);
+  m_context->swapBuffers(m_surface);
 }
 
 QImage VtkViewport::grabFramebuffer()
 {
+  if (!m_usable && (m_context || !initializeContext()))
+    return {};
   m_settled = true;  // antialiased
   if (m_lastRenderQuick)
     m_renderPending = true;
-  return QOpenGLWidget::grabFramebuffer();
+  if (!makeCurrent())
+    return {};
+  renderIfPending();
+  const int* size = m_window->GetRenderFramebuffer()->GetLastSize();
+  vtkNew<vtkUnsignedCharArray> pixels;
+  if (size[0] <= 0 || size[1] <= 0 || m_window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 1, pixels, 0) == 0)
+    return {};
+  // VTK's rows run bottom-up, three bytes a pixel.
+  const QImage bottomUp(pixels->GetPointer(0), size[0], size[1], 3 * size[0], QImage::Format_RGB888);
+  QImage image = bottomUp.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
+  image.setDevicePixelRatio(devicePixelRatioF());
+  return image;
 }
 
 void VtkViewport::renderScene()
@@ -257,32 +375,36 @@ void VtkViewport::renderScene()
   m_lastRenderQuick = quick;
 }
 
-void VtkViewport::blitToWidget()
+void VtkViewport::blitToWindow(QSize size)
 {
-  QOpenGLExtraFunctions* gl = context()->extraFunctions();
-  gl->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
-  const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
-  gl->glDrawBuffers(1, &drawBuffer);
-  const bool scissor = gl->glIsEnabled(GL_SCISSOR_TEST) == GL_TRUE;
-  if (scissor) {
-    m_window->GetState()->vtkglDisable(GL_SCISSOR_TEST);
-    gl->glDisable(GL_SCISSOR_TEST);  // scissoring would clip the blit
-  }
-  int* source = m_window->GetRenderFramebuffer()->GetLastSize();
+  vtkOpenGLState* state = m_window->GetState();
+  state->vtkglBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_context->defaultFramebufferObject());
+  state->vtkglDrawBuffer(GL_BACK);
+  state->vtkglDisable(GL_SCISSOR_TEST);  // scissoring would clip the blit
+  const int* source = m_window->GetRenderFramebuffer()->GetLastSize();
+  m_window->BlitDisplayFramebuffer(0, 0, 0, source[0], source[1], 0, 0, size.width(), size.height(),
+                                   GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+void VtkViewport::drawRubberBand(QSize size)
+{
+  if (m_band.isNull())
+    return;
   const double ratio = devicePixelRatioF();
-  const int width = static_cast<int>(std::lround(this->width() * ratio));
-  const int height = static_cast<int>(std::lround(this->height() * ratio));
-  m_window->BlitDisplayFramebuffer(0, 0, 0, source[0], source[1], 0, 0, width, height, GL_COLOR_BUFFER_BIT,
-                                   GL_LINEAR);
-  // Opaque alpha, or Mesa composes the view with whatever is behind the window.
-  gl->glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
-  gl->glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-  gl->glClear(GL_COLOR_BUFFER_BIT);
-  gl->glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  if (scissor) {
-    m_window->GetState()->vtkglEnable(GL_SCISSOR_TEST);
-    gl->glEnable(GL_SCISSOR_TEST);
+  const int left = static_cast<int>(std::lround(m_band.left() * ratio));
+  const int right = static_cast<int>(std::lround((m_band.right() + 1) * ratio));
+  const int top = size.height() - static_cast<int>(std::lround(m_band.top() * ratio));  // GL's y grows upwards
+  const int bottom = size.height() - static_cast<int>(std::lround((m_band.bottom() + 1) * ratio));
+  const int w = std::max(right - left, kBandWidth), h = std::max(top - bottom, kBandWidth);
+  vtkOpenGLState* state = m_window->GetState();
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglClearColor(0.95f, 0.95f, 0.95f, 1.0f);
+  for (const QRect& edge : {QRect(left, bottom, w, kBandWidth), QRect(left, top - kBandWidth, w, kBandWidth),
+                            QRect(left, bottom, kBandWidth, h), QRect(right - kBandWidth, bottom, kBandWidth, h)}) {
+    state->vtkglScissor(edge.x(), edge.y(), edge.width(), edge.height());
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
   }
+  state->vtkglDisable(GL_SCISSOR_TEST);
 }
 
 void VtkViewport::mousePressEvent(QMouseEvent* event)
@@ -290,10 +412,8 @@ void VtkViewport::mousePressEvent(QMouseEvent* event)
   m_pressPosition = m_lastPosition = event->position().toPoint();
   m_dragged = false;
   if (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier)) {
-    if (!m_band)
-      m_band = new QRubberBand(QRubberBand::Rectangle, this);
-    m_band->setGeometry(QRect(m_pressPosition, QSize()));
-    m_band->show();
+    m_band = QRect(m_pressPosition, QSize(1, 1));
+    schedulePresent();
   }
   event->accept();
 }
@@ -309,8 +429,9 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event)
     emit hovered(position);
     return;
   }
-  if (m_band && m_band->isVisible()) {  // rubber band: the camera stays
-    m_band->setGeometry(QRect(m_pressPosition, position).normalized());
+  if (!m_band.isNull()) {  // rubber band: the camera stays
+    m_band = QRect(m_pressPosition, position).normalized();
+    schedulePresent();
     return;
   }
   if (!m_dragged || event->buttons() == Qt::NoButton)
@@ -352,9 +473,11 @@ void VtkViewport::mouseMoveEvent(QMouseEvent* event)
 
 void VtkViewport::mouseReleaseEvent(QMouseEvent* event)
 {
-  const bool band = m_band && m_band->isVisible();
-  if (band)
-    m_band->hide();
+  const bool band = !m_band.isNull();
+  if (band) {
+    m_band = QRect();
+    schedulePresent();
+  }
   if (band && m_dragged)
     emit rectangleSelected(QRect(m_pressPosition, event->position().toPoint()).normalized(), event->modifiers());
   else if (!m_dragged && event->button() == Qt::LeftButton)
@@ -377,7 +500,7 @@ void VtkViewport::keyPressEvent(QKeyEvent* event)
     resetCamera();
     return;
   }
-  QOpenGLWidget::keyPressEvent(event);
+  QWidget::keyPressEvent(event);
 }
 
 } // namespace mocap::ui

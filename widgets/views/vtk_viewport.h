@@ -2,20 +2,24 @@
 
 #include <QColor>
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
+#include <QWidget>
 #include <QPointF>
 #include <QPoint>
 #include <QRect>
+#include <QSize>
 #include <QString>
+#include <QSurfaceFormat>
 #include <QTimer>
 
 #include <vtkNew.h>
 
 #include <Eigen/Core>
 
-class QRubberBand;
-
+#include <memory>
 #include <vector>
+
+class QOffscreenSurface;
+class QOpenGLContext;
 
 class vtkGenericOpenGLRenderWindow;
 class vtkObject;
@@ -23,15 +27,21 @@ class vtkRenderer;
 
 namespace mocap::ui {
 
-/// A Qt 6 QOpenGLWidget hosting a VTK render window, in the way VTK's own (Qt 5-only)
-/// QVTKOpenGLNativeWidget works: VTK renders into its own framebuffers inside the widget's
-/// context, and paintGL() blits the result into the widget's framebuffer.
+/// A widget hosting a VTK render window in a native OpenGL child window (as VTK's own, Qt
+/// 5-only QVTKOpenGLStereoWidget does): VTK renders into its own framebuffers in the viewport's
+/// context, and each repaint blits the result into that window and swaps only it.
+///
+/// Not a QOpenGLWidget on purpose: one of those makes Qt compose the whole top-level window
+/// through OpenGL on every repaint of any widget, which on a CPU rasterizer (Xvfb, a VM, a
+/// remote desktop) cost the studio more than the 3D render itself while scrubbing. The context
+/// is current on an offscreen surface when the window is not exposed, so a never-shown view
+/// (a review video's) renders and grabs all the same.
 ///
 /// The camera is driven directly: left-drag orbits, middle- or shift-drag pans, the wheel
 /// zooms, R resets. A click that does not drag emits clicked() for picking.
 /// When no usable OpenGL context can be had, usable() is false and failed() says why; the
 /// widget then paints nothing and never calls into VTK rendering.
-class VtkViewport : public QOpenGLWidget
+class VtkViewport : public QWidget
 {
   Q_OBJECT
 
@@ -57,7 +67,7 @@ public:
   void requestRender();
   /// On a CPU rasterizer, renders that follow each other within kSettleMs (playback, scrubbing,
   /// orbiting) skip the antialiasing pass, and the last of them is redone antialiased once they
-  /// pause; a grab always is (hides QOpenGLWidget's, which is not virtual: a grabbed image is kept).
+  /// pause; a grab always is. Null when the view is not usable.
   [[nodiscard]] QImage grabFramebuffer();
   /// Whether the last render skipped antialiasing for speed (its antialiased redo is due).
   [[nodiscard]] bool lastRenderQuick() const { return m_lastRenderQuick; }
@@ -86,9 +96,8 @@ signals:
   void aboutToRender();
 
 protected:
-  void initializeGL() override;
-  void resizeGL(int width, int height) override;
-  void paintGL() override;
+  void showEvent(QShowEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
@@ -96,13 +105,29 @@ protected:
   void keyPressEvent(QKeyEvent* event) override;
 
 private:
+  class Surface;
+
   void onWindowEvent(vtkObject* caller, unsigned long eventId, void* callData);
+  /// Creates the context and readies VTK in it, once; false (and failed()) when that cannot be.
+  bool initializeContext();
   [[nodiscard]] bool contextIsCurrent() const;
+  /// Makes the context current on the window when it is exposed, else on the offscreen surface.
+  bool makeCurrent();
+  [[nodiscard]] QSize deviceSize() const;
   void fail(const QString& reason);
-  void blitToWidget();
+  /// Renders when a render is pending, blits it into the window with the rubber band, swaps.
+  void present();
+  void schedulePresent();
+  void renderIfPending();
+  void blitToWindow(QSize size);
+  void drawRubberBand(QSize size);
   /// Renders the scene, antialiased unless another render came less than kSettleMs before.
   void renderScene();
 
+  std::unique_ptr<QOpenGLContext> m_context;
+  std::unique_ptr<QOffscreenSurface> m_offscreen;
+  Surface* m_surface = nullptr;   // owned by m_container
+  QWidget* m_container = nullptr;  // the window's widget, filling the viewport
   vtkNew<vtkGenericOpenGLRenderWindow> m_window;
   vtkNew<vtkRenderer> m_renderer;
   std::vector<unsigned long> m_observers;
@@ -110,6 +135,7 @@ private:
   bool m_softwareRendered = false;
   bool m_renderPending = true;
   bool m_inPaint = false;
+  bool m_presentQueued = false;
   bool m_lastRenderQuick = false;
   bool m_settled = false;       // the settle timer fired: the next render is antialiased
   QElapsedTimer m_sinceRender;  // started at the first render
@@ -118,7 +144,7 @@ private:
   QPoint m_pressPosition;
   QPoint m_lastPosition;
   bool m_dragged = false;
-  QRubberBand* m_band = nullptr;  // shown during a Ctrl+left drag
+  QRect m_band;  // during a Ctrl+left drag: drawn over the scene (no widget shows over a native window)
 };
 
 } // namespace mocap::ui
