@@ -251,7 +251,10 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
           m_endCoupling(a - 1) += products(r, P);
       }
     };
-    Values values;
+    // Two passes: the basis values of every sample first, then the span sums of their products.
+    // Each sample's values are a chain of dependent operations (Horner's rule) and the samples
+    // are independent, so in a loop of their own the chains of neighbouring samples overlap;
+    // together with the products they waited on each other.
     // A multiplication, not a division per sample; a sample on a knot may then fall in the span
     // before it, where the basis has the same values (the spline is continuous there).
     const double perFrame = 1.0 / h;
@@ -260,15 +263,16 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
       const double spanPosition = t * perFrame;
       // t / h ≥ 0, so truncation is the floor.
       const auto spanIndex = std::min(s - 1, static_cast<Eigen::Index>(spanPosition));
-      if (spanIndex >= firstUniform && spanIndex <= lastUniform) {
-        values = uniformBasis<P>(polynomials, spanPosition - static_cast<double>(spanIndex));
-      } else {
-        Values edge;  // (its own: `values`, never address-taken, stays in registers)
-        basisFunctions(knots, P + spanIndex, P, t, edge.data());
-        values = edge;
-      }
-      Eigen::Map<Values>(m_basis.data() + i * (P + 1)) = values;  // fixed-size: two stores, no loop
+      Eigen::Map<Values> row(m_basis.data() + i * (P + 1));
+      if (spanIndex >= firstUniform && spanIndex <= lastUniform)
+        row = uniformBasis<P>(polynomials, spanPosition - static_cast<double>(spanIndex));
+      else
+        basisFunctions(knots, P + spanIndex, P, t, row.data());
       m_firstControl[static_cast<std::size_t>(i)] = spanIndex;
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const Values values = Eigen::Map<const Values>(m_basis.data() + i * (P + 1));
+      const Eigen::Index spanIndex = m_firstControl[static_cast<std::size_t>(i)];
       if (spanIndex != current) {
         if (current >= 0)
           flush();
