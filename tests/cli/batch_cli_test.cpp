@@ -137,6 +137,37 @@ TEST(BatchCli, ResultsAreByteIdenticalWhateverTheNumberOfJobs)
     EXPECT_EQ(status, "cleaned") << take;
 }
 
+TEST(BatchCli, ResultsAreByteIdenticalWithAndWithoutTheAvx2Kernels)
+{
+  // The spike detector runs its interior on four-lane AVX2 kernels where the CPU has AVX2;
+  // MOCAP_NO_AVX2 rules them out. The two paths must agree bit for bit, on real takes from several
+  // systems and on the facial sample, whose spikes the detector flags. (On a CPU without AVX2
+  // both runs take the baseline path and this checks nothing more than determinism.)
+  test::TempDir dir;
+  const Archive archive(dir);
+  fs::copy_file(test::sampleTake(), archive.root / "Facial-Sing.c3d");
+  writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) + "Facial-Sing.c3d\n");
+  const auto with = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("with")), dir);
+  ASSERT_EQ(with.exitCode, 0) << with.err;
+  const auto without = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("without")),
+                             dir, kEpoch + "MOCAP_NO_AVX2=1 ");
+  ASSERT_EQ(without.exitCode, 0) << without.err;
+  auto a = filesBelow(dir.file("with")), b = filesBelow(dir.file("without"));
+  a.erase("batch.json");
+  b.erase("batch.json");
+  ASSERT_EQ(a.size(), 12u);
+  ASSERT_EQ(b.size(), a.size());
+  for (const auto& [name, bytes] : a) {
+    ASSERT_TRUE(b.count(name)) << name;
+    if (name.size() > 12 && name.compare(name.size() - 12, 12, ".report.json") == 0)
+      EXPECT_EQ(withoutTimings(bytes), withoutTimings(b.at(name))) << name;
+    else
+      EXPECT_TRUE(bytes == b.at(name)) << name << " differs with and without the AVX2 kernels";
+  }
+  const JsonValue sample = parseJson(a.at("Facial-Sing.c3d.report.json"), "report");
+  EXPECT_GT(member(sample, "spikes_flagged").number(""), 0.0) << "the sample's spikes went through the detector";
+}
+
 TEST(BatchCli, ResumeSkipsTakesDoneWithTheSameInputAndPreset)
 {
   test::TempDir dir;

@@ -5,6 +5,11 @@
 #include "mocap/model/valid_runs.h"
 #include "mocap/base/length_unit.h"
 
+#include "median_networks.h"
+#if defined(MOCAP_AVX2_KERNELS)
+#include "spike_kernels_avx2.h"
+#endif
+
 #include <Eigen/Dense>
 
 #if defined(__SSE2__)
@@ -14,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -49,14 +55,6 @@ double sortedMedian(const double* begin, const double* end)
 {
   const auto n = end - begin;
   return n % 2 == 1 ? begin[n / 2] : 0.5 * (begin[n / 2 - 1] + begin[n / 2]);
-}
-
-// Compare-exchange without a branch (minsd/maxsd): sorting networks do not stall on mispredictions.
-void order(double& a, double& b)
-{
-  const double low = std::min(a, b);
-  b = std::max(a, b);
-  a = low;
 }
 
 // The same medians for kLanes neighbouring windows at once (one window per lane of a vector
@@ -227,82 +225,9 @@ void rootsOf(double* r, const double* divisor, Eigen::Index from, Eigen::Index t
     r[k] = divisor ? std::sqrt(r[k]) / divisor[k] : std::sqrt(r[k]);
 }
 
-double middle(double a, double b)
-{
-  return 0.5 * (a + b);
-}
-
 Lanes middle(const Lanes& a, const Lanes& b)
 {
   return 0.5 * (a + b);
-}
-
-// Medians of 6 and 7 values through optimal sorting networks (12 and 16 compare-exchanges).
-template <typename T>
-T median6(T* v)
-{
-  order(v[0], v[5]), order(v[1], v[3]), order(v[2], v[4]);
-  order(v[1], v[2]), order(v[3], v[4]);
-  order(v[0], v[3]), order(v[2], v[5]);
-  order(v[0], v[1]), order(v[2], v[3]), order(v[4], v[5]);
-  order(v[1], v[2]), order(v[3], v[4]);
-  return middle(v[2], v[3]);
-}
-
-template <typename T>
-T median7(T* v)
-{
-  order(v[0], v[6]), order(v[2], v[3]), order(v[4], v[5]);
-  order(v[0], v[2]), order(v[1], v[4]), order(v[3], v[6]);
-  order(v[0], v[1]), order(v[2], v[5]), order(v[3], v[4]);
-  order(v[1], v[2]), order(v[4], v[6]);
-  order(v[2], v[3]), order(v[4], v[5]);
-  order(v[1], v[2]), order(v[3], v[4]), order(v[5], v[6]);
-  return v[3];
-}
-
-// Median of 11 values: the comparators of Batcher's odd-even merge sort (16 inputs) that reach
-// the middle output, 32 compare-exchanges.
-template <typename T>
-T median11(T* v)
-{
-  order(v[0], v[1]), order(v[2], v[3]), order(v[4], v[5]), order(v[6], v[7]), order(v[8], v[9]);
-  order(v[0], v[2]), order(v[1], v[3]), order(v[4], v[6]), order(v[5], v[7]), order(v[8], v[10]);
-  order(v[1], v[2]), order(v[5], v[6]), order(v[9], v[10]);
-  order(v[0], v[4]), order(v[1], v[5]), order(v[2], v[6]), order(v[3], v[7]);
-  order(v[2], v[4]), order(v[3], v[5]);
-  order(v[1], v[2]), order(v[3], v[4]), order(v[5], v[6]), order(v[9], v[10]);
-  order(v[0], v[8]), order(v[1], v[9]), order(v[2], v[10]);
-  order(v[4], v[8]), order(v[5], v[9]), order(v[6], v[10]);
-  order(v[3], v[5]), order(v[6], v[8]);
-  order(v[5], v[6]);
-  return v[5];
-}
-
-// The 5th and 6th smallest of 10 values (left in v[4], v[5]; the rest reordered): Waksman's
-// 29-comparator sorting network less the 3 comparators that cannot change those two.
-template <typename T>
-void middlePairOf10(T* v)
-{
-  order(v[2], v[7]), order(v[1], v[6]), order(v[0], v[5]);
-  order(v[1], v[4]), order(v[6], v[9]), order(v[5], v[8]);
-  order(v[0], v[2]), order(v[3], v[6]), order(v[7], v[9]);
-  order(v[0], v[1]), order(v[2], v[4]), order(v[5], v[7]), order(v[8], v[9]);
-  order(v[1], v[2]), order(v[4], v[6]), order(v[7], v[8]), order(v[3], v[5]);
-  order(v[2], v[5]), order(v[6], v[8]), order(v[1], v[3]), order(v[4], v[7]);
-  order(v[2], v[3]), order(v[6], v[7]);
-  order(v[3], v[4]), order(v[5], v[6]);
-  order(v[4], v[5]);
-}
-
-// The median of 11 values given the middle pair (s₄ ≤ s₅) of 10 of them and the 11th, x:
-// max(s₄, min(x, s₅)), one of the values, so the median11 network's answer.
-template <typename T>
-T medianWithMiddlePair(T low, T high, T x)
-{
-  order(x, high);  // x = min(x, s₅)
-  order(low, x);   // x = max(s₄, x)
-  return x;
 }
 
 // Median of a few values (reorders them): insertion sort beats selection below ~16 values.
@@ -426,6 +351,18 @@ void medianLineResidualsAt(const Trajectory& xyz, const Run& run, Eigen::Index i
   storeLanes(r.data() + (i - run.first), squaredDistances(xyz, i, level));  // rooted by the caller
 }
 
+// Whether the four-lane AVX2 kernels run: the CPU has AVX2 and MOCAP_NO_AVX2 is not set (which
+// rules them out, e.g. to compare the two paths, whose results are the same bit for bit).
+bool useAvx2Kernels()
+{
+#if defined(MOCAP_AVX2_KERNELS)
+  static const bool use = __builtin_cpu_supports("avx2") && std::getenv("MOCAP_NO_AVX2") == nullptr;
+  return use;
+#else
+  return false;
+#endif
+}
+
 // Stage 1: a local line fitted by medians per axis over 7 samples (slope: median of the first
 // differences; level at i: median of the samples detrended to i). Up to 3 bad samples in the
 // window cannot move it, so they stand out, but it rounds off sharp turns, which stage 2 undoes.
@@ -437,6 +374,12 @@ void medianLineResiduals(const Trajectory& xyz, const Run& run, Eigen::VectorXd&
     for (; i < run.first + kLineHalfWidth; ++i)
       medianLineResidualAt(xyz, run, i, r);
     const Eigen::Index lanesFrom = i;
+#if defined(MOCAP_AVX2_KERNELS)
+    if (useAvx2Kernels())
+      i = run.first + avx2::squaredLineResiduals(xyz.col(0).data() + run.first, xyz.col(1).data() + run.first,
+                                                 xyz.col(2).data() + run.first, i - run.first,
+                                                 run.last - kLineHalfWidth + 1 - run.first, r.data());
+#endif
     for (; i + kLanes - 1 <= run.last - kLineHalfWidth; i += kLanes)
       medianLineResidualsAt(xyz, run, i, r);
     rootsOf(r.data(), nullptr, lanesFrom - run.first, i - run.first);
