@@ -238,6 +238,15 @@ BSplineFitter::BSplineFitter(Eigen::Index sampleCount, const BSplineFitOptions& 
     const auto flush = [&] {
       // Normal equations of the inner controls 1..m−2 (the end controls are pinned), and how each
       // inner control couples to the pinned ones (moved to the right-hand side when fitting).
+      if (current >= 1 && current + P <= m - 2) {
+        // A span away from the pinned controls (nearly all): every product goes to the band,
+        // without the tests below (which cost more than the additions).
+        double* band = normal.data() + (current - 1) * (P + 1);  // row current − 1, row-major
+        for (int r = 0; r <= P; ++r)
+          for (int q = 0; q <= r; ++q)
+            band[r * (P + 1) + (r - q)] += products(r, q);
+        return;
+      }
       for (int r = 0; r <= P; ++r) {
         const Eigen::Index a = current + r;
         if (a < 1 || a > m - 2)
