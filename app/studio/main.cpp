@@ -28,7 +28,7 @@ void scheduleScreenshot(mocap::studio::MainWindow& window, const QString& path)
 {
   window.resize(1280, 800);
   QTimer::singleShot(1500, &window, [&window, path] {
-    const QImage image = window.grab().toImage();
+    const QImage image = mocap::ui::grabWithViewports(window);  // the 3D view included
     if (image.isNull() || !image.save(path)) {
       std::cerr << "mocap-studio: cannot write screenshot " << path.toStdString() << '\n';
       QApplication::exit(1);

@@ -407,6 +407,21 @@ TEST_F(StudioWindow, StabilizeHeadStepMovesTheTakeIntoTheHeadFrameUndoably)
   EXPECT_TRUE(panel->lastResult().patches.empty());
 }
 
+TEST_F(StudioWindow, AWindowScreenshotShowsThe3DViewsScene)
+{
+  // --screenshot grabs the whole window; the 3D view is a native OpenGL window that a plain
+  // QWidget::grab leaves blank, so grabWithViewports draws its scene in.
+  ui::VtkViewport* viewport = window->markerView()->viewport();
+  ASSERT_TRUE(viewport->usable());
+  const QImage scene = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+  const QRect area(viewport->mapTo(window.get(), QPoint(0, 0)), viewport->size());
+  const QImage shot = ui::grabWithViewports(*window).convertToFormat(QImage::Format_RGB32);
+  EXPECT_TRUE(test::compareImages(shot.copy(area), scene).matches());
+  EXPECT_FALSE(test::compareImages(window->grab().toImage().convertToFormat(QImage::Format_RGB32).copy(area), scene)
+                   .matches())
+      << "a plain grab shows the scene after all: the helper is not needed";
+}
+
 TEST_F(StudioWindow, RubberBandSelectsTheMarkersInsideIt)
 {
   TakeDocument& doc = window->document();

@@ -9,6 +9,7 @@
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QPainter>
 #include <QResizeEvent>
 #include <QShowEvent>
 #include <QSurfaceFormat>
@@ -501,6 +502,22 @@ void VtkViewport::keyPressEvent(QKeyEvent* event)
     return;
   }
   QWidget::keyPressEvent(event);
+}
+
+QImage grabWithViewports(QWidget& widget)
+{
+  QImage image = widget.grab().toImage();
+  QPainter painter(&image);
+  for (VtkViewport* view : widget.findChildren<VtkViewport*>()) {
+    if (!view->isVisibleTo(&widget) || !view->usable())
+      continue;
+    const QPoint at = view->mapTo(&widget, QPoint(0, 0));
+    painter.drawImage(QRect(at, view->size()), view->grabFramebuffer());
+    for (QWidget* child : view->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
+      if (child != view->m_container && child->isVisibleTo(view))
+        painter.drawPixmap(at + child->pos(), child->grab());
+  }
+  return image;
 }
 
 } // namespace mocap::ui

@@ -27,6 +27,8 @@ class vtkRenderer;
 
 namespace mocap::ui {
 
+[[nodiscard]] QImage grabWithViewports(QWidget& widget);
+
 /// A widget hosting a VTK render window in a native OpenGL child window (as VTK's own, Qt
 /// 5-only QVTKOpenGLStereoWidget does): VTK renders into its own framebuffers in the viewport's
 /// context, and each repaint blits the result into that window and swaps only it.
@@ -106,6 +108,7 @@ protected:
 
 private:
   class Surface;
+  friend QImage grabWithViewports(QWidget& widget);  // skips the window's container
 
   void onWindowEvent(vtkObject* caller, unsigned long eventId, void* callData);
   /// Creates the context and readies VTK in it, once; false (and failed()) when that cannot be.
@@ -146,5 +149,10 @@ private:
   bool m_dragged = false;
   QRect m_band;  // during a Ctrl+left drag: drawn over the scene (no widget shows over a native window)
 };
+
+/// `widget` as QWidget::grab paints it, with each shown VtkViewport's scene (and the widgets over
+/// it) drawn in: QWidget::grab cannot read a native OpenGL window, so a plain grab leaves the 3D
+/// views blank. For whole-window screenshots.
+[[nodiscard]] QImage grabWithViewports(QWidget& widget);
 
 } // namespace mocap::ui
