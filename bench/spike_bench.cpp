@@ -3,9 +3,11 @@
 // against the reference of one plain pass computing every consecutive displacement length (what
 // eq 8 needs, so the paper detector's floor). Both detectors are O(#frames · #markers).
 // Measured (RelWithDebInfo, 2 shared cores, CPU time): reference 1.2-1.5 ms, paper 3.1-4.6 ms
-// (~3×), robust 55 ms (~33×: three small median networks, a 9-sample fit and two 11-sample
+// (~3×), robust 55 ms at first (three small median networks, a 9-sample fit and two 11-sample
 // medians per sample, two neighbouring samples per vector register; 106-108 ms one sample at a
-// time), replaceSpikes 0.4 ms for ~6 000 flags.
+// time), 27-28 ms after the filter table, the rolling scale and the shared middle pairs, and
+// 22 ms with stage 1 on four lanes where the CPU has AVX2 (MOCAP_NO_AVX2=1 measures the two-lane
+// path); replaceSpikes 0.4 ms for ~6 000 flags.
 #include "mocap/base/random.h"
 #include "mocap/cleaning/spike_detection.h"
 
