@@ -218,17 +218,17 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+99"/>
+        <location filename="../app/studio/main_window.cpp" line="+100"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>Autosave failed: %1</source>
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
@@ -819,7 +819,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-827"/>
+        <location line="-835"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -2999,7 +2999,7 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+145"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+148"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -3340,12 +3340,17 @@
         <translation>Videoframe:</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
+        <source>none</source>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>The video frame shown. Type or step it to hold the video at a moment, step the take to the same moment, then press Sync here</source>
         <translation>Der angezeigte Videoframe. Eingeben oder schrittweise ändern, um das Video an einem Moment anzuhalten, die Aufnahme auf denselben Moment stellen und dann „Hier synchronisieren“ drücken</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Sync here</source>
         <translation>Hier synchronisieren</translation>
     </message>
@@ -3385,7 +3390,7 @@
         <translation>Den Versatz so setzen, dass beim Ereignis der erste Videoframe erscheint, oder der angehaltene</translation>
     </message>
     <message>
-        <location line="+424"/>
+        <location line="+431"/>
         <source>Locate %1</source>
         <translation>%1 suchen</translation>
     </message>
@@ -3394,7 +3399,7 @@
         <translation type="vanished">Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
     </message>
     <message>
-        <location line="-453"/>
+        <location line="-465"/>
         <source>+1 frame</source>
         <translation>+1 Frame</translation>
     </message>
@@ -3403,14 +3408,14 @@
         <translation type="vanished">Das Video um eines seiner Frames später setzen (Alt+.)</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+151"/>
         <location line="+37"/>
-        <location line="+172"/>
+        <location line="+179"/>
         <source>Cannot show %1: %2</source>
         <translation>%1 kann nicht gezeigt werden: %2</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-155"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>Halten Sie das Video zuerst an einem Moment an: Frame eingeben oder schrittweise ändern, dann die Aufnahme auf denselben Moment stellen</translation>
     </message>
@@ -3430,7 +3435,7 @@
         <translation>Videoframe %1 erscheint jetzt beim Ereignis „%2“ (Aufnahme-Frame %3; Versatz %4 s)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+42"/>
         <source>%1 (missing)</source>
         <translation>%1 (fehlt)</translation>
     </message>
@@ -3750,7 +3755,7 @@
 <context>
     <name>mocap::ui::TimelineWidget</name>
     <message>
-        <location filename="../widgets/views/timeline_widget.cpp" line="+40"/>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+47"/>
         <source>Dark: gaps, red: bad points under review — of the selected markers, or of all when none is selected. Yellow: the selected frame range.</source>
         <translation>Dunkel: Lücken, rot: zu prüfende Ausreißer — der ausgewählten Marker oder aller, wenn keiner ausgewählt ist. Gelb: der ausgewählte Frame-Bereich.</translation>
     </message>
@@ -3790,12 +3795,12 @@
         <translation>Frame</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Playback speed</source>
         <translation>Wiedergabegeschwindigkeit</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+148"/>
         <source>No gap after this frame</source>
         <translation>Keine Lücke nach diesem Frame</translation>
     </message>
@@ -3836,7 +3841,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+167"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+257"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>
@@ -3844,6 +3849,11 @@
         <location line="+5"/>
         <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
         <translation>Die 3D-Ansicht benötigt OpenGL 3.2; diese Anzeige bietet %1.%2.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The OpenGL context cannot be used, so the 3D view cannot be shown.</source>
+        <translation>Der OpenGL-Kontext kann nicht verwendet werden, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>
 </context>
 <context>

@@ -209,17 +209,17 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+99"/>
+        <location filename="../app/studio/main_window.cpp" line="+100"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Frame %1 of %2 — %3 markers selected</source>
         <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+16"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
@@ -808,7 +808,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-827"/>
+        <location line="-835"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -2975,7 +2975,7 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+145"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+148"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -3313,12 +3313,17 @@
         <translation>视频帧：</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>The video frame shown. Type or step it to hold the video at a moment, step the take to the same moment, then press Sync here</source>
         <translation>所显示的视频帧。输入或步进以将视频停在某一时刻，将录制步进到同一时刻，然后按“在此同步”</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Sync here</source>
         <translation>在此同步</translation>
     </message>
@@ -3358,7 +3363,7 @@
         <translation>设置偏移，使事件处显示视频的第一帧或停住的帧</translation>
     </message>
     <message>
-        <location line="+424"/>
+        <location line="+431"/>
         <source>Locate %1</source>
         <translation>定位 %1</translation>
     </message>
@@ -3367,7 +3372,7 @@
         <translation type="vanished">将视频提前一帧（Alt+,）</translation>
     </message>
     <message>
-        <location line="-453"/>
+        <location line="-465"/>
         <source>+1 frame</source>
         <translation>+1 帧</translation>
     </message>
@@ -3376,14 +3381,14 @@
         <translation type="vanished">将视频推后一帧（Alt+.）</translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+151"/>
         <location line="+37"/>
-        <location line="+172"/>
+        <location line="+179"/>
         <source>Cannot show %1: %2</source>
         <translation>无法显示 %1：%2</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-155"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>请先将视频停在某一时刻：输入或步进其帧，然后将录制步进到同一时刻</translation>
     </message>
@@ -3403,7 +3408,7 @@
         <translation>视频第 %1 帧现在显示在事件“%2”处（录制第 %3 帧；偏移 %4 秒）</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+42"/>
         <source>%1 (missing)</source>
         <translation>%1（缺失）</translation>
     </message>
@@ -3721,7 +3726,7 @@
 <context>
     <name>mocap::ui::TimelineWidget</name>
     <message>
-        <location filename="../widgets/views/timeline_widget.cpp" line="+40"/>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+47"/>
         <source>Dark: gaps, red: bad points under review — of the selected markers, or of all when none is selected. Yellow: the selected frame range.</source>
         <translation>深色：缺口；红色：待检查的坏点 — 针对所选标记点，未选择时针对全部标记点。黄色：所选帧范围。</translation>
     </message>
@@ -3761,12 +3766,12 @@
         <translation>帧</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Playback speed</source>
         <translation>播放速度</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+148"/>
         <source>No gap after this frame</source>
         <translation>此帧之后没有缺口</translation>
     </message>
@@ -3807,7 +3812,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+167"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+257"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>
@@ -3815,6 +3820,11 @@
         <location line="+5"/>
         <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
         <translation>3D 视图需要 OpenGL 3.2，当前显示仅提供 %1.%2。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The OpenGL context cannot be used, so the 3D view cannot be shown.</source>
+        <translation>无法使用 OpenGL 上下文，因此无法显示 3D 视图。</translation>
     </message>
 </context>
 <context>

@@ -132,6 +132,9 @@ TEST(ReferenceVideo, ShowsTheExactVideoFrameForEachTakeFrameWithTheOffset)
   document.setCurrentFrame(document.take().frameCount() - 1);
   EXPECT_FALSE(video.wantedFrame().has_value());
   EXPECT_EQ(panel->view().caption(), QStringLiteral("No video at this frame"));
+  EXPECT_EQ(panel->videoFrameText(), QStringLiteral("none")) << "the box claims no frame the view does not show";
+  document.setCurrentFrame(1300);
+  EXPECT_EQ(panel->videoFrameText(), QString::number(expectedFrame(1300, 0.56)));
 }
 
 TEST(ReferenceVideo, AFileThatIsNotAVideoIsRefusedWithAMessage)

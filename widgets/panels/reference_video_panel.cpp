@@ -106,11 +106,16 @@ ReferenceVideoPanel::ReferenceVideoPanel(TakeDocument& document, QWidget* parent
 
   sync->addWidget(new QLabel(tr("Video frame:"), this), 1, 0);
   m_frame = new QSpinBox(this);
-  m_frame->setRange(0, std::numeric_limits<int>::max());
+  // −1 reads "none": the take's frame has no video frame (before or after the video), so the
+  // box never claims a frame the view does not show; stepping down to it follows the take again.
+  m_frame->setRange(-1, std::numeric_limits<int>::max());
+  m_frame->setSpecialValueText(tr("none"));
   m_frame->setKeyboardTracking(false);
   m_frame->setToolTip(tr("The video frame shown. Type or step it to hold the video at a moment, step the take to "
                          "the same moment, then press Sync here"));
-  connect(m_frame, &QSpinBox::valueChanged, this, [this](int frame) { video().hold(Eigen::Index{frame}); });
+  connect(m_frame, &QSpinBox::valueChanged, this, [this](int frame) {
+    video().hold(frame < 0 ? std::nullopt : std::optional<Eigen::Index>(frame));
+  });
   sync->addWidget(m_frame, 1, 1);
   m_syncHere = new QPushButton(tr("Sync here"), this);
   m_syncHere->setToolTip(tr("Set the offset so the held video frame shows at the take's current frame"));
@@ -351,6 +356,11 @@ QString ReferenceVideoPanel::statusText() const
   return m_status->text();
 }
 
+QString ReferenceVideoPanel::videoFrameText() const
+{
+  return m_frame->text();
+}
+
 void ReferenceVideoPanel::updateInfo()
 {
   ReferenceVideo& shown = video();
@@ -362,7 +372,7 @@ void ReferenceVideoPanel::updateInfo()
     const int last = open ? static_cast<int>(std::min<Eigen::Index>(shown.info().frames - 1, 1 << 30)) : 0;
     if (m_frame->maximum() != last)  // setMaximum relayouts the window even when it stays
       m_frame->setMaximum(last);
-    m_frame->setValue(static_cast<int>(shown.wantedFrame().value_or(0)));
+    m_frame->setValue(static_cast<int>(shown.wantedFrame().value_or(-1)));
   }
   m_offset->setEnabled(m_current >= 0);
   m_frame->setEnabled(open);

@@ -70,6 +70,8 @@ public:
   /// Writes a pending change to the sidecar now (it is written a moment after each change).
   void saveSidecar();
   [[nodiscard]] QString statusText() const;
+  /// What the Video frame box reads: the frame shown, or "none" where the take has no video frame.
+  [[nodiscard]] QString videoFrameText() const;
 
 signals:
   /// Opening the take restored `count` videos from its sidecar (`missing` of them not found).
