@@ -10,7 +10,9 @@ namespace mocap {
 ///
 /// Why not Eigen's own storage: a large take's arrays are tens of MB, and faulting them in
 /// 4 KB pages costs more than decoding the file. Buffers of 4 MB and more are aligned to 2 MB
-/// and marked for transparent huge pages (Linux madvise), which cuts page faults ~500×.
+/// and ask for transparent huge pages where that cannot stall (the kernel's THP defrag policy
+/// `defer` or `never`), else have their pages mapped in one call (MADV_POPULATE_WRITE) instead of
+/// a fault each; freed ones are kept for the next take (sample_buffer.cpp says why and by how much).
 template <typename T>
 class SampleBuffer
 {
