@@ -11,6 +11,7 @@
 #include "mocap/base/random.h"
 #include "mocap/batch/batch_runner.h"
 #include "mocap/io/take_io.h"
+#include "checkout_paths.h"
 
 #include <benchmark/benchmark.h>
 
@@ -54,7 +55,7 @@ double peakResidentMegabytes()
 fs::path testTakesManifest(const fs::path& folder)
 {
   std::string manifest;
-  for (const auto& entry : fs::recursive_directory_iterator(fs::path(MOCAP_TEST_DATA) / "c3d"))
+  for (const auto& entry : fs::recursive_directory_iterator(fs::path(mocap::checkout::testDataDir()) / "c3d"))
     if (entry.is_regular_file() && mocap::lowerExtension(entry.path()) == "c3d" &&
         entry.path().string().find("sample18") == std::string::npos)  // the corrupt one
       manifest += entry.path().string() + "\n";

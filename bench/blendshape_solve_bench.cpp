@@ -9,6 +9,7 @@
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/io/obj_rig_reader.h"
 #include "mocap/math/bounded_least_squares.h"
+#include "checkout_paths.h"
 
 #include <benchmark/benchmark.h>
 
@@ -19,7 +20,7 @@
 namespace {
 
 constexpr Eigen::Index kMarkers = 40, kFrames = 2000;
-const std::filesystem::path kIct = std::filesystem::path(MOCAP_SHARED_DATA) / "face_mesh/ict_facekit";
+const std::filesystem::path kIct = std::filesystem::path(mocap::checkout::sharedDataDir()) / "face_mesh/ict_facekit";
 
 std::vector<std::string> expressionNames()
 {

@@ -9,6 +9,7 @@
 #include "mocap/deform/laplacian_deformer.h"
 #include "mocap/io/obj_io.h"
 #include "mocap/deform/rbf_deformer.h"
+#include "checkout_paths.h"
 
 #include <benchmark/benchmark.h>
 
@@ -37,8 +38,8 @@ const Fixture* fixture(int which)
   if (auto found = cache.find(which); found != cache.end())
     return found->second.get();
   const std::filesystem::path path =
-      which == 0 ? std::filesystem::path(MOCAP_TEST_DATA) / "face_mesh/canonical_face_model.obj"
-                 : std::filesystem::path(MOCAP_SHARED_DATA) / "face_mesh/ict_facekit/generic_neutral_mesh.obj";
+      which == 0 ? std::filesystem::path(mocap::checkout::testDataDir()) / "face_mesh/canonical_face_model.obj"
+                 : std::filesystem::path(mocap::checkout::sharedDataDir()) / "face_mesh/ict_facekit/generic_neutral_mesh.obj";
   if (!std::filesystem::exists(path))
     return cache.emplace(which, nullptr).first->second.get();
   auto f = std::make_unique<Fixture>();

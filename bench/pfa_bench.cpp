@@ -6,6 +6,7 @@
 #include "mocap/layout/layout_frames.h"
 #include "mocap/layout/marker_selection.h"
 #include "mocap/io/take_io.h"
+#include "checkout_paths.h"
 
 #include <benchmark/benchmark.h>
 
@@ -25,7 +26,7 @@ const Input& input()
 {
   static const Input data = [] {
     const std::vector<mocap::Take> takes{
-        mocap::readTake(std::string(MOCAP_TEST_DATA) + "/trc/NoseMoCap.trc")};
+        mocap::readTake(std::string(mocap::checkout::testDataDir()) + "/trc/NoseMoCap.trc")};
     Input result{mocap::collectLayoutFrames(takes, {}), mocap::MarkerSymmetry()};
     const Eigen::Index neutral = mocap::findNeutralFrame(result.frames.frames, result.frames.training);
     Eigen::MatrixX3d positions(result.frames.markerCount(), 3);

@@ -11,6 +11,7 @@
 #include "mocap/video/review_video_writer.h"
 #include "views/review_scene.h"
 #include "views/vtk_viewport.h"
+#include "checkout_paths.h"
 
 #include <QApplication>
 #include <QSettings>
@@ -115,7 +116,7 @@ int main(int argc, char** argv)
   QApplication::setApplicationName(QStringLiteral("Mocap Review Bench"));
   QSettings().clear();
   g_window = std::make_unique<studio::MainWindow>();
-  if (const QString error = g_window->openFile(QStringLiteral(MOCAP_SAMPLE_DIR "/Facial-Sing.c3d"), true); !error.isEmpty())
+  if (const QString error = g_window->openFile(QString::fromUtf8(mocap::checkout::sampleDir()) + QStringLiteral("/Facial-Sing.c3d"), true); !error.isEmpty())
     return 1;
   (void)g_window->selectLabels({QStringLiteral("section5-1"), QStringLiteral("section3-4")});
   benchmark::Initialize(&argc, argv);

@@ -1,13 +1,27 @@
 #!/usr/bin/env bash
 # Shared set-up for scripts/studio.sh and scripts/test.sh: installs the Debian/Ubuntu packages
 # that are missing (with sudo when not root), then configures and builds in build/.
-# Usage: scripts/setup.sh [extra cmake -D options...]
+# Usage: scripts/setup.sh [--target TARGET]... [extra cmake -D options...]
+#   --target  build only TARGET (repeatable; default: everything). scripts/studio.sh builds the studio.
+# Prints how long each step took (seconds) and, when ccache is in use, the build's cache hit rate.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=scripts/build_report.sh
+. "$root/scripts/build_report.sh"
 
-# Never libvtk9-qt-dev: it drags in the Qt 5 stack.
+targets=()
+cmake_options=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --target) targets+=(--target "$2"); shift 2 ;;
+    *) cmake_options+=("$1"); shift ;;
+  esac
+done
+
+# Never libvtk9-qt-dev: it drags in the Qt 5 stack. ccache and lld only make builds faster: the
+# build goes on without them (and says so) where they cannot be installed.
 packages=(
-  cmake make g++ clang pkg-config
+  cmake make g++ clang pkg-config ccache lld
   qt6-base-dev qt6-tools-dev qt6-l10n-tools
   libvtk9-dev libeigen3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -31,7 +45,17 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+phase_start
 install_missing_packages
+phase_end "packages"
+
 jobs="$(nproc 2>/dev/null || echo 2)"
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
-cmake --build "$root/build" -j "$jobs"
+phase_start
+configure_quietly "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${cmake_options[@]}"
+phase_end "configure"
+
+phase_start
+reset_ccache_log "$root/build"
+cmake --build "$root/build" -j "$jobs" "${targets[@]}"
+phase_end "build"
+report_ccache "$root/build"

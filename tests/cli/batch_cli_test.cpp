@@ -6,6 +6,7 @@
 #include "mocap/base/content_hash.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
+#include "checkout_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -26,7 +27,7 @@ const std::string kEpoch = "SOURCE_DATE_EPOCH=1780000000 ";
 
 test::ShellResult mocap(const std::string& arguments, const test::TempDir& dir, const std::string& environment = kEpoch)
 {
-  return test::runShell(environment + shellQuote(std::string(MOCAP_CLI)) + " " + arguments, dir.path());
+  return test::runShell(environment + shellQuote(std::string(checkout::cliProgram())) + " " + arguments, dir.path());
 }
 
 /// An archive of real takes in two sessions, and a manifest listing them relative to itself.
@@ -253,7 +254,7 @@ TEST(BatchCli, AFullDiskFailsTheTakesThatDoNotFitAndLeavesNothingPartial)
 {
   test::TempDir dir;
   const Archive archive(dir);
-  const std::string command = "trap '' XFSZ; ulimit -f 400; export " + kEpoch + "; exec " + shellQuote(std::string(MOCAP_CLI)) +
+  const std::string command = "trap '' XFSZ; ulimit -f 400; export " + kEpoch + "; exec " + shellQuote(std::string(checkout::cliProgram())) +
                               " batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out"));
   const auto run = test::runShell("sh -c " + shellQuote(command), dir.path());
   EXPECT_EQ(run.exitCode, 1) << run.err;
@@ -291,7 +292,7 @@ TEST(BatchCli, CtrlCStopsCleanlyKeepingFinishedTakesAndResumeFinishes)
     fs::copy_file(test::dataFile("c3d/sample01/Eb015pr.c3d"), dir.file("many") / ("take" + std::to_string(i) + ".c3d"));
   const fs::path out = dir.file("out");
   // Start the batch, wait for its first finished take, then interrupt it.
-  const std::string script = kEpoch + shellQuote(std::string(MOCAP_CLI)) + " batch " + shellQuote(dir.file("many")) +
+  const std::string script = kEpoch + shellQuote(std::string(checkout::cliProgram())) + " batch " + shellQuote(dir.file("many")) +
                              " -o " + shellQuote(out) + " --jobs 2 & pid=$!; i=0; while [ $i -lt 600 ] && ! ls " +
                              shellQuote(out) + "/*.report.json >/dev/null 2>&1; do sleep 0.05; i=$((i+1)); done; " +
                              "kill -INT $pid; wait $pid; echo exit=$?";
@@ -328,7 +329,7 @@ TEST(BatchCli, GnuParallelOverManifestIndicesWritesWhatTheBatchWrites)
   const Archive archive(dir);
   ASSERT_EQ(mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("batch")), dir).exitCode, 0);
   const std::string command = "export " + kEpoch + "; seq 0 4 | parallel --halt now,fail=1 -j 2 " +
-                              shellQuote(std::string(MOCAP_CLI)) + " clean --manifest " +
+                              shellQuote(std::string(checkout::cliProgram())) + " clean --manifest " +
                               shellQuote(archive.manifest()) + " --index {} -o " + shellQuote(dir.file("parallel"));
   const auto run = test::runShell(command, dir.path());
   ASSERT_EQ(run.exitCode, 0) << run.out << run.err;

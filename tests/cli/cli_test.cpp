@@ -5,6 +5,7 @@
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
 #include "mocap/evaluation/tracking_evaluation.h"
+#include "checkout_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -36,7 +37,7 @@ std::string shellQuote(const std::string& s)
 CommandResult runMocap(const std::string& arguments, const test::TempDir& dir)
 {
   const auto errFile = dir.file("stderr.txt");
-  const std::string command = shellQuote(MOCAP_CLI) + " " + arguments + " 2>" + shellQuote(errFile.string());
+  const std::string command = shellQuote(checkout::cliProgram()) + " " + arguments + " 2>" + shellQuote(errFile.string());
   CommandResult run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe)
@@ -243,7 +244,7 @@ TEST(Cli, EveryCommandAnswersHelpWithItsOwnUsage)
 TEST(Cli, ReadmeListsTheCommandsAsMocapHelpDoes)
 {
   test::TempDir dir;
-  const std::string readme = readFileBytes(MOCAP_README);
+  const std::string readme = readFileBytes(std::filesystem::path(checkout::sourceDir()) / "README.md");
   const std::size_t section = readme.find("## The `mocap` command line");
   ASSERT_NE(section, std::string::npos);
   const std::size_t open = readme.find("```\n", section);

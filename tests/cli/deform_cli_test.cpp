@@ -8,6 +8,7 @@
 #include "mocap/io/pc2_io.h"
 #include "mocap/io/obj_io.h"
 #include "mocap/io/ply_io.h"
+#include "checkout_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +31,7 @@ struct Outcome
 // Runs `mocap ARGUMENTS` through the shell with stdout and stderr captured in files of `dir`.
 Outcome mocap(const std::string& arguments, const test::TempDir& dir)
 {
-  const std::string command = std::string("'") + MOCAP_CLI + "' " + arguments + " >'" +
+  const std::string command = std::string("'") + checkout::cliProgram() + "' " + arguments + " >'" +
                               dir.file("out.txt").string() + "' 2>'" + dir.file("err.txt").string() + "'";
   const int status = std::system(command.c_str());
   Outcome run;
@@ -441,7 +442,7 @@ TEST(RigCli, BadRangesOutputsAndShapeFoldersGiveClearErrors)
 
 TEST(RigCli, TheBundledIctRigLoadsAndSolvesTheBundledTake)
 {
-  const std::filesystem::path sampleDir = MOCAP_SAMPLE_DIR;
+  const std::filesystem::path sampleDir = checkout::sampleDir();
   const BlendshapeRig rig = readGltfRig(sampleDir / "ict_face_rig.glb");
   EXPECT_EQ(rig.neutral.vertexCount(), 9409);
   EXPECT_EQ(rig.neutral.triangles().size(), 18460u);  // ICT's 9230 face quads

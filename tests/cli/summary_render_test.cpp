@@ -4,6 +4,7 @@
 #include "shell_run.h"
 
 #include "mocap/base/file_io.h"
+#include "checkout_paths.h"
 
 #include <QColor>
 #include <QImage>
@@ -35,8 +36,8 @@ std::size_t pixelsNear(const QImage& image, QColor colour, int tolerance)
 
 TEST(SummaryRender, HeadlessChromiumDrawsEveryPlot)
 {
-  const std::string chromium = MOCAP_CHROMIUM;
-  if (chromium.empty() || chromium.find("NOTFOUND") != std::string::npos)
+  const std::string chromium = checkout::chromium();
+  if (chromium.empty())
     GTEST_SKIP() << "chromium not installed";
   test::TempDir dir;
   std::string manifest;
@@ -44,7 +45,7 @@ TEST(SummaryRender, HeadlessChromiumDrawsEveryPlot)
     manifest += test::dataFile(take).string() + "\n";
   manifest += test::sampleTake().string() + "\n";
   writeFileAtomically(dir.file("takes.txt"), manifest);
-  const std::string mocap = shellQuote(std::string(MOCAP_CLI));
+  const std::string mocap = shellQuote(std::string(checkout::cliProgram()));
   const auto batch =
       test::runShell(mocap + " batch " + shellQuote(dir.file("takes.txt")) + " -o " + shellQuote(dir.file("out")), dir.path());
   ASSERT_EQ(batch.exitCode, 0) << batch.err;

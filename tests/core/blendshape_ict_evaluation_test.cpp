@@ -8,6 +8,7 @@
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/io/rig_io.h"
+#include "checkout_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +32,7 @@ constexpr double kNoiseMm = 0.3;
 
 const BlendshapeRig& ictRig()
 {
-  static const BlendshapeRig rig = readRig(std::filesystem::path(MOCAP_SAMPLE_DIR) / "ict_face_rig.glb", {});
+  static const BlendshapeRig rig = readRig(std::filesystem::path(checkout::sampleDir()) / "ict_face_rig.glb", {});
   return rig;
 }
 

@@ -2,6 +2,7 @@
 
 #include "mocap/io/obj_io.h"
 #include "mocap/model/mesh.h"
+#include "checkout_paths.h"
 
 #include <gtest/gtest.h>
 
@@ -13,12 +14,12 @@ namespace mocap::test {
 
 std::filesystem::path dataFile(const std::string& relative)
 {
-  return std::filesystem::path(MOCAP_TEST_DATA) / relative;
+  return std::filesystem::path(checkout::testDataDir()) / relative;
 }
 
 std::filesystem::path sampleTake()
 {
-  return std::filesystem::path(MOCAP_SAMPLE_DIR) / "Facial-Sing.c3d";
+  return std::filesystem::path(checkout::sampleDir()) / "Facial-Sing.c3d";
 }
 
 TempDir::TempDir()

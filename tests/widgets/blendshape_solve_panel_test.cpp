@@ -22,6 +22,7 @@
 
 #include "mocap/base/file_io.h"
 #include "mocap/model/sample_patch.h"
+#include "checkout_paths.h"
 
 #include <QDockWidget>
 #include <QListWidget>
@@ -36,8 +37,8 @@ namespace {
 
 using studio::MainWindow;
 
-const QString kMesh = QStringLiteral(MOCAP_SAMPLE_DIR "/canonical_face_model.obj");
-const QString kBinding = QStringLiteral(MOCAP_SAMPLE_DIR "/Facial-Sing.binding.json");
+const QString kMesh = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/canonical_face_model.obj");
+const QString kBinding = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.binding.json");
 
 class BlendshapeSolvePanelTest : public ::testing::Test
 {

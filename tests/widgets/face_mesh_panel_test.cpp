@@ -19,6 +19,7 @@
 #include "mocap/deform/face_rig.h"
 #include "mocap/base/file_io.h"
 #include "mocap/io/pc2_io.h"
+#include "checkout_paths.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -40,8 +41,8 @@ using studio::MainWindow;
 using ui::FaceMeshModel;
 using ui::FaceMeshScene;
 
-const QString kMesh = QStringLiteral(MOCAP_SAMPLE_DIR "/canonical_face_model.obj");
-const QString kBinding = QStringLiteral(MOCAP_SAMPLE_DIR "/Facial-Sing.binding.json");
+const QString kMesh = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/canonical_face_model.obj");
+const QString kBinding = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.binding.json");
 constexpr Eigen::Index kStart = 1000;  // the actor sings here: the mouth markers move
 
 class FaceMeshPanelTest : public ::testing::Test

@@ -1,4 +1,5 @@
 #include "image_difference.h"
+#include "checkout_paths.h"
 
 #include <QDir>
 #include <QFile>
@@ -77,12 +78,12 @@ QImage highlightDifferences(const QImage& actual, const QImage& expected)
 
 QString actualImagePath(const QString& name)
 {
-  return QDir(QStringLiteral(MOCAP_BUILD_DIR)).filePath(name + QStringLiteral(".actual.png"));
+  return QDir(QString::fromUtf8(checkout::testBuildDir())).filePath(name + QStringLiteral(".actual.png"));
 }
 
 QString differenceImagePath(const QString& name)
 {
-  return QDir(QStringLiteral(MOCAP_BUILD_DIR)).filePath(name + QStringLiteral(".diff.png"));
+  return QDir(QString::fromUtf8(checkout::testBuildDir())).filePath(name + QStringLiteral(".diff.png"));
 }
 
 ::testing::AssertionResult matchesImage(const QImage& actual, const QImage& expected, const QString& name)
@@ -102,7 +103,7 @@ QString differenceImagePath(const QString& name)
 
 ::testing::AssertionResult matchesBaseline(const QImage& actual, const QString& name)
 {
-  const QString baselinePath = QDir(QStringLiteral(MOCAP_BASELINE_DIR)).filePath(name + QStringLiteral(".png"));
+  const QString baselinePath = QDir(QString::fromUtf8(checkout::baselineDir())).filePath(name + QStringLiteral(".png"));
   const QImage expected(baselinePath);
   if (expected.isNull()) {
     (void)actual.save(actualImagePath(name));

@@ -37,11 +37,11 @@ struct ImageDifference
 [[nodiscard]] QImage highlightDifferences(const QImage& actual, const QImage& expected);
 
 /// Whether `actual` matches `expected`. The render is always written to
-/// MOCAP_BUILD_DIR/`name`.actual.png; on a mismatch the highlighted difference goes to
+/// build/tests/`name`.actual.png; on a mismatch the highlighted difference goes to
 /// `name`.diff.png beside it and the message names both files and says how many pixels differ.
 [[nodiscard]] ::testing::AssertionResult matchesImage(const QImage& actual, const QImage& expected, const QString& name);
 
-/// matchesImage against the committed baseline MOCAP_BASELINE_DIR/`name`.png (refresh a baseline
+/// matchesImage against the committed baseline tests/baselines/`name`.png (refresh a baseline
 /// deliberately by copying `name`.actual.png over it).
 [[nodiscard]] ::testing::AssertionResult matchesBaseline(const QImage& actual, const QString& name);
 

@@ -17,6 +17,7 @@
 #include "views/marker_view_3d.h"
 #include "views/review_scene.h"
 #include "views/vtk_viewport.h"
+#include "checkout_paths.h"
 
 #include <opencv2/videoio.hpp>
 
@@ -165,7 +166,7 @@ TEST(ReviewExport, MocapReviewWritesTheVideoItReports)
   const auto witness = writeWitnessVideo(dir);
   const QString out = QString::fromStdString(dir.file("cli.mp4").string());
   QProcess mocap;
-  mocap.start(QStringLiteral(MOCAP_BIN_DIR "/mocap"),
+  mocap.start(QString::fromUtf8(checkout::cliProgram()),
               {QStringLiteral("review"), QString::fromStdString(test::sampleTake().string()), QStringLiteral("-o"), out,
                QStringLiteral("--frames"), QStringLiteral("1100:1129"), QStringLiteral("--size"), QStringLiteral("640x360"),
                QStringLiteral("--video"), QString::fromStdString(witness.string()), QStringLiteral("--offset"),
@@ -182,7 +183,7 @@ TEST(ReviewExport, MocapReviewWritesTheVideoItReports)
   ASSERT_NO_FATAL_FAILURE(expectReviewVideo(written, 1099, 1128));
 
   QProcess bad;
-  bad.start(QStringLiteral(MOCAP_BIN_DIR "/mocap"),
+  bad.start(QString::fromUtf8(checkout::cliProgram()),
             {QStringLiteral("review"), QString::fromStdString(test::sampleTake().string()), QStringLiteral("-o"),
              QString::fromStdString(dir.file("bad.mp4").string()), QStringLiteral("--size"), QStringLiteral("641x360")});
   ASSERT_TRUE(bad.waitForFinished(60000));

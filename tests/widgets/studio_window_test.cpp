@@ -27,6 +27,7 @@
 #include "mocap/model/gaps.h"
 #include "mocap/model/marker_links.h"
 #include "mocap/model/marker_set.h"
+#include "checkout_paths.h"
 
 #include <QAction>
 #include <QApplication>
@@ -761,7 +762,7 @@ TEST_F(StudioWindow, ErasingAnyOneMarkerFailsTheRenderComparison)
   ui::VtkViewport* viewport = window->markerView()->viewport();
   ASSERT_TRUE(viewport->usable()) << viewport->failureReason().toStdString();
   const QImage full = renderBaselineView();
-  const QImage baseline(QStringLiteral(MOCAP_BASELINE_DIR "/MarkerView3d.png"));
+  const QImage baseline(QString::fromUtf8(checkout::baselineDir()) + QStringLiteral("/MarkerView3d.png"));
   ASSERT_FALSE(baseline.isNull());
   TakeDocument& doc = window->document();
   const Eigen::Index frame = doc.currentFrame();

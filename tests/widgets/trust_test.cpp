@@ -23,6 +23,7 @@
 #include "mocap/cleaning/fill/gap_fill.h"
 #include "mocap/model/provenance.h"
 #include "mocap/io/take_io.h"
+#include "checkout_paths.h"
 
 #include <QAction>
 #include <QApplication>
@@ -163,8 +164,8 @@ TEST_F(Trust, TheStudioRecoversTheFaceMeshAndBinding)
   {
     auto window = showWindow();
     ASSERT_EQ(window->openFile(qpath(test::sampleTake()), true), QString());
-    ASSERT_EQ(window->loadFaceMesh(QStringLiteral(MOCAP_SAMPLE_DIR "/canonical_face_model.obj"),
-                                   QStringLiteral(MOCAP_SAMPLE_DIR "/Facial-Sing.binding.json")),
+    ASSERT_EQ(window->loadFaceMesh(QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/canonical_face_model.obj"),
+                                   QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.binding.json")),
               QString());
     fillShortGaps(window->document());
     ASSERT_EQ(window->autosave()->saveNow(), QString());

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "mocap/cleaning/head_stabilization.h"
 #include "mocap/model/sample_patch.h"
 #include "mocap/model/take.h"
 
@@ -12,6 +11,10 @@
 #include <memory>
 #include <utility>
 #include <vector>
+
+namespace mocap {
+struct HeadMotion; // mocap/cleaning/head_stabilization.h
+}
 
 namespace mocap::ui {
 

@@ -16,6 +16,7 @@
 #include <QWheelEvent>
 #include <QWindow>
 
+#include <vtkAutoInit.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
@@ -27,6 +28,15 @@
 
 #include <algorithm>
 #include <cmath>
+
+// VTK's object factories for the rendering classes every viewport creates: OpenGL render windows and
+// mappers, FreeType text, the window interactor. Registered here, in the one file that every program
+// with a 3D view links, instead of by vtk_module_autoinit, whose compile definition names a header in
+// the build folder on every widgets compile line (a compiler cache could then not share them
+// between two clones).
+VTK_MODULE_INIT(vtkRenderingOpenGL2)
+VTK_MODULE_INIT(vtkRenderingFreeType)
+VTK_MODULE_INIT(vtkRenderingUI)
 
 namespace mocap::ui {
 

@@ -1,0 +1,7 @@
+#include <cstdio>
+
+int main()
+{
+  std::printf("%d\n", VALUE);
+  return 0;
+}
