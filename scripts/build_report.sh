@@ -1,6 +1,6 @@
 # Sourced by scripts/setup.sh and scripts/test.sh: phase times, quiet configuring and ccache's hit rate.
 # Each phase's time is printed when it ends and, when MOCAP_PHASE_LOG names a file, appended to it
-# ("name seconds" a line) so scripts/test.sh can print every phase's time at the end.
+# ("seconds<TAB>name" a line) so scripts/test.sh can print every phase's time at the end.
 
 phase_start() { phase_started=$SECONDS; }
 
@@ -9,7 +9,7 @@ phase_end() {
   local seconds=$((SECONDS - phase_started))
   printf '== %s: %d s\n' "$1" "$seconds"
   if [ -n "${MOCAP_PHASE_LOG:-}" ]; then
-    printf '%s %d\n' "$1" "$seconds" >>"$MOCAP_PHASE_LOG"
+    printf '%d\t%s\n' "$seconds" "$1" >>"$MOCAP_PHASE_LOG"
   fi
 }
 
@@ -17,7 +17,7 @@ phase_end() {
 print_phases() {
   [ -n "${MOCAP_PHASE_LOG:-}" ] && [ -s "$MOCAP_PHASE_LOG" ] || return 0
   echo "== Phase times"
-  awk '{ total += $2; printf "   %-28s %4d s  (%d:%02d)\n", $1, $2, $2 / 60, $2 % 60 }
+  awk -F '\t' '{ total += $1; printf "   %-28s %4d s  (%d:%02d)\n", $2, $1, $1 / 60, $1 % 60 }
        END { printf "   %-28s %4d s  (%d:%02d)\n", "total", total, total / 60, total % 60 }' "$MOCAP_PHASE_LOG"
 }
 
