@@ -74,6 +74,7 @@ int runDeform(const DeformArguments& arguments)
 
   const Mesh mesh = readMesh(meshPath);
   Take take = readInputTake(takePath);
+  const auto [begin, end] = parseFrameRange(arguments.frames, take);  // a bad range fails before the setup
   if (arguments.stabilize)
     (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
   FaceRig rig(mesh, readBinding(bindingPath, mesh.vertexCount()), take, settings);
@@ -83,7 +84,6 @@ int runDeform(const DeformArguments& arguments)
   const Retarget& retarget = rig.retarget();
   const double setupSeconds = rig.setupSeconds();
 
-  const auto [begin, end] = parseFrameRange(arguments.frames, take);
   const MeshSequenceFormat format = lowerExtension(out) == "pc2" ? MeshSequenceFormat::ObjPlusPc2
                                      : arguments.ply            ? MeshSequenceFormat::PlySequence
                                                                  : MeshSequenceFormat::ObjSequence;

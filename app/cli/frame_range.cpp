@@ -2,7 +2,8 @@
 
 #include "cli_error.h"
 
-#include <cstdio>
+#include "mocap/base/error.h"
+#include "mocap/base/index_range.h"
 
 namespace mocap::cli {
 
@@ -10,14 +11,14 @@ std::pair<Eigen::Index, Eigen::Index> parseFrameRange(const std::optional<std::s
 {
   if (!text)
     return {0, take.frameCount()};
-  const std::size_t colon = text->find(':');
-  long long first = 0, last = 0;
-  if (colon == std::string::npos || std::sscanf(text->c_str(), "%lld:%lld", &first, &last) != 2)
-    throw UsageError("--frames needs FIRST:LAST frame numbers, not '" + *text + "'");
-  const long long begin = first - take.firstFrame(), end = last - take.firstFrame() + 1;
-  if (begin < 0 || end > take.frameCount() || begin >= end)
-    throw UsageError("--frames " + *text + " is outside the take or empty");
-  return {static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(end)};
+  const std::int64_t first = take.firstFrame(), last = first + take.frameCount() - 1;
+  try {
+    const IndexRange range = parseIndexRange(*text, first, last);
+    return {static_cast<Eigen::Index>(range.first - first), static_cast<Eigen::Index>(range.last - first + 1)};
+  } catch (const InvalidArgument& e) {
+    throw UsageError("--frames needs FIRST:LAST frame numbers of the take (" + std::to_string(first) + "…" +
+                     std::to_string(last) + "), not '" + *text + "': " + e.what());
+  }
 }
 
 } // namespace mocap::cli

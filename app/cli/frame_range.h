@@ -9,8 +9,9 @@
 namespace mocap::cli {
 
 /// The take frame indices [begin, end) of `--frames FIRST:LAST` (frame numbers as the take numbers
-/// them, both included); the whole take without the option. Throws UsageError for another form or
-/// a range that is empty or leaves the take. O(1).
+/// them, both included; parseIndexRange's form); the whole take without the option. Throws
+/// UsageError naming the text and what is wrong for another form or a range that is reversed or
+/// leaves the take. O(|text|).
 [[nodiscard]] std::pair<Eigen::Index, Eigen::Index> parseFrameRange(const std::optional<std::string>& text, const Take& take);
 
 } // namespace mocap::cli

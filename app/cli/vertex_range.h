@@ -7,8 +7,9 @@
 
 namespace mocap::cli {
 
-/// The vertices FIRST…LAST of `--vertices FIRST:LAST` (both included) on a mesh of `vertexCount`
-/// vertices. Throws UsageError for another form or a range that is empty or leaves the mesh. O(1).
+/// The vertices FIRST…LAST of `--vertices FIRST:LAST` (both included; parseIndexRange's form) on
+/// a mesh of `vertexCount` vertices. Throws UsageError naming the text and what is wrong for
+/// another form or a range that is reversed or leaves the mesh. O(|text|).
 [[nodiscard]] std::pair<Eigen::Index, Eigen::Index> parseVertexRange(const std::string& text, Eigen::Index vertexCount);
 
 } // namespace mocap::cli

@@ -146,6 +146,30 @@ TEST(DeformCli, BadUsageAndBadInputGiveClearErrors)
   EXPECT_NE(run.err.find("at least 3 correspondences"), std::string::npos) << run.err;
 }
 
+TEST(DeformCli, FrameRangesAreReadWholeAndMustLieInTheTake)
+{
+  test::TempDir dir;
+  const std::string deform = "deform --mesh " + faceMesh() + " --binding '" +
+                             test::dataFile("../../resources/sample/Facial-Sing.binding.json").string() + "' --take " +
+                             sample() + " --leave-out 0 -o '" + dir.file("x.pc2").string() + "' --frames";
+  const auto expectError = [&](const std::string& frames, const std::string& fragment) {
+    const Outcome run = mocap(deform + frames, dir);
+    EXPECT_EQ(run.exitCode, 2) << frames;
+    EXPECT_NE(run.err.find(fragment), std::string::npos) << run.err;
+  };
+  expectError(" 10:20x",
+              "--frames needs FIRST:LAST frame numbers of the take (1…3000), not '10:20x': LAST '20x' is not a whole number");
+  expectError(" 10x:20", "not '10x:20': FIRST '10x' is not a whole number");
+  expectError(" 10:20:30", "LAST '20:30' is not a whole number");
+  expectError(" 20:10", "LAST 10 is before FIRST 20");
+  expectError("=-5:10", "FIRST -5 is less than 1");
+  expectError(" 2990:3001", "LAST 3001 is more than 3000");
+  expectError(" 1:99999999999999999999", "LAST '99999999999999999999' does not fit a 64-bit whole number");
+  expectError(" :20", "FIRST is empty");
+  expectError(" 10-20", "no ':' between FIRST and LAST");
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.pc2")));
+}
+
 std::vector<std::string> csvLines(const std::string& text)
 {
   std::vector<std::string> lines;
@@ -432,6 +456,11 @@ TEST(RigCli, BadRangesOutputsAndShapeFoldersGiveClearErrors)
   expectError(rigArguments(dir) + " --vertices 5:2" + out, 2, "--vertices needs FIRST:LAST vertex indices of the mesh (0…467)");
   expectError(rigArguments(dir) + " --vertices 0:468" + out, 2, "not '0:468'");
   expectError(rigArguments(dir) + " --vertices 7-9" + out, 2, "not '7-9'");
+  expectError(rigArguments(dir) + " --vertices 10:20x" + out, 2, "not '10:20x': LAST '20x' is not a whole number");
+  expectError(rigArguments(dir) + " --vertices 10x:20" + out, 2, "not '10x:20': FIRST '10x' is not a whole number");
+  expectError(rigArguments(dir) + " --vertices=-3:5" + out, 2, "not '-3:5': FIRST -3 is less than 0");
+  expectError(rigArguments(dir) + " --vertices 0:99999999999999999999" + out, 2, "does not fit a 64-bit whole number");
+  expectError(rigArguments(dir) + " --vertices 10:" + out, 2, "not '10:': LAST is empty");
   expectError(rigArguments(dir) + " --vertices 7:7" + out, 2, "no face lies wholly inside vertices 7…7");
   expectError(rigArguments(dir) + " --only jawOpen,smile" + out, 2, "has no smile.obj");
   expectError(rigArguments(dir) + " -o '" + dir.file("rig.obj").string() + "'", 2, "-o must be a .glb file");

@@ -17,6 +17,7 @@
 
 #include <cstring>
 #include <functional>
+#include <map>
 #include <sstream>
 
 namespace mocap {
@@ -301,6 +302,51 @@ TEST(GltfRigReader, RefusesWhatIsNotATriangleRigWithFloatPositions)
   still.primitives[0].targets.clear();
   b.model.meshes.insert(b.model.meshes.begin(), still);
   EXPECT_EQ(parseGltfRig(b.glb(), "two_meshes.glb").shapeNames(), (std::vector<std::string>{"up", "out"}));
+}
+
+/// A neutral of `vertices` vertices drawn without indices and `targets` morph targets that all
+/// name one dense accessor moving every vertex: the file holds 24 bytes per vertex, whatever the
+/// number of targets.
+std::string sharedTargetGlb(std::size_t vertices, std::size_t targets)
+{
+  ModelBuilder b;
+  std::vector<float> neutral(vertices * 3);
+  for (std::size_t i = 0; i < neutral.size(); ++i)
+    neutral[i] = static_cast<float>(i % 97);
+  tinygltf::Primitive& primitive = b.primitive(b.floats3(neutral));
+  const int shared = b.floats3(std::vector<float>(vertices * 3, 0.5f));
+  primitive.targets.assign(targets, std::map<std::string, int>{{"POSITION", shared}});
+  return b.glb();
+}
+
+TEST(GltfRigReader, ReadsTargetsThatShareAnAccessor)
+{
+  // Deduplicating tools (gltf-transform dedup) give identical targets one accessor.
+  const BlendshapeRig rig = parseGltfRig(sharedTargetGlb(300, 4), "dedup.glb");
+  ASSERT_EQ(rig.shapeCount(), 4);
+  EXPECT_EQ(rig.shapes[3].size(), 300);
+  EXPECT_EQ(rig.shapes[3].deltas, rig.shapes[0].deltas);
+}
+
+TEST(GltfRigReader, RefusesTargetsThatReuseOneAccessorFarBeyondWhatTheFileHolds)
+{
+  // 24 KB of buffers; read in full, 2000 targets would hold 2000 × 999 moved vertices (64 MB).
+  const std::string glb = sharedTargetGlb(999, 2000);
+  ASSERT_LT(glb.size(), 100'000u);
+  try {
+    (void)parseGltfRig(glb, "hostile.glb");
+    ADD_FAILURE() << "a rig that reuses one accessor 2000 times loaded";
+  } catch (const FormatError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("hostile.glb: mesh 0 primitive 0 target "), std::string::npos) << message;
+    EXPECT_NE(message.find("bytes of accessor data from buffers of 23976 bytes; its primitives or morph targets "
+                           "reuse accessors too often"),
+              std::string::npos)
+        << message;
+    // Refused before the expansion: at the first target past the limit, not after all 2000.
+    const std::size_t at = message.find("target ") + std::string("target ").size();
+    EXPECT_LT(std::stoi(message.substr(at)), 50) << message;
+  }
 }
 
 TEST(GltfRigReader, RefusesTruncatedGarbageAndMissingFiles)

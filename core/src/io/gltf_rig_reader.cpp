@@ -127,16 +127,57 @@ void refuseGeometryExtensions(const tinygltf::Model& model, const std::string& s
       throw FormatError(source, std::string("requires ") + name + ", which is not read (export positions as float)");
 }
 
-/// The model being read and the name errors give.
+/// The bytes of accessor data a rig may read. A real rig reads each byte of its buffers about once;
+/// primitives or morph targets that all name one accessor would expand a small file into
+/// gigabytes, so reads stop at kReadFactor times what the buffers hold (plus a little for tiny files).
+class ReadBudget
+{
+public:
+  static constexpr std::uint64_t kReadFactor = 16, kAllowance = 64 * 1024;
+
+  explicit ReadBudget(const tinygltf::Model& model)
+  {
+    for (const tinygltf::Buffer& buffer : model.buffers)
+      m_held += buffer.data.size();
+    m_limit = kReadFactor * m_held + kAllowance;
+  }
+
+  /// Counts `bytes` more; false, counting nothing, when they would pass the limit.
+  bool take(std::uint64_t bytes)
+  {
+    if (bytes > m_limit - m_read)
+      return false;
+    m_read += bytes;
+    return true;
+  }
+
+  [[nodiscard]] std::uint64_t held() const { return m_held; }
+  [[nodiscard]] std::uint64_t limit() const { return m_limit; }
+
+private:
+  std::uint64_t m_held = 0, m_limit = 0, m_read = 0;
+};
+
+/// The model being read, the name errors give and what is left to read.
 struct Source
 {
   const tinygltf::Model& model;
   const std::string& name;
+  ReadBudget& budget;
 };
 
 [[noreturn]] void fail(const Source& s, const std::string& message)
 {
   throw FormatError(s.name, message);
+}
+
+/// Counts `bytes` of accessor data about to be read, before anything is allocated for them.
+void chargeRead(const Source& s, std::uint64_t bytes, const std::string& what)
+{
+  if (!s.budget.take(bytes))
+    fail(s, what + ": the rig would read more than " + std::to_string(s.budget.limit()) +
+                " bytes of accessor data from buffers of " + std::to_string(s.budget.held()) +
+                " bytes; its primitives or morph targets reuse accessors too often");
 }
 
 std::size_t componentBytes(int componentType)
@@ -258,6 +299,7 @@ void applySparse(const Source& s, const tinygltf::Accessor& a, int components, s
   const unsigned char* substitutes =
       elements(s, viewBytes(s, sparse.values.bufferView, what + " sparse values"),
                static_cast<std::size_t>(sparse.values.byteOffset), n, elementBytes, elementBytes, what + " sparse values");
+  chargeRead(s, std::uint64_t{n} * (indexBytes + elementBytes), what);
   for (std::size_t k = 0; k < n; ++k) {
     const double index = componentValue(indices + k * indexBytes, sparse.indices.componentType);
     if (index >= static_cast<double>(a.count))
@@ -297,6 +339,7 @@ std::vector<double> accessorValues(const Source& s, int index, int components, s
       fail(s, what + ": byte stride " + std::to_string(stride) + " is less than its " + std::to_string(elementBytes) +
                   "-byte elements");
     const unsigned char* first = elements(s, view, a.byteOffset, a.count, elementBytes, stride, what);
+    chargeRead(s, std::uint64_t{a.count} * elementBytes, what);
     values.resize(a.count * static_cast<std::size_t>(components));
     for (std::size_t i = 0; i < a.count; ++i)
       for (int c = 0; c < components; ++c)
@@ -468,7 +511,8 @@ BlendshapeRig parseGltfRig(std::string_view bytes, const std::string& sourceName
 {
   const tinygltf::Model model = loadModel(bytes, sourceName, baseDir);
   refuseGeometryExtensions(model, sourceName);
-  BlendshapeRig rig = buildRig({model, sourceName});
+  ReadBudget budget(model);
+  BlendshapeRig rig = buildRig({model, sourceName, budget});
   try {
     checkRig(rig);
   } catch (const InvalidArgument& e) {

@@ -23,7 +23,9 @@ namespace mocap {
 /// Nothing half-loaded. Throws IoError when the file cannot be read; FormatError for anything
 /// wrong in it — not glTF, a truncated GLB, no mesh with morph targets, a mode other than
 /// triangles, primitives with different target counts, an accessor or view out of its buffer's
-/// range, an index out of range, duplicate or empty names, a non-finite coordinate; and
+/// range, an index out of range, duplicate or empty names, a non-finite coordinate, primitives or
+/// morph targets that reuse accessors until the accessor data read passes 16 times the bytes the
+/// buffers hold (plus 64 KiB; a real rig reads each byte about once), refused before it is read; and
 /// InvalidArgument for a name in `only` the rig lacks or gives twice.
 /// O(file size + #targets · #vertices).
 [[nodiscard]] BlendshapeRig readGltfRig(const std::filesystem::path& path, const std::vector<std::string>& only = {});
