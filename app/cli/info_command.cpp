@@ -4,18 +4,57 @@
 #include "mocap/model/gaps.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/model/provenance.h"
+#include "mocap/io/c3d_reader.h"
 #include "mocap/io/take_io.h"
 
+#include <array>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace mocap::cli {
 
 namespace {
 
+/// How a C3D file's data section was read ("layout"; null for other formats).
+void writeLayoutJson(JsonWriter& json, const std::optional<C3dLayoutReport>& layout)
+{
+  json.key("layout");
+  if (!layout) {
+    json.null();
+    return;
+  }
+  json.beginObject();
+  json.key("data_start_block").value(static_cast<std::int64_t>(layout->dataStartBlock));
+  json.key("data_start_source").value(layout->dataStartSource);
+  json.key("storage").value(layout->isFloat ? "float" : "integer");
+  json.key("frame_bytes").value(static_cast<std::int64_t>(layout->frameBytes));
+  json.key("frame_words").value(static_cast<std::int64_t>(layout->frameBytes / 2));
+  json.key("analog_values_per_frame").value(static_cast<std::int64_t>(layout->analogValuesPerFrame));
+  json.key("declared_frames").value(static_cast<std::int64_t>(layout->declaredFrames));
+  json.key("data_bytes").value(static_cast<std::int64_t>(layout->dataBytes));
+  json.key("declared_data_bytes").value(static_cast<std::int64_t>(layout->declaredDataBytes));
+  json.endObject();
+}
+
+/// How many points of each type the take holds ("point_types"), every type listed.
+void writePointTypesJson(JsonWriter& json, const Take& take)
+{
+  constexpr std::array kTypes{PointType::Marker, PointType::Angle, PointType::Force,
+                              PointType::Moment, PointType::Power, PointType::Other};
+  std::array<std::int64_t, kTypes.size()> counts{};
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    ++counts[static_cast<std::size_t>(take.pointType(m))];
+  json.key("point_types").beginObject();
+  for (const PointType type : kTypes)
+    json.key(pointTypeName(type)).value(counts[static_cast<std::size_t>(type)]);
+  json.endObject();
+}
+
 void writeJson(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
-               const std::vector<std::string>& warnings, const std::vector<std::string>& dataLoss)
+               const std::vector<std::string>& warnings, const std::vector<std::string>& dataLoss,
+               const std::optional<C3dLayoutReport>& layout)
 {
   JsonWriter json;
   json.beginObject();
@@ -73,6 +112,8 @@ void writeJson(const std::string& file, TakeFormat format, const Take& take, con
   for (const auto& w : dataLoss)
     json.value(w);
   json.endArray();
+  writeLayoutJson(json, layout);
+  writePointTypesJson(json, take);
   json.endObject();
   std::cout << json.str() << '\n';
 }
@@ -131,10 +172,13 @@ int runInfo(const InfoArguments& arguments)
   const std::string& file = arguments.file;
   const TakeFormat format = formatFromPath(file);
   std::vector<std::string> warnings, dataLoss;
-  const Take take = readTake(file, &warnings, &dataLoss);
+  std::optional<C3dLayoutReport> layout;
+  // A C3D file is read by its own reader, which also says how its data section was laid out.
+  const Take take = format == TakeFormat::C3d ? readC3d(file, &warnings, &dataLoss, &layout.emplace())
+                                              : readTake(file, &warnings, &dataLoss);
   const std::vector<Gap> gaps = findGaps(take);
   if (arguments.json)
-    writeJson(file, format, take, gaps, warnings, dataLoss);
+    writeJson(file, format, take, gaps, warnings, dataLoss, layout);
   else
     writeText(file, format, take, gaps, warnings);
   return kExitOk;
@@ -149,7 +193,8 @@ Command addInfo(CLI::App& mocap)
   const auto arguments = std::make_shared<InfoArguments>();
   command->add_option("FILE", arguments->file, "the take (.c3d, .trc)")->required();
   command->add_flag("--json", arguments->json,
-                    "print JSON, with per marker the filled/smoothed/edited sample counts and \"data_loss\"");
+                    "print JSON, with per marker the filled/smoothed/edited sample counts, \"data_loss\", how a "
+                    "C3D file's data section was read (\"layout\") and \"point_types\"");
   return {command, [arguments] { return runInfo(*arguments); }};
 }
 

@@ -8,7 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
 #include <map>
+#include <unordered_map>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -38,15 +42,25 @@ struct Header
   float frameRate = 0.0f;
 };
 
+/// How analog values are laid out in a frame: `samples` samples of `channels` channels each.
+struct AnalogShape
+{
+  std::size_t values = 0;  // channels × samples
+  std::size_t channels = 0;
+  std::size_t samples = 0;
+  bool fromHeader = false;  // the header's word 3 (else ANALOG:USED × ANALOG:RATE / POINT:RATE)
+};
+
 /// How the data section is laid out, resolved from header and parameters.
 struct DataLayout
 {
   std::size_t offset = 0;
+  std::size_t dataBlock = 0;  // 1-based block at `offset`
+  bool dataStartFromHeader = false;
   std::size_t pointCount = 0;
-  std::size_t analogValuesPerFrame = 0;
-  std::size_t channelCount = 0;
-  std::size_t samplesPerFrame = 0;
-  std::size_t frameCount = 0;
+  AnalogShape analog;
+  std::size_t declaredFrames = 0;
+  std::size_t frameCount = 0;  // the declared count until fitFramesToData keeps what the data hold
   std::int64_t firstFrame = 1;
   bool isFloat = false;
   bool analogUnsigned = false;
@@ -56,8 +70,54 @@ struct DataLayout
   [[nodiscard]] std::size_t bytesPerValue() const { return isFloat ? 4 : 2; }
   [[nodiscard]] std::size_t frameBytes() const
   {
-    return (pointCount * 4 + analogValuesPerFrame) * bytesPerValue();
+    return (pointCount * 4 + analog.values) * bytesPerValue();
   }
+};
+
+/// One source's reading of one part of the layout: what it says (for warnings) and how it sets it.
+struct LayoutOption
+{
+  std::string source;
+  std::function<void(DataLayout&)> apply;
+};
+/// The readings of one part of the layout (data start, storage, point count, analog), default first.
+using LayoutOptions = std::vector<LayoutOption>;
+
+/// How the declared frames fit a data section, best last: not all of them; all, with bytes to
+/// spare; all, with nothing after them but the padding of the last block.
+enum class Fit
+{
+  Short,
+  Holds,
+  Exact,
+};
+
+/// A scale a file can be read with: finite and not 0.
+bool usableScale(double scale)
+{
+  return std::isfinite(scale) && scale != 0.0;
+}
+
+/// Whether two values a header and a parameter give differ beyond float rounding.
+bool differ(double a, double b)
+{
+  return !(std::abs(a - b) <= 1e-6 * std::max(std::abs(a), std::abs(b)));
+}
+
+/// A number for a warning: 6 significant digits.
+std::string numberText(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+/// What the decoding pass counts: the residuals loadProvenance needs, and the samples whose
+/// residual word is no 16-bit integer.
+struct SampleCounts
+{
+  ResidualCounts residuals;
+  std::size_t outOfRange = 0;
 };
 
 bool isTextName(std::string_view name)
@@ -77,27 +137,36 @@ struct MarkerColumns
   std::uint8_t* cameras;
 };
 
+/// The residual word is two bytes read as a signed 16-bit integer; a float file stores it as a
+/// float that converts to an integer of those two bytes. From kSignBit up the word's sign bit is
+/// set (65535 is −1: invalid); from kWordEnd up, and NaN or infinite, it is no 16-bit word at all.
+constexpr double kSignBit = 32768.0;
+constexpr double kWordEnd = 65536.0;
+
 /// One stored sample (x, y, z, residual word at `p`, `bpv` bytes each) into frame `f` of `out`.
-/// A sample is valid when its word is ≥ 0 and its coordinates are finite; the word's low byte
-/// is the residual (× `residualScale`), bits 8–14 the cameras that saw it. O(1).
+/// The word is converted to an integer (toward zero) before its sign is tested, as the format
+/// says. A sample is valid when that integer is a non-negative 16-bit word and the coordinates
+/// are finite; its low byte is the residual (× `residualScale`), bits 8–14 the cameras that saw
+/// it. A word that is no 16-bit integer is counted, not clamped into a residual. O(1).
 template <typename Decode>
 void decodeSample(const unsigned char* p, std::size_t bpv, double coordinateScale, double residualScale,
-                  Decode decode, const MarkerColumns& out, std::size_t f, ResidualCounts& counts)
+                  Decode decode, const MarkerColumns& out, std::size_t f, SampleCounts& counts)
 {
   const double word = decode(p + 3 * bpv);
   const double xv = decode(p) * coordinateScale;
   const double yv = decode(p + bpv) * coordinateScale;
   const double zv = decode(p + 2 * bpv) * coordinateScale;
-  const bool ok = word >= 0.0 && std::isfinite(xv + yv + zv);
+  const bool ok = word > -1.0 && word < kSignBit && std::isfinite(xv + yv + zv);
   out.x[f] = xv;
   out.y[f] = yv;
   out.z[f] = zv;
   out.valid[f] = ok;
-  const auto bits = ok ? static_cast<std::uint32_t>(std::min(word, 65535.0)) : 0u;
+  const auto bits = ok ? static_cast<std::uint32_t>(word) : 0u;
   const double residual = ok ? static_cast<double>(bits & 0xFFu) * residualScale : -1.0;
   out.residuals[f] = residual;
-  counts.valid += ok ? 1 : 0;
-  counts.zero += residual == 0.0 ? 1 : 0;  // (an invalid sample's -1 is never 0)
+  counts.residuals.valid += ok ? 1 : 0;
+  counts.residuals.zero += residual == 0.0 ? 1 : 0;  // (an invalid sample's -1 is never 0)
+  counts.outOfRange += word < kWordEnd ? 0 : 1;
   out.cameras[f] = static_cast<std::uint8_t>((bits >> 8) & 0x7Fu);
 }
 
@@ -108,7 +177,7 @@ void decodeSample(const unsigned char* p, std::size_t bpv, double coordinateScal
 /// lanes. The same operations in the same order as decodeSample (the coordinate scale of a float
 /// file is 1), so the results are identical. O(1).
 void decodeIntelFloatPair(const unsigned char* p, std::size_t frameBytes, double residualScale,
-                          const MarkerColumns& out, std::size_t f, ResidualCounts& counts)
+                          const MarkerColumns& out, std::size_t f, SampleCounts& counts)
 {
   const __m128 a = _mm_loadu_ps(reinterpret_cast<const float*>(p));
   const __m128 b = _mm_loadu_ps(reinterpret_cast<const float*>(p + frameBytes));
@@ -122,10 +191,14 @@ void decodeIntelFloatPair(const unsigned char* p, std::size_t frameBytes, double
   const __m128d zero = _mm_setzero_pd();
   // x + y + z is finite exactly when (x + y + z) · 0 is 0 (NaN otherwise).
   const __m128d finite = _mm_cmpeq_pd(_mm_mul_pd(_mm_add_pd(_mm_add_pd(x, y), z), zero), zero);
-  const __m128d ok = _mm_and_pd(_mm_cmpge_pd(word, zero), finite);
-  // The words truncated to integers; the 64-bit lane masks narrowed to the two 32-bit lanes.
+  // The word's integer is ≥ 0 with the sign bit clear: −1 < word < 32768.
+  const __m128d nonNegative =
+      _mm_and_pd(_mm_cmpgt_pd(word, _mm_set1_pd(-1.0)), _mm_cmplt_pd(word, _mm_set1_pd(kSignBit)));
+  const __m128d ok = _mm_and_pd(nonNegative, finite);
+  // The words truncated to integers (exact for the words in range); the 64-bit lane masks
+  // narrowed to the two 32-bit lanes.
   const __m128i okLanes = _mm_shuffle_epi32(_mm_castpd_si128(ok), _MM_SHUFFLE(2, 0, 2, 0));
-  const __m128i bits = _mm_and_si128(_mm_cvttpd_epi32(_mm_min_pd(word, _mm_set1_pd(65535.0))), okLanes);
+  const __m128i bits = _mm_and_si128(_mm_cvttpd_epi32(word), okLanes);
   const __m128d scaled =
       _mm_mul_pd(_mm_cvtepi32_pd(_mm_and_si128(bits, _mm_set1_epi32(0xFF))), _mm_set1_pd(residualScale));
   const __m128d residual = _mm_or_pd(_mm_and_pd(ok, scaled), _mm_andnot_pd(ok, _mm_set1_pd(-1.0)));
@@ -134,8 +207,10 @@ void decodeIntelFloatPair(const unsigned char* p, std::size_t frameBytes, double
   const int zeroMask = _mm_movemask_pd(_mm_cmpeq_pd(residual, zero));
   out.valid[f] = (okMask & 1) != 0;
   out.valid[f + 1] = (okMask & 2) != 0;
-  counts.valid += (okMask & 1) + (okMask >> 1);
-  counts.zero += (zeroMask & 1) + (zeroMask >> 1);
+  const int outMask = _mm_movemask_pd(_mm_cmpnlt_pd(word, _mm_set1_pd(kWordEnd)));  // NaN too, as in decodeSample
+  counts.residuals.valid += (okMask & 1) + (okMask >> 1);
+  counts.residuals.zero += (zeroMask & 1) + (zeroMask >> 1);
+  counts.outOfRange += static_cast<std::size_t>((outMask & 1) + (outMask >> 1));
   const auto first = static_cast<std::uint32_t>(_mm_cvtsi128_si32(bits));
   const auto second = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_shuffle_epi32(bits, 1)));
   out.cameras[f] = static_cast<std::uint8_t>((first >> 8) & 0x7Fu);
@@ -147,8 +222,8 @@ class C3dParser
 {
 public:
   C3dParser(const unsigned char* data, std::size_t size, const std::string& name,
-            std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
-      : m_data(data), m_size(size), m_name(name), m_warnings(warnings), m_dataLoss(dataLoss)
+            std::vector<std::string>* warnings, std::vector<std::string>* dataLoss, C3dLayoutReport* layout)
+      : m_data(data), m_size(size), m_name(name), m_warnings(warnings), m_dataLoss(dataLoss), m_layoutReport(layout)
   {
   }
 
@@ -157,7 +232,9 @@ public:
     readHeaderBlock();
     readParameters();
     const DataLayout layout = resolveLayout();
+    reportLayout(layout);
     Take take = makeTake(layout);
+    readPointTypes(take);
     decodeData(layout, take);
     readEvents(take);
     take.parameters() = std::move(m_tree);
@@ -227,6 +304,7 @@ private:
   {
     std::map<int, std::vector<C3dParameter>> parametersByGroup;
     std::size_t pos = m_parameterOffset + 4;
+    m_parameterEnd = pos;
     while (true) {
       require(pos, 2, "parameter section");
       const auto nameLength = static_cast<std::int8_t>(m_data[pos]);
@@ -288,6 +366,7 @@ private:
   /// A description: length byte then text, clipped to the record's end `limit`.
   std::string readDescription(std::size_t at, std::size_t limit, const std::string& owner)
   {
+    m_parameterEnd = std::max(m_parameterEnd, std::min(at, limit));
     if (at >= limit) {
       warn("parameter '" + owner + "' has no description-length byte; read as empty");
       return {};
@@ -297,6 +376,7 @@ private:
       warn("description of '" + owner + "' runs past its record; clipped");
       length = limit - at - 1;
     }
+    m_parameterEnd = std::max(m_parameterEnd, at + 1 + length);
     return std::string(trim(std::string_view(reinterpret_cast<const char*>(m_data + at + 1), length)));
   }
 
@@ -375,26 +455,14 @@ private:
   DataLayout resolveLayout()
   {
     DataLayout layout;
-    layout.pointCount = m_header.pointCount;
-    const auto used = m_tree.find("POINT", "USED");
-    if (used && used->unsignedInt16() && *used->unsignedInt16() != m_header.pointCount)
-      warn("POINT:USED (" + std::to_string(*used->unsignedInt16()) + ") differs from the header's point count (" +
-           std::to_string(m_header.pointCount) + "); the header's count lays out the data");
-
-    double scale = m_tree.number("POINT", "SCALE").value_or(static_cast<double>(m_header.scale));
-    if (!std::isfinite(scale) || scale == 0.0) {
-      warn("POINT:SCALE is " + std::to_string(scale) + "; using the header's scale");
-      scale = static_cast<double>(m_header.scale);
-      if (!std::isfinite(scale) || scale == 0.0)
-        scale = -1.0;
-    }
-    layout.isFloat = scale < 0.0;
-    layout.scale = std::abs(scale);
-
     layout.frameRate = resolveFrameRate();
-    resolveAnalogLayout(layout);
-    layout.offset = resolveDataOffset();
-    resolveFrames(layout);
+    resolveDeclaredFrames(layout);
+    const double scale = resolveScale();
+    layout.scale = std::abs(scale);
+    chooseLayout(layout, scale);
+    fitFramesToData(layout);
+    const auto format = m_tree.string("ANALOG", "FORMAT");
+    layout.analogUnsigned = format && equalsIgnoreCase(*format, "UNSIGNED");
     return layout;
   }
 
@@ -402,9 +470,14 @@ private:
   {
     const double header = static_cast<double>(m_header.frameRate);
     const auto parameter = m_tree.number("POINT", "RATE");
-    if (parameter && std::isfinite(*parameter) && *parameter > 0.0)
+    const bool headerUsable = std::isfinite(header) && header > 0.0;
+    if (parameter && std::isfinite(*parameter) && *parameter > 0.0) {
+      if (headerUsable && differ(header, *parameter))
+        warn("POINT:RATE (" + numberText(*parameter) + ") differs from the header's frame rate (" +
+             numberText(header) + "); using POINT:RATE");
       return *parameter;
-    if (std::isfinite(header) && header > 0.0) {
+    }
+    if (headerUsable) {
       if (parameter)
         warn("POINT:RATE is not a positive number; using the header's rate");
       return header;
@@ -412,84 +485,349 @@ private:
     fail(20, "frame rate is not a positive number in the header or POINT:RATE");
   }
 
-  void resolveAnalogLayout(DataLayout& layout)
+  /// POINT:SCALE, else the header's scale (−1, float storage, when neither is usable). Its sign
+  /// says float (negative) or integer storage, which chooseLayout checks against the header's;
+  /// magnitudes that differ are a warning here.
+  double resolveScale()
   {
-    layout.analogValuesPerFrame = m_header.analogValuesPerFrame;
-    if (layout.analogValuesPerFrame == 0)
-      return;
-    const C3dParameter* used = m_tree.find("ANALOG", "USED");
-    std::size_t channels = used && used->unsignedInt16() ? *used->unsignedInt16() : 0;
-    if (!m_tree.group("ANALOG"))
-      warn("the header declares " + std::to_string(layout.analogValuesPerFrame) +
-           " analog values per frame but there is no ANALOG group; channels named A1...");
-    if (channels == 0 || layout.analogValuesPerFrame % channels != 0) {
-      const std::size_t samples = m_header.analogSamplesPerFrame;
-      channels = (samples > 0 && layout.analogValuesPerFrame % samples == 0)
-                     ? layout.analogValuesPerFrame / samples
-                     : layout.analogValuesPerFrame;
-      if (used)
-        warn("ANALOG:USED does not divide the header's analog values per frame; using " +
-             std::to_string(channels) + " channels");
+    const auto header = static_cast<double>(m_header.scale);
+    const auto parameter = m_tree.number("POINT", "SCALE");
+    if (parameter && usableScale(*parameter)) {
+      if (usableScale(header) && differ(std::abs(header), std::abs(*parameter)))
+        warn("POINT:SCALE (" + numberText(*parameter) + ") differs from the header's scale (" + numberText(header) +
+             "); using POINT:SCALE");
+      return *parameter;
     }
-    layout.channelCount = channels;
-    layout.samplesPerFrame = layout.analogValuesPerFrame / channels;
-    const auto format = m_tree.string("ANALOG", "FORMAT");
-    layout.analogUnsigned = format && equalsIgnoreCase(*format, "UNSIGNED");
+    if (parameter)
+      warn("POINT:SCALE is " + numberText(*parameter) + "; using the header's scale");
+    if (usableScale(header))
+      return header;
+    warn("neither POINT:SCALE nor the header gives a usable scale; reading float storage");
+    return -1.0;
   }
 
-  std::size_t resolveDataOffset()
-  {
-    std::size_t block = m_header.dataBlock;
-    const C3dParameter* start = m_tree.find("POINT", "DATA_START");
-    if (start && start->unsignedInt16()) {
-      const std::size_t parameterBlock = *start->unsignedInt16();
-      if (parameterBlock == 0)
-        warn("POINT:DATA_START is 0; using the header's data block " + std::to_string(block));
-      else if (parameterBlock != block && block != 0)
-        warn("POINT:DATA_START (" + std::to_string(parameterBlock) + ") differs from the header (" +
-             std::to_string(block) + "); using POINT:DATA_START");
-      if (parameterBlock != 0)
-        block = parameterBlock;
-    }
-    if (block == 0)
-      fail(16, "data section pointer is 0");
-    const std::size_t offset = (block - 1) * c3d::kBlockSize;
-    if (offset > m_size)
-      fail(16, "data section pointer (block " + std::to_string(block) + ") is beyond the end of the file");
-    return offset;
-  }
-
-  void resolveFrames(DataLayout& layout)
+  /// The frame count and first frame the file declares: the header's, TRIAL:ACTUAL_START_FIELD
+  /// and END_FIELD when present (they count past 65535), or POINT:FRAMES when the header's 16-bit
+  /// last frame wrapped. A count elsewhere that differs is a warning.
+  void resolveDeclaredFrames(DataLayout& layout)
   {
     layout.firstFrame = m_header.firstFrame;
-    std::size_t frames =
+    const bool headerWrapped = m_header.lastFrame == 65535 || m_header.lastFrame < m_header.firstFrame;
+    const std::size_t headerFrames =
         m_header.lastFrame >= m_header.firstFrame ? std::size_t{m_header.lastFrame} - m_header.firstFrame + 1 : 0;
+    std::size_t frames = headerFrames;
+    std::string source = "the header's frame count";
     const C3dParameter* start = m_tree.find("TRIAL", "ACTUAL_START_FIELD");
     const C3dParameter* end = m_tree.find("TRIAL", "ACTUAL_END_FIELD");
+    const C3dParameter* count = m_tree.find("POINT", "FRAMES");
     if (start && end && start->numbers.size() >= 2 && end->numbers.size() >= 2) {
       const auto first = std::size_t{*start->unsignedInt16(0)} + (std::size_t{*start->unsignedInt16(1)} << 16);
       const auto last = std::size_t{*end->unsignedInt16(0)} + (std::size_t{*end->unsignedInt16(1)} << 16);
       if (last >= first) {
         frames = last - first + 1;
         layout.firstFrame = static_cast<std::int64_t>(first);
+        source = "TRIAL:ACTUAL_START_FIELD/END_FIELD";
+        if (!headerWrapped && frames != headerFrames)
+          warnFrameConflict("the header's frame count", headerFrames, source, frames);
       }
-    } else if (const C3dParameter* count = m_tree.find("POINT", "FRAMES");
-               count && count->unsignedInt16() && *count->unsignedInt16() > frames &&
-               (m_header.lastFrame == 65535 || m_header.lastFrame < m_header.firstFrame)) {
+    } else if (count && count->unsignedInt16() && *count->unsignedInt16() > frames && headerWrapped) {
       frames = *count->unsignedInt16();  // the header's 16-bit last frame wrapped
+      source = "POINT:FRAMES";
     }
-    const std::size_t frameBytes = layout.frameBytes();
-    if (frameBytes > 0) {
-      const std::size_t available = (m_size - layout.offset) / frameBytes;
-      if (available < frames) {
-        warnDataLoss("data section holds " + std::to_string(available) + " of " + std::to_string(frames) +
-             " frames; the file is truncated");
-        frames = available;
-      }
-    } else if (frames > 0) {
-      frames = 0;  // no points and no analog: nothing to keep per frame
-    }
+    // POINT:FRAMES is a 16-bit count: it can only be compared below 65536 frames.
+    if (count && count->unsignedInt16() && frames <= 65535 && *count->unsignedInt16() != frames)
+      warnFrameConflict("POINT:FRAMES", *count->unsignedInt16(), source, frames);
     layout.frameCount = frames;
+    layout.declaredFrames = frames;
+  }
+
+  void warnFrameConflict(const std::string& other, std::size_t otherFrames, const std::string& used,
+                         std::size_t usedFrames)
+  {
+    warn(other + " (" + std::to_string(otherFrames) + ") differs from " + used + " (" + std::to_string(usedFrames) +
+         "); using " + used);
+  }
+
+  /// Settles the data start, the storage, the point count and the analog layout together: of
+  /// every combination the sources offer (at most two options each), the one whose data section
+  /// fits the declared frames best (Fit); a tie goes to the first options (POINT:DATA_START, the
+  /// sign of POINT:SCALE, the header's counts). Each part with two options is a warning naming
+  /// the one used and why. O(1): at most 16 combinations.
+  void chooseLayout(DataLayout& layout, double scale)
+  {
+    const std::vector<LayoutOptions> parts = {dataStartPart(), storagePart(scale), pointCountPart(),
+                                              analogPart(layout.frameRate)};
+    std::vector<std::size_t> pick(parts.size(), 0), best = pick;
+    Fit bestFit = fitOf(applied(layout, parts, pick));
+    while (nextCombination(parts, pick)) {
+      const Fit fit = fitOf(applied(layout, parts, pick));
+      if (fit > bestFit) {
+        bestFit = fit;
+        best = pick;
+      }
+    }
+    layout = applied(layout, parts, best);
+    for (std::size_t k = 0; k < parts.size(); ++k)
+      if (parts[k].size() > 1)
+        explainChoice(layout, parts, best, k);
+    warnAboutHeaderAnalog(layout);
+  }
+
+  /// `layout` with option pick[k] of each part applied.
+  static DataLayout applied(DataLayout layout, const std::vector<LayoutOptions>& parts,
+                            const std::vector<std::size_t>& pick)
+  {
+    for (std::size_t k = 0; k < parts.size(); ++k)
+      parts[k][pick[k]].apply(layout);
+    return layout;
+  }
+
+  /// Advances `pick` like an odometer over the parts' options; false after the last combination.
+  static bool nextCombination(const std::vector<LayoutOptions>& parts, std::vector<std::size_t>& pick)
+  {
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      if (++pick[k] < parts[k].size())
+        return true;
+      pick[k] = 0;
+    }
+    return false;
+  }
+
+  /// Warns that part `k`'s two sources disagree (a part has at most two options), which was used
+  /// (in `layout`) and why.
+  void explainChoice(const DataLayout& layout, const std::vector<LayoutOptions>& parts,
+                     const std::vector<std::size_t>& best, std::size_t k)
+  {
+    std::vector<std::size_t> other = best;
+    other[k] = 1 - best[k];
+    const DataLayout alternative = applied(layout, parts, other);
+    const std::string& used = parts[k][best[k]].source;
+    const std::string& notUsed = parts[k][other[k]].source;
+    std::string message = used + " and " + notUsed + " disagree; using " + used;
+    if (fitOf(layout) != fitOf(alternative))
+      message += ": with it the data section " + fitText(layout) + ", with " + notUsed + " it " + fitText(alternative);
+    else
+      message += " by default, as the file's size fits both alike (the data section " + fitText(layout) + ")";
+    warn(message);
+  }
+
+  /// The usable data starts: POINT:DATA_START, then the header's word 9 when it differs. One that
+  /// is 0, points into the header or parameter section or past the end of the file is a warning
+  /// naming the one used instead; when neither is usable the file cannot be read.
+  LayoutOptions dataStartPart()
+  {
+    struct Given
+    {
+      std::size_t block;
+      bool fromHeader;
+    };
+    std::vector<Given> given;
+    if (const C3dParameter* start = m_tree.find("POINT", "DATA_START"); start && start->unsignedInt16())
+      given.push_back({*start->unsignedInt16(), false});
+    given.push_back({m_header.dataBlock, true});
+    LayoutOptions options;
+    std::vector<std::string> rejections;
+    std::size_t firstBlock = 0;  // of the first usable start
+    for (const Given& g : given) {
+      const std::string name = g.fromHeader ? "the header's data start" : "POINT:DATA_START";
+      const std::string where = name + " (block " + std::to_string(g.block) + ")";
+      if (const std::string problem = dataStartProblem(g.block); !problem.empty()) {
+        rejections.push_back(g.block == 0 ? name + " is 0" : where + " " + problem);
+      } else if (options.empty() || g.block != firstBlock) {
+        firstBlock = options.empty() ? g.block : firstBlock;
+        options.push_back({where, [g](DataLayout& l) {
+                             l.dataBlock = g.block;
+                             l.offset = (g.block - 1) * c3d::kBlockSize;
+                             l.dataStartFromHeader = g.fromHeader;
+                           }});
+      }
+    }
+    if (options.empty())
+      fail(16, "no usable data section start: " + rejections.front() +
+                   (rejections.size() > 1 ? " and " + rejections.back() : std::string()));
+    for (const std::string& r : rejections)
+      warn(r + "; using " + options.front().source);
+    return options;
+  }
+
+  /// Why data cannot start at 1-based block `block`, or empty when it can.
+  std::string dataStartProblem(std::size_t block) const
+  {
+    if (block == 0)
+      return "is 0";
+    const std::size_t offset = (block - 1) * c3d::kBlockSize;
+    if (offset < c3d::kBlockSize)
+      return "points into the header";
+    if (offset >= m_parameterOffset && offset < m_parameterEnd)
+      return "points into the parameter section";
+    if (offset > m_size)
+      return "is beyond the end of the file";
+    return {};
+  }
+
+  /// Float or integer storage: the sign of the scale used, and the header's when it differs.
+  LayoutOptions storagePart(double scale) const
+  {
+    auto option = [](const std::string& name, double value) {
+      const bool isFloat = value < 0.0;
+      return LayoutOption{name + " (" + numberText(value) + (isFloat ? ", float storage)" : ", integer storage)"),
+                          [isFloat](DataLayout& l) { l.isFloat = isFloat; }};
+    };
+    LayoutOptions options{option("POINT:SCALE", scale)};
+    const auto header = static_cast<double>(m_header.scale);
+    if (usableScale(header) && (header < 0.0) != (scale < 0.0))
+      options.push_back(option("the header's scale", header));
+    return options;
+  }
+
+  /// The header's point count, and POINT:USED when it differs.
+  LayoutOptions pointCountPart() const
+  {
+    auto option = [](const std::string& name, std::size_t count) {
+      return LayoutOption{name + " (" + std::to_string(count) + ")", [count](DataLayout& l) { l.pointCount = count; }};
+    };
+    LayoutOptions options{option("the header's point count", m_header.pointCount)};
+    const C3dParameter* used = m_tree.find("POINT", "USED");
+    if (used && used->unsignedInt16() && *used->unsignedInt16() != m_header.pointCount)
+      options.push_back(option("POINT:USED", *used->unsignedInt16()));
+    return options;
+  }
+
+  /// The header's analog values per frame (word 3), and ANALOG:USED × the analog samples per
+  /// point frame (ANALOG:RATE / POINT:RATE, when a whole number) when that differs.
+  LayoutOptions analogPart(double frameRate) const
+  {
+    const AnalogShape header = headerAnalogShape();
+    LayoutOptions options{{"the header's analog values per frame (" + std::to_string(header.values) + ")",
+                           [header](DataLayout& l) { l.analog = header; }}};
+    const C3dParameter* used = m_tree.find("ANALOG", "USED");
+    if (!used || !used->unsignedInt16())
+      return options;
+    AnalogShape shape;
+    shape.channels = *used->unsignedInt16();
+    std::string source = "ANALOG:USED (0)";
+    if (shape.channels > 0) {
+      const double ratio = m_tree.number("ANALOG", "RATE").value_or(0.0) / frameRate;
+      const double samples = std::round(ratio);
+      if (!(samples >= 1.0 && samples <= 65535.0 && std::abs(ratio - samples) <= 1e-3))
+        return options;  // no whole number of samples per frame: makeAnalog warns about the rate
+      shape.samples = static_cast<std::size_t>(samples);
+      shape.values = shape.channels * shape.samples;
+      source = "ANALOG:USED × ANALOG:RATE / POINT:RATE (" + std::to_string(shape.channels) + " × " +
+               std::to_string(shape.samples) + " = " + std::to_string(shape.values) + ")";
+    }
+    if (shape.values != header.values)
+      options.push_back({source, [shape](DataLayout& l) { l.analog = shape; }});
+    return options;
+  }
+
+  /// The header's analog values per frame split into channels × samples: ANALOG:USED channels
+  /// when they divide it, else by the header's samples per frame (word 10), else one sample each.
+  AnalogShape headerAnalogShape() const
+  {
+    AnalogShape shape;
+    shape.values = m_header.analogValuesPerFrame;
+    shape.fromHeader = true;
+    if (shape.values == 0)
+      return shape;
+    const C3dParameter* used = m_tree.find("ANALOG", "USED");
+    std::size_t channels = used && used->unsignedInt16() ? *used->unsignedInt16() : 0;
+    if (channels == 0 || shape.values % channels != 0) {
+      const std::size_t samples = m_header.analogSamplesPerFrame;
+      channels = samples > 0 && shape.values % samples == 0 ? shape.values / samples : shape.values;
+    }
+    shape.channels = channels;
+    shape.samples = shape.values / channels;
+    return shape;
+  }
+
+  /// The warnings the header's analog layout needs when it is the one used.
+  void warnAboutHeaderAnalog(const DataLayout& layout)
+  {
+    if (!layout.analog.fromHeader || layout.analog.values == 0)
+      return;
+    if (!m_tree.group("ANALOG")) {
+      warn("the header declares " + std::to_string(layout.analog.values) +
+           " analog values per frame but there is no ANALOG group; channels named A1...");
+      return;
+    }
+    const C3dParameter* used = m_tree.find("ANALOG", "USED");
+    if (used && used->unsignedInt16() && *used->unsignedInt16() > 0 && layout.analog.values % *used->unsignedInt16() != 0)
+      warn("ANALOG:USED does not divide the header's analog values per frame; using " +
+           std::to_string(layout.analog.channels) + " channels");
+  }
+
+  /// How the declared frames fit the data section `layout` describes: exactly when the last
+  /// frame ends where the file does, or in the file's last block when the file is whole blocks
+  /// (the format pads the data section to a block). O(1).
+  Fit fitOf(const DataLayout& layout) const
+  {
+    const std::size_t available = m_size - layout.offset;
+    const std::size_t frameBytes = layout.frameBytes();
+    if (frameBytes > 0 && layout.frameCount > available / frameBytes)
+      return Fit::Short;
+    const std::size_t end = layout.offset + layout.frameCount * frameBytes;
+    const bool padded = m_size % c3d::kBlockSize == 0 && m_size - end < c3d::kBlockSize;
+    return end == m_size || padded ? Fit::Exact : Fit::Holds;
+  }
+
+  /// fitOf in words, after "the data section": "holds the 450 declared frames exactly".
+  std::string fitText(const DataLayout& layout) const
+  {
+    const std::size_t available = m_size - layout.offset;
+    const std::size_t frameBytes = layout.frameBytes();
+    const std::string declared = "the " + std::to_string(layout.frameCount) + " declared frames";
+    switch (fitOf(layout)) {
+    case Fit::Exact: return "holds " + declared + " exactly";
+    case Fit::Holds:
+      return "holds " + declared + " and " + std::to_string(available - layout.frameCount * frameBytes) + " bytes more";
+    case Fit::Short: break;
+    }
+    return "holds only " + std::to_string(available / frameBytes) + " of " + declared;
+  }
+
+  /// Keeps the complete frames the data section holds. A section shorter than declared is data
+  /// loss; one longer than the declared frames and the last block's padding is a warning (the
+  /// rest is not read).
+  void fitFramesToData(DataLayout& layout)
+  {
+    const std::size_t frameBytes = layout.frameBytes();
+    if (frameBytes == 0) {
+      layout.frameCount = 0;  // no points and no analog: nothing to keep per frame
+      return;
+    }
+    const std::size_t frames = layout.frameCount;
+    const std::size_t available = m_size - layout.offset;
+    const Fit fit = fitOf(layout);
+    if (fit == Fit::Short) {
+      layout.frameCount = available / frameBytes;
+      warnDataLoss("the data section is shorter than declared: it holds " + std::to_string(layout.frameCount) +
+                   " of the " + std::to_string(frames) +
+                   " frames (the file is truncated or declares too many); the complete frames are kept");
+    } else if (fit == Fit::Holds) {
+      const std::size_t extra = available - frames * frameBytes;
+      warn("the data section is longer than declared: " + std::to_string(extra) + " bytes (" +
+           std::to_string(extra / frameBytes) + " whole frames) follow the " + std::to_string(frames) +
+           " declared frames; they are not read");
+    }
+  }
+
+  void reportLayout(const DataLayout& layout) const
+  {
+    if (!m_layoutReport)
+      return;
+    C3dLayoutReport& r = *m_layoutReport;
+    const std::size_t frameBytes = layout.frameBytes();
+    r.dataStartBlock = layout.dataBlock;
+    r.dataStartSource = layout.dataStartFromHeader ? "header" : "POINT:DATA_START";
+    r.frameBytes = frameBytes;
+    r.analogValuesPerFrame = layout.analog.values;
+    r.isFloat = layout.isFloat;
+    r.declaredFrames = layout.declaredFrames;
+    r.dataBytes = m_size - layout.offset;
+    // A corrupt frame count can declare more bytes than a size_t holds.
+    const bool overflows = frameBytes > 0 && layout.declaredFrames > std::numeric_limits<std::size_t>::max() / frameBytes;
+    r.declaredDataBytes = overflows ? std::numeric_limits<std::size_t>::max() : layout.declaredFrames * frameBytes;
   }
 
   std::vector<std::string> pointLabels(std::size_t count)
@@ -521,22 +859,43 @@ private:
     return take;
   }
 
+  /// Each point's type from the label lists POINT:TYPE_GROUPS names (pairs of list parameter and
+  /// type: ANGLES, ANGLE...) or, without it, POINT:ANGLES, FORCES, MOMENTS and POWERS; a type
+  /// name we do not know is Other, a listed label the take does not have is ignored.
+  /// O(#points + #listed labels) expected.
+  void readPointTypes(Take& take) const
+  {
+    std::vector<std::pair<std::string, PointType>> lists;
+    const std::vector<std::string> groups = m_tree.strings("POINT", "TYPE_GROUPS");
+    for (std::size_t i = 0; i + 1 < groups.size(); i += 2)
+      lists.emplace_back(groups[i], parsePointType(toLower(groups[i + 1])).value_or(PointType::Other));
+    if (lists.empty())
+      lists = {{"ANGLES", PointType::Angle},
+               {"FORCES", PointType::Force},
+               {"MOMENTS", PointType::Moment},
+               {"POWERS", PointType::Power}};
+    std::unordered_map<std::string_view, Eigen::Index> index;
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+      index.emplace(take.label(m), m);
+    for (const auto& [list, type] : lists)
+      for (const std::string& label : stringsAcrossParts("POINT", list))
+        if (const auto it = index.find(label); it != index.end())
+          take.setPointType(it->second, type);
+  }
+
   void makeAnalog(const DataLayout& layout, AnalogData& analog)
   {
-    if (layout.channelCount == 0)
+    if (layout.analog.channels == 0)
       return;
-    analog.rate = m_tree.number("ANALOG", "RATE").value_or(0.0);
-    const double expectedRate = layout.frameRate * static_cast<double>(layout.samplesPerFrame);
-    if (!std::isfinite(analog.rate) || analog.rate <= 0.0)
-      analog.rate = expectedRate;
+    analog.rate = analogRate(layout);
     analog.generalScale = m_tree.number("ANALOG", "GEN_SCALE").value_or(1.0);
     const auto labels = stringsAcrossParts("ANALOG", "LABELS");
     const auto descriptions = stringsAcrossParts("ANALOG", "DESCRIPTIONS");
     const auto units = stringsAcrossParts("ANALOG", "UNITS");
     const auto scales = m_tree.numbers("ANALOG", "SCALE");
     const C3dParameter* offsets = m_tree.find("ANALOG", "OFFSET");
-    analog.channels.resize(layout.channelCount);
-    for (std::size_t c = 0; c < layout.channelCount; ++c) {
+    analog.channels.resize(layout.analog.channels);
+    for (std::size_t c = 0; c < layout.analog.channels; ++c) {
       AnalogChannel& channel = analog.channels[c];
       channel.label = c < labels.size() && !labels[c].empty() ? labels[c] : "A" + std::to_string(c + 1);
       channel.description = c < descriptions.size() ? descriptions[c] : std::string();
@@ -545,8 +904,23 @@ private:
       if (offsets && c < offsets->numbers.size())
         channel.offset = layout.analogUnsigned ? static_cast<double>(*offsets->unsignedInt16(c)) : offsets->numbers[c];
     }
-    analog.stored.resize(static_cast<Eigen::Index>(layout.frameCount * layout.samplesPerFrame),
-                         static_cast<Eigen::Index>(layout.channelCount));
+    analog.stored.resize(static_cast<Eigen::Index>(layout.frameCount * layout.analog.samples),
+                         static_cast<Eigen::Index>(layout.analog.channels));
+  }
+
+  /// ANALOG:RATE, unless it is not the point rate × the layout's samples per frame: then that
+  /// product (the data's own rate) with a warning.
+  double analogRate(const DataLayout& layout)
+  {
+    const double rate = layout.frameRate * static_cast<double>(layout.analog.samples);
+    const double parameter = m_tree.number("ANALOG", "RATE").value_or(0.0);
+    if (!(std::isfinite(parameter) && parameter > 0.0))
+      return rate;
+    if (!differ(parameter, rate))
+      return parameter;
+    warn("ANALOG:RATE (" + numberText(parameter) + ") is not the frame rate × the " +
+         std::to_string(layout.analog.samples) + " analog samples per frame; using " + numberText(rate));
+    return rate;
   }
 
   void decodeData(const DataLayout& layout, Take& take)
@@ -586,7 +960,7 @@ private:
     const double coordinateScale = layout.isFloat ? 1.0 : layout.scale;
     const double residualScale = layout.scale;
     const unsigned char* data = m_data + layout.offset;
-    ResidualCounts counts;  // counted here, so loadProvenance need not read the residuals again
+    SampleCounts counts;  // residuals counted here, so loadProvenance need not read them again
     for (std::size_t first = 0; first < frames; first += kChunkFrames) {
       const std::size_t last = std::min(frames, first + kChunkFrames);
       for (std::size_t m = 0; m < layout.pointCount; ++m) {
@@ -602,7 +976,10 @@ private:
           decodeSample(p, bpv, coordinateScale, residualScale, decode, out, f, counts);
       }
     }
-    m_residualCounts = counts;
+    m_residualCounts = counts.residuals;
+    if (counts.outOfRange > 0)
+      warn(std::to_string(counts.outOfRange) + " sample(s) have a residual word that is no 16-bit integer " +
+           "(NaN, infinite or 65536 and more); read as invalid");
     decodeAnalog(layout, take.analog(), decode);
   }
 
@@ -622,12 +999,12 @@ private:
   template <typename Decode>
   void decodeAnalog(const DataLayout& layout, AnalogData& analog, Decode decode)
   {
-    if (layout.channelCount == 0)
+    if (layout.analog.channels == 0)
       return;
     const std::size_t bpv = layout.bytesPerValue();
     const std::size_t frameBytes = layout.frameBytes();
-    const std::size_t channels = layout.channelCount;
-    const std::size_t samples = layout.samplesPerFrame;
+    const std::size_t channels = layout.analog.channels;
+    const std::size_t samples = layout.analog.samples;
     const auto rows = static_cast<std::size_t>(analog.stored.rows());
     double* out = analog.stored.data();
     for (std::size_t f = 0; f < layout.frameCount; ++f) {
@@ -693,25 +1070,28 @@ private:
   const std::string& m_name;
   std::vector<std::string>* m_warnings;
   std::vector<std::string>* m_dataLoss;
+  C3dLayoutReport* m_layoutReport;
   std::optional<ResidualCounts> m_residualCounts;  // set by decodeFrames
   Processor m_processor = Processor::Intel;
   Header m_header;
   std::size_t m_parameterOffset = 0;
+  std::size_t m_parameterEnd = 0;  // past the last byte a parameter record used
   C3dParameterTree m_tree;
 };
 
 } // namespace
 
 Take parseC3d(const unsigned char* data, std::size_t size, const std::string& sourceName,
-              std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
+              std::vector<std::string>* warnings, std::vector<std::string>* dataLoss, C3dLayoutReport* layout)
 {
-  return C3dParser(data, size, sourceName, warnings, dataLoss).parse();
+  return C3dParser(data, size, sourceName, warnings, dataLoss, layout).parse();
 }
 
-Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss)
+Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss,
+             C3dLayoutReport* layout)
 {
   const MappedFile file(path);
-  return parseC3d(file.data(), file.size(), path.string(), warnings, dataLoss);
+  return parseC3d(file.data(), file.size(), path.string(), warnings, dataLoss, layout);
 }
 
 } // namespace mocap

@@ -1,5 +1,6 @@
 #include "mocap/model/take.h"
 
+#include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
 
 #include <algorithm>
@@ -17,16 +18,52 @@ Eigen::VectorXd AnalogData::physical(Eigen::Index c) const
   return ((stored.col(c).array() - channel.offset) * (channel.scale * generalScale)).matrix();
 }
 
+namespace {
+
+constexpr EnumTable<PointType, 6> kPointTypes{{{
+    {PointType::Marker, "marker"},
+    {PointType::Angle, "angle"},
+    {PointType::Force, "force"},
+    {PointType::Moment, "moment"},
+    {PointType::Power, "power"},
+    {PointType::Other, "other"},
+}}};
+
+/// "M<index+1>", suffixed "_2", "_3"... until it is none of `labels` and not in `seen`.
+/// O(1) expected per suffix tried.
+std::string fallbackLabel(std::size_t index, const std::unordered_set<std::string>& labels,
+                          const std::unordered_set<std::string>& seen)
+{
+  const std::string base = "M" + std::to_string(index + 1);
+  std::string candidate = base;
+  for (int suffix = 2; labels.count(candidate) != 0 || seen.count(candidate) != 0; ++suffix)
+    candidate = base + "_" + std::to_string(suffix);
+  return candidate;
+}
+
+} // namespace
+
+std::string_view pointTypeName(PointType type)
+{
+  return kPointTypes.name(type, "other");
+}
+
+std::optional<PointType> parsePointType(std::string_view name)
+{
+  return kPointTypes.parse(name);
+}
+
 std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels)
 {
   std::vector<std::string> warnings;
+  const std::unordered_set<std::string> given(labels.begin(), labels.end());
   std::unordered_set<std::string> seen;
   // Next suffix to try per label, so a label repeated n times costs O(n), not O(n²).
   std::unordered_map<std::string, int> nextSuffix;
   for (std::size_t i = 0; i < labels.size(); ++i) {
     std::string& label = labels[i];
     if (label.empty()) {
-      label = "M" + std::to_string(i + 1);
+      label = fallbackLabel(i, given, seen);
       warnings.push_back("marker " + std::to_string(i + 1) + " has no label; named " + label);
     }
     if (seen.insert(label).second)
@@ -75,6 +112,7 @@ Take::Take(std::vector<std::string> labels, Eigen::Index frameCount, double fram
     throw InvalidArgument("negative frame count");
   setFrameRate(frameRate);
   makeLabelsUnique(m_labels);
+  m_pointTypes.assign(m_labels.size(), PointType::Marker);
   const auto samples = static_cast<std::size_t>(markerCount() * frameCount);
   m_positions = SampleBuffer<double>(samples * 3);
   m_valid = SampleBuffer<bool>(samples);
@@ -99,6 +137,18 @@ void Take::setLabel(Eigen::Index marker, std::string label)
   if (existing && *existing != marker)
     throw InvalidArgument("marker label '" + label + "' is already used");
   m_labels[static_cast<std::size_t>(marker)] = std::move(label);
+}
+
+PointType Take::pointType(Eigen::Index marker) const
+{
+  checkIndex(0, marker);
+  return m_pointTypes[static_cast<std::size_t>(marker)];
+}
+
+void Take::setPointType(Eigen::Index marker, PointType type)
+{
+  checkIndex(0, marker);
+  m_pointTypes[static_cast<std::size_t>(marker)] = type;
 }
 
 std::optional<Eigen::Index> Take::markerIndex(std::string_view label) const
@@ -173,6 +223,7 @@ Eigen::Index Take::addMarker(std::string label)
   labels.push_back(std::move(label));
   makeLabelsUnique(labels);
   m_labels = std::move(labels);
+  m_pointTypes.push_back(PointType::Marker);
   // Column-major per-marker storage: a new marker is a new block at the end of each buffer.
   const auto frames = static_cast<std::size_t>(m_frameCount);
   auto appendBlock = [](auto& buffer, std::size_t count, auto value) {
@@ -209,6 +260,7 @@ MarkerColumn Take::column(Eigen::Index marker) const
   checkIndex(0, marker);
   MarkerColumn column;
   column.label = m_labels[static_cast<std::size_t>(marker)];
+  column.type = m_pointTypes[static_cast<std::size_t>(marker)];
   column.positions = trajectory(marker);
   column.valid = valid().col(marker);
   column.residuals = residuals().col(marker);
@@ -240,6 +292,7 @@ MarkerColumn Take::removeMarker(Eigen::Index marker)
   dropBlock(m_cameraMasks, frames);
   dropBlock(m_states, frames);
   m_labels.erase(m_labels.begin() + static_cast<std::ptrdiff_t>(marker));
+  m_pointTypes.erase(m_pointTypes.begin() + static_cast<std::ptrdiff_t>(marker));
   return removed;
 }
 
@@ -275,6 +328,7 @@ void Take::insertMarker(Eigen::Index marker, MarkerColumn column)
   addBlock(m_cameraMasks, frames, column.cameraMasks.data());
   addBlock(m_states, frames, states.data());
   m_labels.insert(m_labels.begin() + static_cast<std::ptrdiff_t>(marker), std::move(column.label));
+  m_pointTypes.insert(m_pointTypes.begin() + static_cast<std::ptrdiff_t>(marker), column.type);
 }
 
 double Take::validFraction() const

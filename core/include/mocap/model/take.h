@@ -24,6 +24,23 @@ enum class SampleState : std::uint8_t
   Edited = 3,
 };
 
+/// What one point of a take holds: a measured marker, or a model output C3D stores as a point
+/// (Vicon Nexus's joint angles, forces, moments and powers; `Other` for further kinds a file names).
+enum class PointType : std::uint8_t
+{
+  Marker = 0,
+  Angle = 1,
+  Force = 2,
+  Moment = 3,
+  Power = 4,
+  Other = 5,
+};
+
+/// "marker", "angle", "force", "moment", "power", "other". O(1).
+[[nodiscard]] std::string_view pointTypeName(PointType type);
+/// The type pointTypeName gives `name` (lower case), or nullopt. O(1).
+[[nodiscard]] std::optional<PointType> parsePointType(std::string_view name);
+
 /// Validity of one trajectory: #frames booleans.
 using ValidMask = Eigen::Array<bool, Eigen::Dynamic, 1>;
 /// Per-sample arrays of a take: #frames × #markers, column m is marker m.
@@ -87,6 +104,7 @@ struct MarkerColumn
   Eigen::ArrayXd residuals;
   std::vector<std::uint8_t> cameraMasks;
   std::vector<SampleState> states;
+  PointType type = PointType::Marker;
 
   [[nodiscard]] Eigen::Index frameCount() const { return positions.rows(); }
 };
@@ -121,6 +139,10 @@ public:
   /// Renames a marker; throws InvalidArgument when another marker already has `label`.
   void setLabel(Eigen::Index marker, std::string label);
   [[nodiscard]] std::optional<Eigen::Index> markerIndex(std::string_view label) const;
+  /// What marker `marker` holds: Marker unless a reader said otherwise. The type travels with the
+  /// marker (column, removeMarker, insertMarker).
+  [[nodiscard]] PointType pointType(Eigen::Index marker) const;
+  void setPointType(Eigen::Index marker, PointType type);
 
   [[nodiscard]] double frameRate() const { return m_frameRate; }
   /// Throws InvalidArgument unless `rate` is finite and positive.
@@ -192,6 +214,7 @@ private:
   void checkIndex(Eigen::Index frame, Eigen::Index marker) const;
 
   std::vector<std::string> m_labels;
+  std::vector<PointType> m_pointTypes;  // one per label
   Eigen::Index m_frameCount = 0;
   double m_frameRate = 100.0;
   std::int64_t m_firstFrame = 1;
@@ -213,6 +236,8 @@ private:
 [[nodiscard]] std::vector<Eigen::Index> markerIndices(const Take& take, const std::vector<std::string>& labels);
 
 /// Makes `labels` unique: an empty label becomes "M<index+1>", a repeated one gets "_2", "_3"...
+/// The name given to an empty label avoids every label of the list, so a real "M3" keeps its name
+/// when an earlier label is empty (that one becomes "M3_2").
 /// Returns one warning per label it changed. O(#labels) expected.
 std::vector<std::string> makeLabelsUnique(std::vector<std::string>& labels);
 
