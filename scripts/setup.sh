@@ -23,6 +23,7 @@ done
 packages=(
   cmake make g++ clang pkg-config ccache lld
   qt6-base-dev qt6-tools-dev qt6-l10n-tools
+  qt6-translations-l10n  # Qt's own texts (OK, Cancel, file dialogs) in the studio's languages
   libvtk9-dev libeigen3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libtinygltf-dev

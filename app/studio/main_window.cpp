@@ -177,16 +177,11 @@ void MainWindow::createDocks()
       markers.push_back(m_proxy->mapToSource(row).row());
     m_document->setSelection(std::move(markers));
   });
-  auto* tableDock = new QDockWidget(tr("Markers"), this);
-  tableDock->setObjectName(QStringLiteral("markersDock"));
-  tableDock->setWidget(m_table);
-  addDockWidget(Qt::LeftDockWidgetArea, tableDock);
+  addDock(tr("Markers"), QStringLiteral("markersDock"), m_table, Qt::LeftDockWidgetArea, DockContent::Fixed);
 
   m_curves = new ui::CurveView(*m_document, this);
-  auto* curveDock = new QDockWidget(tr("Curves"), this);
-  curveDock->setObjectName(QStringLiteral("curvesDock"));
-  curveDock->setWidget(m_curves);
-  addDockWidget(Qt::BottomDockWidgetArea, curveDock);
+  QDockWidget* curveDock =
+      addDock(tr("Curves"), QStringLiteral("curvesDock"), m_curves, Qt::BottomDockWidgetArea, DockContent::Fixed);
 
   m_cleaning = new ui::CleaningPanel(*m_document, this);
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
@@ -194,29 +189,20 @@ void MainWindow::createDocks()
   m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
   // Last: its preview moves every marker, not something to compute on every open.
   m_cleaning->addStep(new ui::HeadStabilizationStep(*m_document, m_cleaning));
-  auto* historyDock = new QDockWidget(tr("History"), this);
-  historyDock->setObjectName(QStringLiteral("historyDock"));
-  historyDock->setWidget(new ui::HistoryPanel(*m_document, historyDock));
-  addDockWidget(Qt::RightDockWidgetArea, historyDock);
+  QDockWidget* historyDock = addDock(tr("History"), QStringLiteral("historyDock"),
+                                     new ui::HistoryPanel(*m_document, this), Qt::RightDockWidgetArea);
   historyDock->hide();  // View ▸ History shows it (clicking an entry undoes or redoes to it)
 
-  auto* cleaningDock = new QDockWidget(tr("Cleaning"), this);
-  cleaningDock->setObjectName(QStringLiteral("cleaningDock"));
-  cleaningDock->setWidget(m_cleaning);
-  addDockWidget(Qt::RightDockWidgetArea, cleaningDock);
+  QDockWidget* cleaningDock = addDock(tr("Cleaning"), QStringLiteral("cleaningDock"), m_cleaning, Qt::RightDockWidgetArea);
 
   // Marker layout planning (issue 7): its selected layout is highlighted in the 3D view.
   m_layoutPlanning = new ui::LayoutPlanningPanel(*m_document, this);
-  auto* layoutDock = new QDockWidget(tr("Layout planning"), this);
-  layoutDock->setObjectName(QStringLiteral("layoutPlanningDock"));
-  layoutDock->setWidget(m_layoutPlanning);
-  addDockWidget(Qt::RightDockWidgetArea, layoutDock);
+  QDockWidget* layoutDock =
+      addDock(tr("Layout planning"), QStringLiteral("layoutPlanningDock"), m_layoutPlanning, Qt::RightDockWidgetArea,
+              DockContent::Fixed);  // scrolls its form itself, under a fixed Run row
   tabifyDockWidget(cleaningDock, layoutDock);
   m_gapList = new ui::GapListPanel(*m_document, this);  // issue 13: every gap, filled one by one or checked
-  auto* gapDock = new QDockWidget(tr("Gaps"), this);
-  gapDock->setObjectName(QStringLiteral("gapListDock"));
-  gapDock->setWidget(m_gapList);
-  addDockWidget(Qt::RightDockWidgetArea, gapDock);
+  QDockWidget* gapDock = addDock(tr("Gaps"), QStringLiteral("gapListDock"), m_gapList, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, gapDock);
   connect(m_gapList, &ui::GapListPanel::frameRangeRequested, m_curves, &ui::CurveView::setVisibleRange);
   cleaningDock->raise();
@@ -257,28 +243,14 @@ void MainWindow::createDocks()
   });
   m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
-  m_faceMeshDock = new QDockWidget(tr("Face Mesh"), this);
-  m_faceMeshDock->setObjectName(QStringLiteral("faceMeshDock"));
-  // Scrolls rather than making the window taller than the screen (e.g. 1280×800).
-  auto* faceMeshScroll = new QScrollArea(m_faceMeshDock);
-  faceMeshScroll->setWidgetResizable(true);
-  faceMeshScroll->setFrameShape(QFrame::NoFrame);
-  faceMeshScroll->setWidget(m_faceMesh);
-  m_faceMeshDock->setWidget(faceMeshScroll);
-  addDockWidget(Qt::RightDockWidgetArea, m_faceMeshDock);
+  m_faceMeshDock = addDock(tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
 
   m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_document, *m_faceMesh, *m_view3d, this);
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::message, statusBar(), &QStatusBar::showMessage);
-  m_blendshapeDock = new QDockWidget(tr("Blendshape Solve"), this);
-  m_blendshapeDock->setObjectName(QStringLiteral("blendshapeSolveDock"));
-  auto* solveScroll = new QScrollArea(m_blendshapeDock);
-  solveScroll->setWidgetResizable(true);
-  solveScroll->setFrameShape(QFrame::NoFrame);
-  solveScroll->setWidget(m_blendshapeSolve);
-  m_blendshapeDock->setWidget(solveScroll);
-  addDockWidget(Qt::RightDockWidgetArea, m_blendshapeDock);
+  m_blendshapeDock =
+      addDock(tr("Blendshape Solve"), QStringLiteral("blendshapeSolveDock"), m_blendshapeSolve, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_blendshapeDock);
   m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
 
@@ -292,20 +264,16 @@ void MainWindow::createDocks()
   });
 
   m_referenceVideo = new ui::ReferenceVideoPanel(*m_document, this);
-  auto* videoDock = new QDockWidget(tr("Reference Video"), this);
-  videoDock->setObjectName(QStringLiteral("referenceVideoDock"));
-  videoDock->setWidget(m_referenceVideo);
-  addDockWidget(Qt::RightDockWidgetArea, videoDock);
+  QDockWidget* videoDock =
+      addDock(tr("Reference Video"), QStringLiteral("referenceVideoDock"), m_referenceVideo, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, videoDock);
   videoDock->hide();  // View ▸ Reference Video shows it, and opening a take that remembers videos
   connect(m_referenceVideo, &ui::ReferenceVideoPanel::videosRestored, this,
           [this] { (void)showDock(QStringLiteral("referenceVideoDock")); });
 
   m_weights = new ui::WeightCurveView(*m_document, m_blendshapeSolve->model(), this);
-  m_weightsDock = new QDockWidget(tr("Weights"), this);
-  m_weightsDock->setObjectName(QStringLiteral("weightsDock"));
-  m_weightsDock->setWidget(m_weights);
-  addDockWidget(Qt::BottomDockWidgetArea, m_weightsDock);
+  m_weightsDock =
+      addDock(tr("Weights"), QStringLiteral("weightsDock"), m_weights, Qt::BottomDockWidgetArea, DockContent::Fixed);
   tabifyDockWidget(curveDock, m_weightsDock);
   m_weightsDock->hide();  // shown with the first solve, or from View ▸ Weights
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::solveFinished, this, [this](const QString& error) {
@@ -1052,6 +1020,26 @@ void MainWindow::readSettings()
   }
 }
 
+QDockWidget* MainWindow::addDock(const QString& title, const QString& objectName, QWidget* content,
+                                 Qt::DockWidgetArea area, DockContent kind)
+{
+  auto* dock = new QDockWidget(title, this);
+  dock->setObjectName(objectName);
+  if (kind == DockContent::Scrolls) {
+    // A panel scrolls rather than making the window taller or wider than the screen (e.g. 1280×800):
+    // the window's minimum size is the sum of its docks' minimum sizes.
+    auto* scroll = new QScrollArea(dock);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+    dock->setWidget(scroll);
+  } else {
+    dock->setWidget(content);
+  }
+  addDockWidget(area, dock);
+  return dock;
+}
+
 void MainWindow::applyFirstRunLayout()
 {
   const QScreen* screen = QGuiApplication::primaryScreen();
@@ -1066,19 +1054,24 @@ void MainWindow::applyFirstRunLayout()
 
 void MainWindow::proportionDocks()
 {
-  // Side docks share at most half the width; the 3D view keeps the rest.
-  QList<QDockWidget*> docks;
-  QList<int> widths;
+  // Side docks share at most half the width and the curves under the view a quarter of the height;
+  // the 3D view keeps the rest. (Panels scroll, so on a small screen these shares are what counts.)
+  QList<QDockWidget*> sideDocks, bottomDocks;
+  QList<int> widths, heights;
   for (QDockWidget* dock : findChildren<QDockWidget*>()) {
     if (!dock->isVisible() || dock->isFloating())
       continue;
     const Qt::DockWidgetArea area = dockWidgetArea(dock);
     if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) {
-      docks.append(dock);
-      widths.append(width() * (area == Qt::LeftDockWidgetArea ? 12 : 26) / 100);
+      sideDocks.append(dock);
+      widths.append(width() * (area == Qt::LeftDockWidgetArea ? 12 : 30) / 100);
+    } else if (area == Qt::BottomDockWidgetArea) {
+      bottomDocks.append(dock);
+      heights.append(height() * 26 / 100);
     }
   }
-  resizeDocks(docks, widths, Qt::Horizontal);
+  resizeDocks(sideDocks, widths, Qt::Horizontal);
+  resizeDocks(bottomDocks, heights, Qt::Vertical);
 }
 
 void MainWindow::showEvent(QShowEvent* event)

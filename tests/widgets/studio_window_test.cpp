@@ -37,6 +37,10 @@
 #include <QMouseEvent>
 #include <QSettings>
 #include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QFileInfo>
+#include <QLibraryInfo>
+#include <QPushButton>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QTableView>
@@ -656,6 +660,21 @@ TEST(StudioLanguage, GermanAndChineseAreBuiltInAndComplete)
   EXPECT_FALSE(studio::installLanguage(app, QStringLiteral("xx")));
   ASSERT_TRUE(studio::installLanguage(app, QStringLiteral("en")));
   EXPECT_EQ(QCoreApplication::translate("mocap::studio::MainWindow", "&File"), QStringLiteral("&File"));
+}
+
+TEST(StudioLanguage, QtsOwnButtonsSpeakTheChosenLanguage)
+{
+  const QString catalogue = QLibraryInfo::path(QLibraryInfo::TranslationsPath) + QStringLiteral("/qtbase_de.qm");
+  if (!QFileInfo::exists(catalogue))
+    GTEST_SKIP() << "Qt's own catalogue " << catalogue.toStdString()
+                 << " is missing (apt-get install qt6-translations-l10n; scripts/setup.sh installs it)";
+  auto& app = *QCoreApplication::instance();
+  ASSERT_TRUE(studio::installLanguage(app, QStringLiteral("de")));
+  const QDialogButtonBox german(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+  EXPECT_EQ(german.button(QDialogButtonBox::Cancel)->text().remove(QLatin1Char('&')), QStringLiteral("Abbrechen"));
+  ASSERT_TRUE(studio::installLanguage(app, QStringLiteral("en")));
+  const QDialogButtonBox english(QDialogButtonBox::Cancel);
+  EXPECT_EQ(english.button(QDialogButtonBox::Cancel)->text().remove(QLatin1Char('&')), QStringLiteral("Cancel"));
 }
 
 TEST_F(StudioWindow, ChangedColoursReachTheViewport)

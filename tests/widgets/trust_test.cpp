@@ -236,6 +236,26 @@ TEST_F(Trust, FirstRunFillsMostOfTheScreenWithTheViewAtLeastHalf)
   EXPECT_GE(window->markerView()->width(), window->width() / 2) << docks.toStdString();
 }
 
+TEST_F(Trust, TheWindowFitsA1280By800ScreenWithEveryPanelShown)
+{
+  auto window = showWindow();
+  // A laptop's 1280×800 less a panel bar: the window's smallest size must fit, with any dock open
+  // (a dock's minimum adds to the window's, so a tall panel pushed the status bar off screen).
+  const QSize screen(1280, 760);
+  QString tooBig;
+  for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+    dock->show();
+    QTest::qWait(10);
+    const QSize minimum = window->minimumSizeHint().expandedTo(window->minimumSize());
+    if (minimum.width() > screen.width() || minimum.height() > screen.height())
+      tooBig += QStringLiteral("%1: window at least %2×%3; ")
+                    .arg(dock->objectName())
+                    .arg(minimum.width())
+                    .arg(minimum.height());
+  }
+  EXPECT_TRUE(tooBig.isEmpty()) << tooBig.toStdString();
+}
+
 TEST_F(Trust, SaveAsHasCtrlShiftS)
 {
   auto window = showWindow();
