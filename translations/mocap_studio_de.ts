@@ -224,8 +224,8 @@
     </message>
     <message>
         <location line="+32"/>
-        <source>Frame %1 of %2 — %3 markers selected</source>
-        <translation>Frame %1 von %2 — %3 Marker ausgewählt</translation>
+        <source>Frame %1 of %2–%3 — %4 markers selected</source>
+        <translation>Frame %1 von %2–%3 — %4 Marker ausgewählt</translation>
     </message>
     <message>
         <location line="+16"/>

@@ -215,8 +215,8 @@
     </message>
     <message>
         <location line="+32"/>
-        <source>Frame %1 of %2 — %3 markers selected</source>
-        <translation>第 %1 帧，共 %2 帧 — 已选择 %3 个标记点</translation>
+        <source>Frame %1 of %2–%3 — %4 markers selected</source>
+        <translation>第 %1 帧（%2–%3）— 已选择 %4 个标记点</translation>
     </message>
     <message>
         <location line="+16"/>

@@ -129,9 +129,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   auto updateStatusLine = [this] {
     const Take& take = m_document->take();
     const auto text = [&](Eigen::Index frame, std::size_t selected) {
-      return tr("Frame %1 of %2 — %3 markers selected")
+      // The take's range in the file's numbering: a take starting at frame 63 is not "555 of 493".
+      return tr("Frame %1 of %2–%3 — %4 markers selected")
           .arg(static_cast<qlonglong>(take.firstFrame() + frame))
-          .arg(static_cast<qlonglong>(take.frameCount()))
+          .arg(static_cast<qlonglong>(take.firstFrame()))
+          .arg(static_cast<qlonglong>(take.firstFrame() + std::max<Eigen::Index>(take.frameCount() - 1, 0)))
           .arg(static_cast<qulonglong>(selected));
     };
     const std::pair<Eigen::Index, Eigen::Index> fitted{take.frameCount(), take.markerCount()};

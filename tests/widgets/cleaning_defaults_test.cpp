@@ -20,6 +20,7 @@
 #include <QSpinBox>
 #include <QSettings>
 #include <QTableView>
+#include <QStatusBar>
 #include <QTest>
 #include <QUndoStack>
 
@@ -160,6 +161,16 @@ TEST_F(CleaningDefaults, BadPointFlagsStayOnEveryTabAndCtrlPageDownReachesThem)
       next = std::min(next, frame);
   QTest::keyClick(window.get(), Qt::Key_PageDown, Qt::ControlModifier);
   EXPECT_EQ(doc.currentFrame(), next) << "Ctrl+PgDn from the Gaps tab";
+  // The status bar names the flagged marker and why it stands out.
+  Eigen::Index flagged = -1;
+  for (const auto& [marker, frame] : flags)
+    if (frame == next && flagged < 0)
+      flagged = marker;
+  const QString said = window->statusBar()->currentMessage();
+  EXPECT_TRUE(said.startsWith(QStringLiteral("Bad point at frame %1: ").arg(doc.take().firstFrame() + next)))
+      << said.toStdString();
+  EXPECT_TRUE(said.contains(QString::fromStdString(doc.take().label(flagged)))) << said.toStdString();
+  EXPECT_TRUE(said.contains(QStringLiteral("off the mid-point of its neighbours"))) << said.toStdString();
 
   // A different take clears them.
   ASSERT_EQ(window->openFile(QString::fromStdString(test::sampleTake().string()), true), QString());

@@ -23,6 +23,7 @@
 #include "views/vtk_viewport.h"
 
 #include "mocap/io/c3d_reader.h"
+#include "mocap/io/c3d_writer.h"
 #include "mocap/base/file_io.h"
 #include "mocap/model/gaps.h"
 #include "mocap/model/marker_links.h"
@@ -149,6 +150,20 @@ TEST_F(StudioWindow, TableSelectionReachesTheDocumentAndBack)
   auto* status = window->findChild<QLabel*>(QStringLiteral("frameStatus"));
   ASSERT_NE(status, nullptr);
   EXPECT_TRUE(status->text().contains(QStringLiteral("2 markers selected"))) << status->text().toStdString();
+}
+
+TEST_F(StudioWindow, TheStatusLineNamesTheFrameWithinTheTakesOwnNumbering)
+{
+  Take take = window->document().take();
+  take.setFirstFrame(63);  // a trimmed take: its frames are numbered 63…3062
+  test::TempDir dir;
+  writeC3d(take, dir.file("trimmed.c3d"));
+  ASSERT_EQ(window->openFile(QString::fromStdString(dir.file("trimmed.c3d").string()), true), QString());
+  window->document().setCurrentFrame(take.frameCount() - 1);
+  auto* status = window->findChild<QLabel*>(QStringLiteral("frameStatus"));
+  ASSERT_NE(status, nullptr);
+  // Not "Frame 3062 of 3000": the frame number and the take's range in the same numbering.
+  EXPECT_TRUE(status->text().startsWith(QStringLiteral("Frame 3062 of 63–3062"))) << status->text().toStdString();
 }
 
 TEST_F(StudioWindow, FillChangesOnlyTheGapAndUndoRestoresBitForBit)

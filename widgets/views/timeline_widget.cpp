@@ -4,6 +4,7 @@
 #include "views/sample_colors.h"
 #include "views/steady_label.h"
 
+#include "mocap/base/length_unit.h"
 #include "mocap/model/gaps.h"
 
 #include <QComboBox>
@@ -12,6 +13,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStringList>
 #include <QStyle>
 #include <QStyleOptionSlider>
 #include <QStylePainter>
@@ -363,11 +365,44 @@ void TimelineWidget::jumpToGap(int direction)
 void TimelineWidget::jumpToFlag(int direction)
 {
   const auto& selection = m_document.selection();
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> flags;  // (marker, frame) of the markers jumped over
   std::vector<Eigen::Index> frames;
   for (const auto& [marker, frame] : m_document.flags())
-    if (selection.empty() || std::binary_search(selection.begin(), selection.end(), marker))
+    if (selection.empty() || std::binary_search(selection.begin(), selection.end(), marker)) {
+      flags.emplace_back(marker, frame);
       frames.push_back(frame);
-  jumpTo(nearestInDirection(frames, m_document.currentFrame(), direction));
+    }
+  const Eigen::Index target = nearestInDirection(frames, m_document.currentFrame(), direction);
+  if (target < 0) {
+    emit message(direction > 0 ? tr("No bad point after this frame") : tr("No bad point before this frame"));
+    return;
+  }
+  jumpTo(target);
+  QStringList named;
+  for (const auto& [marker, frame] : flags)
+    if (frame == target)
+      named << flagDescription(marker, frame);
+  emit message(tr("Bad point at frame %1: %2")
+                   .arg(static_cast<qlonglong>(m_document.take().firstFrame() + target))
+                   .arg(named.join(QStringLiteral("; "))));
+}
+
+QString TimelineWidget::flagDescription(Eigen::Index marker, Eigen::Index frame) const
+{
+  const Take& take = m_document.take();
+  const QString label = QString::fromStdString(take.label(marker));
+  const bool inside = frame > 0 && frame + 1 < take.frameCount();
+  if (!inside || !take.isValid(frame - 1, marker) || !take.isValid(frame + 1, marker) || !take.isValid(frame, marker))
+    return label;
+  // Why it stands out, whichever test flagged it: its distance from the mid-value of its
+  // neighbours (the value a mid-value repair, eq. 10 of Wang et al., would move it by), the jump a
+  // technician sees on the curve. O(1).
+  const Eigen::Vector3d mid = (take.position(frame - 1, marker) + take.position(frame + 1, marker)) / 2.0;
+  const double off = (take.position(frame, marker) - mid).norm();
+  return tr("%1, %2 %3 off the mid-point of its neighbours")
+      .arg(label)
+      .arg(off, 0, 'f', 1)
+      .arg(QString::fromUtf8(unitName(take.units()).data(), static_cast<int>(unitName(take.units()).size())));
 }
 
 int TimelineWidget::tickX(Eigen::Index frame) const

@@ -44,6 +44,7 @@ public:
   void jumpToGap(int direction);
   /// Moves to the next (1) or previous (−1) flagged sample (bad point under review) of the
   /// selected markers, or of all markers when none is selected.
+  /// Says in the status bar which markers are flagged there and how far each is off its neighbours.
   void jumpToFlag(int direction);
   [[nodiscard]] double speed() const { return m_speed; }
 
@@ -60,6 +61,8 @@ signals:
 private:
   void syncFromDocument();
   void jumpTo(Eigen::Index frame);
+  /// "M12, 14.2 mm off the mid-point of its neighbours" (the label alone at a take's end or a gap).
+  [[nodiscard]] QString flagDescription(Eigen::Index marker, Eigen::Index frame) const;
   void advance();
 
   TakeDocument& m_document;
