@@ -10,6 +10,7 @@
 #include "dialogs/export_dialog.h"
 #include "dialogs/reference_markers_dialog.h"
 #include "dialogs/job_dialog.h"
+#include "dialogs/manual_window.h"
 #include "dialogs/preferences_dialog.h"
 #include "dialogs/read_warnings_dialog.h"
 #include "dialogs/review_export_dialog.h"
@@ -516,6 +517,8 @@ void MainWindow::createActions()
   addShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageUp), [this] { m_timeline->jumpToFlag(-1); });
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
+  QAction* manual = help->addAction(tr("&Manual"), this, &MainWindow::showManual);
+  manual->setShortcut(QKeySequence::HelpContents);
   help->addAction(tr("&About Mocap Studio"), this, [this] {
     QMessageBox::about(this, tr("About Mocap Studio"),
                        tr("<b>Mocap Studio %1</b><p>Cleaning and using facial optical motion capture.</p>")
@@ -1020,6 +1023,16 @@ void MainWindow::readSettings()
     connect(dock, &QDockWidget::visibilityChanged, m_layoutSaver, qOverload<>(&QTimer::start));
     connect(dock, &QDockWidget::topLevelChanged, m_layoutSaver, qOverload<>(&QTimer::start));
   }
+}
+
+ui::ManualWindow* MainWindow::showManual()
+{
+  if (!m_manual)
+    m_manual = new ui::ManualWindow(this);
+  m_manual->show();
+  m_manual->raise();
+  m_manual->activateWindow();
+  return m_manual;
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& objectName, QWidget* content,

@@ -33,6 +33,7 @@ class WeightCurveView;
 class GapListPanel;
 class CurveView;
 class LayoutPlanningPanel;
+class ManualWindow;
 class MarkerTableModel;
 class MarkerView3d;
 struct ReviewSource;
@@ -70,6 +71,8 @@ public:
   [[nodiscard]] ui::GapListPanel* gapListPanel() const { return m_gapList; }
   /// Shows and raises the dock with this object name or title (any case); false when none has it.
   bool showDock(const QString& name);
+  /// Help ▸ Manual (F1): opens (or raises) the bundled manual.
+  ui::ManualWindow* showManual();
   /// Loads a face mesh (and its binding when given) into the Face Mesh dock and shows it.
   /// Returns the error message, empty on success.
   QString loadFaceMesh(const QString& meshPath, const QString& bindingPath = {});
@@ -178,6 +181,7 @@ private:
   QDockWidget* m_blendshapeDock = nullptr;
   QDockWidget* m_weightsDock = nullptr;
   ui::GapListPanel* m_gapList = nullptr;
+  ui::ManualWindow* m_manual = nullptr;  // created on first use
   QDockWidget* m_faceMeshDock = nullptr;
   ui::MarkerTableModel* m_tableModel = nullptr;
   QSortFilterProxyModel* m_proxy = nullptr;

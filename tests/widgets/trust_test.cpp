@@ -5,6 +5,7 @@
 
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
+#include "dialogs/manual_window.h"
 #include "dialogs/read_warnings_dialog.h"
 #include "document/autosave.h"
 #include "document/face_mesh_model.h"
@@ -39,6 +40,8 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QTest>
+#include <QTextBrowser>
+#include <QTextDocument>
 #include <QTimer>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -254,6 +257,31 @@ TEST_F(Trust, TheWindowFitsA1280By800ScreenWithEveryPanelShown)
                     .arg(minimum.height());
   }
   EXPECT_TRUE(tooBig.isEmpty()) << tooBig.toStdString();
+}
+
+TEST_F(Trust, HelpManualShowsTheBundledManualWithItsPictures)
+{
+  auto window = showWindow();
+  QAction* manualAction = nullptr;
+  for (QAction* action : window->findChildren<QAction*>())
+    if (action->shortcut() == QKeySequence(QKeySequence::HelpContents))
+      manualAction = action;
+  ASSERT_NE(manualAction, nullptr) << "Help ▸ Manual has F1";
+  manualAction->trigger();
+  auto* manual = window->findChild<ui::ManualWindow*>();
+  ASSERT_NE(manual, nullptr);
+  EXPECT_TRUE(manual->isVisible());
+  const QStringList headings = manual->headings();
+  EXPECT_TRUE(headings.contains(QStringLiteral("The studio"))) << headings.join(QLatin1Char('|')).toStdString();
+  EXPECT_TRUE(headings.contains(QStringLiteral("The mocap command line"))) << headings.join(QLatin1Char('|')).toStdString();
+  EXPECT_FALSE(headings.contains(QStringLiteral("The two commands"))) << "the manual is for users, not builders";
+  // The pictures are bundled too: the screenshot resolves from the text's own reference.
+  const QVariant picture =
+      manual->browser()->document()->resource(QTextDocument::ImageResource, QUrl(QStringLiteral("docs/images/studio.png")));
+  EXPECT_TRUE(picture.isValid() && !picture.value<QImage>().isNull()) << "docs/images/studio.png not bundled";
+  const int before = manual->browser()->verticalScrollBar()->value();
+  manual->showHeading(static_cast<int>(headings.indexOf(QStringLiteral("The mocap command line"))));
+  EXPECT_GT(manual->browser()->verticalScrollBar()->value(), before) << "choosing a heading scrolls to it";
 }
 
 TEST_F(Trust, SaveAsHasCtrlShiftS)
