@@ -122,7 +122,22 @@ TEST_F(BlendshapeSolvePanelTest, WeightEditsApplyToTheSelectedShapesOverTheRange
   EXPECT_EQ(undo.count(), before + 1);
   const Eigen::MatrixXd& scaled = model().weights();
   EXPECT_LT((scaled.col(1).segment(100, 301) - 0.5 * solved.col(1).segment(100, 301)).cwiseAbs().maxCoeff(), 1e-12);
-  EXPECT_EQ(scaled.col(1).head(100), solved.col(1).head(100));
+  // Around the range the edit eases in and out: untouched beyond the blend, between the curve
+  // and the edit within it, and no step at the range's edges.
+  const auto blend = static_cast<Eigen::Index>(
+      std::lround(ui::WeightEditActions::kBlendSeconds * document().take().frameRate()));
+  ASSERT_GE(blend, 2);
+  EXPECT_EQ(scaled.col(1).head(100 - blend), solved.col(1).head(100 - blend));
+  EXPECT_EQ(scaled.col(1).tail(scaled.rows() - 401 - blend), solved.col(1).tail(scaled.rows() - 401 - blend));
+  const Eigen::VectorXd change = scaled.col(1) - solved.col(1);
+  const Eigen::VectorXd full = -0.5 * solved.col(1);  // the change the edit makes inside the range
+  for (Eigen::Index f = 100 - blend; f < 100; ++f) {
+    EXPECT_LE(std::abs(change(f)), std::abs(full(f)) + 1e-12) << f;
+    EXPECT_GE(change(f) * full(f), 0.0) << f;
+  }
+  const double stepIn = std::abs(change(100) - change(99)), stepOut = std::abs(change(401) - change(400));
+  EXPECT_LT(stepIn, 0.5 * std::abs(full(100)) + 1e-9) << "a step into the range";
+  EXPECT_LT(stepOut, 0.5 * std::abs(full(400)) + 1e-9) << "a step out of the range";
   EXPECT_EQ(scaled.col(0), solved.col(0));
   EXPECT_EQ(panel->edits().zero(), QString());
   EXPECT_EQ(model().weights().col(1).segment(100, 301).cwiseAbs().maxCoeff(), 0.0);

@@ -5,10 +5,12 @@
 #include "document/take_document.h"
 
 #include "mocap/cleaning/butterworth_filter.h"
+#include "mocap/math/smooth_step.h"
 
 #include <QUndoStack>
 
 #include <algorithm>
+#include <cmath>
 
 namespace mocap::ui {
 
@@ -44,8 +46,8 @@ QString WeightEditActions::scale(double factor)
   if (!editedFrames(first, last, why))
     return why;
   const std::vector<Eigen::Index>& shapes = m_model.selectedShapes();
-  m_document.undoStack()->push(new EditWeightsCommand(m_model, tr("Scale weights by %1").arg(factor), shapes, first,
-                                                      m_model.weightBlock(shapes, first, last) * factor));
+  pushBlended(tr("Scale weights by %1").arg(factor), first, last,
+              [&](Eigen::Index from, Eigen::Index to) { return Eigen::MatrixXd(m_model.weightBlock(shapes, from, to) * factor); });
   return {};
 }
 
@@ -55,10 +57,9 @@ QString WeightEditActions::zero()
   QString why;
   if (!editedFrames(first, last, why))
     return why;
-  const std::vector<Eigen::Index>& shapes = m_model.selectedShapes();
-  m_document.undoStack()->push(
-      new EditWeightsCommand(m_model, tr("Zero weights"), shapes, first,
-                             Eigen::MatrixXd::Zero(last - first + 1, static_cast<Eigen::Index>(shapes.size()))));
+  const auto shapes = static_cast<Eigen::Index>(m_model.selectedShapes().size());
+  pushBlended(tr("Zero weights"), first, last,
+              [&](Eigen::Index from, Eigen::Index to) { return Eigen::MatrixXd(Eigen::MatrixXd::Zero(to - from + 1, shapes)); });
   return {};
 }
 
@@ -78,9 +79,31 @@ QString WeightEditActions::smooth(double cutoffHz)
   const std::vector<Eigen::Index>& shapes = m_model.selectedShapes();
   const Eigen::MatrixXd all = m_model.weightBlock(shapes, 0, m_model.weights().rows() - 1);
   const Eigen::MatrixXd smoothed = butterworthFilter(all, rate, cutoffHz);
-  m_document.undoStack()->push(new EditWeightsCommand(m_model, tr("Smooth weights (%1 Hz)").arg(cutoffHz), shapes,
-                                                      first, smoothed.middleRows(first, last - first + 1)));
+  pushBlended(tr("Smooth weights (%1 Hz)").arg(cutoffHz), first, last,
+              [&](Eigen::Index from, Eigen::Index to) { return Eigen::MatrixXd(smoothed.middleRows(from, to - from + 1)); });
   return {};
+}
+
+void WeightEditActions::pushBlended(const QString& text, Eigen::Index first, Eigen::Index last,
+                                    const std::function<Eigen::MatrixXd(Eigen::Index, Eigen::Index)>& edit)
+{
+  // Over a range the edit eases in and out over kBlendSeconds outside it, so the curve keeps no
+  // step at the range's edges; over the whole take there is no edge. O(frames · shapes).
+  const Eigen::Index frames = m_model.weights().rows();
+  const Eigen::Index blend =
+      m_document.hasRange() ? std::max<Eigen::Index>(1, std::lround(kBlendSeconds * m_document.take().frameRate())) : 0;
+  const Eigen::Index from = std::max<Eigen::Index>(first - blend, 0);
+  const Eigen::Index to = std::min<Eigen::Index>(last + blend, frames - 1);
+  const std::vector<Eigen::Index>& shapes = m_model.selectedShapes();
+  const Eigen::MatrixXd original = m_model.weightBlock(shapes, from, to);
+  const Eigen::MatrixXd edited = edit(from, to);
+  Eigen::VectorXd weight = Eigen::VectorXd::Ones(to - from + 1);
+  for (Eigen::Index f = from; f < first; ++f)  // eases in: 0 before `from`, 1 at `first`
+    weight(f - from) = smoothStep(static_cast<double>(f - (first - blend - 1)) / static_cast<double>(blend + 1));
+  for (Eigen::Index f = last + 1; f <= to; ++f)  // and out
+    weight(f - from) = smoothStep(static_cast<double>(last + blend + 1 - f) / static_cast<double>(blend + 1));
+  const Eigen::MatrixXd blended = original + weight.asDiagonal() * (edited - original);
+  m_document.undoStack()->push(new EditWeightsCommand(m_model, text, shapes, from, blended));
 }
 
 } // namespace mocap::ui

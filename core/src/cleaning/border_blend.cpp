@@ -1,6 +1,7 @@
 #include "mocap/cleaning/border_blend.h"
 
 #include "mocap/base/error.h"
+#include "mocap/math/smooth_step.h"
 
 namespace mocap {
 
@@ -22,7 +23,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> blendBorders(const GapQuery& gap, const
   for (Eigen::Index i = 0; i < gap.length; ++i) {
     double s = hasBefore ? (hasAfter ? static_cast<double>(i + 1) / span : 0.0) : 1.0;
     if (ramp == BorderRamp::Smooth)
-      s = s * s * (3.0 - 2.0 * s);
+      s = smoothStep(s);
     out.row(i) += (1.0 - s) * before + s * after;
   }
   return out;

@@ -2,6 +2,7 @@
 
 #include "mocap/base/enum_table.h"
 #include "mocap/base/error.h"
+#include "mocap/math/smooth_step.h"
 
 #include <Eigen/LU>
 
@@ -70,13 +71,6 @@ Eigen::MatrixXd affineRows(const Eigen::Ref<const PointSet>& points)
   q.leftCols<3>() = points;
   q.col(3).setOnes();
   return q;
-}
-
-// Smooth 0→1 step over [0, 1] (3t² − 2t³), clamped.
-double smoothStep(double t)
-{
-  t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
 }
 
 } // namespace
