@@ -529,7 +529,8 @@ TEST(SummarizeCli, WritesOneWellFormedPageWithThePlotsAndTheTakesToReview)
   for (const std::string id : {"valid-fraction", "gap-lengths", "spikes-per-marker", "missing-heat-map"})
     EXPECT_NE(html.find("<svg class=\"plot\" id=\"" + id + "\""), std::string::npos) << id;
   EXPECT_EQ(occurrences(html, "<g class=\"take\""), 5u);  // the five cleaned takes, before and after
-  EXPECT_EQ(occurrences(html, "<rect class=\"failed\""), 1u);
+  EXPECT_EQ(occurrences(html, "<g class=\"failed\""), 1u);  // a cross on the axis, not a full-height bar
+  EXPECT_EQ(occurrences(html, "<rect class=\"failed\""), 0u);
   EXPECT_GT(occurrences(html, "<rect class=\"cell\""), 5u);
   EXPECT_EQ(occurrences(html, "<rect class=\"bar\" data-label=\"1\" data-count=\""), 1u);
 
@@ -553,6 +554,33 @@ TEST(SummarizeCli, WritesOneWellFormedPageWithThePlotsAndTheTakesToReview)
     histogram += member(bin, "gaps").number("");
   EXPECT_EQ(histogram, gaps);
   EXPECT_GT(gaps, 0.0);
+}
+
+TEST(SummarizeCli, ATakeThatLostDataOnReadingIsListedFirstWithWhy)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  // A truncated copy: the reader keeps the whole frames and says data is missing.
+  const std::string bytes = readFileBytes(archive.root / "session2/pc_real.c3d");
+  writeFileAtomically(archive.root / "session2/cut.c3d", bytes.substr(0, bytes.size() - 5000));
+  writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) + "session2/cut.c3d\n");
+  const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir);
+  ASSERT_LE(batch.exitCode, 3) << batch.err;
+  const auto run =
+      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue summary = parseJson(run.out, "stdout");
+  const auto& review = member(summary, "review").array("");
+  ASSERT_FALSE(review.empty());
+  EXPECT_EQ(member(review.front(), "take").string(""), "session2/cut.c3d")
+      << "data loss before takes that only have open gaps; " << run.out.substr(0, 2000);
+  EXPECT_NE(member(review.front(), "reason").string("").find("data lost on reading: "), std::string::npos);
+  EXPECT_NE(member(review.front(), "reason").string("").find("shorter than declared"), std::string::npos);
+  EXPECT_TRUE(member(review.front(), "data_loss").boolean(""));
+  EXPECT_GE(member(review.front(), "warnings").number(""), 1.0);
+  const std::string html = readFileBytes(dir.file("report.html"));
+  EXPECT_NE(html.find("<th>reader warnings</th>"), std::string::npos);
+  EXPECT_NE(html.find("<tr class=\"bad\"><td>session2/cut.c3d</td>"), std::string::npos);
 }
 
 } // namespace

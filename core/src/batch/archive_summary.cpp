@@ -164,10 +164,14 @@ void validFractionPlot(std::string& html, const ArchiveSummary& summary)
               fixed(x - 4, 1) + " " + fixed(y, 1) + ")\">" + name + "</text>\n";
     }
     if (report.failed()) {
-      const double w = std::max(2.0 * barWidth, 2.0);
-      html += "<rect class=\"failed\" data-take=\"" + name + "\" x=\"" + fixed(x - w / 2, 2) + "\" y=\"" +
-              fixed(top, 0) + "\" width=\"" + fixed(w, 2) + "\" height=\"" + fixed(height, 0) +
-              "\" fill=\"#d62728\" fill-opacity=\"0.35\"><title>" + name + ": failed</title></rect>\n";
+      // A cross on the axis, not a bar: a failed take has no valid fraction to draw, and a
+      // full-height bar would read as 100 %.
+      const double r = std::clamp(barWidth, 3.0, 6.0), y = top + height - r - 2;
+      html += "<g class=\"failed\" data-take=\"" + name + "\" stroke=\"#d62728\" stroke-width=\"2\"><title>" + name +
+              ": failed: " + escape(report.error) + "</title><line x1=\"" + fixed(x - r, 2) + "\" y1=\"" +
+              fixed(y - r, 1) + "\" x2=\"" + fixed(x + r, 2) + "\" y2=\"" + fixed(y + r, 1) + "\"/><line x1=\"" +
+              fixed(x - r, 2) + "\" y1=\"" + fixed(y + r, 1) + "\" x2=\"" + fixed(x + r, 2) + "\" y2=\"" +
+              fixed(y - r, 1) + "\"/></g>\n";
       continue;
     }
     html += "<g class=\"take\" data-take=\"" + name + "\" data-before=\"" + fixed(report.validBefore, 4) +
@@ -177,7 +181,7 @@ void validFractionPlot(std::string& html, const ArchiveSummary& summary)
   }
   html += "<text x=\"" + fixed(left, 0) +
           "\" y=\"16\" font-size=\"12\" dy=\"-4\"><tspan fill=\"#ff7f0e\">▮ before</tspan>  <tspan fill=\"#1f77b4\">▮ after "
-          "cleaning</tspan>  <tspan fill=\"#d62728\">▮ failed</tspan>  (takes in path order)</text>\n";
+          "cleaning</tspan>  <tspan fill=\"#d62728\">✕ failed</tspan>  (takes in path order)</text>\n";
   html += "</svg>\n";
 }
 
@@ -243,6 +247,20 @@ void missingHeatMap(std::string& html, const ArchiveSummary& summary, const Figu
   html += "</svg>\n";
 }
 
+/// "the data section is shorter than declared …; 2 more warnings" for a reason column.
+std::string firstOf(const std::vector<std::string>& warnings, const char* more)
+{
+  std::string text = warnings.front();
+  if (warnings.size() > 1)
+    text += " (and " + std::to_string(warnings.size() - 1) + " " + more + ")";
+  return text;
+}
+
+/// Why a take needs a person, worst reasons first, and how badly (`severity`): a failure, then data
+/// the file declares but the take lacks, then a file whose header and parameters disagreed (the
+/// reader chose, and may have chosen wrong), then a low valid fraction, markers never seen, and
+/// last gaps left open, which most takes have. So a take that lost data is never buried under
+/// takes that only have their usual open gaps.
 std::string reviewReason(const TakeReport& report, double minValid, double& severity)
 {
   if (report.failed()) {
@@ -251,6 +269,18 @@ std::string reviewReason(const TakeReport& report, double minValid, double& seve
   }
   std::vector<std::string> reasons;
   severity = 0.0;
+  if (!report.dataLoss.empty()) {
+    reasons.push_back("data lost on reading: " + firstOf(report.dataLoss, "more"));
+    severity += 6.0;
+  }
+  if (report.warnings.size() > report.dataLoss.size()) {
+    std::vector<std::string> others;
+    for (const std::string& warning : report.warnings)
+      if (std::find(report.dataLoss.begin(), report.dataLoss.end(), warning) == report.dataLoss.end())
+        others.push_back(warning);
+    reasons.push_back("read with warnings: " + firstOf(others, "more warnings"));
+    severity += 4.0;
+  }
   if (report.validAfter < minValid) {
     reasons.push_back("valid " + percent(report.validAfter) + " after cleaning (below " + percent(minValid) + ")");
     severity += 2.0 + (minValid - report.validAfter);
@@ -353,11 +383,16 @@ std::string archiveSummaryHtml(const ArchiveSummary& summary)
   html += ")</h2>\n";
   missingHeatMap(html, summary, figures);
   html += "<h2>Takes that need a person (worst first)</h2>\n<table id=\"review\"><tr><th>take</th><th>valid "
-          "after</th><th>reason</th></tr>\n";
+          "after</th><th>reader warnings</th><th>reason</th></tr>\n";
   for (const TakeToReview& review : summary.review) {
     const TakeReport& report = summary.reports[review.take];
-    html += "<tr><td>" + escape(takeName(report)) + "</td><td>" +
-            (report.failed() ? std::string("–") : percent(report.validAfter)) + "</td><td>" + escape(review.reason) +
+    std::string warnings;  // every warning in the cell's tooltip, one per line; the count in the cell
+    for (const std::string& warning : report.warnings)
+      warnings += (warnings.empty() ? "" : "&#10;") + escape(warning);
+    html += std::string("<tr") + (report.failed() || !report.dataLoss.empty() ? " class=\"bad\"" : "") + "><td>" +
+            escape(takeName(report)) + "</td><td>" +
+            (report.failed() ? std::string("–") : percent(report.validAfter)) + "</td><td class=\"warnings\" title=\"" +
+            warnings + "\">" + std::to_string(report.warnings.size()) + "</td><td>" + escape(review.reason) +
             "</td></tr>\n";
   }
   html += "</table>\n<h2>Processing settings</h2>\n";
@@ -410,6 +445,10 @@ std::string archiveSummaryJson(const ArchiveSummary& summary)
         .value(takeName(summary.reports[review.take]))
         .key("reason")
         .value(review.reason)
+        .key("warnings")
+        .value(static_cast<std::int64_t>(summary.reports[review.take].warnings.size()))
+        .key("data_loss")
+        .value(!summary.reports[review.take].dataLoss.empty())
         .endObject();
   json.endArray();
   json.key("presets").beginObject();

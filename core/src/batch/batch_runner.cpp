@@ -120,7 +120,7 @@ BatchTakeResult runBatchTake(const TakeManifest& manifest, std::size_t index, co
         result.seconds = total.seconds();
         return result;
       }
-    Take take = readTake(entry.input, &report.warnings);
+    Take take = readTake(entry.input, &report.warnings, &report.dataLoss);
     report.timings.read = step.seconds();
     step = Stopwatch();
     report.validBefore = take.validFraction();

@@ -119,6 +119,7 @@ std::string takeReportJson(const TakeReport& report)
   if (report.failed())
     json.key("error").value(report.error);
   writeStrings(json, "warnings", report.warnings);
+  writeStrings(json, "data_loss", report.dataLoss);
   json.key("preset_hash").value(report.presetHash);
   json.key("preset");
   writeCleanPreset(json, report.preset);
@@ -175,6 +176,7 @@ TakeReport parseTakeReport(std::string_view bytes, const std::string& sourceName
   if (text(document, "status", where) == "failed" && report.error.empty())
     report.error = "failed";
   report.warnings = strings(document, "warnings", where);
+  report.dataLoss = strings(document, "data_loss", where);  // absent from reports before it existed
   report.presetHash = text(document, "preset_hash", where);
   if (const JsonValue* preset = document.find("preset", where))
     report.preset = cleanPresetFromJson(*preset);

@@ -39,7 +39,8 @@ struct TakeReport
   std::string presetHash;  ///< cleanPresetHash of `preset`
   CleanOptions preset;
   std::string error;       ///< why it failed; empty when it was cleaned
-  std::vector<std::string> warnings;  ///< what the reader tolerated
+  std::vector<std::string> warnings;  ///< what the reader tolerated (header/parameter conflicts among them)
+  std::vector<std::string> dataLoss;  ///< of those, the ones meaning data the file declares is missing
   std::int64_t inputBytes = 0;
   std::int64_t frames = 0;
   double frameRate = 0.0;
