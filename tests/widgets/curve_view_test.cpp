@@ -124,8 +124,10 @@ TEST(CurveView, ARepairedBadPointPreviewsAsADashedLine)
   QImage previewed(view.size(), QImage::Format_ARGB32_Premultiplied);
   view.render(&previewed);
   // Pixels changed between the neighbours' columns, away from the repaired sample's dot.
-  const int left = static_cast<int>(view.xOf(449.0)) + 4, right = static_cast<int>(view.xOf(451.0)) - 4;
-  const int dot = static_cast<int>(view.xOf(450.0));
+  const auto before = view.pointOf(0, 449, 2), spike = view.pointOf(0, 450, 2), after = view.pointOf(0, 451, 2);
+  ASSERT_TRUE(before && spike && after);
+  const int left = static_cast<int>(before->x()) + 4, right = static_cast<int>(after->x()) - 4;
+  const int dot = static_cast<int>(spike->x());
   int changed = 0;
   for (int x = left; x <= right; ++x) {
     if (std::abs(x - dot) <= 5)
