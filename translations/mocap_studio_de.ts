@@ -2,55 +2,98 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
-    <name>GapFillStep</name>
+    <name>CleaningStep</name>
     <message>
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="+32"/>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>longer than %1</source>
-        <translation>länger als %1</translation>
+        <location filename="../widgets/panels/cleaning_step.cpp" line="+33"/>
+        <source> on 1 marker</source>
+        <translation> an 1 Marker</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>edge gap (extrapolation off)</source>
-        <translation>Randlücke (Extrapolation aus)</translation>
+        <source> on %1 markers</source>
+        <translation> an %1 Markern</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>1 sample changed</source>
+        <translation>1 Abtastwert geändert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 samples changed</source>
+        <translation>%1 Abtastwerte geändert</translation>
+    </message>
+</context>
+<context>
+    <name>FillRuleText</name>
+    <message>
+        <location filename="../widgets/models/fill_rule_text.cpp" line="+12"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>over the %n-frame limit</source>
+        <translation>
+            <numerusform>über der Grenze von %n Frame</numerusform>
+            <numerusform>über der Grenze von %n Frames</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>over the %1 limit</source>
+        <translation>über der Grenze von %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>at the take&apos;s start: no extrapolation</source>
+        <translation>am Anfang der Aufnahme: keine Extrapolation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at the take&apos;s end: no extrapolation</source>
+        <translation>am Ende der Aufnahme: keine Extrapolation</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>marker seen in only %1 % of the take</source>
-        <translation>Marker nur in %1 % der Aufnahme sichtbar</translation>
+        <source>marker seen in %1 % of the take</source>
+        <translation>Marker in %1 % der Aufnahme sichtbar</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>marker never seen</source>
         <translation>Marker nie sichtbar</translation>
     </message>
+</context>
+<context>
+    <name>GapFillStep</name>
     <message>
-        <location line="+11"/>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+35"/>
         <source>No gap filled</source>
         <translation>Keine Lücke gefüllt</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+1"/>
-        <source>%n gap(s) filled</source>
-        <translation>
-            <numerusform>%n Lücke gefüllt</numerusform>
-            <numerusform>%n Lücken gefüllt</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>, %n sample(s)</source>
-        <translation>
-            <numerusform>, %n Abtastwert</numerusform>
-            <numerusform>, %n Abtastwerte</numerusform>
-        </translation>
+        <source>1 gap filled</source>
+        <translation>1 Lücke gefüllt</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+1"/>
+        <source>%1 gaps filled</source>
+        <translation>%1 Lücken gefüllt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, 1 sample</source>
+        <translation>, 1 Abtastwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, %1 samples</source>
+        <translation>, %1 Abtastwerte</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 longer than %2</source>
         <translation>%1 länger als %2</translation>
     </message>
@@ -186,7 +229,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+144"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+158"/>
         <source>%1 smoothing</source>
         <translation>Glättung: %1</translation>
     </message>
@@ -199,7 +242,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+131"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+135"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>%n Ausreißer gefunden</numerusform>
@@ -243,7 +286,7 @@
         <translation>Kurven</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
@@ -263,7 +306,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
@@ -819,7 +862,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-835"/>
+        <location line="-840"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1232,7 +1275,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+116"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -1245,7 +1288,12 @@
         </translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+4"/>
+        <source>Next pass: %1</source>
+        <translation>Nächster Durchgang: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
@@ -1254,11 +1302,16 @@
         <source>Nothing to apply</source>
         <translation>Nichts anzuwenden</translation>
     </message>
+    <message>
+        <location line="+4"/>
+        <source>Applied: %1</source>
+        <translation>Angewendet: %1</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+111"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+112"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
@@ -1291,7 +1344,7 @@
         <translation type="vanished">+%1 weitere</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+319"/>
         <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
         <translation>%1 · Bild %2 (%3 s) · %4 %5 %6</translation>
     </message>
@@ -1841,7 +1894,7 @@
 <context>
     <name>mocap::ui::GapFillStep</name>
     <message>
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="+16"/>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+19"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
@@ -1931,11 +1984,16 @@
         <source>%1, frames %2–%3 (%4)</source>
         <translation>%1, Frames %2–%3 (%4)</translation>
     </message>
+    <message>
+        <location line="+33"/>
+        <source>; %1 left open: </source>
+        <translation>; %1 offen gelassen: </translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+171"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+191"/>
         <source>Filter markers…</source>
         <translation>Marker filtern…</translation>
     </message>
@@ -1971,12 +2029,12 @@
     </message>
     <message>
         <location line="+13"/>
-        <location line="+137"/>
+        <location line="+145"/>
         <source>Fill</source>
         <translation>Füllen</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-102"/>
         <source>Show Gap</source>
         <translation>Lücke anzeigen</translation>
     </message>
@@ -1986,12 +2044,17 @@
         <translation>Diese Lücke füllen</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+3"/>
+        <source>Allow Filling This Gap</source>
+        <translation>Füllen dieser Lücke erlauben</translation>
+    </message>
+    <message>
+        <location line="+45"/>
         <source>Check gaps, or select rows, to preview their fill; double-click a gap to go to it.</source>
         <translation>Haken Sie Lücken ab oder wählen Sie Zeilen aus, um ihre Füllung in der Vorschau zu sehen; ein Doppelklick auf eine Lücke springt zu ihr.</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+55"/>
         <source>Fill 1 Checked Gap</source>
         <translation>1 abgehakte Lücke füllen</translation>
     </message>
@@ -2065,13 +2128,13 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>1 gap cannot be filled: %1</source>
-        <translation>1 Lücke kann nicht gefüllt werden: %1</translation>
+        <source>1 gap left open: %1</source>
+        <translation>1 Lücke offen gelassen: %1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>%1 gaps cannot be filled (the first: %2)</source>
-        <translation>%1 Lücken können nicht gefüllt werden (die erste: %2)</translation>
+        <source>%1 gaps left open (the first: %2)</source>
+        <translation>%1 Lücken offen gelassen (die erste: %2)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2079,7 +2142,47 @@
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
+        <source>%1 frames %2–%3</source>
+        <translation>%1 Frames %2–%3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source> and 1 more gap</source>
+        <translation> und 1 weitere Lücke</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> and %1 more gaps</source>
+        <translation> und %1 weitere Lücken</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Fill Past the Rules?</source>
+        <translation>Über die Regeln hinaus füllen?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invent 1 sample: %1?</source>
+        <translation>1 Abtastwert erfinden: %1?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invent %1 samples: %2?</source>
+        <translation>%1 Abtastwerte erfinden: %2?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>These gaps are longer than the limit, at the take&apos;s ends or on a marker seen too rarely: nothing measured them.</source>
+        <translation>Diese Lücken sind länger als die Grenze, liegen an den Enden der Aufnahme oder gehören zu einem zu selten sichtbaren Marker: nichts hat sie gemessen.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Nothing filled: filling past the rules was not confirmed</source>
+        <translation>Nichts gefüllt: das Füllen über die Regeln hinaus wurde nicht bestätigt</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Fill 1 gap: %1</source>
         <translation>1 Lücke füllen: %1</translation>
     </message>
@@ -2092,7 +2195,7 @@
 <context>
     <name>mocap::ui::GapTableModel</name>
     <message>
-        <location filename="../widgets/models/gap_table_model.cpp" line="+28"/>
+        <location filename="../widgets/models/gap_table_model.cpp" line="+29"/>
         <source>Auto (best blend)</source>
         <translation>Automatisch (beste Überblendung)</translation>
     </message>
@@ -2118,13 +2221,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper method: three neighbours (Zhang et al., eqs 3–5)</source>
-        <translation>Paper-Methode: drei Nachbarn (Zhang et al., Gl. 3–5)</translation>
+        <source>Paper method: three neighbours (Zhang et al., muscle mechanism)</source>
+        <translation>Paper-Methode: drei Nachbarn (Zhang et al., Muskelmechanismus)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper method: n neighbours (Zhang et al., eqs 6–7)</source>
-        <translation>Paper-Methode: n Nachbarn (Zhang et al., Gl. 6–7)</translation>
+        <source>Paper method: n neighbours (Zhang et al., muscle mechanism)</source>
+        <translation>Paper-Methode: n Nachbarn (Zhang et al., Muskelmechanismus)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2137,7 +2240,52 @@
         <translation>Distanzgewichtete Nachbarn (Lin–Ouhyoung)</translation>
     </message>
     <message>
-        <location line="+199"/>
+        <location line="+9"/>
+        <source>Blends regression on the markers moving most alike and the rigid motion of the nearest ones, weighted by how well each predicts the marker&apos;s own data beside the gap</source>
+        <translation>Mischt eine Regression auf die am ähnlichsten bewegten Marker und die starre Bewegung der nächsten, gewichtet danach, wie gut jede die eigenen Daten des Markers neben der Lücke vorhersagt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Carries the rigid motion of the nearest markers seen through the gap</source>
+        <translation>Überträgt die starre Bewegung der nächsten Marker, die während der Lücke sichtbar sind</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rebuilds the gap from a low-rank model of how all markers move together</source>
+        <translation>Rekonstruiert die Lücke aus einem Modell niedrigen Rangs, wie sich alle Marker gemeinsam bewegen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A cubic curve through two seen samples on each side of the gap</source>
+        <translation>Eine kubische Kurve durch je zwei sichtbare Abtastwerte auf beiden Seiten der Lücke</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A straight line between the samples on each side of the gap</source>
+        <translation>Eine Gerade zwischen den Abtastwerten auf beiden Seiten der Lücke</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Follows the displacements of the three nearest markers, as skin moves with the muscle below it</source>
+        <translation>Folgt den Verschiebungen der drei nächsten Marker, wie sich die Haut mit dem Muskel darunter bewegt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Like three neighbours, with the n nearest markers weighted by distance</source>
+        <translation>Wie drei Nachbarn, mit den n nächsten Markern nach Abstand gewichtet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves the marker by the average displacement of its nearest neighbours</source>
+        <translation>Bewegt den Marker um die mittlere Verschiebung seiner nächsten Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves the marker by its neighbours&apos; displacements, nearer ones weighing more</source>
+        <translation>Bewegt den Marker um die Verschiebungen seiner Nachbarn, nähere zählen mehr</translation>
+    </message>
+    <message>
+        <location line="+262"/>
         <source>filled</source>
         <translation>gefüllt</translation>
     </message>
@@ -2152,22 +2300,42 @@
         <translation>nicht füllbar: %1</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>allowed: %1</source>
+        <translation>erlaubt: %1</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>open</source>
         <translation>offen</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
+        <source>Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples</source>
+        <translation>Von den Füllregeln offen gelassen (%1). Abhaken, um sie trotzdem zu füllen: Füllen fragt, bevor es Abtastwerte erfindet</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Filled by: %1</source>
         <translation>Gefüllt mit: %1</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>%1 — double-click to choose how this gap is filled</source>
-        <translation>%1 — Doppelklick, um zu wählen, wie diese Lücke gefüllt wird</translation>
+        <source>%1: %2. Double-click to choose how this gap is filled</source>
+        <translation>%1: %2. Doppelklicken, um zu wählen, wie diese Lücke gefüllt wird</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
+        <source>Fill a gap the rules leave open (too long, at the take&apos;s ends, a marker seen too rarely)</source>
+        <translation>Eine Lücke füllen, die die Regeln offen lassen (zu lang, an den Enden der Aufnahme, ein zu selten sichtbarer Marker)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open, previewed, filled, or why it is not filled</source>
+        <translation>Offen, in der Vorschau, gefüllt oder warum sie nicht gefüllt wird</translation>
+    </message>
+    <message>
+        <location line="-7"/>
         <source>Check the gaps to fill together</source>
         <translation>Die gemeinsam zu füllenden Lücken abhaken</translation>
     </message>
@@ -2192,12 +2360,7 @@
         <translation>Wie die Lücke gefüllt wird (Doppelklick zum Wählen)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Open, previewed, filled, or why it cannot be filled</source>
-        <translation>Offen, in der Vorschau, gefüllt oder warum sie nicht gefüllt werden kann</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -2220,6 +2383,11 @@
         <location line="+1"/>
         <source>Method</source>
         <translation>Methode</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Allow</source>
+        <translation>Erlauben</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3587,14 +3755,14 @@
 <context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-78"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-92"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV-Glättungsspline (Woltring)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>B-spline (Zhang et al., eqs 11–12)</source>
-        <translation>B-Spline (Zhang et al., Gl. 11–12)</translation>
+        <source>B-spline (Zhang et al., smoothing)</source>
+        <translation>B-Spline (Zhang et al., Glättung)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3608,6 +3776,26 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>A smoothing spline whose stiffness is chosen per marker by generalized cross-validation: no setting to tune</source>
+        <translation>Ein Glättungsspline, dessen Steifigkeit je Marker per verallgemeinerter Kreuzvalidierung gewählt wird: nichts einzustellen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A least-squares B-spline with knots every few frames (the paper&apos;s smoothing)</source>
+        <translation>Ein Kleinste-Quadrate-B-Spline mit Knoten alle paar Frames (die Glättung des Papers)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A low-pass filter run forwards and backwards, so nothing lags; cuts motion faster than the cutoff</source>
+        <translation>Ein Tiefpassfilter, vorwärts und rückwärts angewandt, damit nichts nachhinkt; entfernt Bewegung, die schneller als die Grenzfrequenz ist</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A polynomial fitted in a sliding window: keeps peaks sharper than a low-pass filter</source>
+        <translation>Ein Polynom, in einem gleitenden Fenster angepasst: erhält Spitzen schärfer als ein Tiefpassfilter</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
@@ -3652,31 +3840,41 @@
         <source>Smoothing</source>
         <translation>Glättung</translation>
     </message>
+    <message>
+        <location line="+21"/>
+        <source>1 sample smoothed</source>
+        <translation>1 Abtastwert geglättet</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 samples smoothed</source>
+        <translation>%1 Abtastwerte geglättet</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-82"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-86"/>
         <source>Robust (local fit + MAD)</source>
         <translation>Robust (lokale Anpassung + MAD)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Paper method (Zhang et al., eqs 8–10)</source>
-        <translation>Paper-Methode (Zhang et al., Gl. 8–10)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Judges each sample against a robust local fit of its neighbours</source>
         <translation>Beurteilt jeden Abtastwert anhand einer robusten lokalen Anpassung an seine Nachbarn</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Eqs 8–10 as written, in one pass</source>
-        <translation>Gl. 8–10 wie veröffentlicht, in einem Durchgang</translation>
+        <location line="-1"/>
+        <source>Paper method: step test (Zhang et al., bad points)</source>
+        <translation>Paper-Methode: Schritttest (Zhang et al., Ausreißer)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
+        <source>Flags a sample whose steps to both neighbours exceed a multiple of the mean step (the paper as written, one pass); repairs it from its neighbours</source>
+        <translation>Markiert einen Abtastwert, dessen Schritte zu beiden Nachbarn ein Vielfaches des mittleren Schritts übersteigen (wie im Paper, ein Durchgang); repariert ihn aus seinen Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
@@ -3724,6 +3922,16 @@
         <location line="+46"/>
         <source>%1 at frame %2</source>
         <translation>%1 bei Frame %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>1 sample repaired</source>
+        <translation>1 Abtastwert repariert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 samples repaired</source>
+        <translation>%1 Abtastwerte repariert</translation>
     </message>
 </context>
 <context>
@@ -3841,7 +4049,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+257"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+267"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>

@@ -2,53 +2,97 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>GapFillStep</name>
+    <name>CleaningStep</name>
     <message>
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="+32"/>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>longer than %1</source>
-        <translation>长于 %1</translation>
+        <location filename="../widgets/panels/cleaning_step.cpp" line="+33"/>
+        <source> on 1 marker</source>
+        <translation>，涉及 1 个标记点</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>edge gap (extrapolation off)</source>
-        <translation>边缘缺口（外推已关闭）</translation>
+        <source> on %1 markers</source>
+        <translation>，涉及 %1 个标记点</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>1 sample changed</source>
+        <translation>已更改 1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 samples changed</source>
+        <translation>已更改 %1 个采样点</translation>
+    </message>
+</context>
+<context>
+    <name>FillRuleText</name>
+    <message>
+        <location filename="../widgets/models/fill_rule_text.cpp" line="+12"/>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>over the %n-frame limit</source>
+        <translation>
+            <numerusform>超过 %n 帧的上限</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>over the %1 limit</source>
+        <translation>超过 %1 的上限</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>at the take&apos;s start: no extrapolation</source>
+        <translation>位于拍摄数据开头：不外推</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at the take&apos;s end: no extrapolation</source>
+        <translation>位于拍摄数据末尾：不外推</translation>
     </message>
     <message>
         <location line="+4"/>
-        <source>marker seen in only %1 % of the take</source>
-        <translation>标记点仅在 %1 % 的拍摄数据中可见</translation>
+        <source>marker seen in %1 % of the take</source>
+        <translation>标记点在 %1 % 的拍摄数据中可见</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>marker never seen</source>
         <translation>标记点从未出现</translation>
     </message>
+</context>
+<context>
+    <name>GapFillStep</name>
     <message>
-        <location line="+11"/>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+35"/>
         <source>No gap filled</source>
         <translation>未填补任何缺口</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+1"/>
-        <source>%n gap(s) filled</source>
-        <translation>
-            <numerusform>已填补 %n 个缺口</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>, %n sample(s)</source>
-        <translation>
-            <numerusform>，%n 个采样点</numerusform>
-        </translation>
+        <source>1 gap filled</source>
+        <translation>已填补 1 个缺口</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+1"/>
+        <source>%1 gaps filled</source>
+        <translation>已填补 %1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, 1 sample</source>
+        <translation>，1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, %1 samples</source>
+        <translation>，%1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 longer than %2</source>
         <translation>%1 个长于 %2</translation>
     </message>
@@ -179,7 +223,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+144"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+158"/>
         <source>%1 smoothing</source>
         <translation>%1 平滑</translation>
     </message>
@@ -192,7 +236,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+131"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+135"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>发现 %n 个坏点</numerusform>
@@ -234,7 +278,7 @@
         <translation>曲线</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>History</source>
         <translation>历史记录</translation>
     </message>
@@ -254,7 +298,7 @@
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+48"/>
         <source>Face Mesh</source>
         <translation>面部网格</translation>
     </message>
@@ -808,7 +852,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-835"/>
+        <location line="-840"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1219,7 +1263,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+113"/>
+        <location line="+116"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -1231,7 +1275,12 @@
         </translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+4"/>
+        <source>Next pass: %1</source>
+        <translation>下一遍：%1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
@@ -1240,11 +1289,16 @@
         <source>Nothing to apply</source>
         <translation>没有可应用的更改</translation>
     </message>
+    <message>
+        <location line="+4"/>
+        <source>Applied: %1</source>
+        <translation>已应用：%1</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+111"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+112"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
@@ -1277,7 +1331,7 @@
         <translation type="vanished">另有 %1 个</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+319"/>
         <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
         <translation>%1 · 第 %2 帧（%3 s）· %4 %5 %6</translation>
     </message>
@@ -1821,7 +1875,7 @@
 <context>
     <name>mocap::ui::GapFillStep</name>
     <message>
-        <location filename="../widgets/panels/gap_fill_step.cpp" line="+16"/>
+        <location filename="../widgets/panels/gap_fill_step.cpp" line="+19"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
@@ -1911,11 +1965,16 @@
         <source>%1, frames %2–%3 (%4)</source>
         <translation>%1，第 %2–%3 帧（%4）</translation>
     </message>
+    <message>
+        <location line="+33"/>
+        <source>; %1 left open: </source>
+        <translation>；%1 个未填补：</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+171"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+191"/>
         <source>Filter markers…</source>
         <translation>筛选标记点…</translation>
     </message>
@@ -1951,12 +2010,12 @@
     </message>
     <message>
         <location line="+13"/>
-        <location line="+137"/>
+        <location line="+145"/>
         <source>Fill</source>
         <translation>填补</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-102"/>
         <source>Show Gap</source>
         <translation>显示缺口</translation>
     </message>
@@ -1966,12 +2025,17 @@
         <translation>填补此缺口</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+3"/>
+        <source>Allow Filling This Gap</source>
+        <translation>允许填补此缺口</translation>
+    </message>
+    <message>
+        <location line="+45"/>
         <source>Check gaps, or select rows, to preview their fill; double-click a gap to go to it.</source>
         <translation>勾选缺口或选中行以预览其填补结果；双击缺口可跳转到该处。</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+55"/>
         <source>Fill 1 Checked Gap</source>
         <translation>填补 1 个已勾选的缺口</translation>
     </message>
@@ -2044,13 +2108,13 @@
     </message>
     <message>
         <location line="+6"/>
-        <source>1 gap cannot be filled: %1</source>
-        <translation>1 个缺口无法填补：%1</translation>
+        <source>1 gap left open: %1</source>
+        <translation>1 个缺口未填补：%1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>%1 gaps cannot be filled (the first: %2)</source>
-        <translation>%1 个缺口无法填补（第一个：%2）</translation>
+        <source>%1 gaps left open (the first: %2)</source>
+        <translation>%1 个缺口未填补（第一个：%2）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2058,7 +2122,47 @@
         <translation>%1；%2</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
+        <source>%1 frames %2–%3</source>
+        <translation>%1 第 %2–%3 帧</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source> and 1 more gap</source>
+        <translation> 以及另外 1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> and %1 more gaps</source>
+        <translation> 以及另外 %1 个缺口</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Fill Past the Rules?</source>
+        <translation>超出规则填补？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invent 1 sample: %1?</source>
+        <translation>编造 1 个采样点：%1？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invent %1 samples: %2?</source>
+        <translation>编造 %1 个采样点：%2？</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>These gaps are longer than the limit, at the take&apos;s ends or on a marker seen too rarely: nothing measured them.</source>
+        <translation>这些缺口超过上限、位于拍摄数据两端或属于出现过少的标记点：没有任何测量数据。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Nothing filled: filling past the rules was not confirmed</source>
+        <translation>未填补：未确认超出规则填补</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Fill 1 gap: %1</source>
         <translation>填补 1 个缺口：%1</translation>
     </message>
@@ -2071,7 +2175,7 @@
 <context>
     <name>mocap::ui::GapTableModel</name>
     <message>
-        <location filename="../widgets/models/gap_table_model.cpp" line="+28"/>
+        <location filename="../widgets/models/gap_table_model.cpp" line="+29"/>
         <source>Auto (best blend)</source>
         <translation>自动（最佳混合）</translation>
     </message>
@@ -2097,13 +2201,13 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper method: three neighbours (Zhang et al., eqs 3–5)</source>
-        <translation>论文方法：三个邻近点（Zhang et al.，式 3–5）</translation>
+        <source>Paper method: three neighbours (Zhang et al., muscle mechanism)</source>
+        <translation>论文方法：三个邻近点（Zhang et al.，肌肉机制）</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Paper method: n neighbours (Zhang et al., eqs 6–7)</source>
-        <translation>论文方法：n 个邻近点（Zhang et al.，式 6–7）</translation>
+        <source>Paper method: n neighbours (Zhang et al., muscle mechanism)</source>
+        <translation>论文方法：n 个邻近点（Zhang et al.，肌肉机制）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2116,7 +2220,52 @@
         <translation>距离加权邻近点（Lin–Ouhyoung）</translation>
     </message>
     <message>
-        <location line="+199"/>
+        <location line="+9"/>
+        <source>Blends regression on the markers moving most alike and the rigid motion of the nearest ones, weighted by how well each predicts the marker&apos;s own data beside the gap</source>
+        <translation>融合基于运动最相似标记点的回归与最近标记点的刚体运动，按各自对缺口旁该标记点自身数据的预测效果加权</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Carries the rigid motion of the nearest markers seen through the gap</source>
+        <translation>沿用缺口期间可见的最近标记点的刚体运动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rebuilds the gap from a low-rank model of how all markers move together</source>
+        <translation>用所有标记点共同运动的低秩模型重建缺口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A cubic curve through two seen samples on each side of the gap</source>
+        <translation>穿过缺口两侧各两个可见采样点的三次曲线</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A straight line between the samples on each side of the gap</source>
+        <translation>缺口两侧采样点之间的直线</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Follows the displacements of the three nearest markers, as skin moves with the muscle below it</source>
+        <translation>跟随最近三个标记点的位移，如同皮肤随其下方肌肉运动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Like three neighbours, with the n nearest markers weighted by distance</source>
+        <translation>类似三个邻近点，但使用按距离加权的 n 个最近标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves the marker by the average displacement of its nearest neighbours</source>
+        <translation>按最近邻近点的平均位移移动该标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves the marker by its neighbours&apos; displacements, nearer ones weighing more</source>
+        <translation>按邻近点的位移移动该标记点，越近权重越大</translation>
+    </message>
+    <message>
+        <location line="+262"/>
         <source>filled</source>
         <translation>已填补</translation>
     </message>
@@ -2131,22 +2280,42 @@
         <translation>无法填补：%1</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>allowed: %1</source>
+        <translation>已允许：%1</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>open</source>
         <translation>未填补</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
+        <source>Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples</source>
+        <translation>被填补规则保留为未填补（%1）。勾选以仍然填补：填补前会先询问是否编造这些采样点</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Filled by: %1</source>
         <translation>填补方式：%1</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>%1 — double-click to choose how this gap is filled</source>
-        <translation>%1 — 双击以选择此缺口的填补方式</translation>
+        <source>%1: %2. Double-click to choose how this gap is filled</source>
+        <translation>%1：%2。双击以选择此缺口的填补方式</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+25"/>
+        <source>Fill a gap the rules leave open (too long, at the take&apos;s ends, a marker seen too rarely)</source>
+        <translation>填补规则保留为未填补的缺口（过长、位于拍摄数据两端、标记点出现过少）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open, previewed, filled, or why it is not filled</source>
+        <translation>未填补、已预览、已填补，或不填补的原因</translation>
+    </message>
+    <message>
+        <location line="-7"/>
         <source>Check the gaps to fill together</source>
         <translation>勾选要一起填补的缺口</translation>
     </message>
@@ -2171,12 +2340,7 @@
         <translation>缺口的填补方式（双击以选择）</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Open, previewed, filled, or why it cannot be filled</source>
-        <translation>未填补、已预览、已填补，或无法填补的原因</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -2199,6 +2363,11 @@
         <location line="+1"/>
         <source>Method</source>
         <translation>方法</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Allow</source>
+        <translation>允许</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3559,14 +3728,14 @@
 <context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-78"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-92"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV 平滑样条（Woltring）</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>B-spline (Zhang et al., eqs 11–12)</source>
-        <translation>B 样条（Zhang et al.，式 11–12）</translation>
+        <source>B-spline (Zhang et al., smoothing)</source>
+        <translation>B 样条（Zhang et al.，平滑）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3580,6 +3749,26 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>A smoothing spline whose stiffness is chosen per marker by generalized cross-validation: no setting to tune</source>
+        <translation>平滑样条，其刚度按标记点由广义交叉验证选择：无需调参</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A least-squares B-spline with knots every few frames (the paper&apos;s smoothing)</source>
+        <translation>每隔数帧设一个节点的最小二乘 B 样条（论文的平滑方法）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A low-pass filter run forwards and backwards, so nothing lags; cuts motion faster than the cutoff</source>
+        <translation>正反向各运行一次的低通滤波器，因而没有滞后；滤除快于截止频率的运动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A polynomial fitted in a sliding window: keeps peaks sharper than a low-pass filter</source>
+        <translation>在滑动窗口中拟合多项式：比低通滤波器更能保留峰值</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
@@ -3624,31 +3813,41 @@
         <source>Smoothing</source>
         <translation>平滑</translation>
     </message>
+    <message>
+        <location line="+21"/>
+        <source>1 sample smoothed</source>
+        <translation>已平滑 1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 samples smoothed</source>
+        <translation>已平滑 %1 个采样点</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-82"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-86"/>
         <source>Robust (local fit + MAD)</source>
         <translation>稳健（局部拟合 + MAD）</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Paper method (Zhang et al., eqs 8–10)</source>
-        <translation>论文方法（Zhang et al.，式 8–10）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Judges each sample against a robust local fit of its neighbours</source>
         <translation>依据相邻采样点的稳健局部拟合来判断每个采样点</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Eqs 8–10 as written, in one pass</source>
-        <translation>按论文原式 8–10，单遍执行</translation>
+        <location line="-1"/>
+        <source>Paper method: step test (Zhang et al., bad points)</source>
+        <translation>论文方法：步长检验（Zhang et al.，坏点）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
+        <source>Flags a sample whose steps to both neighbours exceed a multiple of the mean step (the paper as written, one pass); repairs it from its neighbours</source>
+        <translation>标记与两侧邻点的步长都超过平均步长若干倍的采样点（按论文原样，一遍）；并用其邻点修复</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Method</source>
         <translation>方法</translation>
     </message>
@@ -3696,6 +3895,16 @@
         <location line="+46"/>
         <source>%1 at frame %2</source>
         <translation>%1，第 %2 帧</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>1 sample repaired</source>
+        <translation>已修复 1 个采样点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 samples repaired</source>
+        <translation>已修复 %1 个采样点</translation>
     </message>
 </context>
 <context>
@@ -3812,7 +4021,7 @@
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+257"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+267"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>

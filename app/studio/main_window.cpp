@@ -188,7 +188,8 @@ void MainWindow::createDocks()
 
   m_cleaning = new ui::CleaningPanel(*m_document, this);
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
-  m_cleaning->addStep(new ui::GapFillStep(*m_document, m_cleaning));
+  auto* gapFillStep = new ui::GapFillStep(*m_document, m_cleaning);
+  m_cleaning->addStep(gapFillStep);
   m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
   // Last: its preview moves every marker, not something to compute on every open.
   m_cleaning->addStep(new ui::HeadStabilizationStep(*m_document, m_cleaning));
@@ -208,6 +209,10 @@ void MainWindow::createDocks()
   QDockWidget* gapDock = addDock(tr("Gaps"), QStringLiteral("gapListDock"), m_gapList, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, gapDock);
   connect(m_gapList, &ui::GapListPanel::frameRangeRequested, m_curves, &ui::CurveView::setVisibleRange);
+  // One set of fill rules: the Gaps dock fills past the Cleaning panel's only when told to.
+  m_gapList->setFillRules(gapFillStep->currentOptions());
+  connect(gapFillStep, &ui::CleaningStep::changed, m_gapList,
+          [this, gapFillStep] { m_gapList->setFillRules(gapFillStep->currentOptions()); });
   cleaningDock->raise();
   // The highlight shows only while the dock is on screen: leaving the panel (another tab raised,
   // the dock closed) gives the 3D view its sample-state colours back, returning shows it again.

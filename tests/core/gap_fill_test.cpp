@@ -295,6 +295,46 @@ TEST(GapFill, RarelySeenMarkersAreSkippedUnlessNamed)
   EXPECT_THROW((void)fillGaps(take, bad), InvalidArgument);
 }
 
+// The rules alone (what the studio's Gaps dock shows before any fill) say of each gap exactly
+// what a fill reports for the gaps it leaves open by rule, and nothing for the others.
+TEST(GapFill, CheckFillRulesIsWhatAFillLeavesOpenByRule)
+{
+  Take take = wavingMarkers(400);
+  hide(take, 0, 100, 100);  // too long
+  hide(take, 1, 0, 10);     // at the start
+  hide(take, 2, 0, 150);
+  hide(take, 2, 170, 230);  // 20 of 400 frames seen: rarely valid
+  hide(take, 3, 200, 20);   // fillable
+  const std::vector<Gap> gaps = findGaps(take);
+  const std::vector<GapFillReport> rules = checkFillRules(take, gaps, FillOptions{});
+  const FillResult filled = fillGaps(take, gaps, FillOptions{});
+  ASSERT_EQ(rules.size(), gaps.size());
+  int refused = 0;
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    EXPECT_EQ(rules[i].gap.marker, gaps[i].marker);
+    EXPECT_FALSE(rules[i].filled);
+    if (rules[i].cause == UnfilledCause::None) {
+      EXPECT_TRUE(filled.gaps[i].filled) << filled.gaps[i].reason;
+      continue;
+    }
+    ++refused;
+    EXPECT_EQ(filled.gaps[i].cause, rules[i].cause);
+    EXPECT_EQ(filled.gaps[i].reason, rules[i].reason);
+  }
+  EXPECT_EQ(refused, 4);  // marker 0's, marker 1's and marker 2's two
+  EXPECT_EQ(rules[0].cause, UnfilledCause::TooLong);
+  EXPECT_EQ(rules[1].cause, UnfilledCause::EdgeGap);
+  EXPECT_EQ(rules[2].cause, UnfilledCause::RarelyValid);
+  FillOptions lax;
+  lax.maxGapSeconds = 0.0;
+  lax.extrapolate = true;
+  lax.minValidFraction = 0.0;
+  for (const GapFillReport& report : checkFillRules(take, gaps, lax))
+    EXPECT_EQ(report.cause, UnfilledCause::None);
+  const std::vector<Gap> outside{Gap{0, 395, 10, true}};
+  EXPECT_THROW((void)checkFillRules(take, outside, FillOptions{}), InvalidArgument) << "outside the take";
+}
+
 TEST(GapFill, MaxGapIsRespected)
 {
   Take take = rigidCluster();

@@ -218,5 +218,76 @@ TEST_F(CleaningDefaults, DetectingAgainAfterARepairExplainsTheFlagsBesideIt)
   EXPECT_FALSE(panel->lastResult().summary.contains(QStringLiteral("beside"))) << panel->lastResult().summary.toStdString();
 }
 
+// After Apply the panel says what was done, counted from what was applied, not what the next pass
+// would do; a changed setting or an undo hands the status back to the preview.
+TEST_F(CleaningDefaults, AfterApplyTheStatusSaysWhatWasDone)
+{
+  TakeDocument& doc = window->document();
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  auto* gaps = panel->step<ui::GapFillStep>();
+  panel->setCurrentStep(gaps);
+  panel->waitForPreview();
+  int filled = 0, samples = 0;
+  for (const SamplePatch& patch : panel->lastResult().patches) {
+    ++filled;
+    samples += static_cast<int>(patch.size());
+  }
+  const auto open = static_cast<int>(panel->lastResult().notes.size());
+  ASSERT_GT(filled, 1);
+  ASSERT_GT(open, 3);
+  const QString firstOpen = panel->lastResult().notes.front().text;
+  ASSERT_EQ(panel->apply(), samples);
+  panel->waitForPreview();  // the next pass: nothing left to fill
+  const QString expected = QStringLiteral("Applied: %1 gaps filled, %2 samples; %3 left open: %4")
+                               .arg(filled)
+                               .arg(samples)
+                               .arg(open)
+                               .arg(firstOpen);
+  EXPECT_TRUE(panel->statusText().startsWith(expected)) << panel->statusText().toStdString() << "\n" << expected.toStdString();
+  EXPECT_FALSE(panel->statusText().contains(QStringLiteral("No gap filled"))) << panel->statusText().toStdString();
+  // A changed setting: the preview speaks again.
+  gaps->setMaxGapSeconds(0.3);
+  panel->waitForPreview();
+  EXPECT_FALSE(panel->statusText().startsWith(QStringLiteral("Applied"))) << panel->statusText().toStdString();
+
+  // Bad points: samples repaired on markers, from the patches pushed.
+  panel->setCurrentStep(panel->step<ui::SpikeStep>());
+  panel->waitForPreview();
+  std::vector<Eigen::Index> markers;
+  for (const SamplePatch& patch : panel->lastResult().patches)
+    markers.push_back(patch.marker);
+  std::sort(markers.begin(), markers.end());
+  markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
+  const int repaired = panel->apply();
+  ASSERT_GT(repaired, 1);
+  panel->waitForPreview();
+  EXPECT_TRUE(panel->statusText().startsWith(
+      QStringLiteral("Applied: %1 samples repaired on %2 markers").arg(repaired).arg(markers.size())))
+      << panel->statusText().toStdString();
+  doc.undoStack()->undo();  // the take changed: the preview speaks again
+  panel->waitForPreview();
+  EXPECT_FALSE(panel->statusText().startsWith(QStringLiteral("Applied"))) << panel->statusText().toStdString();
+}
+
+// Every method of every step says what it does in a tooltip, and none is named by equation numbers.
+TEST_F(CleaningDefaults, EveryMethodHasATooltipAndNoNameSaysEqs)
+{
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  int methods = 0;
+  for (ui::CleaningStep* step : panel->steps())
+    for (QComboBox* combo : step->findChildren<QComboBox*>()) {
+      for (int i = 0; i < combo->count(); ++i) {
+        ++methods;
+        const QString tip = combo->itemData(i, Qt::ToolTipRole).toString();
+        EXPECT_FALSE(tip.isEmpty()) << step->title().toStdString() << ": " << combo->itemText(i).toStdString();
+        EXPECT_FALSE(combo->itemText(i).contains(QStringLiteral("eqs"), Qt::CaseInsensitive))
+            << combo->itemText(i).toStdString();
+        EXPECT_FALSE(tip.contains(QStringLiteral("eqs"), Qt::CaseInsensitive)) << tip.toStdString();
+      }
+      EXPECT_EQ(combo->toolTip(), combo->currentData(Qt::ToolTipRole).toString()) << "the chosen method's tip";
+    }
+  EXPECT_EQ(methods, 2 + 9 + 4) << "spike detectors, fill methods, smoothers";
+}
+
 } // namespace
 } // namespace mocap

@@ -15,6 +15,7 @@
 #include "views/sample_colors.h"
 #include "views/selection_palette.h"
 
+#include "mocap/cleaning/spike_detection.h"
 #include "mocap/model/sample_patch.h"
 
 #include <QAction>
@@ -100,6 +101,41 @@ TEST(CurveView, TheValueRangeHoldsAPreviewFarOutsideTheCurve)
   // A preview for a marker that is not selected is not drawn, so it does not stretch the range.
   doc.setPreview({makePatch(0, {600}, Eigen::Matrix<double, 1, 3>::Constant(500.0), SampleState::Filled)});
   EXPECT_LT(view.valueRange(2)->second, 200.0);
+}
+
+// A bad point's repair is one sample: its preview is the dashed line from the kept neighbours
+// through the repaired value, as a fill's or a smoothing's is, not a lone dot.
+TEST(CurveView, ARepairedBadPointPreviewsAsADashedLine)
+{
+  ui::TakeDocument doc;
+  Take take = syntheticTake(2000, 2);
+  const Eigen::Vector3d truth = take.position(450, 0);
+  take.setPosition(450, 0, truth + Eigen::Vector3d(0.0, 0.0, 15.0));  // a spike in z
+  doc.setTake(std::move(take));
+  doc.setSelection({0});
+  ui::CurveView view(doc);
+  view.resize(900, 420);
+  view.setVisibleRange(440, 460);
+  QImage plain(view.size(), QImage::Format_ARGB32_Premultiplied);
+  view.render(&plain);
+  doc.setPreview(replaceSpikes(doc.take(), {SpikeFlag{0, 450}}));
+  ASSERT_EQ(doc.preview().size(), 1u);
+  ASSERT_EQ(doc.preview().front().size(), 1u);
+  QImage previewed(view.size(), QImage::Format_ARGB32_Premultiplied);
+  view.render(&previewed);
+  // Pixels changed between the neighbours' columns, away from the repaired sample's dot.
+  const auto before = view.pointOf(0, 449, 2), spike = view.pointOf(0, 450, 2), after = view.pointOf(0, 451, 2);
+  ASSERT_TRUE(before && spike && after);
+  const int left = static_cast<int>(before->x()) + 4, right = static_cast<int>(after->x()) - 4;
+  const int dot = static_cast<int>(spike->x());
+  int changed = 0;
+  for (int x = left; x <= right; ++x) {
+    if (std::abs(x - dot) <= 5)
+      continue;
+    for (int y = 0; y < view.height(); ++y)
+      changed += plain.pixel(x, y) != previewed.pixel(x, y) ? 1 : 0;
+  }
+  EXPECT_GT(changed, 150) << "a dashed line on each side of the repaired sample, on the z strip";
 }
 
 TEST(CurveView, HoverReadOutNamesMarkerFrameAndValue)

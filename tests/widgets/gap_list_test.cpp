@@ -7,6 +7,7 @@
 #include "sample_window.h"
 #include "models/gap_table_model.h"
 #include "panels/cleaning_panel.h"
+#include "panels/gap_fill_step.h"
 #include "panels/gap_list_panel.h"
 #include "views/curve_view.h"
 #include "views/timeline_widget.h"
@@ -17,6 +18,8 @@
 
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QCheckBox>
 #include <QSettings>
 #include <QSortFilterProxyModel>
@@ -99,8 +102,14 @@ TEST_F(GapList, ShowsExactlyTheGapsCoreFinds)
   EXPECT_EQ(cell(row, GapTableModel::FirstFrameColumn), "1723");
   EXPECT_EQ(cell(row, GapTableModel::LengthColumn), "66");
   EXPECT_EQ(cell(row, GapTableModel::SecondsColumn), "0.66");
-  EXPECT_EQ(cell(row, GapTableModel::StateColumn), "open");
+  EXPECT_EQ(cell(row, GapTableModel::StateColumn), "over the 0.5 s limit") << "66 frames at 100 Hz";
+  EXPECT_EQ(model->refusalAt(row), UnfilledCause::TooLong);
   EXPECT_EQ(cell(row, GapTableModel::MethodColumn), GapTableModel::methodTitle(FillOptions{}.method));
+  const int shorter = rowOf("section3-1", 887);  // 33 frames
+  EXPECT_EQ(cell(shorter, GapTableModel::StateColumn), "open");
+  EXPECT_EQ(model->index(shorter, GapTableModel::AllowColumn).data(Qt::CheckStateRole), QVariant())
+      << "nothing to allow";
+  EXPECT_EQ(model->index(row, GapTableModel::AllowColumn).data(Qt::CheckStateRole).toInt(), Qt::Unchecked);
 }
 
 TEST_F(GapList, SortingByLengthPutsTheLongestFirst)
@@ -211,7 +220,7 @@ TEST_F(GapList, FillingTwoCheckedGapsIsOneUndoStepThatRestoresBitForBit)
 TEST_F(GapList, EachGapIsFilledWithItsOwnMethod)
 {
   const Take before = doc().take();
-  const int linear = rowOf("section4-2", 1106), spline = rowOf("section13-2", 877);
+  const int linear = rowOf("section3-1", 887), spline = rowOf("section13-2", 877);  // 33 and 30 frames
   ASSERT_GE(linear, 0);
   ASSERT_GE(spline, 0);
   const Gap linearGap = model->gapAt(linear), splineGap = model->gapAt(spline);
@@ -246,7 +255,11 @@ TEST_F(GapList, AGapThatCannotBeFilledSaysWhy)
   const Gap gap = model->gapAt(row);
   ASSERT_TRUE(gap.atEdge);
   model->setMethod(row, FillMethod::Linear);
-  FillOptions options;  // as the panel fills a picked gap: no bulk limits, so only the method says no
+  // The rules leave it open first; allowed past them, only the method says no.
+  EXPECT_NE(model->refusalAt(row), UnfilledCause::None);
+  model->setAllowed(row, true);
+  EXPECT_TRUE(cell(row, GapTableModel::StateColumn).startsWith("allowed: ")) << cell(row, GapTableModel::StateColumn).toStdString();
+  FillOptions options;  // as the panel fills an allowed gap: no rules, so only the method says no
   options.method = FillMethod::Linear;
   options.maxGapSeconds = 0.0;
   options.extrapolate = true;
@@ -268,23 +281,140 @@ TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
   ASSERT_TRUE(window->showDock(QStringLiteral("gapListDock")));
   QTest::qWait(50);
   const Take before = doc().take();
-  const int row = rowOf("section5-1", 1723);
+  const int row = rowOf("section3-1", 887);
   QTableView* view = panel->view();
   view->selectRow(static_cast<QSortFilterProxyModel*>(view->model())->mapFromSource(model->index(row, 0)).row());
   ASSERT_EQ(panel->scopeRows(), std::vector<int>{row});
   panel->waitUntilIdle();
   ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();
   EXPECT_EQ(doc().preview().front().marker, model->gapAt(row).marker);
-  EXPECT_EQ(doc().preview().front().size(), 66u);
+  EXPECT_EQ(doc().preview().front().size(), 33u);
   EXPECT_EQ(model->stateAt(row), GapTableModel::FillState::Previewed);
-  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap previewed, 66 samples"));
+  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap previewed, 33 samples"));
   EXPECT_TRUE(sameSamples(doc().take(), before));
   EXPECT_EQ(doc().undoStack()->count(), 0);
   panel->fill();
   panel->waitUntilIdle();
-  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 66 samples"));
+  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 33 samples"));
   EXPECT_EQ(doc().undoStack()->count(), 1);
   EXPECT_TRUE(doc().preview().empty());
+}
+
+TEST_F(GapList, AGapOverTheLimitIsPreviewedAndFilledOnlyWhenAllowed)
+{
+  window->cleaningPanel()->waitForPreview();  // its preview of the open take comes first
+  ASSERT_TRUE(window->showDock(QStringLiteral("gapListDock")));
+  QTest::qWait(50);
+  const Take before = doc().take();
+  const int row = rowOf("section5-1", 1723);  // 66 frames: over the 0.5 s limit
+  QTableView* view = panel->view();
+  view->selectRow(static_cast<QSortFilterProxyModel*>(view->model())->mapFromSource(model->index(row, 0)).row());
+  panel->waitUntilIdle();
+  EXPECT_NE(model->stateAt(row), GapTableModel::FillState::Previewed) << "nothing invented, not even in a preview";
+  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap left open: over the 0.5 s limit"));
+  panel->fill();
+  panel->waitUntilIdle();
+  EXPECT_EQ(doc().undoStack()->count(), 0);
+  EXPECT_TRUE(sameSamples(doc().take(), before));
+
+  ASSERT_TRUE(model->setData(model->index(row, GapTableModel::AllowColumn), Qt::Checked, Qt::CheckStateRole));
+  EXPECT_EQ(cell(row, GapTableModel::StateColumn), QStringLiteral("allowed: over the 0.5 s limit"));
+  panel->waitUntilIdle();
+  ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();
+  EXPECT_EQ(doc().preview().front().size(), 66u);
+  // Declined, nothing is filled; confirmed, the 66 samples are, as one undoable step.
+  QString asked;
+  test::whenModal<QMessageBox>([&asked](QMessageBox* box) {
+    asked = box->text();
+    box->button(QMessageBox::No)->click();
+  });
+  panel->fill();
+  panel->waitUntilIdle();
+  EXPECT_TRUE(asked.startsWith(QStringLiteral("Invent 66 samples: section5-1 frames 1723–1788?"))) << asked.toStdString();
+  EXPECT_EQ(doc().undoStack()->count(), 0);
+  EXPECT_TRUE(sameSamples(doc().take(), before));
+  test::whenModal<QMessageBox>([](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
+  panel->fill();
+  panel->waitUntilIdle();
+  ASSERT_EQ(doc().undoStack()->count(), 1) << panel->statusText().toStdString();
+  EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 66 samples"));
+  const Eigen::Index marker = *before.markerIndex("section5-1");
+  EXPECT_TRUE(doc().take().valid().col(marker).segment(1722, 66).all());
+  doc().undoStack()->undo();
+  EXPECT_TRUE(sameSamples(doc().take(), before));
+}
+
+// The stray marker: seen rarely, with long gaps. Check Shown + Fill on it invents nothing until
+// its gaps are allowed one by one, and then only after the confirmation names the samples.
+TEST_F(GapList, CheckShownAndFillOnAStrayMarkerFillsNothingWithoutTheOverride)
+{
+  const Take before = doc().take();
+  const Eigen::Index stray = *before.markerIndex("Unlabeled1");
+  auto* filter = panel->findChild<QLineEdit*>(QStringLiteral("gapFilter"));
+  ASSERT_NE(filter, nullptr);
+  filter->setText(QStringLiteral("Unlabeled1"));
+  QPushButton* checkShown = nullptr;
+  for (QPushButton* button : panel->findChildren<QPushButton*>())
+    if (button->text() == QStringLiteral("Check Shown"))
+      checkShown = button;
+  ASSERT_NE(checkShown, nullptr);
+  checkShown->click();
+  const std::vector<int> checked = model->checkedRows();
+  ASSERT_GE(checked.size(), 2u);
+  for (int row : checked) {
+    EXPECT_EQ(model->gapAt(row).marker, stray);
+    EXPECT_NE(model->refusalAt(row), UnfilledCause::None) << "every gap of the stray marker is past a rule";
+    EXPECT_EQ(cell(row, GapTableModel::StateColumn), model->refusalText(row));
+  }
+  panel->fill();
+  panel->waitUntilIdle();
+  EXPECT_EQ(doc().undoStack()->count(), 0) << panel->statusText().toStdString();
+  EXPECT_TRUE(sameSamples(doc().take(), before));
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("left open"))) << panel->statusText().toStdString();
+
+  // Allow one interior gap (the context menu's "Allow Filling This Gap" does the same).
+  int allowed = -1;
+  for (int row : checked)
+    if (!model->gapAt(row).atEdge && model->gapAt(row).length > 1 &&
+        (allowed < 0 || model->gapAt(row).length < model->gapAt(allowed).length))
+      allowed = row;
+  ASSERT_GE(allowed, 0);
+  const Gap gap = model->gapAt(allowed);  // 7 frames
+  model->setMethod(allowed, FillMethod::Linear);  // between its two seen samples, whatever the neighbours do
+  model->setAllowed(allowed, true);
+  QString asked;
+  test::whenModal<QMessageBox>([&asked](QMessageBox* box) {
+    asked = box->text();
+    box->button(QMessageBox::Yes)->click();
+  });
+  panel->fill();
+  panel->waitUntilIdle();
+  const QString expected = QStringLiteral("Invent %1 samples: Unlabeled1 frames %2–%3?")
+                               .arg(gap.length)
+                               .arg(before.firstFrame() + gap.firstFrame)
+                               .arg(before.firstFrame() + gap.firstFrame + gap.length - 1);
+  EXPECT_TRUE(asked.startsWith(expected)) << asked.toStdString() << " / " << expected.toStdString();
+  ASSERT_EQ(doc().undoStack()->count(), 1) << panel->statusText().toStdString();
+  const Take& after = doc().take();
+  for (Eigen::Index f = 0; f < before.frameCount(); ++f) {
+    const bool inGap = f >= gap.firstFrame && f < gap.firstFrame + gap.length;
+    ASSERT_EQ(after.isValid(f, stray), inGap || before.isValid(f, stray)) << f << ": only the allowed gap is filled";
+  }
+  doc().undoStack()->undo();
+  EXPECT_TRUE(sameSamples(doc().take(), before)) << "the fill stays undoable";
+}
+
+TEST_F(GapList, FollowsTheCleaningPanelsRules)
+{
+  const int row = rowOf("section5-1", 1723);
+  EXPECT_EQ(model->refusalAt(row), UnfilledCause::TooLong);
+  auto* step = window->cleaningPanel()->step<ui::GapFillStep>();
+  ASSERT_NE(step, nullptr);
+  step->setMaxGapSeconds(1.0);
+  EXPECT_EQ(model->refusalAt(rowOf("section5-1", 1723)), UnfilledCause::None);
+  EXPECT_EQ(cell(rowOf("section5-1", 1723), GapTableModel::StateColumn), QStringLiteral("open"));
+  step->setMaxGapSeconds(0.25);
+  EXPECT_EQ(cell(rowOf("section3-1", 887), GapTableModel::StateColumn), QStringLiteral("over the 0.25 s limit"));
 }
 
 TEST_F(GapList, FollowsEditsOfTheTake)

@@ -1,6 +1,7 @@
 #include "models/gap_table_model.h"
 
 #include "document/take_document.h"
+#include "models/fill_rule_text.h"
 
 #include "mocap/model/valid_runs.h"
 
@@ -30,12 +31,31 @@ QString GapTableModel::methodTitle(FillMethod method)
   case FillMethod::Pca: return tr("PCA (marker correlations)");
   case FillMethod::Spline: return tr("Cubic spline");
   case FillMethod::Linear: return tr("Linear");
-  case FillMethod::Zhang3: return tr("Paper method: three neighbours (Zhang et al., eqs 3–5)");
-  case FillMethod::ZhangN: return tr("Paper method: n neighbours (Zhang et al., eqs 6–7)");
+  case FillMethod::Zhang3: return tr("Paper method: three neighbours (Zhang et al., muscle mechanism)");
+  case FillMethod::ZhangN: return tr("Paper method: n neighbours (Zhang et al., muscle mechanism)");
   case FillMethod::Guenter: return tr("Neighbour average (Guenter)");
   case FillMethod::LinOuhyoung: return tr("Distance-weighted neighbours (Lin–Ouhyoung)");
   }
   return QString::fromUtf8(fillMethodName(method).data(), static_cast<int>(fillMethodName(method).size()));
+}
+
+QString GapTableModel::methodTip(FillMethod method)
+{
+  switch (method) {
+  case FillMethod::Auto:
+    return tr("Blends regression on the markers moving most alike and the rigid motion of the nearest ones, "
+              "weighted by how well each predicts the marker's own data beside the gap");
+  case FillMethod::Rigid: return tr("Carries the rigid motion of the nearest markers seen through the gap");
+  case FillMethod::Pca: return tr("Rebuilds the gap from a low-rank model of how all markers move together");
+  case FillMethod::Spline: return tr("A cubic curve through two seen samples on each side of the gap");
+  case FillMethod::Linear: return tr("A straight line between the samples on each side of the gap");
+  case FillMethod::Zhang3:
+    return tr("Follows the displacements of the three nearest markers, as skin moves with the muscle below it");
+  case FillMethod::ZhangN: return tr("Like three neighbours, with the n nearest markers weighted by distance");
+  case FillMethod::Guenter: return tr("Moves the marker by the average displacement of its nearest neighbours");
+  case FillMethod::LinOuhyoung: return tr("Moves the marker by its neighbours' displacements, nearer ones weighing more");
+  }
+  return {};
 }
 
 int GapTableModel::rowCount(const QModelIndex& parent) const
@@ -80,6 +100,30 @@ std::vector<GapTableModel::Row> GapTableModel::currentRows() const
   return rows;
 }
 
+void GapTableModel::judge(std::vector<Row>& rows) const
+{
+  const Take& take = m_document.take();
+  std::vector<Gap> gaps;
+  std::vector<Row*> open;
+  for (Row& row : rows)
+    if (!row.filled) {
+      gaps.push_back(row.gap);
+      open.push_back(&row);
+    }
+  std::vector<GapFillReport> reports;
+  try {
+    reports = checkFillRules(take, gaps, m_rules);
+  } catch (const std::exception&) {  // e.g. no frame rate: the fill itself will say so
+    reports.clear();
+  }
+  for (std::size_t i = 0; i < open.size(); ++i) {
+    Row& row = *open[i];
+    row.refusal = i < reports.size() ? reports[i].cause : UnfilledCause::None;
+    row.refusalText = row.refusal == UnfilledCause::None ? QString() : fillRuleText(reports[i], take, m_rules);
+    row.allowed = row.allowed && row.refusal != UnfilledCause::None;
+  }
+}
+
 void GapTableModel::rebuild()
 {
   std::vector<Row> rows = currentRows();
@@ -96,9 +140,11 @@ void GapTableModel::rebuild()
     if (row.filled || old.filled || old.gap.length != row.gap.length)
       continue;
     row.checked = old.checked;
+    row.allowed = old.allowed;
     row.unfillable = old.unfillable;
     row.note = old.note;
   }
+  judge(rows);
   const bool sameRows = rows.size() == m_rows.size() &&
                         std::equal(rows.begin(), rows.end(), m_rows.begin(), [](const Row& a, const Row& b) {
                           return a.gap.marker == b.gap.marker && a.gap.firstFrame == b.gap.firstFrame;
@@ -194,6 +240,41 @@ void GapTableModel::setMethod(int row, FillMethod method)
   emit choicesChanged();
 }
 
+void GapTableModel::setFillRules(const FillOptions& rules)
+{
+  m_rules = rules;
+  judge(m_rows);
+  if (!m_rows.empty())
+    emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+  emit choicesChanged();
+}
+
+UnfilledCause GapTableModel::refusalAt(int row) const
+{
+  return m_rows.at(static_cast<std::size_t>(row)).refusal;
+}
+
+QString GapTableModel::refusalText(int row) const
+{
+  return m_rows.at(static_cast<std::size_t>(row)).refusalText;
+}
+
+bool GapTableModel::isAllowed(int row) const
+{
+  return m_rows.at(static_cast<std::size_t>(row)).allowed;
+}
+
+void GapTableModel::setAllowed(int row, bool allowed)
+{
+  Row& r = m_rows.at(static_cast<std::size_t>(row));
+  allowed = allowed && !r.filled && r.refusal != UnfilledCause::None;
+  if (r.allowed == allowed)
+    return;
+  r.allowed = allowed;
+  emit dataChanged(index(row, AllowColumn), index(row, StateColumn));
+  emit choicesChanged();
+}
+
 std::vector<int> GapTableModel::checkedRows() const
 {
   std::vector<int> rows;
@@ -221,6 +302,8 @@ void GapTableModel::setReports(const std::vector<GapFillReport>& reports)
     const int row = rowOf(report.gap.marker, report.gap.firstFrame);
     if (row < 0 || m_rows[static_cast<std::size_t>(row)].gap.length != report.gap.length)
       continue;
+    if (!report.filled && report.cause != UnfilledCause::Method)
+      continue;  // left open by the rules: the row says so already
     Row& r = m_rows[static_cast<std::size_t>(row)];
     r.unfillable = !report.filled;
     r.note = QString::fromStdString(report.filled ? report.method : report.reason);
@@ -237,6 +320,8 @@ QString GapTableModel::stateText(const Row& row) const
     return tr("previewed");
   if (row.unfillable)
     return tr("cannot fill: %1").arg(row.note);
+  if (row.refusal != UnfilledCause::None)
+    return row.allowed ? tr("allowed: %1").arg(row.refusalText) : row.refusalText;
   return tr("open");
 }
 
@@ -265,6 +350,7 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
     case LengthColumn: return static_cast<qlonglong>(row.gap.length);
     case SecondsColumn: return seconds;
     case MethodColumn: return row.filled ? QString() : methodTitle(row.method);
+    case AllowColumn: return row.allowed;
     case StateColumn: return static_cast<int>(stateAt(index.row()));
     default: return {};
     }
@@ -273,14 +359,23 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
     return static_cast<int>(row.method);
   if (role == Qt::CheckStateRole && index.column() == MarkerColumn && !row.filled)
     return row.checked ? Qt::Checked : Qt::Unchecked;
+  if (role == Qt::CheckStateRole && index.column() == AllowColumn && !row.filled &&
+      row.refusal != UnfilledCause::None)
+    return row.allowed ? Qt::Checked : Qt::Unchecked;
+  if (role == Qt::ToolTipRole && index.column() == AllowColumn && !row.filled &&
+      row.refusal != UnfilledCause::None)
+    return tr("Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples")
+        .arg(row.refusalText);
   if (role == Qt::ToolTipRole && index.column() == StateColumn && !row.note.isEmpty())
     return row.unfillable ? row.note : tr("Filled by: %1").arg(row.note);
   if (role == Qt::ToolTipRole && index.column() == MethodColumn && !row.filled)
-    return tr("%1 — double-click to choose how this gap is filled").arg(methodTitle(row.method));
+    return tr("%1: %2. Double-click to choose how this gap is filled")
+        .arg(methodTitle(row.method), methodTip(row.method));
   if (role == Qt::ForegroundRole) {
     if (row.filled)
       return QColor(Qt::gray);
-    if (index.column() == StateColumn && row.unfillable && !row.previewed)
+    if (index.column() == StateColumn && !row.previewed &&
+        (row.unfillable || (row.refusal != UnfilledCause::None && !row.allowed)))
       return QColor(190, 40, 40);
   }
   if (role == Qt::TextAlignmentRole && (index.column() == FirstFrameColumn || index.column() == LengthColumn ||
@@ -298,7 +393,9 @@ QVariant GapTableModel::headerData(int section, Qt::Orientation orientation, int
     case LengthColumn: return tr("Length in frames");
     case SecondsColumn: return tr("Length in seconds");
     case MethodColumn: return tr("How the gap is filled (double-click to choose)");
-    case StateColumn: return tr("Open, previewed, filled, or why it cannot be filled");
+    case AllowColumn:
+      return tr("Fill a gap the rules leave open (too long, at the take's ends, a marker seen too rarely)");
+    case StateColumn: return tr("Open, previewed, filled, or why it is not filled");
     default: return {};
     }
   }
@@ -310,6 +407,7 @@ QVariant GapTableModel::headerData(int section, Qt::Orientation orientation, int
   case LengthColumn: return tr("Frames");
   case SecondsColumn: return tr("s");
   case MethodColumn: return tr("Method");
+  case AllowColumn: return tr("Allow");
   case StateColumn: return tr("State");
   default: return {};
   }
@@ -324,6 +422,8 @@ Qt::ItemFlags GapTableModel::flags(const QModelIndex& index) const
     flags |= Qt::ItemIsUserCheckable;
   if (index.column() == MethodColumn)
     flags |= Qt::ItemIsEditable;
+  if (index.column() == AllowColumn && m_rows[static_cast<std::size_t>(index.row())].refusal != UnfilledCause::None)
+    flags |= Qt::ItemIsUserCheckable;
   return flags;
 }
 
@@ -333,6 +433,10 @@ bool GapTableModel::setData(const QModelIndex& index, const QVariant& value, int
     return false;
   if (role == Qt::CheckStateRole && index.column() == MarkerColumn) {
     setChecked(index.row(), static_cast<Qt::CheckState>(value.toInt()) == Qt::Checked);
+    return true;
+  }
+  if (role == Qt::CheckStateRole && index.column() == AllowColumn) {
+    setAllowed(index.row(), static_cast<Qt::CheckState>(value.toInt()) == Qt::Checked);
     return true;
   }
   if (role == Qt::EditRole && index.column() == MethodColumn) {

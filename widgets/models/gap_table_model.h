@@ -21,7 +21,10 @@ class TakeDocument;
 /// (MethodColumn, Qt::EditRole gives and takes the FillMethod as int); they are view state, not
 /// edits, and survive edits of other gaps (kept by marker label and first frame). The state column
 /// says open, previewed (the document's preview covers the gap), filled, or why the last fill
-/// computation could not fill it. Sort through a QSortFilterProxyModel on Qt::UserRole (raw
+/// computation could not fill it. The fill rules (mocap::checkFillRules with the Cleaning panel's
+/// longest gap, least seen and extrapolation; FillOptions' defaults until setFillRules) leave some
+/// gaps open: their state says why ("over the 0.5 s limit") and the Allow column
+/// (Qt::CheckStateRole) is the user's per-gap override. Sort through a QSortFilterProxyModel on Qt::UserRole (raw
 /// values). Rebuilt on every change of the take: O(#frames · #markers).
 class GapTableModel final : public QAbstractTableModel
 {
@@ -35,6 +38,7 @@ public:
     LengthColumn,
     SecondsColumn,
     MethodColumn,
+    AllowColumn,
     StateColumn,
     ColumnCount
   };
@@ -68,12 +72,24 @@ public:
   [[nodiscard]] std::vector<int> checkedRows() const;
   /// The row of the open gap of `marker` that starts at `firstFrame`, or −1.
   [[nodiscard]] int rowOf(Eigen::Index marker, Eigen::Index firstFrame) const;
+  /// The rules gaps are judged by (only longest gap, extrapolation and least seen matter).
+  void setFillRules(const FillOptions& rules);
+  [[nodiscard]] const FillOptions& fillRules() const { return m_rules; }
+  /// Why the rules leave the open gap of `row` open (None: they let it be filled).
+  [[nodiscard]] UnfilledCause refusalAt(int row) const;
+  /// The rule's reason in words ("over the 0.5 s limit"); empty when none applies.
+  [[nodiscard]] QString refusalText(int row) const;
+  /// The user's override of the rules for the gap of `row`; only a refused gap can be allowed.
+  [[nodiscard]] bool isAllowed(int row) const;
+  void setAllowed(int row, bool allowed);
   /// What the last fill computation found for these gaps: the reason of each it could not fill,
   /// the method (auto names its ingredients) of each it could.
   void setReports(const std::vector<GapFillReport>& reports);
 
   /// The method's name in the UI, e.g. "Rigid neighbours".
   [[nodiscard]] static QString methodTitle(FillMethod method);
+  /// What the method does, in one line (its tooltip wherever methods are chosen).
+  [[nodiscard]] static QString methodTip(FillMethod method);
 
 signals:
   /// A check box or a method changed: what a fill of the checked gaps would do changed.
@@ -86,6 +102,9 @@ private:
     std::string label;
     bool filled = false;  // a run of filled samples, not a gap
     bool checked = false;
+    bool allowed = false;  // filled even though the rules leave it open
+    UnfilledCause refusal = UnfilledCause::None;
+    QString refusalText;
     FillMethod method = FillOptions{}.method;
     bool previewed = false;
     bool unfillable = false;
@@ -93,10 +112,13 @@ private:
   };
   void rebuild();
   void updatePreviewed();
+  /// Judges the open gaps of `rows` by m_rules. O(#frames · #markers).
+  void judge(std::vector<Row>& rows) const;
   [[nodiscard]] std::vector<Row> currentRows() const;
   [[nodiscard]] QString stateText(const Row& row) const;
 
   TakeDocument& m_document;
+  FillOptions m_rules;
   std::vector<Row> m_rows;
 };
 

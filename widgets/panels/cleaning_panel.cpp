@@ -161,6 +161,8 @@ bool CleaningPanel::busy() const
 
 void CleaningPanel::schedule()
 {
+  if (!m_applying)
+    m_applied.clear();  // a setting or the take changed: the next pass's preview speaks again
   ++m_generation;  // whatever is running or shown is stale now
   if (m_live->isChecked() && isVisible())
     m_debounce->start();
@@ -192,7 +194,8 @@ void CleaningPanel::start()
   }
   m_runningGeneration = m_generation;
   const JobControl control = m_progress->begin();
-  m_status->setText(tr("Computing…"));
+  if (m_applied.isEmpty())
+    m_status->setText(tr("Computing…"));
   step->setScope(scope());
   m_watcher.setFuture(QtConcurrent::run([job = step->job(), take = m_document.take(), control] {
     try {
@@ -221,12 +224,21 @@ void CleaningPanel::onFinished()
   int samples = 0;
   for (const SamplePatch& p : m_result.patches)
     samples += static_cast<int>(p.size());
-  m_status->setText(tr("%1 — %n sample(s) would change", nullptr, samples).arg(m_result.summary));
+  const QString preview = tr("%1 — %n sample(s) would change", nullptr, samples).arg(m_result.summary);
+  if (m_applied.isEmpty())
+    m_status->setText(preview);
+  else  // what was done stays first; a next pass that would change more follows
+    m_status->setText(samples == 0 ? m_applied : m_applied + QLatin1Char('\n') + tr("Next pass: %1").arg(preview));
   if (CleaningStep* step = currentStep())
     step->showResult(m_result);
   if (m_result.detection)  // flags are the last detection's, on every tab, until the next one
     m_document.setFlags(m_result.flags);
   m_document.setPreview(m_result.patches);
+}
+
+QString CleaningPanel::statusText() const
+{
+  return m_status->text();
 }
 
 void CleaningPanel::cancel()
@@ -317,8 +329,13 @@ int CleaningPanel::apply()
     return 0;
   }
   step->applied(patches);
+  const QString done = tr("Applied: %1").arg(step->appliedSummary(patches, m_result));
+  m_applying = true;
   m_document.undoStack()->push(makeRecordedEdit(m_document, std::move(patches), step->title(),
                                                 step->title().toStdString(), shownParameters(*step)));
+  m_applying = false;
+  m_applied = done;
+  m_status->setText(m_applied);
   return samples;
 }
 

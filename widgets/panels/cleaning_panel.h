@@ -23,6 +23,8 @@ class TakeDocument;
 /// preview over the views without touching the take; Apply pushes it as one undoable command.
 /// A newer request supersedes a running one, and Cancel stops it: the computation itself stops at
 /// its next checkpoint (JobControl) and its result is dropped.
+/// After Apply the status says what was done (the step's appliedSummary), not what the next pass
+/// would do, until a setting or the take changes again.
 /// A detection's flags (bad points) become the document's flags and stay on every tab until the
 /// next detection or a repair of them.
 class CleaningPanel final : public QWidget
@@ -60,6 +62,8 @@ public:
   /// Blocks until the running computation (if any) has delivered its preview. For tests.
   void waitForPreview();
   [[nodiscard]] const StepResult& lastResult() const { return m_result; }
+  /// The status line: what the preview would do, or what the last Apply did.
+  [[nodiscard]] QString statusText() const;
 
 protected:
   void showEvent(QShowEvent* event) override;
@@ -90,6 +94,8 @@ private:
   unsigned m_generation = 0;       // bumped by every request and by edits of the take
   unsigned m_runningGeneration = 0;
   unsigned m_resultGeneration = ~0u;
+  QString m_applied;        // what the last Apply did, until a setting or the take changes
+  bool m_applying = false;  // the Apply's own change of the take keeps m_applied
 };
 
 } // namespace mocap::ui

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+class QComboBox;
+
 namespace mocap::ui {
 
 /// A line a step lists for review (e.g. a gap left open and why), pointing at one sample.
@@ -52,6 +54,21 @@ inline bool StepScope::hasMarker(Eigen::Index marker) const
   return !markersOnly || std::binary_search(markers.begin(), markers.end(), marker);
 }
 
+/// The samples and the distinct markers `patches` hold. O(total patch size + #patches log #patches).
+struct PatchCounts
+{
+  int samples = 0;
+  int markers = 0;
+};
+[[nodiscard]] PatchCounts countPatches(const std::vector<SamplePatch>& patches);
+/// "415 samples repaired on 37 markers" from `one` ("1 sample repaired") and `many` ("%1 samples
+/// repaired"): singular and plural spelled out, as the source language has no catalogue. O(1).
+[[nodiscard]] QString samplesOnMarkers(const PatchCounts& counts, const QString& one, const QString& many);
+
+/// Makes `combo`'s own tooltip its current item's (Qt::ToolTipRole), so the chosen method says
+/// what it does without opening the list. O(1) per change.
+void tipFollowsCurrentItem(QComboBox& combo);
+
 /// A computation of a step with the parameters it had when job() was called; runs on a worker
 /// thread on its own copy of the take, so it must not touch widgets. It passes the JobControl to
 /// the core step, which reports progress and stops (JobCancelled) when the panel cancels.
@@ -82,6 +99,10 @@ public:
   virtual void showResult(const StepResult& result) { (void)result; }
   /// Told the patches Apply pushed (before the push changes the take). Called on the UI thread.
   virtual void applied(const std::vector<SamplePatch>& patches) { (void)patches; }
+  /// What Apply did, in words, counted from the patches it pushed (`applied`) and the result they
+  /// came from, e.g. "415 samples changed on 37 markers". The panel shows it until a setting or
+  /// the take changes. Called on the UI thread before the push. O(total patch size).
+  [[nodiscard]] virtual QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const;
   /// Puts this step's current parameters into `options` (File ▸ Save Cleaning Preset…, the
   /// preset `mocap batch --preset` reads). A step that is no pipeline step leaves it alone.
   virtual void addToPreset(CleanOptions& options) const { (void)options; }

@@ -1,6 +1,7 @@
 #include "panels/gap_fill_step.h"
 
 #include "document/take_document.h"
+#include "models/fill_rule_text.h"
 #include "models/gap_table_model.h"
 
 #include "mocap/cleaning/fill/gap_fill.h"
@@ -26,39 +27,22 @@ namespace {
 constexpr int kMarkerRole = Qt::UserRole;
 constexpr int kFrameRole = Qt::UserRole + 1;
 
-// "0.5 s" as a technician writes it (no trailing zeros).
-QString seconds(double value)
+// "No gap filled", "1 gap filled, 66 samples": singular and plural spelled out, as the source
+// language has no catalogue.
+QString filledText(int filledGaps, int samples)
 {
-  return QCoreApplication::translate("GapFillStep", "%1 s").arg(QString::number(value, 'g', 4));
-}
-
-// Why a gap was left open, in the panel's words.
-QString causeText(const GapFillReport& report, const Take& take, double maxGapSeconds)
-{
-  switch (report.cause) {
-  case UnfilledCause::TooLong:
-    return QCoreApplication::translate("GapFillStep", "longer than %1").arg(seconds(maxGapSeconds));
-  case UnfilledCause::EdgeGap: return QCoreApplication::translate("GapFillStep", "edge gap (extrapolation off)");
-  case UnfilledCause::RarelyValid: {
-    const double seen = 100.0 * static_cast<double>(take.valid().col(report.gap.marker).count()) /
-                        static_cast<double>(std::max<Eigen::Index>(take.frameCount(), 1));
-    return QCoreApplication::translate("GapFillStep", "marker seen in only %1 % of the take")
-        .arg(QString::number(seen, 'f', 1));
-  }
-  case UnfilledCause::NeverValid: return QCoreApplication::translate("GapFillStep", "marker never seen");
-  case UnfilledCause::Method:
-  case UnfilledCause::None: break;
-  }
-  return QString::fromStdString(report.reason);
+  if (filledGaps == 0)
+    return QCoreApplication::translate("GapFillStep", "No gap filled");
+  return (filledGaps == 1 ? QCoreApplication::translate("GapFillStep", "1 gap filled")
+                          : QCoreApplication::translate("GapFillStep", "%1 gaps filled").arg(filledGaps)) +
+         (samples == 1 ? QCoreApplication::translate("GapFillStep", ", 1 sample")
+                       : QCoreApplication::translate("GapFillStep", ", %1 samples").arg(samples));
 }
 
 // "1 gap filled, 66 samples; 3 left open (2 longer than 0.5 s, 1 edge gap)".
 QString summary(int filledGaps, int samples, const std::array<int, 6>& openByCause, double maxGapSeconds)
 {
-  const QString text =
-      filledGaps == 0 ? QCoreApplication::translate("GapFillStep", "No gap filled")
-                      : QCoreApplication::translate("GapFillStep", "%n gap(s) filled", nullptr, filledGaps) +
-                            QCoreApplication::translate("GapFillStep", ", %n sample(s)", nullptr, samples);
+  const QString text = filledText(filledGaps, samples);
   int open = 0;
   for (int count : openByCause)
     open += count;
@@ -67,7 +51,7 @@ QString summary(int filledGaps, int samples, const std::array<int, 6>& openByCau
   QStringList causes;
   const auto count = [&](UnfilledCause cause) { return openByCause[static_cast<std::size_t>(cause)]; };
   if (const int n = count(UnfilledCause::TooLong))
-    causes << QCoreApplication::translate("GapFillStep", "%1 longer than %2").arg(n).arg(seconds(maxGapSeconds));
+    causes << QCoreApplication::translate("GapFillStep", "%1 longer than %2").arg(n).arg(secondsText(maxGapSeconds));
   if (const int n = count(UnfilledCause::EdgeGap))
     causes << QCoreApplication::translate("GapFillStep", "%n edge gap(s)", nullptr, n);
   if (const int n = count(UnfilledCause::RarelyValid))
@@ -90,8 +74,11 @@ GapFillStep::GapFillStep(TakeDocument& document, QWidget* parent) : CleaningStep
   m_method->setMinimumContentsLength(18);
   // The order a technician tries them in; the names are the gap list's, so both read the same.
   for (FillMethod method : {FillMethod::Auto, FillMethod::Rigid, FillMethod::Pca, FillMethod::Spline, FillMethod::Linear,
-                            FillMethod::Zhang3, FillMethod::ZhangN, FillMethod::Guenter, FillMethod::LinOuhyoung})
+                            FillMethod::Zhang3, FillMethod::ZhangN, FillMethod::Guenter, FillMethod::LinOuhyoung}) {
     m_method->addItem(GapTableModel::methodTitle(method), static_cast<int>(method));
+    m_method->setItemData(m_method->count() - 1, GapTableModel::methodTip(method), Qt::ToolTipRole);
+  }
+  tipFollowsCurrentItem(*m_method);
   form->addRow(tr("Method"), m_method);
   m_neighbours = new QSpinBox(this);
   m_neighbours->setRange(1, 30);
@@ -233,7 +220,7 @@ StepJob GapFillStep::job() const
                                 .arg(static_cast<qlonglong>(take.firstFrame() + end))
                                 .arg(static_cast<qlonglong>(report.gap.length));
       result.notes.push_back({report.gap.marker, report.gap.firstFrame,
-                              where + QStringLiteral(": ") + causeText(report, take, options.maxGapSeconds)});
+                              where + QStringLiteral(": ") + fillRuleText(report, take, options)});
     }
     int samples = 0;
     for (SamplePatch& patch : filled.patches) {
@@ -247,6 +234,20 @@ StepJob GapFillStep::job() const
     result.summary = summary(filledCount, samples, openByCause, options.maxGapSeconds);
     return result;
   };
+}
+
+QString GapFillStep::appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const
+{
+  const QString text = filledText(static_cast<int>(applied.size()), countPatches(applied).samples);
+  const auto open = static_cast<int>(result.notes.size());
+  if (open == 0)
+    return text;
+  QStringList first;
+  for (std::size_t i = 0; i < result.notes.size() && i < 3; ++i)
+    first << result.notes[i].text;
+  if (open > 3)
+    first << QStringLiteral("…");
+  return text + tr("; %1 left open: ").arg(open) + first.join(QStringLiteral("; "));
 }
 
 void GapFillStep::showResult(const StepResult& result)

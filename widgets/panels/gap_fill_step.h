@@ -27,14 +27,18 @@ public:
   [[nodiscard]] StepJob job() const override;
   void showResult(const StepResult& result) override;
   void addToPreset(CleanOptions& options) const override;
+  /// "11 gaps filled, 180 samples; 20 left open: M1, frames 5–90 (86): over the 0.5 s limit; …".
+  [[nodiscard]] QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const override;
 
   /// The longest gap to fill in seconds; 0 = unlimited. Shown in frames too.
   [[nodiscard]] double maxGapSeconds() const { return m_maxGapSeconds; }
   void setMaxGapSeconds(double seconds);
 
-private:
-  /// The parameters, without the selection (a preset is for any take).
+  /// The parameters, without the selection (a preset is for any take): also the safety rules
+  /// (longest gap, extrapolation, least seen) the Gaps dock obeys.
   [[nodiscard]] FillOptions currentOptions() const;
+
+private:
   [[nodiscard]] double frameRate() const;
   void showMaxGap();
 

@@ -3,6 +3,7 @@
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
 #include "document/take_document.h"
+#include "models/fill_rule_text.h"
 #include "models/gap_table_model.h"
 #include "panels/job_progress_row.h"
 
@@ -15,6 +16,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QSortFilterProxyModel>
@@ -75,8 +77,10 @@ public:
   QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const override
   {
     auto* combo = new QComboBox(parent);
-    for (FillMethod method : allFillMethods())
+    for (FillMethod method : allFillMethods()) {
       combo->addItem(GapTableModel::methodTitle(method), static_cast<int>(method));
+      combo->setItemData(combo->count() - 1, GapTableModel::methodTip(method), Qt::ToolTipRole);
+    }
     connect(combo, qOverload<int>(&QComboBox::activated), this, [this, combo] {
       auto* self = const_cast<MethodDelegate*>(this);  // Qt's delegate signals are non-const
       emit self->commitData(combo);
@@ -95,51 +99,67 @@ public:
   }
 };
 
-/// Fills each gap with its own method: one fillGaps call per method (pca models the take once
-/// per call), reports back in the order of `gaps`. Each gap is filled from the take's valid
-/// samples only, so grouping does not change any fill. Cost: that of fillGaps per method.
+/// The options one group of gaps is filled with: the rules (longest gap, extrapolation, least
+/// seen) for gaps the user has not allowed, none for the ones allowed past them. The neighbours
+/// stay the method's default, so a gap fills the same whichever panel asks.
+FillOptions groupOptions(const FillOptions& rules, FillMethod method, bool allowed, const std::vector<Gap>& gaps)
+{
+  FillOptions options;
+  options.method = method;
+  if (!allowed) {
+    options.maxGap = rules.maxGap;
+    options.maxGapSeconds = rules.maxGapSeconds;
+    options.extrapolate = rules.extrapolate;
+    options.minValidFraction = rules.minValidFraction;
+    return options;
+  }
+  options.maxGap = 0;
+  options.maxGapSeconds = 0.0;
+  options.extrapolate = true;
+  for (const Gap& gap : gaps)
+    options.fillAnyway.push_back(gap.marker);
+  return options;
+}
+
+/// Fills each gap with its own method: one fillGaps call per method and override (pca models the
+/// take once per call), reports back in the order of `gaps`. Each gap is filled from the take's
+/// valid samples only, so grouping does not change any fill. A gap not in `allowed` obeys
+/// `rules` (mocap::checkFillRules decides, inside fillGaps). Cost: that of fillGaps per group.
 FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::vector<FillMethod>& methods,
-                    const JobControl& job)
+                    const std::vector<bool>& allowed, const FillOptions& rules, const JobControl& job)
 {
   FillResult result;
   result.gaps.resize(gaps.size());
   std::size_t done = 0;
-  for (FillMethod method : allFillMethods()) {
-    std::vector<Gap> some;
-    std::vector<std::size_t> where;
-    for (std::size_t i = 0; i < gaps.size(); ++i)
-      if (methods[i] == method) {
-        some.push_back(gaps[i]);
-        where.push_back(i);
+  for (FillMethod method : allFillMethods())
+    for (const bool overridden : {false, true}) {
+      std::vector<Gap> some;
+      std::vector<std::size_t> where;
+      for (std::size_t i = 0; i < gaps.size(); ++i)
+        if (methods[i] == method && allowed[i] == overridden) {
+          some.push_back(gaps[i]);
+          where.push_back(i);
+        }
+      if (some.empty())
+        continue;
+      const FillOptions options = groupOptions(rules, method, overridden, some);
+      const double share = 1.0 / static_cast<double>(gaps.size());
+      const JobControl part =
+          job.part(static_cast<double>(done) * share, static_cast<double>(done + some.size()) * share);
+      done += some.size();
+      try {
+        FillResult filled = fillGaps(take, some, options, part);
+        for (std::size_t k = 0; k < where.size() && k < filled.gaps.size(); ++k)
+          result.gaps[where[k]] = std::move(filled.gaps[k]);
+        for (SamplePatch& patch : filled.patches)
+          result.patches.push_back(std::move(patch));
+      } catch (const JobCancelled&) {
+        throw;  // the panel drops the whole result
+      } catch (const std::exception& e) {  // nothing may throw across the event loop
+        for (std::size_t k = 0; k < where.size(); ++k)
+          result.gaps[where[k]] = GapFillReport{some[k], false, {}, e.what(), UnfilledCause::Method};
       }
-    if (some.empty())
-      continue;
-    // Each gap here was picked by the technician, with its method: the bulk defaults that keep
-    // the cleaning panel from inventing data (longest gap, no extrapolation, rarely seen
-    // markers skipped) do not second-guess that choice.
-    FillOptions options;
-    options.method = method;
-    options.maxGap = 0;
-    options.maxGapSeconds = 0.0;
-    options.extrapolate = true;
-    for (const Gap& gap : some)
-      options.fillAnyway.push_back(gap.marker);
-    const double share = 1.0 / static_cast<double>(gaps.size());
-    const JobControl part = job.part(static_cast<double>(done) * share, static_cast<double>(done + some.size()) * share);
-    done += some.size();
-    try {
-      FillResult filled = fillGaps(take, some, options, part);
-      for (std::size_t k = 0; k < where.size() && k < filled.gaps.size(); ++k)
-        result.gaps[where[k]] = std::move(filled.gaps[k]);
-      for (SamplePatch& patch : filled.patches)
-        result.patches.push_back(std::move(patch));
-    } catch (const JobCancelled&) {
-      throw;  // the panel drops the whole result
-    } catch (const std::exception& e) {  // nothing may throw across the event loop
-      for (std::size_t k = 0; k < where.size(); ++k)
-        result.gaps[where[k]] = GapFillReport{some[k], false, {}, e.what()};
     }
-  }
   std::sort(result.patches.begin(), result.patches.end(), [](const SamplePatch& a, const SamplePatch& b) {
     return std::make_pair(a.marker, a.frames.front()) < std::make_pair(b.marker, b.frames.front());
   });
@@ -150,7 +170,7 @@ FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::v
 
 bool GapListPanel::Request::operator==(const Request& other) const
 {
-  return methods == other.methods &&
+  return methods == other.methods && allowed == other.allowed &&
          std::equal(gaps.begin(), gaps.end(), other.gaps.begin(), other.gaps.end(), [](const Gap& a, const Gap& b) {
            return a.marker == b.marker && a.firstFrame == b.firstFrame && a.length == b.length;
          });
@@ -262,6 +282,13 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
     menu.addAction(tr("Show Gap"), this, [this, row] { showGap(row); });
     QAction* fillOne = menu.addAction(tr("Fill This Gap"), this, [this, row] { fill(std::vector<int>{row}); });
     fillOne->setEnabled(m_model->stateAt(row) != GapTableModel::FillState::Filled);
+    if (m_model->stateAt(row) != GapTableModel::FillState::Filled && m_model->refusalAt(row) != UnfilledCause::None) {
+      QAction* allow = menu.addAction(tr("Allow Filling This Gap"), this,
+                                      [this, row](bool on) { m_model->setAllowed(row, on); });
+      allow->setCheckable(true);
+      allow->setChecked(m_model->isAllowed(row));
+      allow->setToolTip(m_model->refusalText(row));
+    }
     menu.exec(m_view->viewport()->mapToGlobal(position));
   });
   connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
@@ -331,6 +358,7 @@ GapListPanel::Request GapListPanel::requestOf(const std::vector<int>& rows) cons
       continue;
     request.gaps.push_back(m_model->gapAt(row));
     request.methods.push_back(m_model->methodAt(row));
+    request.allowed.push_back(m_model->isAllowed(row));
   }
   return request;
 }
@@ -439,9 +467,9 @@ void GapListPanel::launch(const Request& request)
   const JobControl control = m_progress->begin();
   m_status->setText(tr("Computing the fill of %n gap(s)…", nullptr, static_cast<int>(request.gaps.size())));
   m_watcher.setFuture(
-      QtConcurrent::run([take = m_document.take(), gaps = request.gaps, methods = request.methods, control] {
+      QtConcurrent::run([take = m_document.take(), request, rules = m_model->fillRules(), control] {
         try {
-          return fillEach(take, gaps, methods, control);
+          return fillEach(take, request.gaps, request.methods, request.allowed, rules, control);
         } catch (const JobCancelled&) {
           return FillResult{};  // dropped by onFinished (cancelled)
         }
@@ -497,9 +525,9 @@ QString GapListPanel::countsText(bool applied) const
   if (unfilled > 0) {
     const auto first = std::find_if(m_result.gaps.begin(), m_result.gaps.end(),
                                     [](const GapFillReport& r) { return !r.filled; });
-    const QString reason = QString::fromStdString(first->reason);
-    const QString open = unfilled == 1 ? tr("1 gap cannot be filled: %1").arg(reason)
-                                       : tr("%1 gaps cannot be filled (the first: %2)").arg(unfilled).arg(reason);
+    const QString reason = fillRuleText(*first, m_document.take(), m_model->fillRules());
+    const QString open = unfilled == 1 ? tr("1 gap left open: %1").arg(reason)
+                                       : tr("%1 gaps left open (the first: %2)").arg(unfilled).arg(reason);
     text = text.isEmpty() ? open : tr("%1; %2").arg(text, open);
   }
   return text;
@@ -526,23 +554,80 @@ void GapListPanel::clearOwnPreview()
   m_ownsPreview = false;
 }
 
+// "M12 frames 400–711, M3 frames 10–97 and 2 more gaps": the gaps filled past the rules. O(#gaps).
+QString GapListPanel::inventedText(const FillResult& result, const Request& request, int& samples) const
+{
+  const Take& take = m_document.take();
+  QStringList where;
+  int more = 0;
+  samples = 0;
+  for (std::size_t i = 0; i < result.gaps.size(); ++i) {
+    const Gap& gap = result.gaps[i].gap;
+    if (!result.gaps[i].filled || !request.allowed[i])
+      continue;
+    samples += static_cast<int>(gap.length);
+    if (where.size() == 4) {
+      ++more;
+      continue;
+    }
+    where << tr("%1 frames %2–%3")
+                 .arg(QString::fromStdString(take.label(gap.marker)))
+                 .arg(static_cast<qlonglong>(take.firstFrame() + gap.firstFrame))
+                 .arg(static_cast<qlonglong>(take.firstFrame() + gap.firstFrame + gap.length - 1));
+  }
+  QString text = where.join(QStringLiteral(", "));
+  if (more > 0)
+    text += more == 1 ? tr(" and 1 more gap") : tr(" and %1 more gaps").arg(more);
+  return text;
+}
+
 void GapListPanel::push()
 {
   clearOwnPreview();
+  // Copies: the question below runs an event loop, in which a preview may replace the result.
+  const FillResult result = m_result;
+  const Request request = m_resultRequest;
   const QString counts = countsText(true);
-  if (m_result.patches.empty()) {
+  if (result.patches.empty()) {
     m_status->setText(counts);
     return;
   }
+  int invented = 0;
+  const QString where = inventedText(result, request, invented);
+  if (invented > 0 &&
+      QMessageBox::question(this, tr("Fill Past the Rules?"),
+                            (invented == 1 ? tr("Invent 1 sample: %1?").arg(where)
+                                           : tr("Invent %1 samples: %2?").arg(QString::number(invented), where)) +
+                                QStringLiteral("\n\n") +
+                                tr("These gaps are longer than the limit, at the take's ends or on a marker seen "
+                                   "too rarely: nothing measured them."),
+                            QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes) {
+    if (m_live->isChecked() && isVisible())
+      showPreview();  // the proposal stays on view
+    m_status->setText(tr("Nothing filled: filling past the rules was not confirmed"));
+    return;
+  }
   QStringList methods;
-  for (std::size_t i = 0; i < m_result.gaps.size(); ++i)
-    if (m_result.gaps[i].filled && !methods.contains(GapTableModel::methodTitle(m_resultRequest.methods[i])))
-      methods << GapTableModel::methodTitle(m_resultRequest.methods[i]);
-  const auto gaps = static_cast<int>(m_result.patches.size());
+  for (std::size_t i = 0; i < result.gaps.size(); ++i)
+    if (result.gaps[i].filled && !methods.contains(GapTableModel::methodTitle(request.methods[i])))
+      methods << GapTableModel::methodTitle(request.methods[i]);
+  const auto gaps = static_cast<int>(result.patches.size());
   const QString text = (gaps == 1 ? tr("Fill 1 gap: %1") : tr("Fill %1 gaps: %2").arg(gaps)).arg(methods.join(", "));
-  m_document.undoStack()->push(
-      makeRecordedEdit(m_document, m_result.patches, text, "fill gaps", {{"method", methods.join(", ").toStdString()}}));
+  std::vector<std::pair<std::string, std::string>> parameters{{"method", methods.join(", ").toStdString()}};
+  if (invented > 0)
+    parameters.emplace_back("past the rules", where.toStdString());
+  m_document.undoStack()->push(makeRecordedEdit(m_document, result.patches, text, "fill gaps", parameters));
   m_status->setText(counts);  // after the push: the take change schedules a new preview
+}
+
+void GapListPanel::setFillRules(const FillOptions& rules)
+{
+  const FillOptions& now = m_model->fillRules();
+  if (rules.maxGap == now.maxGap && rules.maxGapSeconds == now.maxGapSeconds && rules.extrapolate == now.extrapolate &&
+      rules.minValidFraction == now.minValidFraction)
+    return;  // e.g. the method changed: not a rule
+  m_model->setFillRules(rules);
+  takeChanged();  // results computed under the old rules are stale
 }
 
 void GapListPanel::waitUntilIdle()

@@ -28,6 +28,9 @@ class TakeDocument;
 /// The gaps in scope — the checked ones, or else the selected rows — are filled each with its own
 /// method on a worker thread (on a copy of the take) and previewed over the views; Fill pushes
 /// them as one undoable command. A newer request supersedes a running one; Cancel drops it.
+/// The Cleaning panel's fill rules hold here too (setFillRules; mocap::checkFillRules decides):
+/// a gap they leave open says why and is filled only when the user allows it (Allow column or
+/// the context menu), and Fill then asks before inventing its samples.
 class GapListPanel final : public QWidget
 {
   Q_OBJECT
@@ -52,6 +55,9 @@ public:
   [[nodiscard]] bool busy() const;
   /// Runs the pending work (preview, fill) to its end. For tests.
   void waitUntilIdle();
+  /// The rules a gap must pass to be filled without the user's override (the Cleaning panel's
+  /// longest gap, extrapolation and least seen). FillOptions' defaults until set.
+  void setFillRules(const FillOptions& rules);
   /// The status line: what the last preview or fill did.
   [[nodiscard]] QString statusText() const;
 
@@ -69,6 +75,7 @@ private:
   {
     std::vector<Gap> gaps;
     std::vector<FillMethod> methods;
+    std::vector<bool> allowed;  // the user's override of the rules, per gap
     [[nodiscard]] bool operator==(const Request& other) const;
   };
   [[nodiscard]] Request requestOf(const std::vector<int>& rows) const;
@@ -84,6 +91,8 @@ private:
   void updateButtons();
   [[nodiscard]] bool resultMatches(const Request& request) const;
   [[nodiscard]] QString countsText(bool applied) const;
+  /// The gaps of `result` filled past the rules, in words; `samples` gets their sample count.
+  [[nodiscard]] QString inventedText(const FillResult& result, const Request& request, int& samples) const;
 
   TakeDocument& m_document;
   GapTableModel* m_model = nullptr;

@@ -70,9 +70,18 @@ SmoothingStep::SmoothingStep(QWidget* parent) : CleaningStep(parent)
   m_method->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // the dock stays narrow
   m_method->setMinimumContentsLength(18);
   m_method->addItem(tr("GCV smoothing spline (Woltring)"), static_cast<int>(SmoothMethod::Gcvspl));
-  m_method->addItem(tr("B-spline (Zhang et al., eqs 11–12)"), static_cast<int>(SmoothMethod::BSpline));
+  m_method->addItem(tr("B-spline (Zhang et al., smoothing)"), static_cast<int>(SmoothMethod::BSpline));
   m_method->addItem(tr("Butterworth (zero lag)"), static_cast<int>(SmoothMethod::Butterworth));
   m_method->addItem(tr("Savitzky–Golay"), static_cast<int>(SmoothMethod::SavGol));
+  m_method->setItemData(0, tr("A smoothing spline whose stiffness is chosen per marker by generalized "
+                              "cross-validation: no setting to tune"), Qt::ToolTipRole);
+  m_method->setItemData(1, tr("A least-squares B-spline with knots every few frames (the paper's smoothing)"),
+                        Qt::ToolTipRole);
+  m_method->setItemData(2, tr("A low-pass filter run forwards and backwards, so nothing lags; cuts motion faster "
+                              "than the cutoff"), Qt::ToolTipRole);
+  m_method->setItemData(3, tr("A polynomial fitted in a sliding window: keeps peaks sharper than a low-pass filter"),
+                        Qt::ToolTipRole);
+  tipFollowsCurrentItem(*m_method);
   form->addRow(tr("Method"), m_method);
   m_degree = new QSpinBox(this);
   m_degree->setRange(2, 7);
@@ -134,6 +143,11 @@ SmoothOptions SmoothingStep::currentOptions() const
 void SmoothingStep::addToPreset(CleanOptions& preset) const
 {
   preset.smooth = currentOptions();
+}
+
+QString SmoothingStep::appliedSummary(const std::vector<SamplePatch>& applied, const StepResult&) const
+{
+  return samplesOnMarkers(countPatches(applied), tr("1 sample smoothed"), tr("%1 samples smoothed"));
 }
 
 StepJob SmoothingStep::job() const

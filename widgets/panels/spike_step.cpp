@@ -50,9 +50,13 @@ SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(par
   m_method->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // the dock stays narrow
   m_method->setMinimumContentsLength(18);
   m_method->addItem(tr("Robust (local fit + MAD)"), static_cast<int>(SpikeMethod::Robust));
-  m_method->addItem(tr("Paper method (Zhang et al., eqs 8–10)"), static_cast<int>(SpikeMethod::Paper));
+  m_method->addItem(tr("Paper method: step test (Zhang et al., bad points)"), static_cast<int>(SpikeMethod::Paper));
   m_method->setItemData(0, tr("Judges each sample against a robust local fit of its neighbours"), Qt::ToolTipRole);
-  m_method->setItemData(1, tr("Eqs 8–10 as written, in one pass"), Qt::ToolTipRole);
+  m_method->setItemData(1,
+                        tr("Flags a sample whose steps to both neighbours exceed a multiple of the mean step "
+                           "(the paper as written, one pass); repairs it from its neighbours"),
+                        Qt::ToolTipRole);
+  tipFollowsCurrentItem(*m_method);
   form->addRow(tr("Method"), m_method);
   m_factor = new QDoubleSpinBox(this);
   m_factor->setRange(1.0, 10.0);
@@ -159,6 +163,11 @@ void SpikeStep::showResult(const StepResult& result)
 void SpikeStep::applied(const std::vector<SamplePatch>& patches)
 {
   m_repairs = patches;
+}
+
+QString SpikeStep::appliedSummary(const std::vector<SamplePatch>& applied, const StepResult&) const
+{
+  return samplesOnMarkers(countPatches(applied), tr("1 sample repaired"), tr("%1 samples repaired"));
 }
 
 std::vector<SamplePatch> SpikeStep::patchesToApply(const Take& take, const StepResult&) const

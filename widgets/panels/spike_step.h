@@ -27,6 +27,8 @@ public:
   void showResult(const StepResult& result) override;
   /// Remembers the repaired samples, so the next detection says which flags sit beside them.
   void applied(const std::vector<SamplePatch>& patches) override;
+  /// "415 samples repaired on 37 markers".
+  [[nodiscard]] QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const override;
   void addToPreset(CleanOptions& options) const override;
 
 private:

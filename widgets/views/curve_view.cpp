@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 namespace mocap::ui {
@@ -306,10 +307,18 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
 
 // What Apply would write: per selected marker, a thick dashed line in a light tint of the
 // marker's colour through the patch's runs of consecutive frames (one point per pixel column,
-// the column's mean, when zoomed out), with dots on the samples once they are apart.
-// O(patch size) per patch.
+// the column's mean, when zoomed out), with dots on the samples once they are apart. Zoomed in, a
+// run is joined to the take's kept samples either side, so a single repaired sample (a bad
+// point) reads as a dashed detour from its neighbours, not a lone dot. O(patch size) per patch.
 void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) const
 {
+  struct Run
+  {
+    QPolygonF points;
+    bool leading = false;  // points.front() is the take's sample before the run
+    bool trailing = false;  // points.back() is the take's sample after it
+  };
+  const Take& take = m_document.take();
   const auto& selection = m_document.selection();
   const auto& scale = m_scales[static_cast<std::size_t>(axis)];
   const double pixelsPerFrame = strip.width() / (lastVisible() - firstVisible());
@@ -318,18 +327,24 @@ void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) c
   painter.setRenderHint(QPainter::Antialiasing, pixelsPerFrame >= 1.0);
   for (const SamplePatch& patch : m_document.preview()) {
     const QColor marker = selectedMarkerColor(selection, patch.marker);
-    if (!marker.isValid())
+    if (!marker.isValid() || patch.marker >= take.markerCount())
       continue;
     const QColor tint = previewColor(marker);
     QPen dashed(tint, 2.5, Qt::DashLine);
     dashed.setCapStyle(Qt::FlatCap);
-    std::vector<QPolygonF> runs(1);
+    // The take's sample at `frame` as a point, when it is kept (valid and not in the patch).
+    const auto kept = [&](Eigen::Index frame, bool inPatch) -> std::optional<QPointF> {
+      if (inPatch || frame < 0 || frame >= take.frameCount() || !take.isValid(frame, patch.marker))
+        return std::nullopt;
+      return QPointF(xOf(static_cast<double>(frame)), scale.yOf(take.position(frame, patch.marker)(axis)));
+    };
+    std::vector<Run> runs(1);
     double columnX = -1.0, sum = 0.0;
     int count = 0;
     Eigen::Index previousFrame = -2;
     auto flushColumn = [&] {
       if (count > 0)
-        runs.back().push_back(QPointF(columnX, scale.yOf(sum / count)));
+        runs.back().points.push_back(QPointF(columnX, scale.yOf(sum / count)));
       count = 0;
       sum = 0.0;
     };
@@ -342,16 +357,27 @@ void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) c
       }
       if (f != previousFrame + 1) {
         flushColumn();
-        if (!runs.back().isEmpty())
+        if (!runs.back().points.isEmpty())
           runs.emplace_back();
       }
-      previousFrame = f;
       const double x = xOf(static_cast<double>(f));
       const double v = patch.positions(row, axis);
       if (pixelsPerFrame >= 1.0) {
-        runs.back().push_back(QPointF(x, scale.yOf(v)));
+        if (f != previousFrame + 1)
+          if (const auto before = kept(f - 1, i > 0 && patch.frames[i - 1] == f - 1)) {
+            runs.back().points.push_back(*before);
+            runs.back().leading = true;
+          }
+        runs.back().points.push_back(QPointF(x, scale.yOf(v)));
+        if (i + 1 == patch.frames.size() || patch.frames[i + 1] != f + 1)
+          if (const auto after = kept(f + 1, false)) {
+            runs.back().points.push_back(*after);
+            runs.back().trailing = true;
+          }
+        previousFrame = f;
         continue;
       }
+      previousFrame = f;
       const double column = std::floor(x) + 0.5;
       if (column != columnX)
         flushColumn();
@@ -361,17 +387,19 @@ void CurveView::paintPreview(QPainter& painter, const QRectF& strip, int axis) c
     }
     flushColumn();
     const bool dots = pixelsPerFrame >= 4.0;
-    for (const QPolygonF& run : runs) {
-      if (run.size() > 1) {
+    for (const Run& run : runs) {
+      if (run.points.size() > 1) {
         painter.setPen(dashed);
         painter.setBrush(Qt::NoBrush);
-        painter.drawPolyline(run);
+        painter.drawPolyline(run.points);
       }
-      if (dots || run.size() <= 2) {
+      const qsizetype first = run.leading ? 1 : 0;
+      const qsizetype last = run.points.size() - (run.trailing ? 1 : 0);  // the preview's own samples
+      if (dots || last - first <= 2) {
         painter.setPen(QPen(QColor(20, 20, 24), 1.0));
         painter.setBrush(tint);
-        for (const QPointF& p : run)
-          painter.drawEllipse(p, 2.6, 2.6);
+        for (qsizetype k = first; k < last; ++k)
+          painter.drawEllipse(run.points[k], 2.6, 2.6);
       }
     }
   }

@@ -174,7 +174,7 @@ FillResult fillGaps(const Take& take, const FillOptions& options, const JobContr
   return fillGaps(take, findGaps(take), options, job);
 }
 
-FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options, const JobControl& job)
+std::vector<GapFillReport> checkFillRules(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options)
 {
   checkOptions(options);
   for (const Gap& gap : gaps)
@@ -182,9 +182,35 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
   for (Eigen::Index m : options.fillAnyway)
     if (m < 0 || m >= take.markerCount())
       throw InvalidArgument("a marker to fill anyway (" + std::to_string(m) + ") is not in the take");
-  checkFinite(take);
   const Eigen::Index longest = gaps.empty() ? 0 : longestGapFrames(options, take.frameRate());
   const auto verdicts = markerVerdicts(take, options);
+  std::vector<GapFillReport> reports(gaps.size());
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    GapFillReport& report = reports[i];
+    const Gap& gap = gaps[i];
+    report.gap = gap;
+    const auto& verdict = verdicts[static_cast<std::size_t>(gap.marker)];
+    if (verdict.first != UnfilledCause::None) {
+      report.cause = verdict.first;
+      report.reason = verdict.second;
+    } else if (longest > 0 && gap.length > longest) {
+      std::string limit = std::to_string(longest) + " frames";
+      if (options.maxGap == 0)
+        limit += ", " + shortNumber(options.maxGapSeconds) + " s";
+      report.cause = UnfilledCause::TooLong;
+      report.reason = "longer than the longest gap to fill (" + limit + ")";
+    } else if (gap.atEdge && !options.extrapolate) {
+      report.cause = UnfilledCause::EdgeGap;
+      report.reason = "edge gap (extrapolation off)";
+    }
+  }
+  return reports;
+}
+
+FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options, const JobControl& job)
+{
+  std::vector<GapFillReport> rules = checkFillRules(take, gaps, options);
+  checkFinite(take);
   FillResult result;
   std::unique_ptr<PcaFillModel> pca;
   std::unique_ptr<FillContext> context;
@@ -193,25 +219,13 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
     report.reason = std::move(reason);
     result.gaps.push_back(std::move(report));
   };
-  for (const Gap& gap : gaps) {
-    job.checkpoint(static_cast<double>(result.gaps.size()) / static_cast<double>(gaps.size()));
-    GapFillReport report;
-    report.gap = gap;
-    const GapQuery query(take, gap.marker, gap.firstFrame, gap.length);
-    const auto& verdict = verdicts[static_cast<std::size_t>(gap.marker)];
-    if (verdict.first != UnfilledCause::None) {
-      leaveOpen(report, verdict.first, verdict.second);
-      continue;
-    }
-    if (longest > 0 && gap.length > longest) {
-      std::string limit = std::to_string(longest) + " frames";
-      if (options.maxGap == 0)
-        limit += ", " + shortNumber(options.maxGapSeconds) + " s";
-      leaveOpen(report, UnfilledCause::TooLong, "longer than the longest gap to fill (" + limit + ")");
-      continue;
-    }
-    if (gap.atEdge && !options.extrapolate) {
-      leaveOpen(report, UnfilledCause::EdgeGap, "edge gap (extrapolation off)");
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    job.checkpoint(static_cast<double>(i) / static_cast<double>(gaps.size()));
+    const Gap& gap = gaps[i];
+    const GapQuery query(take, gap.marker, gap.firstFrame, gap.length);  // checks the gap is one
+    GapFillReport& report = rules[i];
+    if (report.cause != UnfilledCause::None) {
+      result.gaps.push_back(std::move(report));
       continue;
     }
     if (options.method == FillMethod::Pca && !pca)
@@ -227,8 +241,8 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
       continue;
     }
     std::vector<Eigen::Index> frames(static_cast<std::size_t>(gap.length));
-    for (Eigen::Index i = 0; i < gap.length; ++i)
-      frames[static_cast<std::size_t>(i)] = gap.firstFrame + i;
+    for (Eigen::Index k = 0; k < gap.length; ++k)
+      frames[static_cast<std::size_t>(k)] = gap.firstFrame + k;
     result.patches.push_back(
         makePatch(gap.marker, std::move(frames), std::move(prediction.positions), SampleState::Filled));
     report.filled = true;

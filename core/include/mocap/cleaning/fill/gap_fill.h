@@ -93,14 +93,23 @@ struct FillResult
   std::vector<GapFillReport> gaps;   ///< one per gap, in findGaps order
 };
 
+/// The safety rules of `options`, gap by gap, before any method runs: one report per gap of
+/// `gaps` (in order), cause None when the rules let it be filled, else the cause and reason
+/// fillGaps leaves it open with, checked in this order: the marker never valid; valid in under
+/// minValidFraction of the frames (unless in fillAnyway); longer than the longest gap
+/// (longestGapFrames); touching the first or last frame while extrapolate is off. The one place
+/// these rules are decided: fillGaps and the studio's Gaps dock both ask it. Throws
+/// InvalidArgument as fillGaps does for bad options or a gap outside the take.
+/// O(#frames · #markers + #gaps).
+[[nodiscard]] std::vector<GapFillReport> checkFillRules(const Take& take, const std::vector<Gap>& gaps,
+                                                        const FillOptions& options);
+
 /// Fills the gaps `options` allow with `options.method`; the take is not changed: apply the
 /// patches (sample_patch.h) to do so, or show them as a preview. Each gap is filled from the
 /// take's valid samples only (never from another gap's fill), so the result does not depend on
 /// the order of the gaps and no invalid sample of another marker is read or touched. A gap left
-/// open is reported with its cause and reason, never invented, checked in this order: the marker
-/// never valid; valid in under minValidFraction of the frames (unless in fillAnyway); longer
-/// than the longest gap (longestGapFrames); touching the first or last frame while extrapolate
-/// is off; the method could not (a gap touching the first or last frame with a method that needs
+/// open is reported with its cause and reason, never invented: the rules of checkFillRules, then
+/// the method could not (a gap touching the first or last frame with a method that needs
 /// both sides, linear or spline; too few neighbours). With extrapolate on, edge gaps are
 /// extrapolated by the methods that can: guenter, lin-ouhyoung, zhang3, zhang-n (propagated from
 /// the one border), rigid and auto (carried by the neighbours' rigid motion / regression from the
