@@ -27,6 +27,7 @@ public:
   [[nodiscard]] StepJob job() const override;
   void showResult(const StepResult& result) override;
   void addToPreset(CleanOptions& options) const override;
+  bool loadPreset(const CleanOptions& options) override;
 
   /// The longest gap to fill in seconds; 0 = unlimited. Shown in frames too.
   [[nodiscard]] double maxGapSeconds() const { return m_maxGapSeconds; }

@@ -136,6 +136,19 @@ void SmoothingStep::addToPreset(CleanOptions& preset) const
   preset.smooth = currentOptions();
 }
 
+bool SmoothingStep::loadPreset(const CleanOptions& preset)
+{
+  if (!preset.smooth)
+    return false;
+  const SmoothOptions& smooth = *preset.smooth;
+  selectMethod(*m_method, static_cast<int>(smooth.method));
+  m_degree->setValue(static_cast<int>(smooth.degree));
+  m_knotSpacing->setValue(smooth.knotSpacing);
+  m_cutoff->setValue(smooth.cutoffHz);
+  m_window->setValue(static_cast<int>(smooth.savgolWindow));
+  return true;
+}
+
 StepJob SmoothingStep::job() const
 {
   return [options = currentOptions(), unit = m_displayUnit](const Take& take, const JobControl& control) {

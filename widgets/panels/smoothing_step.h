@@ -26,6 +26,7 @@ public:
   /// Unit of the change the summary reports (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
   void addToPreset(CleanOptions& options) const override;
+  bool loadPreset(const CleanOptions& options) override;
 
 private:
   [[nodiscard]] SmoothOptions currentOptions() const;

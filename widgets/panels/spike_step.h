@@ -28,6 +28,7 @@ public:
   /// Remembers the repaired samples, so the next detection says which flags sit beside them.
   void applied(const std::vector<SamplePatch>& patches) override;
   void addToPreset(CleanOptions& options) const override;
+  bool loadPreset(const CleanOptions& options) override;
 
 private:
   [[nodiscard]] SpikeOptions currentOptions() const;
