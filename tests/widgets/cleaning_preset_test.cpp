@@ -68,7 +68,7 @@ TEST(CleaningPreset, SaveAsksBeforeTakingTheHeadMarkersAlong)
     offered = box != nullptr && box->isEnabled();
     tickedByDefault = box == nullptr || box->isChecked();
     dialog->selectFile(path);
-    dialog->accept();
+    static_cast<QDialog*>(dialog)->accept();  // QFileDialog::accept is protected; QDialog's is public
   });
   QAction* save = nullptr;
   for (QAction* action : window->findChildren<QAction*>())
