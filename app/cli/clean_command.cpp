@@ -12,6 +12,7 @@
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/io/take_io.h"
+#include "mocap/model/provenance.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -33,7 +34,7 @@ struct CleanArguments
   std::optional<double> maxGapSeconds;
   std::string smooth = std::string(smoothMethodName(SmoothOptions{}.method));
   SmoothOptions smoothOptions;
-  std::optional<std::string> stabilize;
+  std::optional<std::string> stabilize;  ///< "" (bare --stabilize): the head markers saved in IN
   bool keepStabilized = false;
   std::optional<std::string> report;
   std::optional<std::string> preset, manifest;
@@ -183,7 +184,7 @@ CleanOptions cleanOptions(const CleanArguments& arguments)
   options.spikes = spikeOptions(arguments);
   options.fill = fillOptions(arguments);
   options.smooth = smoothOptions(arguments);
-  if (arguments.stabilize)
+  if (arguments.stabilize && !arguments.stabilize->empty())
     options.stabilizeLabels = splitList(*arguments.stabilize, "--stabilize");
   options.keepStabilized = arguments.keepStabilized;
   return options;
@@ -248,13 +249,27 @@ int printManifestCount(const CleanArguments& arguments)
   return kExitOk;
 }
 
+/// Bare --stabilize: the head markers saved in the take (headMarkers in provenance.h, which the studio
+/// writes). Nothing is guessed: a take without them is refused, naming the flag.
+std::vector<std::string> savedHeadMarkers(const Take& take, const std::string& input)
+{
+  std::vector<std::string> labels = headMarkers(take);
+  if (labels.empty())
+    throw UsageError(input + " has no head markers saved with it; name them: --stabilize LABEL,LABEL,LABEL "
+                             "(the studio saves the ones chosen in Marker > Reference Markers...)");
+  return labels;
+}
+
 int runClean(const CleanArguments& arguments)
 {
   if (arguments.count)
     return printManifestCount(arguments);
   if (arguments.output.empty())
     throw UsageError("-o OUT is required (with --manifest: -o OUTDIR)");
-  const CleanOptions options = cleanOptions(arguments);
+  CleanOptions options = cleanOptions(arguments);
+  const bool savedStabilize = arguments.stabilize && arguments.stabilize->empty();
+  if (arguments.manifest && savedStabilize)
+    throw UsageError("--stabilize without labels uses the head markers saved in IN; with --manifest name them");
   if (arguments.manifest)
     return runManifestTake(arguments, options);
   if (arguments.resume)
@@ -266,6 +281,8 @@ int runClean(const CleanArguments& arguments)
   (void)formatFromPath(output);  // reject an unknown output type before the read
 
   Take take = readInputTake(input);
+  if (savedStabilize)
+    options.stabilizeLabels = savedHeadMarkers(take, input);
   const CleanReport report = cleanAndRecord(take, options, "mocap clean");
   writeCleanedTake(take, report, options, output);
   if (arguments.report)
@@ -342,8 +359,12 @@ Command addClean(CLI::App& mocap)
                ->type_name("HZ"),
            1e-6, 1e6)
       ->capture_default_str();
-  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
-      ->type_name("LABEL,...");
+  command
+      ->add_option("--stabilize", a->stabilize,
+                   "head-mounted markers whose motion is removed first; with no labels, the head markers saved in "
+                   "IN (refused when it has none: nothing is guessed)")
+      ->type_name("[LABEL,...]")
+      ->expected(0, 1);
   command->add_flag("--keep-stabilized", a->keepStabilized, "write the markers in head space");
   command->add_option("--report", a->report, "write a JSON report of every step and every gap")
       ->type_name("FILE.json");

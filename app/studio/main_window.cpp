@@ -23,6 +23,7 @@
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/gap_list_panel.h"
+#include "panels/head_markers_proposal_bar.h"
 #include "panels/head_stabilization_step.h"
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
@@ -43,12 +44,14 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QCheckBox>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGridLayout>
 #include <QHeaderView>
 #include <QLocale>
 #include <QLabel>
@@ -60,6 +63,7 @@
 #include <QScrollArea>
 #include <QTimer>
 #include <QToolButton>
+#include <QVBoxLayout>
 #include <QSettings>
 #include <QTemporaryFile>
 #include <QSortFilterProxyModel>
@@ -89,6 +93,15 @@ namespace {
 constexpr int kMaxRecent = 8;
 const char* const kOpenFilter =
     QT_TRANSLATE_NOOP("mocap::studio::MainWindow", "Motion capture (*.c3d *.trc);;All files (*)");
+
+/// "a, b, c" for a message.
+QString joinLabels(const std::vector<std::string>& labels)
+{
+  QStringList list;
+  for (const std::string& label : labels)
+    list << QString::fromStdString(label);
+  return list.join(QStringLiteral(", "));
+}
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui::TakeDocument(this))
@@ -96,7 +109,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   setAcceptDrops(true);
   ui::WheelGuard::install();
   m_view3d = new ui::MarkerView3d(*m_document, this);
-  setCentralWidget(m_view3d);
+  setCentralWidget(centralArea());
   m_timeline = new ui::TimelineWidget(*m_document, this);
   auto* timelineBar = new QToolBar(tr("Timeline"), this);
   timelineBar->setObjectName(QStringLiteral("timelineBar"));
@@ -410,6 +423,8 @@ void MainWindow::createActions()
   file->addAction(tr("Export Re&view Video…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_E), this,
                   &MainWindow::exportReviewVideo);
   file->addAction(tr("Save &Cleaning Preset…"), this, &MainWindow::saveCleaningPresetDialog);
+  file->addAction(tr("&Load Cleaning Preset…"), this, &MainWindow::loadCleaningPresetDialog)
+      ->setObjectName(QStringLiteral("loadCleaningPresetAction"));
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -617,6 +632,24 @@ void MainWindow::followReferenceMarkers()
   }
 }
 
+QWidget* MainWindow::centralArea()
+{
+  auto* area = new QWidget(this);
+  auto* layout = new QVBoxLayout(area);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->setSpacing(0);
+  m_headMarkersBar = new ui::HeadMarkersProposalBar(*m_document, area);
+  connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::acceptRequested, this,
+          [this](const std::vector<Eigen::Index>& markers) {
+            if (changeReferenceMarkers(markers))
+              statusBar()->showMessage(tr("Head markers set; Edit ▸ Undo takes them back"), 5000);
+          });
+  connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::chooseRequested, this, &MainWindow::editReferenceMarkers);
+  layout->addWidget(m_headMarkersBar);
+  layout->addWidget(m_view3d, 1);
+  return area;
+}
+
 bool MainWindow::changeReferenceMarkers(std::vector<Eigen::Index> markers)
 {
   std::sort(markers.begin(), markers.end());
@@ -793,10 +826,13 @@ bool MainWindow::saveAs()
   return true;
 }
 
-QString MainWindow::saveCleaningPreset(const QString& path)
+QString MainWindow::saveCleaningPreset(const QString& path, bool withHeadMarkers)
 {
+  CleanOptions options = m_cleaning->cleanOptions();
+  if (withHeadMarkers)
+    options.stabilizeLabels = m_document->referenceLabels();
   try {
-    writeFileAtomically(path.toStdString(), cleanPresetJson(m_cleaning->cleanOptions()));
+    writeFileAtomically(path.toStdString(), cleanPresetJson(options));
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
@@ -805,16 +841,63 @@ QString MainWindow::saveCleaningPreset(const QString& path)
 
 void MainWindow::saveCleaningPresetDialog()
 {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save Cleaning Preset"),
-                                                    QFileInfo(m_document->filePath()).absolutePath(),
-                                                    tr("Cleaning presets (*.json)"));
-  if (path.isEmpty())
+  QFileDialog dialog(this, tr("Save Cleaning Preset"), QFileInfo(m_document->filePath()).absolutePath(),
+                     tr("Cleaning presets (*.json)"));
+  dialog.setAcceptMode(QFileDialog::AcceptSave);
+  dialog.setDefaultSuffix(QStringLiteral("json"));
+  dialog.setOption(QFileDialog::DontUseNativeDialog);  // a native dialog takes no extra box
+  auto* withHeadMarkers = new QCheckBox(tr("Include this take's head markers (%1)")
+                                            .arg(m_document->referenceMarkers().empty()
+                                                     ? tr("none chosen")
+                                                     : joinLabels(m_document->referenceLabels())),
+                                        &dialog);
+  withHeadMarkers->setObjectName(QStringLiteral("includeHeadMarkers"));
+  withHeadMarkers->setToolTip(tr("A preset carries cleaning options; head markers belong to a take. Include them "
+                                 "only when every take the preset is for names its head markers the same way: "
+                                 "a take without them then fails with that reason."));
+  withHeadMarkers->setEnabled(!m_document->referenceMarkers().empty());
+  if (auto* grid = qobject_cast<QGridLayout*>(dialog.layout()))
+    grid->addWidget(withHeadMarkers, grid->rowCount(), 0, 1, -1);
+  if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
     return;
-  const QString error = saveCleaningPreset(path);
+  const QString path = dialog.selectedFiles().front();
+  const QString error = saveCleaningPreset(path, withHeadMarkers->isChecked());
   if (!error.isEmpty())
     QMessageBox::warning(this, tr("Save Cleaning Preset"), tr("The preset was not saved: %1").arg(error));
   else
     statusBar()->showMessage(tr("Saved the cleaning preset %1").arg(path), 5000);
+}
+
+QString MainWindow::loadCleaningPreset(const QString& path)
+{
+  CleanOptions options;
+  try {
+    options = readCleanPreset(path.toStdString());
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  const QStringList off = m_cleaning->loadCleanOptions(options);
+  showDock(QStringLiteral("cleaningDock"));
+  QString message = tr("Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply")
+                        .arg(QFileInfo(path).fileName());
+  if (!off.isEmpty())
+    message += tr("; it turns off %1 (left as they were)").arg(off.join(QStringLiteral(", ")));
+  if (!options.stabilizeLabels.empty())
+    message += tr("; its head markers (%1) are not this take's: the take keeps its own")
+                   .arg(joinLabels(options.stabilizeLabels));
+  statusBar()->showMessage(message, 10000);
+  return {};
+}
+
+void MainWindow::loadCleaningPresetDialog()
+{
+  const QString path = QFileDialog::getOpenFileName(this, tr("Load Cleaning Preset"),
+                                                    QFileInfo(m_document->filePath()).absolutePath(),
+                                                    tr("Cleaning presets (*.json);;All files (*)"));
+  if (path.isEmpty())
+    return;
+  if (const QString error = loadCleaningPreset(path); !error.isEmpty())
+    QMessageBox::warning(this, tr("Load Cleaning Preset"), tr("The preset was not loaded: %1").arg(error));
 }
 
 void MainWindow::exportDialog()

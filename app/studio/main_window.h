@@ -31,6 +31,7 @@ class ReferenceVideoPanel;
 class FaceMeshPanel;
 class WeightCurveView;
 class GapListPanel;
+class HeadMarkersProposalBar;
 class CurveView;
 class LayoutPlanningPanel;
 class ManualWindow;
@@ -104,8 +105,16 @@ public:
   /// The Label menu's Track and Label and swap search (on workers, undoable).
   [[nodiscard]] ui::LabellingActions* labellingActions() const { return m_labelling; }
   /// Writes the Cleaning dock's settings as a cleaning preset (the JSON `mocap batch --preset`
-  /// and `mocap clean --preset` read), atomically. Returns the error message, empty on success.
-  QString saveCleaningPreset(const QString& path);
+  /// and `mocap clean --preset` read), atomically. The take's head markers go in only
+  /// `withHeadMarkers` (a preset carries options; the markers are this take's). Returns the error
+  /// message, empty on success.
+  QString saveCleaningPreset(const QString& path, bool withHeadMarkers = false);
+  /// Reads a cleaning preset into the Cleaning dock's steps (CleaningPanel::loadCleanOptions):
+  /// shown in the panels and their previews, the take untouched until Apply. Returns the error
+  /// message (the panels untouched), empty on success.
+  QString loadCleaningPreset(const QString& path);
+  /// The bar asking to accept the head markers proposed for a take without any.
+  [[nodiscard]] ui::HeadMarkersProposalBar* headMarkersBar() const { return m_headMarkersBar; }
 
 protected:
   void closeEvent(QCloseEvent* event) override;
@@ -124,8 +133,13 @@ private:
   /// File ▸ Export Animation: BVH of the markers, and the face mesh deformed by the take when
   /// one is loaded.
   void exportAnimation();
-  /// File ▸ Save Cleaning Preset…: asks for the file, then saveCleaningPreset.
+  /// File ▸ Save Cleaning Preset…: asks for the file (with an "include head markers" box, off),
+  /// then saveCleaningPreset.
   void saveCleaningPresetDialog();
+  /// File ▸ Load Cleaning Preset…: asks for the file, then loadCleaningPreset.
+  void loadCleaningPresetDialog();
+  /// The 3D view with the head markers bar above it.
+  [[nodiscard]] QWidget* centralArea();
   void createMarkerMenu();
   void createLabelMenu();
   void editPreferences();
@@ -168,6 +182,7 @@ private:
   ui::TakeDocument* m_document = nullptr;
   ui::Autosave* m_autosave = nullptr;
   ui::MarkerView3d* m_view3d = nullptr;
+  ui::HeadMarkersProposalBar* m_headMarkersBar = nullptr;
   ui::MarkerEditActions* m_markerEdits = nullptr;
   ui::LabellingActions* m_labelling = nullptr;
   ui::CurveView* m_curves = nullptr;

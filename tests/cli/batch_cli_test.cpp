@@ -6,6 +6,7 @@
 #include "mocap/base/content_hash.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
+#include "mocap/io/take_io.h"
 #include "checkout_paths.h"
 
 #include <gtest/gtest.h>
@@ -581,6 +582,40 @@ TEST(SummarizeCli, ATakeThatLostDataOnReadingIsListedFirstWithWhy)
   const std::string html = readFileBytes(dir.file("report.html"));
   EXPECT_NE(html.find("<th>reader warnings</th>"), std::string::npos);
   EXPECT_NE(html.find("<tr class=\"bad\"><td>session2/cut.c3d</td>"), std::string::npos);
+}
+
+TEST(SummarizeCli, GroupsFailuresByReasonWhileTheOtherTakesStillRun)
+{
+  test::TempDir dir;
+  const Archive archive(dir);
+  // One take names the preset's head markers; the five others lack them.
+  Take headed = readTake(archive.root / "session1/Eb015pi.c3d");
+  for (Eigen::Index m = 0; m < 3; ++m)
+    headed.setLabel(m, "head" + std::to_string(m + 1));
+  writeTake(headed, archive.root / "session1/headed.c3d");
+  writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) + "session1/headed.c3d\n");
+  writeFileAtomically(dir.file("head.json"), R"({"stabilize": {"markers": ["head1", "head2", "head3"]}})");
+  const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")) +
+                               " --preset " + shellQuote(dir.file("head.json")),
+                           dir);
+  EXPECT_EQ(batch.exitCode, 1) << batch.err;
+  const auto status = statuses(dir.file("out"));
+  EXPECT_EQ(status.at("session1/headed.c3d"), "cleaned") << "a take that has them runs";
+  EXPECT_EQ(std::count_if(status.begin(), status.end(), [](const auto& s) { return s.second == "failed"; }), 5);
+
+  const auto run =
+      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue summary = parseJson(run.out, "stdout");
+  const auto& groups = member(summary, "failures_by_reason").array("");
+  ASSERT_EQ(groups.size(), 1u) << run.out;
+  EXPECT_NE(member(groups.front(), "reason").string("").find("no marker labelled 'head1'"), std::string::npos)
+      << member(groups.front(), "reason").string("");
+  EXPECT_EQ(member(groups.front(), "takes").array("").size(), 5u);
+  const std::string html = readFileBytes(dir.file("report.html"));
+  EXPECT_NE(html.find("<table id=\"failures\">"), std::string::npos);
+  std::string error;
+  EXPECT_TRUE(wellFormed(html, "html", error)) << error;
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "mocap/base/file_io.h"
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
+#include "mocap/model/provenance.h"
 #include "mocap/evaluation/tracking_evaluation.h"
 #include "checkout_paths.h"
 
@@ -397,6 +398,33 @@ TEST(Cli, CleanFillsTheSampleAndReportsEveryStep)
   EXPECT_EQ(runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --stabilize nope", dir).exitCode,
             2);
   EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
+}
+
+TEST(Cli, CleanStabilizesWithSavedHeadMarkersAndGuessesNone)
+{
+  test::TempDir dir;
+  const std::string roots = "root-1,root-2,root-3,root-4,root-5,root-6";
+  // The sample names no saved head markers: a bare --stabilize is refused, naming the flag.
+  const CommandResult bare =
+      runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --stabilize", dir);
+  EXPECT_EQ(bare.exitCode, 2);
+  EXPECT_NE(bare.err.find("has no head markers saved with it; name them: --stabilize LABEL"), std::string::npos)
+      << bare.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("x.c3d")));
+  // A take the studio saved with its head markers: a bare --stabilize uses them.
+  Take saved = readTake(test::sampleTake());
+  setHeadMarkers(saved, {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"});
+  writeTake(saved, dir.file("saved.c3d"));
+  const CommandResult run = runMocap("clean " + q(dir.file("saved.c3d")) + " -o " + q(dir.file("a.c3d")) +
+                                         " --report " + q(dir.file("a.json")) + " --stabilize",
+                                     dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_NE(readFileBytes(dir.file("a.json")).find("\"root-6\""), std::string::npos);
+  ASSERT_EQ(runMocap("clean " + q(dir.file("saved.c3d")) + " -o " + q(dir.file("b.c3d")) + " --stabilize " + roots, dir)
+                .exitCode,
+            0);
+  EXPECT_TRUE(readFileBytes(dir.file("a.c3d")) == readFileBytes(dir.file("b.c3d"))) << "the same markers, named";
+  EXPECT_EQ(headMarkers(readTake(dir.file("a.c3d"))), headMarkers(saved)) << "the cleaned take keeps them";
 }
 
 TEST(Cli, CleanByDefaultLeavesLongGapsOpenAndSaysWhy)

@@ -4,6 +4,7 @@
 #include "mocap/base/content_hash.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/batch/archive_summary.h"
 #include "mocap/batch/batch_runner.h"
 #include "mocap/batch/clean_preset.h"
 #include "mocap/batch/take_manifest.h"
@@ -215,6 +216,31 @@ TEST(BatchRunner, RefusesAnOutDirThatIsTheInputsFolder)
   EXPECT_THROW(prepareOutDir(manifest, dir.path()), InvalidArgument);
   writeFileAtomically(dir.file("file"), "x");
   EXPECT_THROW(prepareOutDir(manifest, dir.file("file") / "out"), IoError);
+}
+
+TEST(ArchiveSummary, GroupsFailuresByReasonWhateverTakeTheErrorNames)
+{
+  const auto take = [](const std::string& name, const std::string& error) {
+    TakeReport report;
+    report.input = "/archive/" + name;
+    report.output = name;
+    report.error = error;
+    return report;
+  };
+  const std::string missing = "the take has no marker labelled 'head1'";
+  ArchiveSummary summary;
+  summary.reports = {take("a.c3d", missing), take("b.c3d", ""), take("c.c3d", "/archive/c.c3d: truncated"),
+                     take("d.c3d", missing), take("e.c3d", "e.c3d: truncated"), take("f.c3d", missing)};
+  const std::vector<FailureGroup> groups = failuresByReason(summary);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0].reason, missing);
+  EXPECT_EQ(groups[0].takes, (std::vector<std::size_t>{0, 3, 5})) << "the largest group first";
+  EXPECT_EQ(groups[1].reason, "truncated") << "the take's own name is no part of the reason";
+  EXPECT_EQ(groups[1].takes, (std::vector<std::size_t>{2, 4}));
+  const std::string html = archiveSummaryHtml(summary);
+  EXPECT_NE(html.find("<table id=\"failures\">"), std::string::npos);
+  EXPECT_NE(html.find("<td>3</td><td>a.c3d, d.c3d, f.c3d</td>"), std::string::npos);
+  EXPECT_NE(archiveSummaryJson(summary).find("\"failures_by_reason\""), std::string::npos);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include "mocap/base/error.h"
+#include "mocap/cleaning/head_marker_labels.h"
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/io/take_io.h"
 
@@ -96,6 +97,9 @@ TEST(HeadStabilization, HeadMarkersAreGuessedFromTheirLabels)
   Take take({"Root-1", "nose", "HEAD_L", "header", "rootless", "chin"}, 1, 100.0);
   EXPECT_EQ(guessHeadReferenceMarkers(take), (std::vector<Eigen::Index>{0, 2, 3, 4}));
   EXPECT_TRUE(guessHeadReferenceMarkers(Take({"a", "b"}, 1, 100.0)).empty());
+  EXPECT_EQ(labelledHeadMarkers(take), (std::vector<Eigen::Index>{0, 2, 3, 4}));
+  // Labels name head markers; a rigid cluster is only a guess, which labelledHeadMarkers never makes.
+  EXPECT_TRUE(labelledHeadMarkers(movingHead()).empty());
 }
 
 TEST(HeadStabilization, UnnamedHeadMarkersAreGuessedAsTheMostRigidCluster)

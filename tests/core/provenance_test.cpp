@@ -247,6 +247,46 @@ TEST(Provenance, SidecarForAnotherTakeIsIgnoredWithAWarning)
   EXPECT_NE(warnings.back().find("sidecar"), std::string::npos);
 }
 
+TEST(Provenance, HeadMarkersSurviveC3dAndSidecarRoundTrips)
+{
+  Take take = measuredTake();  // no other provenance: the head markers alone make the group
+  setHeadMarkers(take, {"c", "a"});
+  ASSERT_TRUE(hasProvenance(take));
+  std::vector<std::string> warnings;
+  const Take back = reparse(take, &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_EQ(headMarkers(back), (std::vector<std::string>{"c", "a"}));
+  EXPECT_EQ(encodeC3d(back), encodeC3d(take)) << "writing the read take again gives the same file";
+  // The rest of the group becomes the take's state; with states and history they all come back.
+  Take processed = processedTake();
+  setHeadMarkers(processed, {"b", "c"});
+  const Take both = reparse(processed);
+  EXPECT_EQ(headMarkers(both), (std::vector<std::string>{"b", "c"}));
+  EXPECT_EQ(both.history(), processed.history());
+  setHeadMarkers(processed, {});
+  EXPECT_TRUE(headMarkers(processed).empty());
+  EXPECT_EQ(reparse(processed).parameters().group("PROCESSING"), nullptr);
+
+  test::TempDir dir;
+  writeTake(take, dir.file("take.trc"));
+  const std::string sidecar = readFileBytes(dir.file("take.provenance.json"));
+  EXPECT_NE(sidecar.find("\"head_markers\""), std::string::npos) << sidecar;
+  EXPECT_EQ(headMarkers(readTake(dir.file("take.trc"))), (std::vector<std::string>{"c", "a"}));
+}
+
+TEST(Provenance, HeadMarkersTheTakeLacksAreDroppedWithAWarning)
+{
+  Take take = measuredTake();
+  setHeadMarkers(take, {"a", "b"});
+  const std::string text = provenanceJson(take);
+  Take other({"a", "x", "c"}, 200, 100.0);
+  std::vector<std::string> warnings;
+  applyProvenanceJson(other, text, "take.provenance.json", &warnings);
+  EXPECT_EQ(headMarkers(other), (std::vector<std::string>{"a"}));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings.front().find("head marker(s) b"), std::string::npos) << warnings.front();
+}
+
 TEST(Provenance, TruncatedFileReportsDataLoss)
 {
   const std::string bytes = encodeC3d(measuredTake());

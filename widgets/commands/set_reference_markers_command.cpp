@@ -15,7 +15,9 @@ SetReferenceMarkersCommand::SetReferenceMarkersCommand(TakeDocument& document, s
 
 void SetReferenceMarkersCommand::swap()
 {
-  m_markers = m_document.setReferenceMarkers(std::move(m_markers));
+  const bool wasSaved = m_document.referenceMarkersSaved();
+  m_markers = m_document.setReferenceMarkers(std::move(m_markers), m_saved);
+  m_saved = wasSaved;
 }
 
 } // namespace mocap::ui

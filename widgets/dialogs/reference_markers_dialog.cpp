@@ -16,6 +16,17 @@
 
 namespace mocap::ui {
 
+namespace {
+
+/// For a take without a set, the proposal the window's bar shows starts checked (OK accepts it).
+bool isProposed(const TakeDocument& document, Eigen::Index marker)
+{
+  const std::vector<Eigen::Index>& proposed = document.proposedReferenceMarkers();
+  return document.referenceMarkers().empty() && std::binary_search(proposed.begin(), proposed.end(), marker);
+}
+
+} // namespace
+
 ReferenceMarkersDialog::ReferenceMarkersDialog(const TakeDocument& document, QWidget* parent)
     : QDialog(parent), m_document(document)
 {
@@ -34,7 +45,7 @@ ReferenceMarkersDialog::ReferenceMarkersDialog(const TakeDocument& document, QWi
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
     auto* item = new QListWidgetItem(QString::fromStdString(take.label(m)), m_list);
     item->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-    item->setCheckState(document.isReferenceMarker(m) ? Qt::Checked : Qt::Unchecked);
+    item->setCheckState(document.isReferenceMarker(m) || isProposed(document, m) ? Qt::Checked : Qt::Unchecked);
     const double present = take.frameCount() > 0 ? 100.0 * static_cast<double>(take.valid().col(m).count()) /
                                                        static_cast<double>(take.frameCount())
                                                  : 0.0;

@@ -15,7 +15,8 @@ namespace mocap::ui {
 class TakeDocument;
 
 /// Marker ▸ Reference Markers…: the one place where the take's head reference markers are shown
-/// and chosen — every marker with a check box, checked when it is in the set. Guess proposes
+/// and chosen — every marker with a check box, checked when it is in the set (for a take without
+/// one, when the document proposes it: TakeDocument::proposedReferenceMarkers). Guess proposes
 /// guessHeadReferenceMarkers again, Use Selection takes the selected markers, Clear empties the
 /// set. OK is refused for one or two markers (a head pose needs three, or none for no
 /// stabilization). The caller pushes the result as a command; the dialog changes nothing itself.

@@ -1,7 +1,9 @@
 #include "document/take_document.h"
 
 #include "mocap/base/error.h"
+#include "mocap/cleaning/head_marker_labels.h"
 #include "mocap/cleaning/head_stabilization.h"
+#include "mocap/model/provenance.h"
 #include "mocap/io/take_io.h"
 
 #include <algorithm>
@@ -73,7 +75,7 @@ void TakeDocument::setTake(Take take, const QString& path)
   m_preview.clear();
   m_flags.clear();
   m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
-  guessReferenceMarkers();
+  loadReferenceMarkers();
   emit takeReset();
   emit historyChanged();
   emit filePathChanged(m_filePath);
@@ -140,8 +142,10 @@ std::string TakeDocument::renameMarker(Eigen::Index marker, std::string label)
   std::string old = m_take.label(marker);
   m_take.setLabel(marker, std::move(label));
   emit markerRenamed(marker);
-  if (isReferenceMarker(marker))
+  if (isReferenceMarker(marker)) {
+    storeReferenceMarkers();         // saved by label: the new one
     emit referenceMarkersChanged();  // the set's labels, as the panels show them, changed
+  }
   return old;
 }
 
@@ -197,6 +201,7 @@ MarkerColumn TakeDocument::removeMarker(Eigen::Index marker)
   m_preview.clear();  // previews and flags index markers; the panels recompute them
   m_flags.clear();
   const bool referenceChanged = referenceMarkerRemoved(marker, column.label);
+  storeReferenceMarkers();
   emit markersChanged();
   emit selectionChanged();
   if (referenceChanged)
@@ -214,6 +219,7 @@ void TakeDocument::insertMarker(Eigen::Index marker, MarkerColumn column)
   m_preview.clear();
   m_flags.clear();
   const bool referenceChanged = referenceMarkerInserted(marker);
+  storeReferenceMarkers();
   emit markersChanged();
   emit selectionChanged();
   if (referenceChanged)
@@ -225,6 +231,7 @@ Take TakeDocument::exchangeTake(Take take)
   const std::vector<std::string> reference = referenceLabels();
   std::swap(m_take, take);
   const bool referenceChanged = mapReferenceLabels(reference);
+  storeReferenceMarkers();
   m_hidden.assign(static_cast<std::size_t>(m_take.markerCount()), false);
   m_selection.clear();
   m_preview.clear();
@@ -277,10 +284,31 @@ namespace mocap::ui {
 
 // Reference markers: one set per take, kept on the same labels through marker edits.
 
-void TakeDocument::guessReferenceMarkers()
+void TakeDocument::loadReferenceMarkers()
 {
-  m_referenceMarkers = guessHeadReferenceMarkers(m_take);
   m_removedReferenceLabels.clear();
+  m_proposedReference.clear();
+  const std::vector<std::string> saved = headMarkers(m_take);
+  m_referenceSaved = !saved.empty();
+  if (m_referenceSaved) {
+    m_referenceMarkers.clear();
+    for (const std::string& label : saved)
+      if (const auto m = m_take.markerIndex(label))
+        m_referenceMarkers.push_back(*m);
+    std::sort(m_referenceMarkers.begin(), m_referenceMarkers.end());
+    m_referenceMarkers.erase(std::unique(m_referenceMarkers.begin(), m_referenceMarkers.end()),
+                             m_referenceMarkers.end());
+    return;
+  }
+  m_referenceMarkers = labelledHeadMarkers(m_take);
+  if (m_referenceMarkers.empty())
+    m_proposedReference = mostRigidCluster(m_take);
+}
+
+void TakeDocument::storeReferenceMarkers()
+{
+  if (m_referenceSaved)
+    setHeadMarkers(m_take, referenceLabels());
 }
 
 std::vector<std::string> TakeDocument::referenceLabels() const
@@ -310,7 +338,7 @@ bool TakeDocument::isReferenceMarker(Eigen::Index marker) const
   return std::binary_search(m_referenceMarkers.begin(), m_referenceMarkers.end(), marker);
 }
 
-std::vector<Eigen::Index> TakeDocument::setReferenceMarkers(std::vector<Eigen::Index> markers)
+std::vector<Eigen::Index> TakeDocument::setReferenceMarkers(std::vector<Eigen::Index> markers, bool saved)
 {
   markers.erase(std::remove_if(markers.begin(), markers.end(),
                                [this](Eigen::Index m) { return m < 0 || m >= m_take.markerCount(); }),
@@ -318,6 +346,10 @@ std::vector<Eigen::Index> TakeDocument::setReferenceMarkers(std::vector<Eigen::I
   std::sort(markers.begin(), markers.end());
   markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
   std::swap(markers, m_referenceMarkers);
+  m_referenceSaved = saved;
+  m_proposedReference.clear();  // the user has chosen: nothing left to propose
+  setHeadMarkers(m_take, {});
+  storeReferenceMarkers();
   if (markers != m_referenceMarkers)
     emit referenceMarkersChanged();
   return markers;

@@ -107,9 +107,12 @@ public:
   void setFlags(std::vector<std::pair<Eigen::Index, Eigen::Index>> flags);
 
   /// The head-mounted reference markers of the take (indices, ascending): the one set that head
-  /// stabilization, the head-stabilized view, layout planning and the face mesh use. Guessed
-  /// once when a take is set (guessHeadReferenceMarkers: root*/head* labels, else the most rigid
-  /// cluster); removing, inserting or exchanging markers keeps it on the same labels.
+  /// stabilization, the head-stabilized view, layout planning and the face mesh use. When a take
+  /// is set: the set saved with it (headMarkers in provenance.h), else its root*/head* labelled markers
+  /// (labelledHeadMarkers), else none, with the most rigid cluster proposed
+  /// (proposedReferenceMarkers) for the user to accept, never taken silently. A set chosen by
+  /// setReferenceMarkers is saved with the take; removing, inserting or exchanging markers keeps
+  /// it on the same labels.
   [[nodiscard]] const std::vector<Eigen::Index>& referenceMarkers() const { return m_referenceMarkers; }
   /// The reference markers' labels, in marker order.
   [[nodiscard]] std::vector<std::string> referenceLabels() const;
@@ -120,8 +123,16 @@ public:
   [[nodiscard]] std::shared_ptr<const HeadMotion> headMotion(const std::vector<Eigen::Index>& markers) const;
   [[nodiscard]] bool isReferenceMarker(Eigen::Index marker) const;
   /// Replaces the set (for SetReferenceMarkersCommand only; out-of-range indices are dropped)
-  /// and returns the old one. Emits referenceMarkersChanged when it changed.
-  std::vector<Eigen::Index> setReferenceMarkers(std::vector<Eigen::Index> markers);
+  /// and returns the old one. `saved`: the set becomes the take's own, its labels stored in the
+  /// take (setHeadMarkers, which saving and autosave write); else the take's are cleared.
+  /// Emits referenceMarkersChanged when it changed.
+  std::vector<Eigen::Index> setReferenceMarkers(std::vector<Eigen::Index> markers, bool saved = true);
+  /// Whether the set is the take's own (saved with it, chosen or accepted), not only named by labels.
+  [[nodiscard]] bool referenceMarkersSaved() const { return m_referenceSaved; }
+  /// The reference markers proposed for a take that has none saved and no root*/head* labels
+  /// (mostRigidCluster), for the user to accept or replace; empty otherwise. Not used by anything
+  /// until accepted through setReferenceMarkers.
+  [[nodiscard]] const std::vector<Eigen::Index>& proposedReferenceMarkers() const { return m_proposedReference; }
 
   /// The frame range selected on the curves, [first, last]; empty when first > last.
   [[nodiscard]] Eigen::Index rangeFirst() const { return m_rangeFirst; }
@@ -167,12 +178,16 @@ private:
   Eigen::Index m_rangeLast = -1;
 
   // Reference markers (see referenceMarkers()).
-  void guessReferenceMarkers();
+  void loadReferenceMarkers();
+  /// Writes the set's labels into the take when the set is the take's own (saved or chosen).
+  void storeReferenceMarkers();
   // Each returns whether the set changed; the caller emits referenceMarkersChanged after markersChanged.
   bool referenceMarkerRemoved(Eigen::Index marker, const std::string& label);
   bool referenceMarkerInserted(Eigen::Index marker);
   bool mapReferenceLabels(const std::vector<std::string>& labels);
   std::vector<Eigen::Index> m_referenceMarkers;
+  std::vector<Eigen::Index> m_proposedReference;
+  bool m_referenceSaved = false;  // the set is the take's own: saved with it, chosen, or accepted
   mutable std::map<std::vector<Eigen::Index>, std::shared_ptr<const HeadMotion>> m_headMotions;
   /// Labels of reference markers removed from the take: a marker inserted with one of them (the
   /// undo of the removal) rejoins the set.

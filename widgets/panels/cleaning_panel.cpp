@@ -154,6 +154,15 @@ CleanOptions CleaningPanel::cleanOptions() const
   return options;
 }
 
+QStringList CleaningPanel::loadCleanOptions(const CleanOptions& options)
+{
+  QStringList off;
+  for (CleaningStep* step : steps())
+    if (!step->loadPreset(options))
+      off << step->title();
+  return off;
+}
+
 bool CleaningPanel::busy() const
 {
   return m_watcher.isRunning();

@@ -3,6 +3,7 @@
 #include "panels/cleaning_step.h"
 
 #include <QFutureWatcher>
+#include <QStringList>
 #include <QWidget>
 
 #include <vector>
@@ -59,6 +60,11 @@ public:
   /// The steps' current parameters as `mocap clean` options (a step the panel lacks is off):
   /// what File ▸ Save Cleaning Preset… writes.
   [[nodiscard]] CleanOptions cleanOptions() const;
+  /// Sets the steps' parameters from `options` (File ▸ Load Cleaning Preset…): the previews
+  /// show them, nothing changes the take until Apply. Head markers in `options` are take
+  /// context and are not used. Returns the titles of the steps the preset turns off (left as they
+  /// were).
+  QStringList loadCleanOptions(const CleanOptions& options);
   /// Blocks until the running computation (if any) has delivered its preview. For tests.
   void waitForPreview();
   [[nodiscard]] const StepResult& lastResult() const { return m_result; }

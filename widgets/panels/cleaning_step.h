@@ -4,6 +4,7 @@
 #include "mocap/cleaning/clean_pipeline.h"
 #include "mocap/model/sample_patch.h"
 
+#include <QComboBox>
 #include <QString>
 #include <QWidget>
 
@@ -74,6 +75,14 @@ void tipFollowsCurrentItem(QComboBox& combo);
 /// the core step, which reports progress and stops (JobCancelled) when the panel cancels.
 using StepJob = std::function<StepResult(const Take&, const JobControl&)>;
 
+/// Selects the entry of `box` whose data is `value` (a method enum); leaves the box alone when it
+/// offers none (a preset naming a method this panel lacks keeps the panel's choice).
+inline void selectMethod(QComboBox& box, int value)
+{
+  if (const int index = box.findData(value); index >= 0)
+    box.setCurrentIndex(index);
+}
+
 /// One tab of the cleaning panel: parameters for one core method. Emits changed() whenever a
 /// parameter changes, so the panel can refresh the live preview.
 class CleaningStep : public QWidget
@@ -106,6 +115,15 @@ public:
   /// Puts this step's current parameters into `options` (File ▸ Save Cleaning Preset…, the
   /// preset `mocap batch --preset` reads). A step that is no pipeline step leaves it alone.
   virtual void addToPreset(CleanOptions& options) const { (void)options; }
+  /// Sets this step's parameters from a preset's (File ▸ Load Cleaning Preset…): the preview
+  /// shows them, the take is untouched until Apply. Returns false when the preset turns this
+  /// step off (the step keeps its parameters; the panel says so). A step with nothing in presets
+  /// returns true.
+  virtual bool loadPreset(const CleanOptions& options)
+  {
+    (void)options;
+    return true;
+  }
   /// Set by the panel before job() and patchesToApply().
   void setScope(StepScope scope) { m_scope = std::move(scope); }
   [[nodiscard]] const StepScope& scope() const { return m_scope; }

@@ -193,6 +193,19 @@ void GapFillStep::addToPreset(CleanOptions& preset) const
   preset.fill = currentOptions();
 }
 
+bool GapFillStep::loadPreset(const CleanOptions& preset)
+{
+  if (!preset.fill)
+    return false;
+  const FillOptions& fill = *preset.fill;
+  selectMethod(*m_method, static_cast<int>(fill.method));
+  m_neighbours->setValue(static_cast<int>(fill.neighbours));
+  m_extrapolate->setChecked(fill.extrapolate);
+  m_minValid->setValue(static_cast<int>(std::lround(fill.minValidFraction * 100.0)));
+  setMaxGapSeconds(fill.maxGap > 0 ? static_cast<double>(fill.maxGap) / frameRate() : fill.maxGapSeconds);
+  return true;
+}
+
 StepJob GapFillStep::job() const
 {
   FillOptions options = currentOptions();

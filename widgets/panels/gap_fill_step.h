@@ -29,6 +29,7 @@ public:
   void addToPreset(CleanOptions& options) const override;
   /// "11 gaps filled, 180 samples; 20 left open: M1, frames 5–90 (86): over the 0.5 s limit; …".
   [[nodiscard]] QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const override;
+  bool loadPreset(const CleanOptions& options) override;
 
   /// The longest gap to fill in seconds; 0 = unlimited. Shown in frames too.
   [[nodiscard]] double maxGapSeconds() const { return m_maxGapSeconds; }

@@ -48,13 +48,6 @@ QString HeadStabilizationStep::title() const
   return tr("Stabilize head");
 }
 
-void HeadStabilizationStep::addToPreset(CleanOptions& options) const
-{
-  options.stabilizeLabels.clear();
-  for (const Eigen::Index marker : m_document.referenceMarkers())
-    options.stabilizeLabels.push_back(m_document.take().label(marker));
-}
-
 StepJob HeadStabilizationStep::job() const
 {
   // Indices into the document's take, of which the job gets a copy taken at the same moment.

@@ -25,8 +25,8 @@ public:
   [[nodiscard]] QString title() const override;
   [[nodiscard]] StepJob job() const override;
   [[nodiscard]] bool wholeTake() const override { return true; }
-  /// The document's reference markers by label (the preset runs on other takes).
-  void addToPreset(CleanOptions& options) const override;
+  // No addToPreset: the reference markers are the take's, not an option; File ▸ Save Cleaning
+  // Preset… adds them only when asked to.
 
 signals:
   /// The user asked to edit the reference markers (the main window opens the one editor).

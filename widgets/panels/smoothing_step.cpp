@@ -150,6 +150,19 @@ QString SmoothingStep::appliedSummary(const std::vector<SamplePatch>& applied, c
   return samplesOnMarkers(countPatches(applied), tr("1 sample smoothed"), tr("%1 samples smoothed"));
 }
 
+bool SmoothingStep::loadPreset(const CleanOptions& preset)
+{
+  if (!preset.smooth)
+    return false;
+  const SmoothOptions& smooth = *preset.smooth;
+  selectMethod(*m_method, static_cast<int>(smooth.method));
+  m_degree->setValue(static_cast<int>(smooth.degree));
+  m_knotSpacing->setValue(smooth.knotSpacing);
+  m_cutoff->setValue(smooth.cutoffHz);
+  m_window->setValue(static_cast<int>(smooth.savgolWindow));
+  return true;
+}
+
 StepJob SmoothingStep::job() const
 {
   return [options = currentOptions(), unit = m_displayUnit](const Take& take, const JobControl& control) {

@@ -28,6 +28,7 @@ public:
   void addToPreset(CleanOptions& options) const override;
   /// "12 400 samples smoothed on 37 markers".
   [[nodiscard]] QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const override;
+  bool loadPreset(const CleanOptions& options) override;
 
 private:
   [[nodiscard]] SmoothOptions currentOptions() const;

@@ -122,6 +122,17 @@ void SpikeStep::addToPreset(CleanOptions& preset) const
   preset.spikes = currentOptions();
 }
 
+bool SpikeStep::loadPreset(const CleanOptions& preset)
+{
+  if (!preset.spikes)
+    return false;
+  selectMethod(*m_method, static_cast<int>(preset.spikes->method));
+  m_factor->setValue(preset.spikes->factor);
+  m_threshold->setValue(preset.spikes->threshold);
+  m_settle->setChecked(preset.spikes->maxPasses > 1);
+  return true;
+}
+
 StepJob SpikeStep::job() const
 {
   return [options = currentOptions(), repairs = m_repairs](const Take& take, const JobControl& control) {

@@ -30,6 +30,7 @@ public:
   /// "415 samples repaired on 37 markers".
   [[nodiscard]] QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const override;
   void addToPreset(CleanOptions& options) const override;
+  bool loadPreset(const CleanOptions& options) override;
 
 private:
   [[nodiscard]] SpikeOptions currentOptions() const;

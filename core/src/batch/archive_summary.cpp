@@ -25,6 +25,7 @@ constexpr std::size_t kGapBins = 11;
 constexpr std::size_t kMostSpikedMarkers = 30;
 constexpr std::size_t kHeatMarkers = 40;
 constexpr std::size_t kHeatTakes = 400;
+constexpr std::size_t kNamedFailures = 10;  // takes named per failure reason; the rest are counted
 
 std::size_t gapBin(std::int64_t length)
 {
@@ -352,6 +353,53 @@ ArchiveSummary summarizeArchive(const fs::path& outDir, double minValid)
   return summary;
 }
 
+namespace {
+
+/// A report's error less a leading "INPUT: " or "NAME: " naming the take (readers prefix their
+/// errors with the file), so takes failing for one cause share one reason.
+std::string failureReason(const TakeReport& report)
+{
+  const std::string name = std::filesystem::path(report.input).filename().string();
+  for (const std::string& prefix : {report.input + ": ", name + ": "})
+    if (!name.empty() && report.error.rfind(prefix, 0) == 0)
+      return report.error.substr(prefix.size());
+  return report.error;
+}
+
+void failureTable(std::string& html, const ArchiveSummary& summary)
+{
+  const std::vector<FailureGroup> groups = failuresByReason(summary);
+  if (groups.empty())
+    return;
+  html += "<h2>Failures by reason</h2>\n<table id=\"failures\"><tr><th>reason</th><th>takes</th><th>which</th></tr>\n";
+  for (const FailureGroup& group : groups) {
+    std::string names;
+    for (std::size_t i = 0; i < group.takes.size() && i < kNamedFailures; ++i)
+      names += (i > 0 ? ", " : "") + takeName(summary.reports[group.takes[i]]);
+    if (group.takes.size() > kNamedFailures)
+      names += " and " + std::to_string(group.takes.size() - kNamedFailures) + " more";
+    html += "<tr><td>" + escape(group.reason) + "</td><td>" + std::to_string(group.takes.size()) + "</td><td>" +
+            escape(names) + "</td></tr>\n";
+  }
+  html += "</table>\n";
+}
+
+} // namespace
+
+std::vector<FailureGroup> failuresByReason(const ArchiveSummary& summary)
+{
+  std::map<std::string, std::vector<std::size_t>> byReason;
+  for (std::size_t t = 0; t < summary.reports.size(); ++t)
+    if (summary.reports[t].failed())
+      byReason[failureReason(summary.reports[t])].push_back(t);
+  std::vector<FailureGroup> groups;
+  for (auto& [reason, takes] : byReason)
+    groups.push_back({reason, std::move(takes)});
+  std::stable_sort(groups.begin(), groups.end(),
+                   [](const FailureGroup& a, const FailureGroup& b) { return a.takes.size() > b.takes.size(); });
+  return groups;
+}
+
 std::string archiveSummaryHtml(const ArchiveSummary& summary)
 {
   const Figures figures = gather(summary);
@@ -382,6 +430,7 @@ std::string archiveSummaryHtml(const ArchiveSummary& summary)
             " takes";
   html += ")</h2>\n";
   missingHeatMap(html, summary, figures);
+  failureTable(html, summary);
   html += "<h2>Takes that need a person (worst first)</h2>\n<table id=\"review\"><tr><th>take</th><th>valid "
           "after</th><th>reader warnings</th><th>reason</th></tr>\n";
   for (const TakeToReview& review : summary.review) {
@@ -437,6 +486,14 @@ std::string archiveSummaryJson(const ArchiveSummary& summary)
   json.key("spikes_per_marker").beginArray();
   for (const auto& [label, count] : figures.spikesPerMarker)
     json.beginObject().key("marker").value(label).key("spikes").value(count).endObject();
+  json.endArray();
+  json.key("failures_by_reason").beginArray();
+  for (const FailureGroup& group : failuresByReason(summary)) {
+    json.beginObject().key("reason").value(group.reason).key("takes").beginArray();
+    for (const std::size_t t : group.takes)
+      json.value(takeName(summary.reports[t]));
+    json.endArray().endObject();
+  }
   json.endArray();
   json.key("review").beginArray();
   for (const TakeToReview& review : summary.review)

@@ -1,16 +1,15 @@
 #include "mocap/cleaning/head_stabilization.h"
+#include "mocap/cleaning/head_marker_labels.h"
 
 #include "mocap/base/error.h"
 #include "mocap/math/kabsch.h"
 #include "mocap/model/marker_set.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <limits>
 #include <set>
 #include <string>
-#include <string_view>
 
 namespace mocap {
 
@@ -166,21 +165,8 @@ void restoreHeadMotion(Take& take, const HeadMotion& motion)
 
 std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take)
 {
-  const auto startsWith = [](const std::string& label, std::string_view prefix) {
-    if (label.size() < prefix.size())
-      return false;
-    for (std::size_t i = 0; i < prefix.size(); ++i)
-      if (std::tolower(static_cast<unsigned char>(label[i])) != prefix[i])
-        return false;
-    return true;
-  };
-  std::vector<Eigen::Index> markers;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    if (startsWith(take.label(m), "root") || startsWith(take.label(m), "head"))
-      markers.push_back(m);
-  if (markers.size() >= 3)
-    return markers;
-  return mostRigidCluster(take);
+  std::vector<Eigen::Index> markers = labelledHeadMarkers(take);
+  return markers.empty() ? mostRigidCluster(take) : markers;
 }
 
 std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options)

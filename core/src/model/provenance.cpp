@@ -15,6 +15,8 @@ namespace mocap {
 namespace {
 
 constexpr const char* kGroup = "PROCESSING";
+constexpr const char* kHeadMarkers = "HEAD_MARKERS";
+constexpr const char* kGroupDescription = "Mocap Studio: sample states and processing history";
 constexpr const char* kFormat = "mocap-studio provenance";
 constexpr int kVersion = 1;
 constexpr std::size_t kRunsPerParameter = 255;   // a C3D dimension is one byte
@@ -111,6 +113,23 @@ Eigen::Index markZeroResidualsFilled(Take& take, std::optional<ResidualCounts> c
   return zero;
 }
 
+/// Sets the take's head markers to `labels`, skipping (with a warning) those the take lacks.
+void restoreHeadMarkers(Take& take, const std::vector<std::string>& labels, const std::string& sourceName,
+                        std::vector<std::string>* warnings)
+{
+  std::vector<std::string> kept;
+  std::string missing;
+  for (const std::string& label : labels) {
+    if (take.markerIndex(label))
+      kept.push_back(label);
+    else
+      missing += (missing.empty() ? "" : ", ") + label;
+  }
+  setHeadMarkers(take, kept);
+  if (!missing.empty())
+    warn(warnings, sourceName + ": head marker(s) " + missing + " not in this take; left out of its head markers");
+}
+
 void loadProcessingGroup(Take& take, const C3dGroup& group, std::vector<std::string>* warnings)
 {
   const C3dParameter* labelsParameter = group.find("LABELS");
@@ -142,6 +161,8 @@ void loadProcessingGroup(Take& take, const C3dGroup& group, std::vector<std::str
     text.resize(static_cast<std::size_t>(*bytes->number()));
   if (!text.empty())
     take.history() = readHistory(parseJson(text, "PROCESSING:HISTORY"));
+  if (const C3dParameter* head = group.find(kHeadMarkers))
+    restoreHeadMarkers(take, head->strings(), "PROCESSING:HEAD_MARKERS", warnings);
 }
 
 } // namespace
@@ -193,7 +214,8 @@ std::vector<StateCounts> stateCounts(const Take& take)
 
 bool hasProvenance(const Take& take)
 {
-  return !take.history().empty() || (take.states() != static_cast<std::uint8_t>(SampleState::Original)).any();
+  return !take.history().empty() || !headMarkers(take).empty() ||
+         (take.states() != static_cast<std::uint8_t>(SampleState::Original)).any();
 }
 
 void writeHistoryJson(JsonWriter& json, const std::vector<ProcessingStep>& history)
@@ -252,6 +274,12 @@ std::string provenanceJson(const Take& take)
   json.endArray();
   json.key("history");
   writeHistoryJson(json, take.history());
+  if (const std::vector<std::string> head = headMarkers(take); !head.empty()) {
+    json.key("head_markers").beginArray();
+    for (const std::string& label : head)
+      json.value(label);
+    json.endArray();
+  }
   json.endObject();
   return json.str() + "\n";
 }
@@ -288,14 +316,21 @@ void applyProvenanceJson(Take& take, std::string_view text, const std::string& s
   }
   if (const JsonValue* history = root.find("history", sourceName))
     take.history() = readHistory(*history);
+  if (const JsonValue* head = root.find("head_markers", sourceName)) {
+    std::vector<std::string> labels;
+    for (const JsonValue& label : head->array("head_markers"))
+      labels.push_back(label.string("a head marker label"));
+    restoreHeadMarkers(take, labels, sourceName, warnings);
+  }
 }
 
 void storeProvenance(const Take& take, C3dParameterTree& tree)
 {
+  const std::vector<std::string> head = headMarkers(take);  // before the group goes: `tree` may hold them
   tree.removeGroup(kGroup);
   if (!hasProvenance(take))
     return;
-  tree.ensureGroup(kGroup, "Mocap Studio: sample states and processing history");
+  tree.ensureGroup(kGroup, kGroupDescription);
   tree.set(kGroup, C3dParameter::makeInt16("VERSION", {kVersion}, true));
   tree.set(kGroup, C3dParameter::makeStrings("LABELS", take.labels()));
   const std::vector<StateRun> runs = stateRuns(take);
@@ -323,6 +358,8 @@ void storeProvenance(const Take& take, C3dParameterTree& tree)
     p.chars.resize(count * kPieceBytes, ' ');
     tree.set(kGroup, std::move(p));
   }
+  if (!head.empty())
+    tree.set(kGroup, C3dParameter::makeStrings(kHeadMarkers, head));
 }
 
 void loadProvenance(Take& take, std::vector<std::string>* warnings, std::optional<ResidualCounts> counts)
@@ -342,6 +379,24 @@ void loadProvenance(Take& take, std::vector<std::string>* warnings, std::optiona
   } catch (const Error& e) {
     warn(warnings, std::string("PROCESSING group unreadable, sample states and history not restored: ") + e.what());
   }
+}
+
+std::vector<std::string> headMarkers(const Take& take)
+{
+  return take.parameters().strings(kGroup, kHeadMarkers);
+}
+
+void setHeadMarkers(Take& take, const std::vector<std::string>& labels)
+{
+  C3dParameterTree& tree = take.parameters();
+  if (labels.empty()) {
+    tree.remove(kGroup, kHeadMarkers);
+    if (const C3dGroup* group = tree.group(kGroup); group && group->parameters.empty())
+      tree.removeGroup(kGroup);
+    return;
+  }
+  tree.ensureGroup(kGroup, kGroupDescription);
+  tree.set(kGroup, C3dParameter::makeStrings(kHeadMarkers, labels));
 }
 
 std::filesystem::path provenanceSidecarPath(const std::filesystem::path& takePath)

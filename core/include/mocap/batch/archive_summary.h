@@ -33,14 +33,26 @@ struct ArchiveSummary
 /// O(#reports · report size).
 [[nodiscard]] ArchiveSummary summarizeArchive(const std::filesystem::path& outDir, double minValid);
 
+/// Failed takes that failed for one reason (e.g. "the take has no marker labelled 'head1'").
+struct FailureGroup
+{
+  std::string reason;              ///< the error, less a leading "TAKE: " naming the take itself
+  std::vector<std::size_t> takes;  ///< indices into ArchiveSummary::reports, in report order
+};
+
+/// The failed takes grouped by reason, the largest group first (then by reason), so one cause
+/// behind many failures (a preset's head markers the takes lack) reads as one line.
+/// O(#takes · log #takes).
+[[nodiscard]] std::vector<FailureGroup> failuresByReason(const ArchiveSummary& summary);
+
 /// One self-contained HTML page (inline SVG, no script, no network; well-formed XML so any parser
 /// reads it): counts, valid fraction before and after per take, a histogram of gap lengths,
-/// spikes per marker, a heat map of missing samples (markers × takes), the takes to review and
-/// the presets used. O(#takes · #markers).
+/// spikes per marker, a heat map of missing samples (markers × takes), the failures by reason, the
+/// takes to review and the presets used. O(#takes · #markers).
 [[nodiscard]] std::string archiveSummaryHtml(const ArchiveSummary& summary);
 
 /// The same figures as JSON (counts, per-take valid fractions, the gap-length histogram, spikes
-/// per marker, the takes to review, the presets by hash). O(#takes · #markers).
+/// per marker, "failures_by_reason", the takes to review, the presets by hash). O(#takes · #markers).
 [[nodiscard]] std::string archiveSummaryJson(const ArchiveSummary& summary);
 
 } // namespace mocap

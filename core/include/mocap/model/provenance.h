@@ -27,6 +27,8 @@ class JsonWriter;
 ///               (1 filled, 2 smoothed, 3 edited); floats hold these exactly up to 2^24
 ///   HISTORY     Char [255, n], continued in HISTORY2…: the history as a JSON array, in
 ///               255-byte pieces; HISTORY_BYTES (Float scalar) is its length
+///   HEAD_MARKERS Char, the labels of the take's head reference markers (headMarkers below),
+///               written only when chosen; a file without it has none (VERSION stays 1)
 /// Filled samples are also written with residual 0 (the C3D convention for computed points).
 
 /// A run of consecutive frames of one marker in the same non-original state.
@@ -57,7 +59,8 @@ struct StateCounts
 /// One StateCounts per marker. O(#frames · #markers).
 [[nodiscard]] std::vector<StateCounts> stateCounts(const Take& take);
 
-/// True when some sample is not original or the take has a history. O(#frames · #markers).
+/// True when some sample is not original, the take has a history or head markers.
+/// O(#frames · #markers).
 [[nodiscard]] bool hasProvenance(const Take& take);
 
 /// "original", "filled", "smoothed", "edited". O(1).
@@ -69,12 +72,13 @@ void writeHistoryJson(JsonWriter& json, const std::vector<ProcessingStep>& histo
 
 /// The sidecar document: {"format": "mocap-studio provenance", "version": 1, "frames",
 /// "first_frame", "markers": [{"label", "filled", "smoothed", "edited", "runs": [[first_frame,
-/// length, state], …]}], "history": […]} with frames in the take's numbering. O(#frames · #markers).
+/// length, state], …]}], "history": […], "head_markers": [label, …]} with frames in the take's
+/// numbering ("head_markers" only when chosen). O(#frames · #markers).
 [[nodiscard]] std::string provenanceJson(const Take& take);
 
 /// Puts the states and history of a provenance document into `take` (markers matched by
 /// label; a label the take lacks, a run outside the take or another frame count is skipped
-/// with a warning). Throws FormatError for text that is not a provenance document.
+/// with a warning, a head marker the take lacks too). Throws FormatError for text that is not a provenance document.
 /// O(document size + #frames · #markers).
 void applyProvenanceJson(Take& take, std::string_view text, const std::string& sourceName,
                          std::vector<std::string>* warnings);
@@ -84,7 +88,7 @@ void applyProvenanceJson(Take& take, std::string_view text, const std::string& s
 void storeProvenance(const Take& take, C3dParameterTree& tree);
 
 /// Moves the PROCESSING group of take.parameters() into the take's states and history and
-/// removes the group (the writer makes it anew). A file without one that has real residuals
+/// removes the group but its HEAD_MARKERS (the writer makes it anew). A file without one that has real residuals
 /// (some valid sample above 0, fewer than half at 0) gets its residual-0 samples marked Filled,
 /// the C3D convention for computed points, with a warning saying how many. A malformed group
 /// is skipped with a warning. O(#frames · #markers); O(1) for a file without the group when
@@ -96,6 +100,17 @@ struct ResidualCounts
 };
 void loadProvenance(Take& take, std::vector<std::string>* warnings,
                     std::optional<ResidualCounts> counts = std::nullopt);
+
+/// The labels of the take's head reference markers as chosen (the studio's Marker ▸ Reference
+/// Markers…), empty when nobody chose them. Kept in take.parameters() as PROCESSING:HEAD_MARKERS,
+/// the one part of the group that stays in the tree after loadProvenance (the rest becomes the
+/// take's states and history), so they travel with every copy of the take and every writer saves
+/// them (C3D in the group, TRC/CSV in the sidecar). A marker renamed later is not followed: the
+/// studio's document stores the set again after each edit. O(#labels).
+[[nodiscard]] std::vector<std::string> headMarkers(const Take& take);
+/// Sets them; empty removes them (and the group from the tree when nothing else is in it).
+/// O(#labels).
+void setHeadMarkers(Take& take, const std::vector<std::string>& labels);
 
 /// Where the provenance of a TRC/CSV file is kept: NAME.provenance.json beside NAME.trc. O(1).
 [[nodiscard]] std::filesystem::path provenanceSidecarPath(const std::filesystem::path& takePath);
