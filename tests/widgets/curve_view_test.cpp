@@ -92,14 +92,42 @@ TEST(CurveView, TheValueRangeHoldsAPreviewFarOutsideTheCurve)
   ASSERT_TRUE(before);
   ASSERT_LT(before->second, 200.0);  // z of marker 1 stays within 20..70 mm
   // A fill proposal 500 mm away, as a stabilization preview can be.
-  doc.setPreview({makePatch(1, {600, 601, 602}, Eigen::Matrix<double, 3, 3>::Constant(500.0), SampleState::Filled)});
+  doc.setPreview({makePatch(1, {600, 601, 602}, Eigen::Matrix<double, 3, 3>::Constant(500.0), SampleOrigin::Filled)});
   const auto after = view.valueRange(2);
   ASSERT_TRUE(after);
   EXPECT_GE(after->second, 500.0);
   EXPECT_LE(after->first, before->first + 1e-9);
   // A preview for a marker that is not selected is not drawn, so it does not stretch the range.
-  doc.setPreview({makePatch(0, {600}, Eigen::Matrix<double, 1, 3>::Constant(500.0), SampleState::Filled)});
+  doc.setPreview({makePatch(0, {600}, Eigen::Matrix<double, 1, 3>::Constant(500.0), SampleOrigin::Filled)});
   EXPECT_LT(view.valueRange(2)->second, 200.0);
+}
+
+TEST(CurveView, AFillThatWasSmoothedIsDrawnAndReadAsFilled)
+{
+  const SampleState filledSmoothed = SampleState(SampleOrigin::Filled).with(SampleOperation::Smoothed);
+  EXPECT_EQ(ui::primaryMark(filledSmoothed), ui::SampleMark::Filled);
+  EXPECT_EQ(ui::secondaryMark(filledSmoothed), ui::SampleMark::Smoothed);
+  EXPECT_EQ(ui::stateColor(filledSmoothed), ui::colorScheme().filled);
+  EXPECT_EQ(ui::primaryMark(SampleState().with(SampleOperation::Smoothed)), ui::SampleMark::Smoothed);
+  EXPECT_EQ(ui::secondaryMark(SampleState().with(SampleOperation::Smoothed)), ui::SampleMark::None);
+  EXPECT_EQ(ui::primaryMark(SampleState().with(SampleOperation::Stabilized)), ui::SampleMark::None);
+  EXPECT_GT(ui::SampleMark::Filled, ui::SampleMark::Smoothed) << "where marks meet, the made origin wins";
+  ui::TakeDocument doc;
+  Take take = syntheticTake(2000, 3);
+  for (Eigen::Index f = 440; f < 460; ++f)
+    take.setState(f, 2, filledSmoothed);
+  doc.setTake(std::move(take));
+  doc.setSelection({2});
+  ui::CurveView view(doc);
+  view.resize(900, 420);
+  view.setVisibleRange(400, 500);
+  paintOnce(view);
+  const auto point = view.pointOf(2, 450, 2);
+  ASSERT_TRUE(point);
+  EXPECT_TRUE(view.readoutAt(*point).contains(QStringLiteral("filled, smoothed"))) << view.readoutAt(*point).toStdString();
+  const auto measured = view.pointOf(2, 420, 2);
+  ASSERT_TRUE(measured);
+  EXPECT_FALSE(view.readoutAt(*measured).contains(QStringLiteral("filled")));
 }
 
 TEST(CurveView, HoverReadOutNamesMarkerFrameAndValue)
@@ -163,7 +191,7 @@ double paintMilliseconds(Eigen::Index frames)
       rows.push_back(f);
       positions.row(f) = 1.01 * doc.take().position(f, m).transpose();
     }
-    preview.push_back(makePatch(m, rows, positions, SampleState::Smoothed));
+    preview.push_back(makePatch(m, rows, positions, SampleState().with(SampleOperation::Smoothed)));
   }
   doc.setPreview(preview);
   ui::CurveView view(doc);
@@ -300,8 +328,8 @@ TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsL
   const QColor keptColor = *view->markerColor(keptMarker);
   const QColor droppedColor = *view->markerColor(droppedMarker);
   const QColor referenceColor = *view->markerColor(root);
-  for (const QColor& state : {ui::stateColor(SampleState::Original), ui::stateColor(SampleState::Filled),
-                              ui::stateColor(SampleState::Smoothed), ui::stateColor(SampleState::Edited),
+  for (const QColor& state : {ui::stateColor(SampleOrigin::Measured), ui::stateColor(SampleOrigin::Filled),
+                              ui::stateColor(SampleState().with(SampleOperation::Smoothed)), ui::stateColor(SampleOrigin::Edited),
                               ui::colorScheme().flagged, ui::colorScheme().selection}) {
     EXPECT_NE(keptColor, state);
     EXPECT_NE(droppedColor, state);

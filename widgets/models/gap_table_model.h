@@ -85,6 +85,7 @@ private:
     Gap gap;
     std::string label;
     bool filled = false;  // a run of filled samples, not a gap
+    SampleState operations;  // of a filled run: every operation done to some of its samples since
     bool checked = false;
     FillMethod method = FillOptions{}.method;
     bool previewed = false;
