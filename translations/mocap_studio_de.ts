@@ -227,6 +227,29 @@
     </message>
 </context>
 <context>
+    <name>SampleState</name>
+    <message>
+        <source>measured</source>
+        <translation>gemessen</translation>
+    </message>
+    <message>
+        <source>filled</source>
+        <translation>gefüllt</translation>
+    </message>
+    <message>
+        <source>edited</source>
+        <translation>bearbeitet</translation>
+    </message>
+    <message>
+        <source>smoothed</source>
+        <translation>geglättet</translation>
+    </message>
+    <message>
+        <source>stabilized</source>
+        <translation>stabilisiert</translation>
+    </message>
+</context>
+<context>
     <name>SmoothingStep</name>
     <message>
         <location filename="../widgets/panels/smoothing_step.cpp" line="+158"/>
@@ -2288,6 +2311,10 @@
         <location line="+262"/>
         <source>filled</source>
         <translation>gefüllt</translation>
+    </message>
+    <message>
+        <source>filled (%1)</source>
+        <translation>gefüllt (%1)</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -106,6 +106,7 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   json.key("spikes").beginObject();
   json.key("method").value(options.spikes ? spikeMethodName(options.spikes->method) : "off");
   json.key("count").value(static_cast<std::int64_t>(report.spikes.size()));
+  json.key("repaired_samples").value(static_cast<std::int64_t>(report.repairedSamples));
   json.key("flagged").beginArray();
   for (const SpikeFlag& flag : report.spikes)
     json.beginObject()

@@ -70,12 +70,13 @@ void writeJson(const std::string& file, TakeFormat format, const Take& take, con
     json.key("label").value(take.label(m));
     json.key("valid_fraction")
         .value(take.frameCount() ? static_cast<double>(validCount) / static_cast<double>(take.frameCount()) : 0.0);
-    json.key("filled").value(static_cast<std::int64_t>(c.filled));
-    json.key("smoothed").value(static_cast<std::int64_t>(c.smoothed));
-    json.key("edited").value(static_cast<std::int64_t>(c.edited));
+    writeStateCountsJson(json, c);
     json.endObject();
   }
   json.endArray();
+  json.key("totals").beginObject();  // the per-marker counts summed
+  writeStateCountsJson(json, totalCounts(counts));
+  json.endObject();
   json.key("frames").value(static_cast<std::int64_t>(take.frameCount()));
   json.key("frame_rate").value(take.frameRate());
   json.key("duration").value(static_cast<double>(take.frameCount()) / take.frameRate());
@@ -118,15 +119,26 @@ void writeJson(const std::string& file, TakeFormat format, const Take& take, con
   std::cout << json.str() << '\n';
 }
 
-/// Samples made rather than measured, per marker, and the processing history.
+/// "filled 180  edited 415  smoothed 30000  stabilized 0": origins, then operations.
+void writeCountsText(const StateCounts& c)
+{
+  std::cout << "filled " << c.filled << "  edited " << c.edited << "  smoothed " << c.smoothed << "  stabilized "
+            << c.stabilized << '\n';
+}
+
+/// Samples made rather than measured and what was done to samples, per marker and in total, and
+/// the processing history.
 void writeProvenanceText(const Take& take)
 {
   const std::vector<StateCounts> counts = stateCounts(take);
+  std::cout << "samples:         ";
+  writeCountsText(totalCounts(counts));
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
     const StateCounts& c = counts[static_cast<std::size_t>(m)];
-    if (c.filled + c.smoothed + c.edited > 0)
-      std::cout << "  " << take.label(m) << "  filled " << c.filled << "  smoothed " << c.smoothed << "  edited "
-                << c.edited << '\n';
+    if (c.filled + c.edited + c.smoothed + c.stabilized > 0) {
+      std::cout << "  " << take.label(m) << "  ";
+      writeCountsText(c);
+    }
   }
   std::cout << "history:         " << take.history().size() << " step(s)\n";
   for (const ProcessingStep& step : take.history()) {

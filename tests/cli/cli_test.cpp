@@ -2,6 +2,7 @@
 #include "../core/test_support.h"
 
 #include "mocap/base/file_io.h"
+#include "mocap/base/json_reader.h"
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
 #include "mocap/model/provenance.h"
@@ -84,13 +85,58 @@ TEST(Cli, InfoTextSaysValidFraction)
   EXPECT_NE(run.out.find("valid samples:   96."), std::string::npos) << run.out;
 }
 
+// totals.origin.<name> of a `mocap info --json` document.
+double originTotal(const JsonValue& info, const std::string& name)
+{
+  return info.find("totals", "info")->find("origin", "totals")->find(name, "origin")->number(name);
+}
+
+// The samples of the history step named `operation` (the last one).
+double historySamples(const JsonValue& info, const std::string& operation)
+{
+  double samples = -1.0;
+  for (const JsonValue& step : info.find("history", "info")->array("history"))
+    if (step.find("operation", "step")->string("operation") == operation)
+      samples = step.find("samples", "step")->number("samples");
+  return samples;
+}
+
+TEST(Cli, DefaultCleanThenInfoCountsTheRepairedAndFilledSamplesTheHistoryGives)
+{
+  // The default clean smooths after repairing and filling; the invented samples must still count as
+  // edited and filled (they used to read 0 and 0, passing for smoothed measurements).
+  test::TempDir dir;
+  const CommandResult before = runMocap("info " + q(test::sampleTake()) + " --json", dir);
+  ASSERT_EQ(before.exitCode, 0) << before.err;
+  const CommandResult clean = runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("clean.c3d")), dir);
+  ASSERT_EQ(clean.exitCode, 0) << clean.err;
+  const CommandResult after = runMocap("info " + q(dir.file("clean.c3d")) + " --json", dir);
+  ASSERT_EQ(after.exitCode, 0) << after.err;
+  const JsonValue input = parseJson(before.out, "info before");
+  const JsonValue output = parseJson(after.out, "info after");
+  const double repaired = historySamples(output, "repair spikes");
+  const double filled = historySamples(output, "fill gaps");
+  ASSERT_GT(repaired, 0.0);
+  ASSERT_GT(filled, 0.0);
+  EXPECT_EQ(originTotal(output, "edited") - originTotal(input, "edited"), repaired);
+  EXPECT_EQ(originTotal(output, "filled") - originTotal(input, "filled"), filled);
+  const JsonValue& operations = *output.find("totals", "info")->find("operations", "totals");
+  EXPECT_EQ(operations.find("smoothed", "operations")->number("smoothed"), historySamples(output, "smooth"));
+  // The version-1 keys stay: per marker and in the totals, "filled" is the filled origin.
+  double markerFilled = 0.0;
+  for (const JsonValue& marker : output.find("markers", "info")->array("markers"))
+    markerFilled += marker.find("filled", "marker")->number("filled");
+  EXPECT_EQ(markerFilled, originTotal(output, "filled"));
+  EXPECT_EQ(output.find("totals", "info")->find("filled", "totals")->number("filled"), originTotal(output, "filled"));
+}
+
 TEST(Cli, InfoJsonReportsProvenanceAndDataLoss)
 {
   test::TempDir dir;
   Take take = readTake(test::sampleTake());
   const Eigen::Index marker = *take.markerIndex("section3-1");
   for (Eigen::Index f = 10; f < 14; ++f)
-    take.setState(f, marker, SampleState::Smoothed);
+    take.setState(f, marker, SampleState().with(SampleOperation::Smoothed));
   ProcessingStep step;
   step.operation = "smooth";
   step.parameters = {{"method", "gcvspl"}};

@@ -60,6 +60,9 @@ TEST(EnumTable, EveryNamedEnumRoundTrips)
 {
   expectRoundTrip({SelectionMethod::Pfa, SelectionMethod::Greedy}, selectionMethodName, parseSelectionMethod);
   expectRoundTrip({LengthUnit::Millimetre, LengthUnit::Centimetre, LengthUnit::Metre}, unitName, parseLengthUnit);
+  expectRoundTrip({SampleOrigin::Measured, SampleOrigin::Filled, SampleOrigin::Edited}, sampleOriginName,
+                  parseSampleOrigin);
+  expectRoundTrip({SampleOperation::Smoothed, SampleOperation::Stabilized}, sampleOperationName, parseSampleOperation);
   expectRoundTrip({SmoothingSplineMode::Gcv, SmoothingSplineMode::ErrorVariance, SmoothingSplineMode::Cutoff},
                   smoothingSplineModeName, parseSmoothingSplineMode);
   expectRoundTrip({SpikeMethod::Paper, SpikeMethod::Robust}, spikeMethodName, parseSpikeMethod);
@@ -77,8 +80,8 @@ TEST(EnumTable, EveryNamedEnumRoundTrips)
 
 TEST(EnumTable, NamesWithoutAParseKeepTheirSpelling)
 {
-  EXPECT_EQ(sampleStateName(SampleState::Smoothed), "smoothed");
-  EXPECT_EQ(sampleStateName(static_cast<SampleState>(200)), "original");  // a state byte read from a file
+  EXPECT_EQ(sampleOperationName(SampleOperation::Smoothed), "smoothed");
+  EXPECT_EQ(sampleOriginName(static_cast<SampleOrigin>(200)), "measured");  // a byte read from a file
   EXPECT_EQ(unfilledCauseName(UnfilledCause::None), "");
   EXPECT_EQ(unfilledCauseName(UnfilledCause::TooLong), "too_long");
   EXPECT_EQ(formatName(TakeFormat::Bvh), "bvh");

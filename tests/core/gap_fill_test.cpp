@@ -397,7 +397,7 @@ TEST(GapFill, FilledSamplesAreMarkedAndOtherInvalidSamplesUntouched)
     for (const SamplePatch& patch : result.patches) {
       EXPECT_NE(patch.marker, 2);
       for (const SampleState state : patch.states)
-        EXPECT_EQ(state, SampleState::Filled);
+        EXPECT_EQ(state, SampleOrigin::Filled);
     }
     (void)applyPatches(filled, result.patches);
     for (Eigen::Index m = 0; m < 6; ++m)
@@ -405,7 +405,7 @@ TEST(GapFill, FilledSamplesAreMarkedAndOtherInvalidSamplesUntouched)
         const bool inGap = (m == 0 && f >= 20 && f < 30) || (m == 1 && f >= 25 && f < 35);
         if (inGap) {
           EXPECT_TRUE(filled.isValid(f, m));
-          EXPECT_EQ(filled.state(f, m), SampleState::Filled);
+          EXPECT_EQ(filled.state(f, m), SampleOrigin::Filled);
           EXPECT_EQ(filled.residuals()(f, m), 0.0);
           EXPECT_TRUE(filled.position(f, m).allFinite());
         } else {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace mocap {
 namespace {
@@ -76,7 +77,7 @@ TEST(HeadStabilization, PatchesMoveTheSamplesAsRemoveHeadMotionDoesAndKeepTheirV
 {
   Take take = movingHead();
   take.valid()(7, 4) = false;
-  take.setState(9, 4, SampleState::Filled);
+  take.setState(9, 4, SampleOrigin::Filled);
   const HeadMotion motion = estimateHeadMotion(take, {0, 1, 2, 3});
   Take expected = take;
   removeHeadMotion(expected, motion);
@@ -86,10 +87,19 @@ TEST(HeadStabilization, PatchesMoveTheSamplesAsRemoveHeadMotionDoesAndKeepTheirV
     for (Eigen::Index f = 0; f < 50; ++f)
       ASSERT_EQ(patched.position(f, m), expected.position(f, m)) << m << " " << f;
   EXPECT_TRUE((patched.valid() == take.valid()).all());
-  EXPECT_EQ(patched.state(9, 4), SampleState::Filled);
+  // The samples keep their origin and say they were stabilized (a gap has nothing to say).
+  EXPECT_EQ(patched.state(9, 4), SampleState(SampleOrigin::Filled).with(SampleOperation::Stabilized));
+  EXPECT_EQ(patched.state(8, 4), SampleState().with(SampleOperation::Stabilized));
+  EXPECT_EQ(patched.state(7, 4), SampleOrigin::Measured);
+  EXPECT_TRUE((std::as_const(patched).states() == std::as_const(expected).states()).all());
   applyPatches(patched, undo);
   for (Eigen::Index m = 0; m < 5; ++m)
     EXPECT_TRUE(patched.trajectory(m) == take.trajectory(m)) << "undo restores bit for bit";
+  EXPECT_TRUE((std::as_const(patched).states() == std::as_const(take).states()).all());
+  // Putting the head motion back takes the mark away again; the origin stays.
+  restoreHeadMotion(expected, motion);
+  EXPECT_EQ(expected.state(9, 4), SampleOrigin::Filled);
+  EXPECT_EQ(expected.state(8, 4), SampleOrigin::Measured);
 }
 
 TEST(HeadStabilization, HeadMarkersAreGuessedFromTheirLabels)

@@ -27,7 +27,7 @@ void expectIdentical(const Take& a, const Take& b)
 TEST(MarkerEdits, RemoveThenInsertRestoresTheTakeBitForBit)
 {
   Take take = readC3d(test::sampleTake());
-  take.setState(10, 5, SampleState::Smoothed);
+  take.setState(10, 5, SampleState().with(SampleOperation::Smoothed));
   const Take original = take;
   for (const Eigen::Index marker : {Eigen::Index{0}, Eigen::Index{17}, take.markerCount() - 1}) {
     const std::string label = take.label(marker);
@@ -95,7 +95,7 @@ TEST(MarkerEdits, AveragedMarkerIsTheMeanWhereAllSourcesAreValid)
   EXPECT_TRUE(mid.valid(1));
   EXPECT_FALSE(mid.valid(2));
   EXPECT_EQ(mid.residuals(2), -1.0);
-  EXPECT_EQ(mid.states[1], SampleState::Edited);
+  EXPECT_EQ(mid.states[1], SampleOrigin::Edited);
   take.insertMarker(take.markerCount(), mid);
   EXPECT_EQ(*take.markerIndex("mid"), 3);
   EXPECT_THROW(static_cast<void>(averagedMarker(take, {}, "x")), InvalidArgument);
@@ -191,7 +191,7 @@ namespace {
 TEST(SubsetTake, KeepsTheNamedMarkersInOrderWithEverySample)
 {
   Take source = readC3d(test::sampleTake());
-  source.setState(42, *source.markerIndex("section4-2"), SampleState::Filled);
+  source.setState(42, *source.markerIndex("section4-2"), SampleOrigin::Filled);
   source.cameraMasks()(7, *source.markerIndex("root-3")) = 0x5a;
   const std::vector<std::string> labels = {"section4-2", "root-3", "section1-1"};
   const Take subset = subsetTake(source, labels);
@@ -212,7 +212,7 @@ TEST(SubsetTake, KeepsTheNamedMarkersInOrderWithEverySample)
       }
     }
   }
-  EXPECT_EQ(subset.state(42, 0), SampleState::Filled);
+  EXPECT_EQ(subset.state(42, 0), SampleOrigin::Filled);
   EXPECT_EQ(subset.cameraMasks()(7, 1), 0x5a);
 }
 
@@ -232,14 +232,14 @@ TEST(MarkerEdits, ExchangeFromAFrameIsTheSwapPatchesToTheEnd)
   const Eigen::Index b = *take.markerIndex("section4-2");
   take.cameraMasks()(take.frameCount() - 1, a) = 0x15;  // distinct masks, so an exchange shows
   take.cameraMasks()(take.frameCount() - 1, b) = 0x2a;
-  take.setState(take.frameCount() - 2, b, SampleState::Filled);
+  take.setState(take.frameCount() - 2, b, SampleOrigin::Filled);
   Take patched = take;
   applyPatches(patched, swapMarkersOverRange(take, a, b, 700, take.frameCount() - 1));
   Take exchanged = take;
   exchangeMarkersFrom(exchanged, a, b, 700);
   expectIdentical(exchanged, patched);
   EXPECT_EQ(exchanged.cameraMasks()(take.frameCount() - 1, a), 0x2a);
-  EXPECT_EQ(exchanged.state(take.frameCount() - 2, a), SampleState::Filled);
+  EXPECT_EQ(exchanged.state(take.frameCount() - 2, a), SampleOrigin::Filled);
   exchangeMarkersFrom(exchanged, a, b, 700);
   expectIdentical(exchanged, take);
   Take same = take;

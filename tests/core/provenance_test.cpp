@@ -6,6 +6,9 @@
 #include "mocap/io/c3d_writer.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/base/json_reader.h"
+#include "mocap/base/json_writer.h"
+#include "mocap/batch/clean_run.h"
 #include "mocap/cleaning/fill/gap_fill.h"
 #include "mocap/model/provenance.h"
 #include "mocap/model/sample_patch.h"
@@ -58,12 +61,12 @@ Take processedTake()
 {
   Take take = measuredTake();
   for (Eigen::Index f = 10; f < 30; ++f) {
-    take.setState(f, 1, SampleState::Filled);
+    take.setState(f, 1, SampleOrigin::Filled);
     take.residuals()(f, 1) = 0.0;
   }
   for (Eigen::Index f = 50; f < 60; ++f)
-    take.setState(f, 0, SampleState::Smoothed);
-  take.setState(100, 2, SampleState::Edited);
+    take.setState(f, 0, SampleState().with(SampleOperation::Smoothed));
+  take.setState(100, 2, SampleOrigin::Edited);
   take.history().push_back(fillStep());
   return take;
 }
@@ -72,9 +75,9 @@ TEST(Provenance, StateRunsAreRunLengthRanges)
 {
   const std::vector<StateRun> runs = stateRuns(processedTake());
   ASSERT_EQ(runs.size(), 3u);
-  EXPECT_EQ(runs[0], (StateRun{0, 50, 10, SampleState::Smoothed}));
-  EXPECT_EQ(runs[1], (StateRun{1, 10, 20, SampleState::Filled}));
-  EXPECT_EQ(runs[2], (StateRun{2, 100, 1, SampleState::Edited}));
+  EXPECT_EQ(runs[0], (StateRun{0, 50, 10, SampleState().with(SampleOperation::Smoothed)}));
+  EXPECT_EQ(runs[1], (StateRun{1, 10, 20, SampleOrigin::Filled}));
+  EXPECT_EQ(runs[2], (StateRun{2, 100, 1, SampleOrigin::Edited}));
   const std::vector<StateCounts> counts = stateCounts(processedTake());
   EXPECT_EQ(counts[0].smoothed, 10);
   EXPECT_EQ(counts[1].filled, 20);
@@ -124,7 +127,7 @@ TEST(Provenance, ManyRunsAndALongHistorySpanSeveralParameters)
   Take take({"a", "b"}, 4000, 100.0);
   for (Eigen::Index f = 0; f < 4000; f += 4)  // 1000 one-frame runs per marker
     for (Eigen::Index m = 0; m < 2; ++m)
-      take.setState(f, m, f % 8 == 0 ? SampleState::Smoothed : SampleState::Edited);
+      take.setState(f, m, f % 8 == 0 ? SampleState().with(SampleOperation::Smoothed) : SampleOrigin::Edited);
   for (int i = 0; i < 300; ++i) {
     ProcessingStep step = fillStep();
     step.operation = "step " + std::to_string(i) + "   with  spaces at the ends  ";
@@ -145,9 +148,9 @@ TEST(Provenance, RunsFollowLabelsNotIndices)
   Take reordered({"c", "b", "a"}, 200, 100.0);
   storeProvenance(take, reordered.parameters());
   loadProvenance(reordered, nullptr);
-  EXPECT_EQ(reordered.state(55, 2), SampleState::Smoothed);  // "a" is now index 2
-  EXPECT_EQ(reordered.state(100, 0), SampleState::Edited);   // "c" is now index 0
-  EXPECT_EQ(reordered.state(20, 1), SampleState::Filled);
+  EXPECT_EQ(reordered.state(55, 2), SampleState().with(SampleOperation::Smoothed));  // "a" is now index 2
+  EXPECT_EQ(reordered.state(100, 0), SampleOrigin::Edited);   // "c" is now index 0
+  EXPECT_EQ(reordered.state(20, 1), SampleOrigin::Filled);
 }
 
 TEST(Provenance, MalformedGroupIsAWarningNotAFailure)
@@ -174,8 +177,8 @@ TEST(Provenance, ForeignResidualZeroSamplesAreShownAsFilled)
     take.residuals()(f, 2) = 0.0;  // another system's gap fill, no PROCESSING group
   std::vector<std::string> warnings;
   const Take back = reparse(take, &warnings);
-  EXPECT_EQ(back.state(42, 2), SampleState::Filled);
-  EXPECT_EQ(back.state(42, 1), SampleState::Original);
+  EXPECT_EQ(back.state(42, 2), SampleOrigin::Filled);
+  EXPECT_EQ(back.state(42, 1), SampleOrigin::Measured);
   EXPECT_EQ(stateCounts(back)[2].filled, 5);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings.front().find("residual 0"), std::string::npos);
@@ -237,7 +240,7 @@ TEST(Provenance, SidecarForAnotherTakeIsIgnoredWithAWarning)
   writeTrc(cut, dir.file("take.trc"));  // the TRC changed, the sidecar did not
   std::vector<std::string> warnings;
   const Take back = readTake(dir.file("take.trc"), &warnings);
-  EXPECT_FALSE((back.states() != static_cast<std::uint8_t>(SampleState::Original)).any());
+  EXPECT_FALSE((back.states() != std::uint8_t{0}).any());
   ASSERT_FALSE(warnings.empty());
   EXPECT_NE(warnings.back().find("frames"), std::string::npos) << warnings.back();
   writeFileAtomically(dir.file("take.provenance.json"), "not json");
@@ -245,6 +248,213 @@ TEST(Provenance, SidecarForAnotherTakeIsIgnoredWithAWarning)
   EXPECT_NO_THROW((void)readTake(dir.file("take.trc"), &warnings));
   ASSERT_FALSE(warnings.empty());
   EXPECT_NE(warnings.back().find("sidecar"), std::string::npos);
+}
+
+/// processedTake plus samples with both an origin and operations: frames 40..49 of "b" filled
+/// then smoothed, 120..124 of "c" edited then smoothed and stabilized, 130..139 of "a" measured and
+/// stabilized.
+Take combinedTake()
+{
+  Take take = processedTake();
+  const SampleState smoothed = SampleState().with(SampleOperation::Smoothed);
+  for (Eigen::Index f = 40; f < 50; ++f) {
+    take.setState(f, 1, SampleState(SampleOrigin::Filled).with(SampleOperation::Smoothed));
+    take.residuals()(f, 1) = 0.0;
+  }
+  for (Eigen::Index f = 120; f < 125; ++f)
+    take.setState(f, 2, SampleState(SampleOrigin::Edited).with(SampleOperation::Smoothed).with(SampleOperation::Stabilized));
+  for (Eigen::Index f = 130; f < 140; ++f)
+    take.setState(f, 0, SampleState().with(SampleOperation::Stabilized));
+  EXPECT_EQ(take.state(55, 0), smoothed);
+  return take;
+}
+
+TEST(Provenance, OriginAndOperationsAreKeptApart)
+{
+  SampleState state = SampleOrigin::Filled;
+  state = state.with(SampleOperation::Smoothed);
+  EXPECT_EQ(state.origin(), SampleOrigin::Filled);
+  EXPECT_TRUE(state.has(SampleOperation::Smoothed));
+  EXPECT_FALSE(state.has(SampleOperation::Stabilized));
+  EXPECT_EQ(state.without(SampleOperation::Smoothed), SampleOrigin::Filled);
+  EXPECT_TRUE(SampleState().untouched());
+  EXPECT_FALSE(SampleState().with(SampleOperation::Stabilized).untouched());
+  // A byte from elsewhere keeps only bits that mean something.
+  EXPECT_EQ(SampleState::fromBits(0xF5).bits(), 0x05);
+  EXPECT_EQ(SampleState::fromBits(0x02), SampleOrigin::Measured);
+}
+
+TEST(Provenance, CountsPerOriginAndPerOperation)
+{
+  const Take take = combinedTake();
+  const std::vector<StateCounts> counts = stateCounts(take);
+  EXPECT_EQ(counts[1].filled, 30);  // 20 filled + 10 filled then smoothed
+  EXPECT_EQ(counts[1].smoothed, 10);
+  EXPECT_EQ(counts[1].smoothedMeasured, 0);
+  EXPECT_EQ(counts[1].measured, 170);
+  EXPECT_EQ(counts[0].smoothed, 10);
+  EXPECT_EQ(counts[0].smoothedMeasured, 10);
+  EXPECT_EQ(counts[0].stabilized, 10);
+  EXPECT_EQ(counts[0].measured, 200);
+  EXPECT_EQ(counts[2].edited, 6);
+  EXPECT_EQ(counts[2].smoothed, 5);
+  EXPECT_EQ(counts[2].stabilized, 5);
+  const StateCounts total = totalCounts(counts);
+  EXPECT_EQ(total.measured + total.filled + total.edited, 600);  // every sample is valid here
+  JsonWriter json;
+  json.beginObject();
+  writeStateCountsJson(json, counts[1]);
+  json.endObject();
+  EXPECT_NE(json.str().find("\"origin\": {\n    \"measured\": 170,\n    \"filled\": 30,\n    \"edited\": 0\n  }"),
+            std::string::npos)
+      << json.str();
+  // The version-1 keys count each sample once, by origin first.
+  EXPECT_NE(json.str().find("\"filled\": 30,\n  \"smoothed\": 0,\n  \"edited\": 0,"), std::string::npos) << json.str();
+}
+
+TEST(Provenance, OriginAndOperationsSurviveC3dAndSidecar)
+{
+  const Take take = combinedTake();
+  std::vector<std::string> warnings;
+  const Take back = reparse(take, &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_TRUE((back.states() == take.states()).all());
+  EXPECT_EQ(back.state(45, 1), SampleState(SampleOrigin::Filled).with(SampleOperation::Smoothed));
+  EXPECT_EQ(back.residuals()(45, 1), 0.0) << "a smoothed fill is still written as computed";
+  EXPECT_NE(encodeC3d(take).find("VERSION"), std::string::npos);
+  C3dParameterTree tree;
+  storeProvenance(take, tree);
+  EXPECT_EQ(tree.group("PROCESSING")->find("VERSION")->number(), 2.0);
+
+  test::TempDir dir;
+  writeTake(take, dir.file("take.trc"));
+  const std::string sidecar = readFileBytes(dir.file("take.provenance.json"));
+  EXPECT_NE(sidecar.find("\"version\": 2"), std::string::npos);
+  // Marker "b"'s runs: [11, 20, "filled", []] and [41, 10, "filled", ["smoothed"]].
+  const JsonValue document = parseJson(sidecar, "sidecar");
+  const auto& runs = document.find("markers", "")->array("")[1].find("runs", "")->array("");
+  ASSERT_EQ(runs.size(), 2u);
+  ASSERT_EQ(runs[1].array("").size(), 4u);
+  EXPECT_EQ(runs[1].array("")[0].number(""), 41.0);
+  EXPECT_EQ(runs[1].array("")[2].string(""), "filled");
+  ASSERT_EQ(runs[1].array("")[3].array("").size(), 1u);
+  EXPECT_EQ(runs[1].array("")[3].array("")[0].string(""), "smoothed");
+  warnings.clear();
+  const Take fromSidecar = readTake(dir.file("take.trc"), &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_TRUE((fromSidecar.states() == take.states()).all());
+}
+
+TEST(Provenance, VersionOneGroupStillReads)
+{
+  // What the first writers stored: one state per sample, 1 filled, 2 smoothed, 3 edited.
+  Take take = measuredTake();
+  C3dGroup& group = take.parameters().ensureGroup("PROCESSING");
+  group.parameters.push_back(C3dParameter::makeInt16("VERSION", {1}, true));
+  group.parameters.push_back(C3dParameter::makeStrings("LABELS", {"a", "b", "c"}));
+  C3dParameter runs = C3dParameter::makeFloat("STATE_RUNS", {1, 10, 20, 1, 0, 50, 10, 2, 2, 100, 1, 3}, false);
+  runs.dimensions = {4, 3};
+  group.parameters.push_back(runs);
+  std::vector<std::string> warnings;
+  loadProvenance(take, &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_EQ(take.state(15, 1), SampleOrigin::Filled);
+  EXPECT_EQ(take.state(55, 0), SampleState().with(SampleOperation::Smoothed));
+  EXPECT_EQ(take.state(100, 2), SampleOrigin::Edited);
+  EXPECT_EQ(take.state(5, 1), SampleOrigin::Measured);
+  // A code version 1 did not have is skipped with a warning, not misread.
+  Take other = measuredTake();
+  C3dGroup& bad = other.parameters().ensureGroup("PROCESSING");
+  bad.parameters = group.parameters;
+  bad.find("STATE_RUNS")->numbers[3] = 5;
+  warnings.clear();
+  loadProvenance(other, &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(other.state(15, 1), SampleOrigin::Measured);
+}
+
+TEST(Provenance, UnknownGroupVersionIsAWarning)
+{
+  Take take = combinedTake();
+  C3dParameterTree tree;
+  storeProvenance(take, tree);
+  tree.group("PROCESSING")->find("VERSION")->numbers = {3};
+  Take target = measuredTake();
+  target.parameters() = tree;
+  std::vector<std::string> warnings;
+  loadProvenance(target, &warnings);
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_NE(warnings.front().find("VERSION 3"), std::string::npos) << warnings.front();
+  EXPECT_FALSE((target.states() != std::uint8_t{0}).any());
+  EXPECT_EQ(target.history(), take.history()) << "the history is still read";
+}
+
+TEST(Provenance, VersionOneSidecarStillReads)
+{
+  Take take = measuredTake();
+  const std::string text = R"({"format": "mocap-studio provenance", "version": 1, "frames": 200, "first_frame": 1,
+    "markers": [{"label": "a", "filled": 0, "smoothed": 10, "edited": 0, "runs": [[51, 10, "smoothed"]]},
+                {"label": "b", "filled": 20, "smoothed": 0, "edited": 0, "runs": [[11, 20, "filled"]]},
+                {"label": "c", "filled": 0, "smoothed": 0, "edited": 1, "runs": [[101, 1, "edited"]]}],
+    "history": []})";
+  std::vector<std::string> warnings;
+  applyProvenanceJson(take, text, "old.provenance.json", &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_EQ(take.state(55, 0), SampleState().with(SampleOperation::Smoothed));
+  EXPECT_EQ(take.state(15, 1), SampleOrigin::Filled);
+  EXPECT_EQ(take.state(100, 2), SampleOrigin::Edited);
+  // Names neither version knows are skipped with a warning.
+  applyProvenanceJson(take, R"({"format": "mocap-studio provenance", "frames": 200, "first_frame": 1,
+    "markers": [{"label": "a", "runs": [[1, 2, "guessed"], [1, 2, "filled", ["polished"]]]}]})",
+                      "odd.provenance.json", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings.front().find("2 sample-state run(s)"), std::string::npos) << warnings.front();
+}
+
+TEST(Provenance, DefaultCleanOfTheSampleCountsWhatTheHistorySays)
+{
+  // The default `mocap clean`: spikes repaired, gaps filled, everything smoothed. The smoothing
+  // must not hide which samples were invented: the counts by origin equal the history's.
+  Take take = readTake(test::sampleTake());
+  const StateCounts before = totalCounts(stateCounts(take));
+  const std::size_t steps = take.history().size();
+  (void)cleanAndRecord(take, CleanOptions{}, "test");
+  ASSERT_EQ(take.history().size(), steps + 3);
+  const ProcessingStep& repair = take.history()[steps];
+  const ProcessingStep& fill = take.history()[steps + 1];
+  const ProcessingStep& smooth = take.history()[steps + 2];
+  ASSERT_EQ(repair.operation, "repair spikes");
+  ASSERT_EQ(fill.operation, "fill gaps");
+  ASSERT_EQ(smooth.operation, "smooth");
+  ASSERT_GT(repair.samples, 0);
+  ASSERT_GT(fill.samples, 0);
+  const StateCounts after = totalCounts(stateCounts(take));
+  EXPECT_EQ(after.edited - before.edited, repair.samples);
+  EXPECT_EQ(after.filled - before.filled, fill.samples);
+  EXPECT_EQ(after.smoothed - before.smoothed, smooth.samples);
+  // ... and they survive the file the CLI writes.
+  test::TempDir dir;
+  writeTake(take, dir.file("clean.c3d"));
+  const StateCounts reread = totalCounts(stateCounts(readTake(dir.file("clean.c3d"))));
+  EXPECT_EQ(reread.edited, after.edited);
+  EXPECT_EQ(reread.filled, after.filled);
+  EXPECT_EQ(reread.smoothed, after.smoothed);
+}
+
+TEST(Provenance, TruncatedFileReportsDataLoss)
+{
+  const std::string bytes = encodeC3d(measuredTake());
+  const std::string cut = bytes.substr(0, bytes.size() - 3 * 4 * 4 * 60);  // drop 60 frames
+  std::vector<std::string> warnings, dataLoss;
+  const Take back = parseC3d(reinterpret_cast<const unsigned char*>(cut.data()), cut.size(), "cut.c3d", &warnings,
+                             &dataLoss);
+  EXPECT_EQ(back.frameCount(), 140);
+  ASSERT_EQ(dataLoss.size(), 1u);
+  EXPECT_NE(dataLoss.front().find("truncated"), std::string::npos);
+  // A complete file has no data-loss warning.
+  dataLoss.clear();
+  (void)parseC3d(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), "whole.c3d", nullptr, &dataLoss);
+  EXPECT_TRUE(dataLoss.empty());
 }
 
 TEST(Provenance, HeadMarkersSurviveC3dAndSidecarRoundTrips)
@@ -285,22 +495,6 @@ TEST(Provenance, HeadMarkersTheTakeLacksAreDroppedWithAWarning)
   EXPECT_EQ(headMarkers(other), (std::vector<std::string>{"a"}));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings.front().find("head marker(s) b"), std::string::npos) << warnings.front();
-}
-
-TEST(Provenance, TruncatedFileReportsDataLoss)
-{
-  const std::string bytes = encodeC3d(measuredTake());
-  const std::string cut = bytes.substr(0, bytes.size() - 3 * 4 * 4 * 60);  // drop 60 frames
-  std::vector<std::string> warnings, dataLoss;
-  const Take back = parseC3d(reinterpret_cast<const unsigned char*>(cut.data()), cut.size(), "cut.c3d", &warnings,
-                             &dataLoss);
-  EXPECT_EQ(back.frameCount(), 140);
-  ASSERT_EQ(dataLoss.size(), 1u);
-  EXPECT_NE(dataLoss.front().find("truncated"), std::string::npos);
-  // A complete file has no data-loss warning.
-  dataLoss.clear();
-  (void)parseC3d(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size(), "whole.c3d", nullptr, &dataLoss);
-  EXPECT_TRUE(dataLoss.empty());
 }
 
 } // namespace

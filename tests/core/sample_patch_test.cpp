@@ -19,9 +19,9 @@ TEST(SamplePatch, SwapThenSwapBackRestoresTheTakeBitForBit)
     frames.push_back(f);
   Eigen::Matrix<double, Eigen::Dynamic, 3> positions(45, 3);
   positions.setConstant(1.5);
-  SamplePatch undo = swapSamples(take, makePatch(marker, frames, positions, SampleState::Filled));
+  SamplePatch undo = swapSamples(take, makePatch(marker, frames, positions, SampleOrigin::Filled));
   EXPECT_TRUE(take.valid().col(marker).segment(880, 45).all());
-  EXPECT_EQ(take.state(900, marker), SampleState::Filled);
+  EXPECT_EQ(take.state(900, marker), SampleOrigin::Filled);
   EXPECT_EQ(take.position(900, marker), Eigen::Vector3d::Constant(1.5));
   const SamplePatch redo = swapSamples(take, std::move(undo));
   EXPECT_TRUE((take.valid() == original.valid()).all());
@@ -36,14 +36,14 @@ TEST(SamplePatch, ApplyPatchesReturnsUndoInReverseOrder)
 {
   Take take({"a", "b"}, 4, 100.0);
   std::vector<SamplePatch> patches;
-  patches.push_back(makePatch(0, {1}, Eigen::RowVector3d(1, 1, 1), SampleState::Edited));
-  patches.push_back(makePatch(0, {1}, Eigen::RowVector3d(2, 2, 2), SampleState::Smoothed));
+  patches.push_back(makePatch(0, {1}, Eigen::RowVector3d(1, 1, 1), SampleOrigin::Edited));
+  patches.push_back(makePatch(0, {1}, Eigen::RowVector3d(2, 2, 2), SampleState().with(SampleOperation::Smoothed)));
   auto undo = applyPatches(take, std::move(patches));
   EXPECT_EQ(take.position(1, 0), Eigen::Vector3d(2, 2, 2));
   applyPatches(take, std::move(undo));
   EXPECT_FALSE(take.isValid(1, 0));
   EXPECT_EQ(take.position(1, 0), Eigen::Vector3d::Zero());
-  EXPECT_EQ(take.state(1, 0), SampleState::Original);
+  EXPECT_EQ(take.state(1, 0), SampleOrigin::Measured);
 }
 
 TEST(SamplePatch, DeleteSamplesMakesAGapAndUndoBringsItBack)
@@ -56,7 +56,7 @@ TEST(SamplePatch, DeleteSamplesMakesAGapAndUndoBringsItBack)
   SamplePatch undo = swapSamples(take, std::move(patch));
   EXPECT_FALSE(take.valid().col(marker).segment(880, 46).any());
   EXPECT_EQ(take.residuals()(880, marker), -1.0);
-  EXPECT_EQ(take.state(880, marker), SampleState::Edited);
+  EXPECT_EQ(take.state(880, marker), SampleOrigin::Edited);
   swapSamples(take, std::move(undo));
   EXPECT_TRUE((take.valid() == original.valid()).all());
   EXPECT_TRUE((take.residuals() == original.residuals()).all());
@@ -67,12 +67,12 @@ TEST(SamplePatch, DeleteSamplesMakesAGapAndUndoBringsItBack)
 TEST(SamplePatch, MisfitPatchesAreRejectedWithoutChanges)
 {
   Take take({"a"}, 4, 100.0);
-  EXPECT_THROW(swapSamples(take, makePatch(1, {0}, Eigen::RowVector3d(1, 1, 1), SampleState::Edited)), InvalidArgument);
-  EXPECT_THROW(swapSamples(take, makePatch(0, {4}, Eigen::RowVector3d(1, 1, 1), SampleState::Edited)), InvalidArgument);
+  EXPECT_THROW(swapSamples(take, makePatch(1, {0}, Eigen::RowVector3d(1, 1, 1), SampleOrigin::Edited)), InvalidArgument);
+  EXPECT_THROW(swapSamples(take, makePatch(0, {4}, Eigen::RowVector3d(1, 1, 1), SampleOrigin::Edited)), InvalidArgument);
   Eigen::Matrix<double, Eigen::Dynamic, 3> two(2, 3);
   two.setOnes();
-  EXPECT_THROW(swapSamples(take, makePatch(0, {2, 1}, two, SampleState::Edited)), InvalidArgument);
-  EXPECT_THROW((void)makePatch(0, {1}, two, SampleState::Edited), InvalidArgument);
+  EXPECT_THROW(swapSamples(take, makePatch(0, {2, 1}, two, SampleOrigin::Edited)), InvalidArgument);
+  EXPECT_THROW((void)makePatch(0, {1}, two, SampleOrigin::Edited), InvalidArgument);
   EXPECT_FALSE(take.valid().any());
 }
 
@@ -80,7 +80,7 @@ TEST(SamplePatch, PatchWithinKeepsOnlyTheFramesOfTheRange)
 {
   Eigen::Matrix<double, Eigen::Dynamic, 3> positions(4, 3);
   positions << 1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4;
-  const SamplePatch patch = makePatch(2, {3, 5, 7, 9}, positions, SampleState::Filled);
+  const SamplePatch patch = makePatch(2, {3, 5, 7, 9}, positions, SampleOrigin::Filled);
   const SamplePatch part = patchWithin(patch, 4, 7);
   EXPECT_EQ(part.marker, 2);
   EXPECT_EQ(part.frames, (std::vector<Eigen::Index>{5, 7}));

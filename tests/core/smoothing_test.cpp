@@ -155,7 +155,7 @@ TEST(Smoothing, TakePatchesCoverChangedValidSamplesAndUndoExactly)
       EXPECT_EQ(patch.marker, static_cast<Eigen::Index>(m));
       for (std::size_t i = 0; i < patch.size(); ++i) {
         ASSERT_TRUE(take.isValid(patch.frames[i], patch.marker));
-        ASSERT_EQ(patch.states[i], SampleState::Smoothed);
+        ASSERT_EQ(patch.states[i], take.state(patch.frames[i], patch.marker).with(SampleOperation::Smoothed));
         ASSERT_EQ(patch.residuals(static_cast<Eigen::Index>(i)),
                   take.residuals()(patch.frames[i], patch.marker));
       }
@@ -202,6 +202,35 @@ TEST(Smoothing, InPlaceLeavesTheTakeAsApplyingThePatches)
     EXPECT_TRUE((patched.valid() == inPlace.valid()).all());
     EXPECT_TRUE((patched.residuals() == inPlace.residuals()).all());
   }
+}
+
+TEST(Smoothing, AFilledSampleStaysFilledAndUndoRestoresItsState)
+{
+  // A smoothed fill is still invented data: smoothing adds an operation, it does not replace the
+  // origin (it used to, and `mocap info` then counted no filled samples after a default clean).
+  Take take({"a"}, 60, 100.0);
+  std::mt19937 noise(7);
+  std::normal_distribution<double> jitter(0.0, 0.5);
+  for (Eigen::Index f = 0; f < 60; ++f) {
+    take.setPosition(f, 0, Eigen::Vector3d(static_cast<double>(f) + jitter(noise), jitter(noise), 0.0));
+    take.valid()(f, 0) = true;
+  }
+  for (Eigen::Index f = 20; f < 30; ++f)
+    take.setState(f, 0, SampleOrigin::Filled);
+  take.setState(40, 0, SampleOrigin::Edited);
+  const Take original = take;
+  const std::vector<SamplePatch> patches = smoothTake(take, SmoothOptions{});
+  ASSERT_EQ(patches.size(), 1u);
+  std::vector<SamplePatch> undo = applyPatches(take, patches);
+  EXPECT_EQ(take.state(25, 0), SampleState(SampleOrigin::Filled).with(SampleOperation::Smoothed));
+  EXPECT_EQ(take.state(40, 0), SampleState(SampleOrigin::Edited).with(SampleOperation::Smoothed));
+  EXPECT_EQ(take.state(10, 0), SampleState().with(SampleOperation::Smoothed));
+  Take inPlace = original;
+  (void)smoothTakeInPlace(inPlace, SmoothOptions{});
+  EXPECT_TRUE((std::as_const(inPlace).states() == std::as_const(take).states()).all());
+  applyPatches(take, std::move(undo));
+  EXPECT_TRUE((std::as_const(take).states() == original.states()).all());
+  EXPECT_EQ(take.state(25, 0), SampleOrigin::Filled);
 }
 
 TEST(Smoothing, TakeWithNoFramesOrMarkers)

@@ -277,7 +277,7 @@ TEST(SpikeDetection, ReplacementIsEq10AndLinearAcrossBlocks)
   EXPECT_LT((patch.positions.row(1) - (2.0 * row(4.0) + row(7.0)) / 3.0).norm(), 1e-12);
   EXPECT_LT((patch.positions.row(2) - (row(4.0) + 2.0 * row(7.0)) / 3.0).norm(), 1e-12);
   for (SampleState state : patch.states)
-    EXPECT_EQ(state, SampleState::Edited);
+    EXPECT_EQ(state, SampleOrigin::Edited);
   EXPECT_TRUE(patch.valid.all());
   EXPECT_TRUE((patch.residuals == 0.0).all());
 }
@@ -330,7 +330,7 @@ TEST(SpikeDetection, ReplacingChangesOnlyTheFlaggedSamples)
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
       if (flagged(f, m)) {
-        ASSERT_EQ(take.state(f, m), SampleState::Edited);
+        ASSERT_EQ(take.state(f, m), SampleOrigin::Edited);
         ASSERT_EQ(take.residuals()(f, m), 0.0);
         continue;
       }

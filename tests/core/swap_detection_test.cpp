@@ -60,15 +60,15 @@ TEST(SwapDetection, ExchangingTwiceRestoresTheTake)
 {
   const Take take = noseTake();
   Take copy = take;
-  copy.setState(500, 3, SampleState::Edited);
+  copy.setState(500, 3, SampleOrigin::Edited);
   const Take edited = copy;
   exchangeMarkersFrom(copy, 3, 9, 400);
   EXPECT_EQ(copy.position(600, 3), take.position(600, 9));
-  EXPECT_EQ(copy.state(500, 9), SampleState::Edited);
+  EXPECT_EQ(copy.state(500, 9), SampleOrigin::Edited);
   EXPECT_EQ(copy.position(399, 3), take.position(399, 3));
   exchangeMarkersFrom(copy, 3, 9, 400);
   EXPECT_EQ(labelAgreement(edited, copy, {}), 1.0);
-  EXPECT_EQ(copy.state(500, 3), SampleState::Edited);
+  EXPECT_EQ(copy.state(500, 3), SampleOrigin::Edited);
   EXPECT_THROW(exchangeMarkersFrom(copy, 3, copy.markerCount(), 0), InvalidArgument);
 }
 

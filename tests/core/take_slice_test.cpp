@@ -18,7 +18,7 @@ Take numberedTake()
       take.setPosition(f, m, Eigen::Vector3d(x, 10.0 * y, -(x + y)));
       take.valid()(f, m) = (f + m) % 3 != 0;
       take.residuals()(f, m) = take.valid()(f, m) ? 0.1 * x : -1.0;
-      take.setState(f, m, f % 2 ? SampleState::Filled : SampleState::Original);
+      take.setState(f, m, f % 2 ? SampleOrigin::Filled : SampleOrigin::Measured);
     }
   return take;
 }

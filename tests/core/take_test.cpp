@@ -64,13 +64,13 @@ TEST(Take, AddMarkerKeepsExistingData)
   Take take({"a"}, 3, 100.0);
   take.setPosition(2, 0, {1, 2, 3});
   take.valid()(2, 0) = true;
-  take.setState(2, 0, SampleState::Filled);
+  take.setState(2, 0, SampleOrigin::Filled);
   EXPECT_EQ(take.addMarker("a"), 1);
   EXPECT_EQ(take.label(1), "a_2");
   EXPECT_EQ(take.position(2, 0), Eigen::Vector3d(1, 2, 3));
   EXPECT_TRUE(take.isValid(2, 0));
   EXPECT_FALSE(take.valid().col(1).any());
-  EXPECT_EQ(take.state(2, 0), SampleState::Filled);
+  EXPECT_EQ(take.state(2, 0), SampleOrigin::Filled);
 }
 
 TEST(Gaps, RunsOfInvalidSamplesWithEdges)

@@ -85,7 +85,7 @@ TEST(TrcIo, ReadsNoseMoCap)
   EXPECT_EQ(take.label(40), "Chin_L2");
   EXPECT_EQ(take.validFraction(), 1.0);
   EXPECT_TRUE((take.residuals() == 0.0).all());
-  EXPECT_EQ(take.state(0, 0), mocap::SampleState::Original);
+  EXPECT_EQ(take.state(0, 0), mocap::SampleOrigin::Measured);
 
   // Values copied from the file's text (frame 1, 494 and 962).
   EXPECT_EQ(take.position(0, 0), Eigen::Vector3d(143.52007, 842.21375, 29.05422));

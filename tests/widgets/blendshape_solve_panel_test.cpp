@@ -167,7 +167,7 @@ TEST_F(BlendshapeSolvePanelTest, WeightEditsApplyToTheSelectedShapesOverTheRange
   const Eigen::Matrix<double, 1, 3> moved = document().take().position(500, marker).transpose() +
                                             Eigen::RowVector3d(1.0, 0.0, 0.0);
   document().undoStack()->push(new ui::ApplyPatchesCommand(
-      document(), {makePatch(marker, {500}, moved, SampleState::Edited)}, QStringLiteral("nudge")));
+      document(), {makePatch(marker, {500}, moved, SampleOrigin::Edited)}, QStringLiteral("nudge")));
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("changed since"))) << panel->statusText().toStdString();
   undo.undo();
 

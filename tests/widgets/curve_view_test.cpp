@@ -93,49 +93,42 @@ TEST(CurveView, TheValueRangeHoldsAPreviewFarOutsideTheCurve)
   ASSERT_TRUE(before);
   ASSERT_LT(before->second, 200.0);  // z of marker 1 stays within 20..70 mm
   // A fill proposal 500 mm away, as a stabilization preview can be.
-  doc.setPreview({makePatch(1, {600, 601, 602}, Eigen::Matrix<double, 3, 3>::Constant(500.0), SampleState::Filled)});
+  doc.setPreview({makePatch(1, {600, 601, 602}, Eigen::Matrix<double, 3, 3>::Constant(500.0), SampleOrigin::Filled)});
   const auto after = view.valueRange(2);
   ASSERT_TRUE(after);
   EXPECT_GE(after->second, 500.0);
   EXPECT_LE(after->first, before->first + 1e-9);
   // A preview for a marker that is not selected is not drawn, so it does not stretch the range.
-  doc.setPreview({makePatch(0, {600}, Eigen::Matrix<double, 1, 3>::Constant(500.0), SampleState::Filled)});
+  doc.setPreview({makePatch(0, {600}, Eigen::Matrix<double, 1, 3>::Constant(500.0), SampleOrigin::Filled)});
   EXPECT_LT(view.valueRange(2)->second, 200.0);
 }
 
-// A bad point's repair is one sample: its preview is the dashed line from the kept neighbours
-// through the repaired value, as a fill's or a smoothing's is, not a lone dot.
-TEST(CurveView, ARepairedBadPointPreviewsAsADashedLine)
+TEST(CurveView, AFillThatWasSmoothedIsDrawnAndReadAsFilled)
 {
+  const SampleState filledSmoothed = SampleState(SampleOrigin::Filled).with(SampleOperation::Smoothed);
+  EXPECT_EQ(ui::primaryMark(filledSmoothed), ui::SampleMark::Filled);
+  EXPECT_EQ(ui::secondaryMark(filledSmoothed), ui::SampleMark::Smoothed);
+  EXPECT_EQ(ui::stateColor(filledSmoothed), ui::colorScheme().filled);
+  EXPECT_EQ(ui::primaryMark(SampleState().with(SampleOperation::Smoothed)), ui::SampleMark::Smoothed);
+  EXPECT_EQ(ui::secondaryMark(SampleState().with(SampleOperation::Smoothed)), ui::SampleMark::None);
+  EXPECT_EQ(ui::primaryMark(SampleState().with(SampleOperation::Stabilized)), ui::SampleMark::None);
+  EXPECT_GT(ui::SampleMark::Filled, ui::SampleMark::Smoothed) << "where marks meet, the made origin wins";
   ui::TakeDocument doc;
-  Take take = syntheticTake(2000, 2);
-  const Eigen::Vector3d truth = take.position(450, 0);
-  take.setPosition(450, 0, truth + Eigen::Vector3d(0.0, 0.0, 15.0));  // a spike in z
+  Take take = syntheticTake(2000, 3);
+  for (Eigen::Index f = 440; f < 460; ++f)
+    take.setState(f, 2, filledSmoothed);
   doc.setTake(std::move(take));
-  doc.setSelection({0});
+  doc.setSelection({2});
   ui::CurveView view(doc);
   view.resize(900, 420);
-  view.setVisibleRange(440, 460);
-  QImage plain(view.size(), QImage::Format_ARGB32_Premultiplied);
-  view.render(&plain);
-  doc.setPreview(replaceSpikes(doc.take(), {SpikeFlag{0, 450}}));
-  ASSERT_EQ(doc.preview().size(), 1u);
-  ASSERT_EQ(doc.preview().front().size(), 1u);
-  QImage previewed(view.size(), QImage::Format_ARGB32_Premultiplied);
-  view.render(&previewed);
-  // Pixels changed between the neighbours' columns, away from the repaired sample's dot.
-  const auto before = view.pointOf(0, 449, 2), spike = view.pointOf(0, 450, 2), after = view.pointOf(0, 451, 2);
-  ASSERT_TRUE(before && spike && after);
-  const int left = static_cast<int>(before->x()) + 4, right = static_cast<int>(after->x()) - 4;
-  const int dot = static_cast<int>(spike->x());
-  int changed = 0;
-  for (int x = left; x <= right; ++x) {
-    if (std::abs(x - dot) <= 5)
-      continue;
-    for (int y = 0; y < view.height(); ++y)
-      changed += plain.pixel(x, y) != previewed.pixel(x, y) ? 1 : 0;
-  }
-  EXPECT_GT(changed, 150) << "a dashed line on each side of the repaired sample, on the z strip";
+  view.setVisibleRange(400, 500);
+  paintOnce(view);
+  const auto point = view.pointOf(2, 450, 2);
+  ASSERT_TRUE(point);
+  EXPECT_TRUE(view.readoutAt(*point).contains(QStringLiteral("filled, smoothed"))) << view.readoutAt(*point).toStdString();
+  const auto measured = view.pointOf(2, 420, 2);
+  ASSERT_TRUE(measured);
+  EXPECT_FALSE(view.readoutAt(*measured).contains(QStringLiteral("filled")));
 }
 
 TEST(CurveView, HoverReadOutNamesMarkerFrameAndValue)
@@ -199,7 +192,7 @@ double paintMilliseconds(Eigen::Index frames)
       rows.push_back(f);
       positions.row(f) = 1.01 * doc.take().position(f, m).transpose();
     }
-    preview.push_back(makePatch(m, rows, positions, SampleState::Smoothed));
+    preview.push_back(makePatch(m, rows, positions, SampleState().with(SampleOperation::Smoothed)));
   }
   doc.setPreview(preview);
   ui::CurveView view(doc);
@@ -336,8 +329,8 @@ TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsL
   const QColor keptColor = *view->markerColor(keptMarker);
   const QColor droppedColor = *view->markerColor(droppedMarker);
   const QColor referenceColor = *view->markerColor(root);
-  for (const QColor& state : {ui::stateColor(SampleState::Original), ui::stateColor(SampleState::Filled),
-                              ui::stateColor(SampleState::Smoothed), ui::stateColor(SampleState::Edited),
+  for (const QColor& state : {ui::stateColor(SampleOrigin::Measured), ui::stateColor(SampleOrigin::Filled),
+                              ui::stateColor(SampleState().with(SampleOperation::Smoothed)), ui::stateColor(SampleOrigin::Edited),
                               ui::colorScheme().flagged, ui::colorScheme().selection}) {
     EXPECT_NE(keptColor, state);
     EXPECT_NE(droppedColor, state);
@@ -422,6 +415,39 @@ TEST_F(StudioViews, FollowHeadKeepsTheCameraOnTheHeadMarkers)
   follow->setChecked(false);
   doc.setCurrentFrame(1000);
   EXPECT_LT((view->cameraFocalPoint() - at2500).norm(), 1e-9) << "not following: the camera stays";
+}
+
+TEST(CurveView, ARepairedBadPointPreviewsAsADashedLine)
+{
+  ui::TakeDocument doc;
+  Take take = syntheticTake(2000, 2);
+  const Eigen::Vector3d truth = take.position(450, 0);
+  take.setPosition(450, 0, truth + Eigen::Vector3d(0.0, 0.0, 15.0));  // a spike in z
+  doc.setTake(std::move(take));
+  doc.setSelection({0});
+  ui::CurveView view(doc);
+  view.resize(900, 420);
+  view.setVisibleRange(440, 460);
+  QImage plain(view.size(), QImage::Format_ARGB32_Premultiplied);
+  view.render(&plain);
+  doc.setPreview(replaceSpikes(doc.take(), {SpikeFlag{0, 450}}));
+  ASSERT_EQ(doc.preview().size(), 1u);
+  ASSERT_EQ(doc.preview().front().size(), 1u);
+  QImage previewed(view.size(), QImage::Format_ARGB32_Premultiplied);
+  view.render(&previewed);
+  // Pixels changed between the neighbours' columns, away from the repaired sample's dot.
+  const auto before = view.pointOf(0, 449, 2), spike = view.pointOf(0, 450, 2), after = view.pointOf(0, 451, 2);
+  ASSERT_TRUE(before && spike && after);
+  const int left = static_cast<int>(before->x()) + 4, right = static_cast<int>(after->x()) - 4;
+  const int dot = static_cast<int>(spike->x());
+  int changed = 0;
+  for (int x = left; x <= right; ++x) {
+    if (std::abs(x - dot) <= 5)
+      continue;
+    for (int y = 0; y < view.height(); ++y)
+      changed += plain.pixel(x, y) != previewed.pixel(x, y) ? 1 : 0;
+  }
+  EXPECT_GT(changed, 150) << "a dashed line on each side of the repaired sample, on the z strip";
 }
 
 } // namespace

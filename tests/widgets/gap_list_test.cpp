@@ -200,7 +200,7 @@ TEST_F(GapList, FillingTwoCheckedGapsIsOneUndoStepThatRestoresBitForBit)
     for (Eigen::Index f = 0; f < before.frameCount(); ++f) {
       if (inGap(gapA, m, f) || inGap(gapB, m, f)) {
         EXPECT_TRUE(after.isValid(f, m)) << m << " " << f;
-        EXPECT_EQ(after.state(f, m), SampleState::Filled);
+        EXPECT_EQ(after.state(f, m), SampleOrigin::Filled);
         ++changed;
       } else {
         ASSERT_EQ(after.isValid(f, m), before.isValid(f, m)) << m << " " << f;
@@ -527,6 +527,52 @@ TEST(GapListTimeline, MarksOfALargeTakeAreWorkedOutOnce)
   EXPECT_FALSE(spans.empty());
   std::cout << "[ measured ] timeline marks of 20000 frames x 60 markers: " << first << " ms to work out, " << paint
             << " ms per repaint\n";
+}
+
+TEST(GapListOrigin, AFillThatWasSmoothedStillReadsFilledAndUndoBringsBackTheGap)
+{
+  // The list follows each sample's origin: smoothing a fill does not make it a measurement.
+  Take take({"a"}, 40, 100.0);
+  for (Eigen::Index f = 0; f < 40; ++f) {
+    take.setPosition(f, 0, Eigen::Vector3d(static_cast<double>(f), 0.0, 0.0));
+    take.valid()(f, 0) = f < 10 || f >= 20;
+  }
+  TakeDocument document;
+  document.setTake(std::move(take));
+  GapTableModel model(document);
+  ASSERT_EQ(model.rowCount(), 1);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> positions(10, 3);
+  std::vector<Eigen::Index> frames;
+  for (Eigen::Index f = 10; f < 20; ++f) {
+    positions.row(f - 10) = Eigen::RowVector3d(static_cast<double>(f), 0.0, 0.0);
+    frames.push_back(f);
+  }
+  document.undoStack()->push(
+      new ui::ApplyPatchesCommand(document, {makePatch(0, frames, positions, SampleOrigin::Filled)}, QStringLiteral("fill")));
+  ASSERT_EQ(model.rowCount(), 1);
+  EXPECT_EQ(model.stateAt(0), GapTableModel::FillState::Filled);
+  EXPECT_EQ(model.data(model.index(0, GapTableModel::StateColumn)).toString(), QStringLiteral("filled"));
+  // Smooth the fill and two measured samples (what a whole-take smoothing does).
+  std::vector<Eigen::Index> smoothed;
+  std::vector<SampleState> states;
+  for (Eigen::Index f = 8; f < 20; ++f) {
+    smoothed.push_back(f);
+    states.push_back(document.take().state(f, 0).with(SampleOperation::Smoothed));
+  }
+  SamplePatch smoothing = makePatch(0, smoothed, Eigen::MatrixX3d::Zero(12, 3), SampleOrigin::Measured);
+  smoothing.states = states;
+  for (Eigen::Index i = 0; i < 12; ++i)
+    smoothing.positions.row(i) = document.take().trajectory(0).row(8 + i);
+  document.undoStack()->push(new ui::ApplyPatchesCommand(document, {smoothing}, QStringLiteral("smooth")));
+  ASSERT_EQ(model.rowCount(), 1) << "the smoothed fill is still listed";
+  EXPECT_EQ(model.stateAt(0), GapTableModel::FillState::Filled);
+  EXPECT_EQ(model.gapAt(0).firstFrame, 10);
+  EXPECT_EQ(model.gapAt(0).length, 10);
+  EXPECT_EQ(model.data(model.index(0, GapTableModel::StateColumn)).toString(), QStringLiteral("filled (smoothed)"));
+  document.undoStack()->undo();
+  EXPECT_EQ(model.data(model.index(0, GapTableModel::StateColumn)).toString(), QStringLiteral("filled"));
+  document.undoStack()->undo();
+  EXPECT_EQ(model.stateAt(0), GapTableModel::FillState::Open);
 }
 
 } // namespace

@@ -80,9 +80,9 @@ TEST(Preferences, ColoursAreRememberedAndUnreadableOnesFallBackToTheDefaults)
   EXPECT_TRUE(dialog.preferences().colors == ui::ColorScheme{});
 
   ui::setColorScheme(p.colors);
-  EXPECT_EQ(ui::stateColor(SampleState::Filled), QColor(1, 2, 3));
+  EXPECT_EQ(ui::stateColor(SampleOrigin::Filled), QColor(1, 2, 3));
   ui::setColorScheme(ui::ColorScheme{});
-  EXPECT_EQ(ui::stateColor(SampleState::Filled), ui::ColorScheme{}.filled);
+  EXPECT_EQ(ui::stateColor(SampleOrigin::Filled), ui::ColorScheme{}.filled);
 }
 
 TEST(Preferences, TheDialogShowsAndReturnsThePreferences)

@@ -120,7 +120,7 @@ protected:
         const double t = static_cast<double>(i + 1) / static_cast<double>(gap.length + 1);
         positions.row(i) = ((1.0 - t) * a + t * b).transpose();
       }
-      patches.push_back(makePatch(marker, std::move(frames), std::move(positions), SampleState::Filled));
+      patches.push_back(makePatch(marker, std::move(frames), std::move(positions), SampleOrigin::Filled));
     }
     return patches;
   }
@@ -179,7 +179,7 @@ TEST_F(StudioWindow, FillChangesOnlyTheGapAndUndoRestoresBitForBit)
       const bool wasGap = m == marker && !before.isValid(f, m) && f > 0 && f < before.frameCount() - 1;
       if (wasGap) {
         ASSERT_TRUE(after.isValid(f, m)) << f;
-        ASSERT_EQ(after.state(f, m), SampleState::Filled);
+        ASSERT_EQ(after.state(f, m), SampleOrigin::Filled);
       } else {
         ASSERT_EQ(after.isValid(f, m), before.isValid(f, m)) << m << " " << f;
         if (before.isValid(f, m)) {
@@ -243,7 +243,7 @@ TEST_F(StudioWindow, SaveAndReopenKeepTheEdit)
   // C3D stores floats: the filled doubles come back to float precision.
   EXPECT_LT((doc.take().position(900, marker) - saved.position(900, marker)).norm(), 1e-4);
   // The provenance survives: the filled samples reopen as filled, the rest as measured.
-  ASSERT_EQ(saved.state(900, marker), SampleState::Filled);
+  ASSERT_EQ(saved.state(900, marker), SampleOrigin::Filled);
   EXPECT_TRUE((doc.take().states() == saved.states()).all());
   EXPECT_EQ(doc.take().state(900, marker), saved.state(900, marker));
 }
@@ -364,7 +364,7 @@ TEST_F(StudioWindow, DraggingASampleOnTheCurvesEditsOneCoordinateUndoably)
   EXPECT_GT(edited.z(), original.position(520, marker).z()) << "dragged up: z grew";
   EXPECT_EQ(edited.x(), original.position(520, marker).x());
   EXPECT_EQ(edited.y(), original.position(520, marker).y());
-  EXPECT_EQ(doc.take().state(520, marker), SampleState::Edited);
+  EXPECT_EQ(doc.take().state(520, marker), SampleOrigin::Edited);
   EXPECT_EQ(doc.take().position(519, marker), original.position(519, marker));
   EXPECT_TRUE(doc.preview().empty());
   doc.undoStack()->undo();
@@ -646,7 +646,7 @@ TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
   const Eigen::Index marker = *doc.take().markerIndex("section8-1");
   const Eigen::Vector3d truth = doc.take().position(1500, marker);
   doc.undoStack()->push(new ui::ApplyPatchesCommand(
-      doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleState::Edited)},
+      doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleOrigin::Edited)},
       QStringLiteral("spike")));
   const Take before = doc.take();
   ui::CleaningPanel* panel = window->cleaningPanel();
@@ -657,7 +657,7 @@ TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
   EXPECT_EQ(doc.take().position(1500, marker), before.position(1500, marker)) << "a preview never touches the take";
   EXPECT_GT(panel->apply(), 0);
   EXPECT_LT((doc.take().position(1500, marker) - truth).norm(), 1.0) << "the spike is replaced by its neighbours";
-  EXPECT_EQ(doc.take().state(1500, marker), SampleState::Edited);
+  EXPECT_EQ(doc.take().state(1500, marker), SampleOrigin::Edited);
   EXPECT_TRUE(doc.preview().empty());
   doc.undoStack()->undo();
   EXPECT_EQ(doc.take().position(1500, marker), before.position(1500, marker));
@@ -753,7 +753,7 @@ TEST_F(StudioWindow, AFlaggedBadPointIsDrawnInTheFlagColour)
   const Eigen::Index marker = *doc.take().markerIndex("section8-1");
   const Eigen::Vector3d truth = doc.take().position(1500, marker);
   doc.undoStack()->push(new ui::ApplyPatchesCommand(
-      doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleState::Edited)},
+      doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleOrigin::Edited)},
       QStringLiteral("spike")));
   window->cleaningPanel()->waitForPreview();
   doc.setCurrentFrame(1500);

@@ -2,6 +2,7 @@
 
 #include "document/take_document.h"
 #include "models/fill_rule_text.h"
+#include "views/sample_colors.h"
 
 #include "mocap/model/valid_runs.h"
 
@@ -76,24 +77,33 @@ std::vector<GapTableModel::Row> GapTableModel::currentRows() const
   const std::vector<Gap> gaps = findGaps(take);
   std::vector<Row> rows;
   rows.reserve(gaps.size());
-  auto add = [&rows, &take](const Gap& gap, bool filled) {
+  auto add = [&rows, &take](const Gap& gap, bool filled, SampleState operations) {
     Row row;
     row.gap = gap;
     row.label = take.label(gap.marker);
     row.filled = filled;
+    row.operations = operations;
     rows.push_back(std::move(row));
   };
   auto next = gaps.begin();
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
     const std::size_t first = rows.size();
     for (; next != gaps.end() && next->marker == m; ++next)
-      add(*next, false);
-    const ValidMask filled =
-        take.valid().col(m) && (take.states().col(m) == static_cast<std::uint8_t>(SampleState::Filled));
+      add(*next, false, {});
+    // Filled by origin: a fill that was smoothed afterwards is still invented data.
+    const auto states = take.states().col(m);
+    const ValidMask filled = take.valid().col(m) && states.unaryExpr([](std::uint8_t bits) {
+      return SampleState::fromBits(bits).origin() == SampleOrigin::Filled;
+    });
     if (!filled.any())
       continue;
-    for (const ValidRun& run : findValidRuns(filled))
-      add(Gap{m, run.first, run.length, run.first == 0 || run.first + run.length == take.frameCount()}, true);
+    for (const ValidRun& run : findValidRuns(filled)) {
+      std::uint8_t operations = 0;
+      for (Eigen::Index f = run.first; f < run.first + run.length; ++f)
+        operations = static_cast<std::uint8_t>(operations | states(f));
+      add(Gap{m, run.first, run.length, run.first == 0 || run.first + run.length == take.frameCount()}, true,
+          SampleState::fromBits(static_cast<std::uint8_t>(operations & SampleState::kOperationBits)));
+    }
     std::sort(rows.begin() + static_cast<std::ptrdiff_t>(first), rows.end(),
               [](const Row& a, const Row& b) { return a.gap.firstFrame < b.gap.firstFrame; });
   }
@@ -314,6 +324,8 @@ void GapTableModel::setReports(const std::vector<GapFillReport>& reports)
 
 QString GapTableModel::stateText(const Row& row) const
 {
+  if (row.filled && !row.operations.untouched())
+    return tr("filled (%1)").arg(operationsText(row.operations));
   if (row.filled)
     return tr("filled");
   if (row.previewed)

@@ -101,6 +101,7 @@ private:
     Gap gap;
     std::string label;
     bool filled = false;  // a run of filled samples, not a gap
+    SampleState operations;  // of a filled run: every operation done to some of its samples since
     bool checked = false;
     bool allowed = false;  // filled even though the rules leave it open
     UnfilledCause refusal = UnfilledCause::None;

@@ -38,6 +38,29 @@ QColor previewColor(const QColor& marker)
   return QColor::fromHslF(hue < 0.0f ? 0.0f : hue, hue < 0.0f ? 0.0f : 1.0f, 0.86f);
 }
 
+using HaloLines = std::array<QVector<QLineF>, kSampleMarkCount>;
+
+// Files a curve segment under its halo: `mark` (the primary, none for an untouched sample) and,
+// when `second`, the smoothed rim drawn beneath a made sample's halo.
+void addHalo(HaloLines& halos, QVector<QLineF>& secondHalos, const QLineF& line, SampleMark mark, bool second)
+{
+  if (mark != SampleMark::None)
+    halos[static_cast<std::size_t>(mark)].push_back(line);
+  if (second)
+    secondHalos.push_back(line);
+}
+
+void drawHalo(QPainter& painter, const QVector<QLineF>& lines, QColor color, double width)
+{
+  if (lines.isEmpty())
+    return;
+  color.setAlpha(120);
+  QPen pen(color, width);
+  pen.setCapStyle(Qt::FlatCap);
+  painter.setPen(pen);
+  painter.drawLines(lines);
+}
+
 double toDisplay(double value, LengthUnit from, LengthUnit to)
 {
   return value * millimetresPer(from) / millimetresPer(to);
@@ -136,9 +159,9 @@ void CurveView::paintLegend(QPainter& painter) const
   };
   const bool preview = !m_document.preview().empty();
   const std::array<KeyItem, 4> all = {KeyItem{tr("preview"), previewColor(selectionPaletteColor(0)), true},
-                                      KeyItem{tr("filled"), stateColor(SampleState::Filled), false},
-                                      KeyItem{tr("smoothed"), stateColor(SampleState::Smoothed), false},
-                                      KeyItem{tr("edited"), stateColor(SampleState::Edited), false}};
+                                      KeyItem{tr("filled"), markColor(SampleMark::Filled), false},
+                                      KeyItem{tr("smoothed"), markColor(SampleMark::Smoothed), false},
+                                      KeyItem{tr("edited"), markColor(SampleMark::Edited), false}};
   const std::size_t firstKey = preview ? 0 : 1;
   double keyWidth = 0.0;
   for (std::size_t k = firstKey; k < all.size(); ++k)
@@ -239,7 +262,8 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
   const Eigen::Index first = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(std::floor(firstVisible())));
   const Eigen::Index last = std::min<Eigen::Index>(take.frameCount() - 1, static_cast<Eigen::Index>(std::ceil(lastVisible())));
   QVector<QLineF> lines;
-  std::array<QVector<QLineF>, 4> halos;  // by SampleState
+  HaloLines halos;  // by primaryMark
+  QVector<QLineF> secondHalos;  // made samples that were also smoothed: a smoothed rim around the halo
   const double framesPerPixel = (lastVisible() - firstVisible()) / strip.width();
   if (framesPerPixel > 1.0) {
     const int columns = static_cast<int>(strip.width());
@@ -250,7 +274,8 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
       const auto f0 = std::max(first, static_cast<Eigen::Index>(std::floor(frameAt(strip.left() + c))));
       const auto f1 = std::min(last, static_cast<Eigen::Index>(std::floor(frameAt(strip.left() + c + 1))));
       double cmin = std::numeric_limits<double>::infinity(), cmax = -cmin;
-      std::uint8_t state = 0;
+      SampleMark mark = SampleMark::None;
+      bool second = false;
       bool broken = false;
       for (Eigen::Index f = f0; f <= f1; ++f) {
         if (!valid(f)) {
@@ -259,7 +284,9 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
         }
         cmin = std::min(cmin, values(f));
         cmax = std::max(cmax, values(f));
-        state = std::max(state, states(f));
+        const SampleState state = SampleState::fromBits(states(f));
+        mark = std::max(mark, primaryMark(state));
+        second = second || secondaryMark(state) != SampleMark::None;
       }
       if (!std::isfinite(cmin)) {
         joined = false;
@@ -274,8 +301,7 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
       const double x = strip.left() + c + 0.5;
       const QLineF line(QPointF(x, scale.yOf(cmin) + 0.5), QPointF(x, scale.yOf(cmax) - 0.5));
       lines.push_back(line);
-      if (state != 0 && static_cast<std::size_t>(state) < halos.size())
-        halos[static_cast<std::size_t>(state)].push_back(line);
+      addHalo(halos, secondHalos, line, mark, second);
     }
   } else {
     for (Eigen::Index f = std::max<Eigen::Index>(first, 1); f <= last; ++f) {
@@ -284,22 +310,15 @@ void CurveView::paintCurve(QPainter& painter, const QRectF& strip, Eigen::Index 
       const QLineF line(QPointF(xOf(static_cast<double>(f - 1)), scale.yOf(values(f - 1))),
                         QPointF(xOf(static_cast<double>(f)), scale.yOf(values(f))));
       lines.push_back(line);
-      const std::uint8_t state = std::max(states(f), states(f - 1));
-      if (state != 0 && static_cast<std::size_t>(state) < halos.size())
-        halos[static_cast<std::size_t>(state)].push_back(line);
+      const SampleState a = SampleState::fromBits(states(f - 1)), b = SampleState::fromBits(states(f));
+      addHalo(halos, secondHalos, line, std::max(primaryMark(a), primaryMark(b)),
+              secondaryMark(a) != SampleMark::None || secondaryMark(b) != SampleMark::None);
     }
   }
   painter.setRenderHint(QPainter::Antialiasing, framesPerPixel <= 1.0);
-  for (std::size_t state = 1; state < halos.size(); ++state) {
-    if (halos[state].isEmpty())
-      continue;
-    QColor halo = stateColor(static_cast<SampleState>(state));
-    halo.setAlpha(120);
-    QPen pen(halo, 5.0);
-    pen.setCapStyle(Qt::FlatCap);
-    painter.setPen(pen);
-    painter.drawLines(halos[state]);
-  }
+  drawHalo(painter, secondHalos, markColor(SampleMark::Smoothed), 9.0);
+  for (std::size_t mark = 1; mark < halos.size(); ++mark)
+    drawHalo(painter, halos[mark], markColor(static_cast<SampleMark>(mark)), 5.0);
   painter.setPen(QPen(color, framesPerPixel <= 1.0 ? 1.5 : 1.0));
   painter.drawLines(lines);
   painter.setRenderHint(QPainter::Antialiasing, false);
@@ -465,6 +484,8 @@ QString CurveView::readoutAt(const QPointF& position) const
                           formatLength(take.trajectory(sample->marker)(sample->frame, sample->axis), take.units(),
                                        m_displayUnit),
                           unitLabel(m_displayUnit));
+  if (const SampleState state = take.state(sample->frame, sample->marker); !state.untouched())
+    text += QStringLiteral(" · ") + stateText(state);
   for (const SamplePatch& patch : m_document.preview()) {
     if (patch.marker != sample->marker)
       continue;
@@ -548,7 +569,7 @@ SamplePatch CurveView::dragPatch(const QPointF& position) const
   const StripScale& scale = m_scales[static_cast<std::size_t>(m_drag->axis)];
   Eigen::Vector3d moved = m_drag->original;
   moved(m_drag->axis) = scale.valueAt(position.y());
-  return makePatch(m_drag->marker, {m_drag->frame}, moved.transpose(), SampleState::Edited);
+  return makePatch(m_drag->marker, {m_drag->frame}, moved.transpose(), SampleOrigin::Edited);
 }
 
 void CurveView::updateDrag(const QPointF& position)

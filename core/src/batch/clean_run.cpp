@@ -64,7 +64,7 @@ void appendHistory(Take& take, const CleanOptions& options, const CleanReport& r
          {{"method", std::string(spikeMethodName(options.spikes->method))},
           {"factor", number(options.spikes->factor)},
           {"threshold", number(options.spikes->threshold)}},
-         static_cast<std::int64_t>(report.spikes.size()));
+         static_cast<std::int64_t>(report.repairedSamples));
   if (options.fill) {
     const Eigen::Index longest = longestGapFrames(*options.fill, take.frameRate());
     step("fill gaps",

@@ -29,7 +29,9 @@ CleanReport cleanTake(Take& take, const CleanOptions& options)
   }
   if (options.spikes) {
     report.spikes = detectSpikes(take, *options.spikes);
-    applyPatches(take, replaceSpikes(take, report.spikes));
+    std::vector<SamplePatch> repairs = replaceSpikes(take, report.spikes);
+    report.repairedSamples = patchSamples(repairs);
+    applyPatches(take, std::move(repairs));
   }
   if (options.fill) {
     FillResult filled = fillGaps(take, *options.fill);

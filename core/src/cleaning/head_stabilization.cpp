@@ -98,6 +98,22 @@ void checkMotion(const Take& take, const HeadMotion& motion)
                           std::to_string(take.frameCount()) + " frames");
 }
 
+// Says which samples hold head-frame values: valid ones gain Stabilized when the motion is
+// removed, and every sample loses it when the motion is restored. O(#frames · #markers).
+void markStabilized(Take& take, bool stabilized)
+{
+  auto states = take.states();
+  const auto valid = take.valid();
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+      const SampleState state = SampleState::fromBits(states(f, m));
+      if (stabilized && valid(f, m))
+        states(f, m) = state.with(SampleOperation::Stabilized).bits();
+      else if (!stabilized)
+        states(f, m) = state.without(SampleOperation::Stabilized).bits();
+    }
+}
+
 // Applies poses[f] (or its inverse) to every sample of frame f.
 void transformTake(Take& take, const HeadMotion& motion, bool inverse)
 {
@@ -156,11 +172,13 @@ HeadMotion estimateHeadMotion(const Take& take, const std::vector<Eigen::Index>&
 void removeHeadMotion(Take& take, const HeadMotion& motion)
 {
   transformTake(take, motion, true);
+  markStabilized(take, true);
 }
 
 void restoreHeadMotion(Take& take, const HeadMotion& motion)
 {
   transformTake(take, motion, false);
+  markStabilized(take, false);
 }
 
 std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take)
@@ -255,7 +273,7 @@ std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMo
     patch.residuals = take.residuals().col(m);
     patch.states.reserve(frames.size());
     for (Eigen::Index f = 0; f < take.frameCount(); ++f)
-      patch.states.push_back(take.state(f, m));
+      patch.states.push_back(stabilized.state(f, m));
     patches.push_back(std::move(patch));
   }
   return patches;

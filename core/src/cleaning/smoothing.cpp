@@ -252,7 +252,9 @@ std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& optio
     patch.positions = smoothed(frames, Eigen::all);
     patch.valid = ValidMask::Constant(patch.positions.rows(), true);
     patch.residuals = take.residuals().col(m)(frames);
-    patch.states.assign(frames.size(), SampleState::Smoothed);
+    patch.states.reserve(frames.size());
+    for (const Eigen::Index f : frames)
+      patch.states.push_back(take.state(f, m).with(SampleOperation::Smoothed));
     patch.frames = std::move(frames);
     patches.push_back(std::move(patch));
   });
@@ -268,7 +270,7 @@ Eigen::Index smoothTakeInPlace(Take& take, const SmoothOptions& options, const J
     for (Eigen::Index f = 0; f < take.frameCount(); ++f)
       if (changed(f)) {
         trajectory.row(f) = smoothed.row(f);
-        states(f) = static_cast<std::uint8_t>(SampleState::Smoothed);
+        states(f) = SampleState::fromBits(states(f)).with(SampleOperation::Smoothed).bits();
         ++count;
       }
   });

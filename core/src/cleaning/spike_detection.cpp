@@ -971,7 +971,7 @@ std::vector<SamplePatch> replaceSpikes(const Take& take, const std::vector<Spike
       Eigen::Matrix<double, Eigen::Dynamic, 3> matrix(static_cast<Eigen::Index>(positions.size()), 3);
       for (std::size_t r = 0; r < positions.size(); ++r)
         matrix.row(static_cast<Eigen::Index>(r)) = positions[r];
-      patches.push_back(makePatch(marker, std::move(frames), std::move(matrix), SampleState::Edited));
+      patches.push_back(makePatch(marker, std::move(frames), std::move(matrix), SampleOrigin::Edited));
     }
   }
   return patches;

@@ -343,7 +343,7 @@ private:
         // C3D convention: residual 0 marks a computed point, so a filled sample is written with 0
         // and a measured one never rounds down to 0. Camera bits are kept as read.
         const double measured = residuals(f, m) / m_scale;
-        const double residual = states(f, m) == static_cast<std::uint8_t>(SampleState::Filled) ? 0.0
+        const double residual = SampleState::fromBits(states(f, m)).origin() == SampleOrigin::Filled ? 0.0
                                 : measured > 0.0 ? std::clamp(std::round(measured), 1.0, 255.0)
                                                  : 0.0;
         p[3] = static_cast<float>((static_cast<unsigned>(cameras(f, m) & 0x7Fu) << 8) | static_cast<unsigned>(residual));

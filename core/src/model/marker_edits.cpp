@@ -62,7 +62,7 @@ MarkerColumn averagedMarker(const Take& take, const std::vector<Eigen::Index>& s
   column.cameraMasks.assign(static_cast<std::size_t>(frames), 0);
   column.states.resize(static_cast<std::size_t>(frames));
   for (Eigen::Index f = 0; f < frames; ++f)
-    column.states[static_cast<std::size_t>(f)] = column.valid(f) ? SampleState::Edited : SampleState::Original;
+    column.states[static_cast<std::size_t>(f)] = column.valid(f) ? SampleOrigin::Edited : SampleOrigin::Measured;
   return column;
 }
 

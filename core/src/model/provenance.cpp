@@ -18,17 +18,58 @@ constexpr const char* kGroup = "PROCESSING";
 constexpr const char* kHeadMarkers = "HEAD_MARKERS";
 constexpr const char* kGroupDescription = "Mocap Studio: sample states and processing history";
 constexpr const char* kFormat = "mocap-studio provenance";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
 constexpr std::size_t kRunsPerParameter = 255;   // a C3D dimension is one byte
 constexpr std::size_t kPieceBytes = 255;
 constexpr std::size_t kPiecesPerParameter = 120;  // 30 600 bytes: under a record's 32 KB
 
-std::optional<SampleState> parseSampleState(std::string_view name)
+/// The state a version-1 file's single state stood for (1 filled, 2 smoothed, 3 edited), or
+/// nullopt for another code.
+std::optional<SampleState> versionOneState(int code)
 {
-  for (SampleState s : {SampleState::Original, SampleState::Filled, SampleState::Smoothed, SampleState::Edited})
-    if (sampleStateName(s) == name)
-      return s;
-  return std::nullopt;
+  switch (code) {
+  case 1: return SampleOrigin::Filled;
+  case 2: return SampleState().with(SampleOperation::Smoothed);
+  case 3: return SampleOrigin::Edited;
+  default: return std::nullopt;
+  }
+}
+
+/// The state a version-2 STATE_RUNS code stands for (its bits), or nullopt for a code that is
+/// not one (untouched samples have no runs).
+std::optional<SampleState> versionTwoState(double code)
+{
+  if (!(code >= 1.0 && code <= 255.0) || code != std::floor(code))
+    return std::nullopt;
+  const auto bits = static_cast<std::uint8_t>(code);
+  const SampleState state = SampleState::fromBits(bits);
+  return state.bits() == bits ? std::optional<SampleState>(state) : std::nullopt;
+}
+
+/// A sidecar run's state: version 1 [first, length, state] or version 2 [first, length, origin,
+/// [operation, …]]; nullopt when it names something else.
+std::optional<SampleState> sidecarRunState(const std::vector<JsonValue>& run)
+{
+  if (run.size() == 3 && run[2].isString()) {
+    const std::string name = run[2].string("state");
+    return name == "filled" ? versionOneState(1) : name == "smoothed" ? versionOneState(2)
+                                                 : name == "edited"   ? versionOneState(3)
+                                                                      : std::nullopt;
+  }
+  if (run.size() != 4 || !run[2].isString())
+    return std::nullopt;
+  const std::optional<SampleOrigin> origin = parseSampleOrigin(run[2].string("origin"));
+  if (!origin)
+    return std::nullopt;
+  SampleState state = *origin;
+  for (const JsonValue& name : run[3].array("operations")) {
+    const std::optional<SampleOperation> operation =
+        name.isString() ? parseSampleOperation(name.string("operation")) : std::nullopt;
+    if (!operation)
+      return std::nullopt;
+    state = state.with(*operation);
+  }
+  return state;
 }
 
 void warn(std::vector<std::string>* warnings, std::string message)
@@ -41,7 +82,7 @@ void warn(std::vector<std::string>* warnings, std::string message)
 bool applyRun(Take& take, const StateRun& run)
 {
   if (run.marker < 0 || run.marker >= take.markerCount() || run.first < 0 || run.length <= 0 ||
-      run.first + run.length > take.frameCount() || run.state == SampleState::Original)
+      run.first + run.length > take.frameCount() || run.state.untouched())
     return false;
   for (Eigen::Index f = run.first; f < run.first + run.length; ++f)
     take.setState(f, run.marker, run.state);
@@ -109,7 +150,7 @@ Eigen::Index markZeroResidualsFilled(Take& take, std::optional<ResidualCounts> c
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
     for (Eigen::Index f = 0; f < take.frameCount(); ++f)
       if (valid(f, m) && residuals(f, m) == 0.0)
-        take.setState(f, m, SampleState::Filled);
+        take.setState(f, m, SampleOrigin::Filled);
   return zero;
 }
 
@@ -130,29 +171,44 @@ void restoreHeadMarkers(Take& take, const std::vector<std::string>& labels, cons
     warn(warnings, sourceName + ": head marker(s) " + missing + " not in this take; left out of its head markers");
 }
 
+/// The group's VERSION (1 when absent, as the first writers always wrote 1).
+int groupVersion(const C3dGroup& group)
+{
+  const C3dParameter* version = group.find("VERSION");
+  return version && version->number() ? static_cast<int>(*version->number()) : 1;
+}
+
 void loadProcessingGroup(Take& take, const C3dGroup& group, std::vector<std::string>* warnings)
 {
+  const int version = groupVersion(group);
+  const bool knownVersion = version == 1 || version == kVersion;
+  if (!knownVersion)
+    warn(warnings, "PROCESSING: VERSION " + std::to_string(version) + " is not one this reader knows (1, " +
+                       std::to_string(kVersion) + "); sample states not restored");
   const C3dParameter* labelsParameter = group.find("LABELS");
   const std::vector<std::string> labels = labelsParameter ? labelsParameter->strings() : std::vector<std::string>{};
   std::vector<std::optional<Eigen::Index>> markerOf;
   for (const std::string& label : labels)
     markerOf.push_back(take.markerIndex(label));
   Eigen::Index skipped = 0;
-  for (const C3dParameter* part : parameterParts(group, "STATE_RUNS")) {
+  const auto parts = knownVersion ? parameterParts(group, "STATE_RUNS") : std::vector<const C3dParameter*>{};
+  for (const C3dParameter* part : parts) {
     const std::size_t runs = part->numbers.size() / 4;
     for (std::size_t r = 0; r < runs; ++r) {
       const double* v = &part->numbers[4 * r];
       const auto index = static_cast<std::size_t>(std::max(0.0, v[0]));
-      const auto state = static_cast<int>(v[3]);
-      const bool known = index < markerOf.size() && markerOf[index] && state >= 1 && state <= 3;
-      StateRun run{known ? *markerOf[index] : -1, static_cast<Eigen::Index>(v[1]), static_cast<Eigen::Index>(v[2]),
-                   static_cast<SampleState>(state)};
-      skipped += (known && applyRun(take, run)) ? 0 : 1;
+      const std::optional<SampleState> state =
+          version == 1 ? versionOneState(static_cast<int>(v[3])) : versionTwoState(v[3]);
+      const bool known = index < markerOf.size() && markerOf[index] && state;
+      const bool applied = known && applyRun(take, {*markerOf[index], static_cast<Eigen::Index>(v[1]),
+                                                    static_cast<Eigen::Index>(v[2]), *state});
+      skipped += applied ? 0 : 1;
     }
   }
   if (skipped > 0)
     warn(warnings, "PROCESSING: " + std::to_string(skipped) +
-                       " sample-state run(s) name markers or frames this take does not have; skipped");
+                       " sample-state run(s) name markers or frames this take does not have, or a state this "
+                       "reader does not know; skipped");
   std::string text;
   for (const C3dParameter* part : parameterParts(group, "HISTORY"))
     text += part->chars;
@@ -169,18 +225,37 @@ void loadProcessingGroup(Take& take, const C3dGroup& group, std::vector<std::str
 
 namespace {
 
-constexpr EnumTable<SampleState, 4> kSampleStates{{{
-    {SampleState::Original, "original"},
-    {SampleState::Filled, "filled"},
-    {SampleState::Smoothed, "smoothed"},
-    {SampleState::Edited, "edited"},
+constexpr EnumTable<SampleOrigin, 3> kSampleOrigins{{{
+    {SampleOrigin::Measured, "measured"},
+    {SampleOrigin::Filled, "filled"},
+    {SampleOrigin::Edited, "edited"},
+}}};
+
+constexpr EnumTable<SampleOperation, 2> kSampleOperationNames{{{
+    {SampleOperation::Smoothed, "smoothed"},
+    {SampleOperation::Stabilized, "stabilized"},
 }}};
 
 } // namespace
 
-std::string_view sampleStateName(SampleState state)
+std::string_view sampleOriginName(SampleOrigin origin)
 {
-  return kSampleStates.name(state, "original");
+  return kSampleOrigins.name(origin, "measured");
+}
+
+std::string_view sampleOperationName(SampleOperation operation)
+{
+  return kSampleOperationNames.name(operation, "");
+}
+
+std::optional<SampleOrigin> parseSampleOrigin(std::string_view name)
+{
+  return kSampleOrigins.parse(name);
+}
+
+std::optional<SampleOperation> parseSampleOperation(std::string_view name)
+{
+  return kSampleOperationNames.parse(name);
 }
 
 std::vector<StateRun> stateRuns(const Take& take)
@@ -193,29 +268,75 @@ std::vector<StateRun> stateRuns(const Take& take)
       Eigen::Index end = f + 1;
       while (end < take.frameCount() && states(end, m) == state)
         ++end;
-      if (state != static_cast<std::uint8_t>(SampleState::Original))
-        runs.push_back({m, f, end - f, static_cast<SampleState>(state)});
+      if (state != 0)
+        runs.push_back({m, f, end - f, SampleState::fromBits(state)});
       f = end;
     }
   }
   return runs;
 }
 
+StateCounts& StateCounts::operator+=(const StateCounts& other)
+{
+  measured += other.measured;
+  filled += other.filled;
+  edited += other.edited;
+  smoothed += other.smoothed;
+  stabilized += other.stabilized;
+  smoothedMeasured += other.smoothedMeasured;
+  return *this;
+}
+
 std::vector<StateCounts> stateCounts(const Take& take)
 {
   std::vector<StateCounts> counts(static_cast<std::size_t>(take.markerCount()));
+  const auto valid = take.valid();
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    counts[static_cast<std::size_t>(m)].measured = valid.col(m).count();
   for (const StateRun& run : stateRuns(take)) {
     StateCounts& c = counts[static_cast<std::size_t>(run.marker)];
-    (run.state == SampleState::Filled ? c.filled : run.state == SampleState::Smoothed ? c.smoothed : c.edited) +=
-        run.length;
+    const SampleOrigin origin = run.state.origin();
+    if (origin != SampleOrigin::Measured) {
+      // Made samples were counted as measured when valid (a deleted one is edited and invalid).
+      c.measured -= valid.col(run.marker).segment(run.first, run.length).count();
+      (origin == SampleOrigin::Filled ? c.filled : c.edited) += run.length;
+    }
+    const bool smoothed = run.state.has(SampleOperation::Smoothed);
+    c.smoothed += smoothed ? run.length : 0;
+    c.smoothedMeasured += smoothed && origin == SampleOrigin::Measured ? run.length : 0;
+    c.stabilized += run.state.has(SampleOperation::Stabilized) ? run.length : 0;
   }
   return counts;
 }
 
+StateCounts totalCounts(const std::vector<StateCounts>& counts)
+{
+  StateCounts total;
+  for (const StateCounts& c : counts)
+    total += c;
+  return total;
+}
+
 bool hasProvenance(const Take& take)
 {
-  return !take.history().empty() || !headMarkers(take).empty() ||
-         (take.states() != static_cast<std::uint8_t>(SampleState::Original)).any();
+  return !take.history().empty() || !headMarkers(take).empty() || (take.states() != std::uint8_t{0}).any();
+}
+
+void writeStateCountsJson(JsonWriter& json, const StateCounts& counts)
+{
+  const auto number = [](Eigen::Index n) { return static_cast<std::int64_t>(n); };
+  json.key("filled").value(number(counts.filled));
+  json.key("smoothed").value(number(counts.smoothedMeasured));
+  json.key("edited").value(number(counts.edited));
+  json.key("origin").beginObject();
+  json.key("measured").value(number(counts.measured));
+  json.key("filled").value(number(counts.filled));
+  json.key("edited").value(number(counts.edited));
+  json.endObject();
+  json.key("operations").beginObject();
+  json.key("smoothed").value(number(counts.smoothed));
+  json.key("stabilized").value(number(counts.stabilized));
+  json.endObject();
 }
 
 void writeHistoryJson(JsonWriter& json, const std::vector<ProcessingStep>& history)
@@ -257,18 +378,20 @@ std::string provenanceJson(const Take& take)
   json.key("markers").beginArray();
   auto run = runs.begin();
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
-    const StateCounts& c = counts[static_cast<std::size_t>(m)];
     json.beginObject().key("label").value(take.label(m));
-    json.key("filled").value(static_cast<std::int64_t>(c.filled));
-    json.key("smoothed").value(static_cast<std::int64_t>(c.smoothed));
-    json.key("edited").value(static_cast<std::int64_t>(c.edited));
+    writeStateCountsJson(json, counts[static_cast<std::size_t>(m)]);
     json.key("runs").beginArray();
-    for (; run != runs.end() && run->marker == m; ++run)
+    for (; run != runs.end() && run->marker == m; ++run) {
       json.beginArray()
           .value(take.firstFrame() + run->first)
           .value(static_cast<std::int64_t>(run->length))
-          .value(sampleStateName(run->state))
-          .endArray();
+          .value(sampleOriginName(run->state.origin()))
+          .beginArray();
+      for (const SampleOperation operation : kSampleOperations)
+        if (run->state.has(operation))
+          json.value(sampleOperationName(operation));
+      json.endArray().endArray();
+    }
     json.endArray().endObject();
   }
   json.endArray();
@@ -302,7 +425,7 @@ void applyProvenanceJson(Take& take, std::string_view text, const std::string& s
       const JsonValue* runs = marker.find("runs", "a marker");
       for (const JsonValue& item : runs ? runs->array("runs") : std::vector<JsonValue>{}) {
         const auto& v = item.array("a run");
-        const auto state = v.size() == 3 && v[2].isString() ? parseSampleState(v[2].string("state")) : std::nullopt;
+        const std::optional<SampleState> state = sidecarRunState(v);
         const bool ok = index && state && v[0].isNumber() && v[1].isNumber() &&
                         applyRun(take, {*index, static_cast<Eigen::Index>(v[0].number("first") -
                                                                            static_cast<double>(take.firstFrame())),
@@ -312,7 +435,8 @@ void applyProvenanceJson(Take& take, std::string_view text, const std::string& s
     }
     if (skipped > 0)
       warn(warnings, sourceName + ": " + std::to_string(skipped) +
-                         " sample-state run(s) name markers or frames this take does not have; skipped");
+                         " sample-state run(s) name markers or frames this take does not have, or a state this "
+                         "reader does not know; skipped");
   }
   if (const JsonValue* history = root.find("history", sourceName))
     take.history() = readHistory(*history);
@@ -339,7 +463,7 @@ void storeProvenance(const Take& take, C3dParameterTree& tree)
     std::vector<double> values;
     for (std::size_t r = start; r < end; ++r)
       values.insert(values.end(), {static_cast<double>(runs[r].marker), static_cast<double>(runs[r].first),
-                                   static_cast<double>(runs[r].length), static_cast<double>(runs[r].state)});
+                                   static_cast<double>(runs[r].length), static_cast<double>(runs[r].state.bits())});
     C3dParameter p = C3dParameter::makeFloat(part == 1 ? "STATE_RUNS" : "STATE_RUNS" + std::to_string(part), values,
                                              false);
     p.dimensions = {4, static_cast<int>(end - start)};

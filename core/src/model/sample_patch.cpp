@@ -59,7 +59,7 @@ SamplePatch deleteSamples(const Take& take, Eigen::Index marker, Eigen::Index fi
   patch.frames = std::move(frames);
   patch.valid = Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(n, false);
   patch.residuals = Eigen::ArrayXd::Constant(n, -1.0);
-  patch.states.assign(static_cast<std::size_t>(n), SampleState::Edited);
+  patch.states.assign(static_cast<std::size_t>(n), SampleState(SampleOrigin::Edited));
   return patch;
 }
 
@@ -80,8 +80,8 @@ SamplePatch swapSamples(Take& take, SamplePatch patch)
       std::swap(trajectory(f, c), patch.positions(row, c));
     std::swap(valid(f), patch.valid(row));
     std::swap(residuals(f), patch.residuals(row));
-    const auto state = static_cast<std::uint8_t>(patch.states[i]);
-    patch.states[i] = static_cast<SampleState>(states(f));
+    const std::uint8_t state = patch.states[i].bits();
+    patch.states[i] = SampleState::fromBits(states(f));
     states(f) = state;
     if (withMasks)
       std::swap(masks(f), patch.cameraMasks[i]);

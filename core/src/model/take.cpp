@@ -208,13 +208,13 @@ void Take::setPosition(Eigen::Index frame, Eigen::Index marker, const Eigen::Vec
 SampleState Take::state(Eigen::Index frame, Eigen::Index marker) const
 {
   checkIndex(frame, marker);
-  return static_cast<SampleState>(m_states.data()[marker * m_frameCount + frame]);
+  return SampleState::fromBits(m_states.data()[marker * m_frameCount + frame]);
 }
 
 void Take::setState(Eigen::Index frame, Eigen::Index marker, SampleState state)
 {
   checkIndex(frame, marker);
-  m_states.data()[marker * m_frameCount + frame] = static_cast<std::uint8_t>(state);
+  m_states.data()[marker * m_frameCount + frame] = state.bits();
 }
 
 Eigen::Index Take::addMarker(std::string label)
@@ -269,7 +269,7 @@ MarkerColumn Take::column(Eigen::Index marker) const
   column.cameraMasks.assign(m_cameraMasks.data() + offset, m_cameraMasks.data() + offset + frames);
   column.states.resize(frames);
   for (std::size_t f = 0; f < frames; ++f)
-    column.states[f] = static_cast<SampleState>(m_states.data()[offset + f]);
+    column.states[f] = SampleState::fromBits(m_states.data()[offset + f]);
   return column;
 }
 
@@ -321,7 +321,7 @@ void Take::insertMarker(Eigen::Index marker, MarkerColumn column)
   };
   std::vector<std::uint8_t> states(frames);
   for (std::size_t f = 0; f < frames; ++f)
-    states[f] = static_cast<std::uint8_t>(column.states[f]);
+    states[f] = column.states[f].bits();
   addBlock(m_positions, frames * 3, column.positions.data());
   addBlock(m_valid, frames, column.valid.data());
   addBlock(m_residuals, frames, column.residuals.data());

@@ -273,7 +273,7 @@ private:
       trajectory.row(frame) = f.at(frame).transpose();
       valid(frame, label) = true;
       residuals(frame, label) = 0.0;
-      m_take.setState(frame, label, SampleState::Original);
+      m_take.setState(frame, label, SampleOrigin::Measured);
     }
     m_result.labelOf[static_cast<std::size_t>(k)] = label;
   }

@@ -31,6 +31,8 @@ struct CleanReport
   Eigen::Index unknownHeadPoses = 0;     ///< frames where the head pose had to be interpolated or was unknown
   std::optional<HeadMotion> headMotion;  ///< when stabilized (e.g. for the BVH root)
   std::vector<SpikeFlag> spikes;
+  /// Samples the repair replaced (flags on a whole valid run or an invalid sample are not repaired).
+  Eigen::Index repairedSamples = 0;
   std::vector<GapFillReport> gaps;
   Eigen::Index filledSamples = 0;
   Eigen::Index smoothedSamples = 0;

@@ -36,13 +36,13 @@ struct HeadMotion
                                             const std::vector<Eigen::Index>& referenceMarkers,
                                             Eigen::Index referenceFrame = -1);
 
-/// Maps every sample (valid or not; validity and states untouched) into the stabilized head
-/// frame: p ← poses[f]⁻¹ · p. Throws InvalidArgument unless motion has one pose per frame.
+/// Maps every sample (valid or not; validity untouched) into the stabilized head frame:
+/// p ← poses[f]⁻¹ · p. Valid samples gain SampleOperation::Stabilized (their origin stays). Throws InvalidArgument unless motion has one pose per frame.
 /// Not a paper equation. O(#frames · #markers).
 void removeHeadMotion(Take& take, const HeadMotion& motion);
 
-/// The exact inverse of removeHeadMotion (up to rounding): p ← poses[f] · p.
-/// Throws InvalidArgument unless motion has one pose per frame. Not a paper equation.
+/// The exact inverse of removeHeadMotion (up to rounding): p ← poses[f] · p; every sample loses
+/// SampleOperation::Stabilized (its value is back in the capture frame). Throws InvalidArgument unless motion has one pose per frame. Not a paper equation.
 /// O(#frames · #markers).
 void restoreHeadMotion(Take& take, const HeadMotion& motion);
 
@@ -74,8 +74,8 @@ struct RigidClusterOptions
 [[nodiscard]] std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options = {});
 
 /// removeHeadMotion as patches (one per marker, every frame): the studio previews and undoes
-/// stabilization like any other edit. Validity, residuals and states are kept: the samples move,
-/// they are not re-measured. Throws InvalidArgument unless motion has one pose per frame.
+/// stabilization like any other edit. Validity, residuals and origins are kept (the samples move,
+/// they are not re-measured); valid samples gain SampleOperation::Stabilized. Throws InvalidArgument unless motion has one pose per frame.
 /// O(#frames · #markers).
 [[nodiscard]] std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMotion& motion);
 

@@ -118,8 +118,8 @@ detectSpikes(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& x
                                                  const JobControl& job = {});
 
 /// Replacements for the flagged samples (eq 10 and its extension to blocks), one patch per marker
-/// with flags, markers ascending; each replaced sample is valid with residual 0 and state
-/// SampleState::Edited, and nothing else changes. Within a valid run, a block of consecutive
+/// with flags, markers ascending; each replaced sample is valid with residual 0 and origin
+/// SampleOrigin::Edited (earlier operations cleared), and nothing else changes. Within a valid run, a block of consecutive
 /// flagged samples is interpolated linearly between the nearest unflagged valid samples on both
 /// sides, so a single one becomes the mid-value of its neighbours (eq 10). A block at a run end (no
 /// unflagged neighbour on one side) is extrapolated along the least-squares line through the

@@ -28,11 +28,11 @@ struct SamplePatch
 };
 
 /// A patch that makes `frames` of `marker` valid at `positions` (one row per frame) with
-/// residual 0 and the given state. Throws InvalidArgument when the sizes disagree.
+/// residual 0 and the given state (an origin: the new values replace whatever was done before). Throws InvalidArgument when the sizes disagree.
 [[nodiscard]] SamplePatch makePatch(Eigen::Index marker, std::vector<Eigen::Index> frames,
                                     Eigen::Matrix<double, Eigen::Dynamic, 3> positions, SampleState state);
 
-/// A patch that makes frames [first, last] of `marker` a gap (invalid, residual −1, state
+/// A patch that makes frames [first, last] of `marker` a gap (invalid, residual −1, origin
 /// Edited), keeping their positions. Frames already invalid are left out. Throws
 /// InvalidArgument for a marker or range outside the take. O(last − first).
 [[nodiscard]] SamplePatch deleteSamples(const Take& take, Eigen::Index marker, Eigen::Index first, Eigen::Index last);

@@ -15,13 +15,68 @@
 
 namespace mocap {
 
-/// What happened to a sample since it was read, so views can colour it and exports can say so.
-enum class SampleState : std::uint8_t
+/// Where a sample's value came from. The numbers are the low two bits of a SampleState byte (and
+/// the codes version 1 of the PROCESSING group gave filled and edited samples).
+enum class SampleOrigin : std::uint8_t
 {
-  Original = 0,
-  Filled = 1,
-  Smoothed = 2,
-  Edited = 3,
+  Measured = 0,  ///< as read from the capture (or never touched)
+  Filled = 1,    ///< invented for a gap
+  Edited = 3,    ///< replaced by a person or a repair (bad-point repair, a drag, a deletion)
+};
+
+/// What was done to a sample's value after it got its origin; bits of a SampleState byte, any
+/// combination.
+enum class SampleOperation : std::uint8_t
+{
+  Smoothed = 4,    ///< moved by a smoothing filter
+  Stabilized = 8,  ///< held in the head frame (head motion removed and not restored)
+};
+
+/// What happened to a sample since it was read, so views can colour it and exports can say so:
+/// its origin and the operations applied to it since, in one byte (origin in bits 0-1,
+/// operations in bits 2-3). A filled sample that is smoothed stays filled and is also smoothed;
+/// a new origin clears the operations, which were done to a value that is gone.
+class SampleState
+{
+public:
+  static constexpr std::uint8_t kOriginBits = 0x03;
+  static constexpr std::uint8_t kOperationBits = 0x0C;
+
+  constexpr SampleState() = default;
+  /// An origin with no operations (implicit: that is what a bare origin means).
+  constexpr SampleState(SampleOrigin origin) : m_bits(static_cast<std::uint8_t>(origin)) {}  // NOLINT
+  /// The state a stored byte holds; unknown bits (and the unused origin 2) are dropped. O(1).
+  [[nodiscard]] static constexpr SampleState fromBits(std::uint8_t bits)
+  {
+    SampleState state;
+    const auto origin = static_cast<std::uint8_t>(bits & kOriginBits);
+    state.m_bits = static_cast<std::uint8_t>((origin == 2 ? 0 : origin) | (bits & kOperationBits));
+    return state;
+  }
+  [[nodiscard]] constexpr std::uint8_t bits() const { return m_bits; }
+  [[nodiscard]] constexpr SampleOrigin origin() const { return static_cast<SampleOrigin>(m_bits & kOriginBits); }
+  /// The operation bits (SampleOperation values or'ed).
+  [[nodiscard]] constexpr std::uint8_t operations() const { return static_cast<std::uint8_t>(m_bits & kOperationBits); }
+  [[nodiscard]] constexpr bool has(SampleOperation operation) const
+  {
+    return (m_bits & static_cast<std::uint8_t>(operation)) != 0;
+  }
+  [[nodiscard]] constexpr SampleState with(SampleOperation operation) const
+  {
+    return fromBits(static_cast<std::uint8_t>(m_bits | static_cast<std::uint8_t>(operation)));
+  }
+  [[nodiscard]] constexpr SampleState without(SampleOperation operation) const
+  {
+    return fromBits(static_cast<std::uint8_t>(m_bits & ~static_cast<std::uint8_t>(operation)));
+  }
+  /// Measured and never operated on.
+  [[nodiscard]] constexpr bool untouched() const { return m_bits == 0; }
+
+  friend constexpr bool operator==(SampleState a, SampleState b) { return a.m_bits == b.m_bits; }
+  friend constexpr bool operator!=(SampleState a, SampleState b) { return a.m_bits != b.m_bits; }
+
+private:
+  std::uint8_t m_bits = 0;
 };
 
 /// What one point of a take holds: a measured marker, or a model output C3D stores as a point
@@ -179,8 +234,8 @@ public:
   [[nodiscard]] SampleState state(Eigen::Index frame, Eigen::Index marker) const;
   void setState(Eigen::Index frame, Eigen::Index marker, SampleState state);
   [[nodiscard]] ConstSampleBytesMap states() const { return {m_states.data(), m_frameCount, markerCount()}; }
-  /// The states as bytes (each a SampleState), for loops over many samples without setState's
-  /// index check per sample; write only SampleState values.
+  /// The states as bytes (each a SampleState's bits()), for loops over many samples without
+  /// setState's index check per sample; write only SampleState bits.
   [[nodiscard]] SampleBytesMap states() { return {m_states.data(), m_frameCount, markerCount()}; }
 
   /// Appends a marker (label made unique) with every sample invalid; returns its index.

@@ -244,7 +244,7 @@ FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOp
     for (Eigen::Index k = 0; k < gap.length; ++k)
       frames[static_cast<std::size_t>(k)] = gap.firstFrame + k;
     result.patches.push_back(
-        makePatch(gap.marker, std::move(frames), std::move(prediction.positions), SampleState::Filled));
+        makePatch(gap.marker, std::move(frames), std::move(prediction.positions), SampleOrigin::Filled));
     report.filled = true;
     report.method = std::move(prediction.method);
     result.gaps.push_back(std::move(report));
