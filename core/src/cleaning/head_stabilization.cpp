@@ -2,6 +2,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/math/kabsch.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/marker_set.h"
 
 #include <algorithm>
@@ -29,6 +30,9 @@ void checkMarkers(const Take& take, const std::vector<Eigen::Index>& markers)
       throw InvalidArgument("head stabilization: marker index " + std::to_string(m) + " out of range");
     if (!seen.insert(m).second)
       throw InvalidArgument("head stabilization: marker " + take.label(m) + " given twice");
+    if (!isMarker(take, m))
+      throw InvalidArgument("head stabilization: " + take.label(m) + " is a model output (" +
+                            std::string(pointTypeName(take.pointType(m))) + "), not a marker");
   }
 }
 
@@ -99,16 +103,18 @@ void checkMotion(const Take& take, const HeadMotion& motion)
                           std::to_string(take.frameCount()) + " frames");
 }
 
-// Applies poses[f] (or its inverse) to every sample of frame f.
+// Applies poses[f] (or its inverse) to every marker sample of frame f (model outputs are no
+// positions and stay as they are).
 void transformTake(Take& take, const HeadMotion& motion, bool inverse)
 {
   checkMotion(take, motion);
+  const std::vector<Eigen::Index> markers = markerPoints(take);
   for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
     const Eigen::Isometry3d& pose = motion.poses[static_cast<std::size_t>(f)];
     const Eigen::Matrix3d rotation = inverse ? Eigen::Matrix3d(pose.linear().transpose()) : pose.linear();
     const Eigen::Vector3d translation =
         inverse ? Eigen::Vector3d(-(rotation * pose.translation())) : Eigen::Vector3d(pose.translation());
-    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    for (const Eigen::Index m : markers) {
       auto trajectory = take.trajectory(m);
       trajectory.row(f) = (rotation * trajectory.row(f).transpose() + translation).transpose();
     }
@@ -175,7 +181,7 @@ std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take)
     return true;
   };
   std::vector<Eigen::Index> markers;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     if (startsWith(take.label(m), "root") || startsWith(take.label(m), "head"))
       markers.push_back(m);
   if (markers.size() >= 3)
@@ -189,7 +195,7 @@ std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterO
     throw InvalidArgument("rigid cluster: the tolerance must be > 0 and at least two frames sampled");
   // Candidates: labelled markers valid in at least half the frames (a head marker is seen nearly always).
   std::vector<Eigen::Index> candidates;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     if (!isUnlabelledLabel(take.label(m)) && 2 * take.valid().col(m).count() >= take.frameCount() &&
         take.frameCount() > 0)
       candidates.push_back(m);
@@ -259,8 +265,9 @@ std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMo
   for (Eigen::Index f = 0; f < take.frameCount(); ++f)
     frames[static_cast<std::size_t>(f)] = f;
   std::vector<SamplePatch> patches;
-  patches.reserve(static_cast<std::size_t>(take.markerCount()));
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+  const std::vector<Eigen::Index> markers = markerPoints(take);
+  patches.reserve(markers.size());
+  for (const Eigen::Index m : markers) {
     SamplePatch patch;
     patch.marker = m;
     patch.frames = frames;
