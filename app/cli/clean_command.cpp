@@ -12,6 +12,7 @@
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/io/take_io.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/provenance.h"
 
 #include <cstdlib>
@@ -171,7 +172,14 @@ std::string reportJson(const std::string& input, const std::string& output, cons
   json.key("method").value(options.smooth ? smoothMethodName(options.smooth->method) : "off");
   json.key("smoothed_samples").value(static_cast<std::int64_t>(report.smoothedSamples));
   json.endObject();
-  json.key("valid_fraction").value(take.validFraction());
+  json.key("valid_fraction").value(markerValidFraction(take));
+  json.key("model_outputs").beginObject();  // points no step touched (angles, forces...)
+  json.key("untouched").value(static_cast<std::int64_t>(report.modelOutputs.size()));
+  json.key("labels").beginArray();
+  for (const Eigen::Index m : report.modelOutputs)
+    json.value(take.label(m));
+  json.endArray();
+  json.endObject();
   json.endObject();
   return json.str() + "\n";
 }
@@ -285,10 +293,12 @@ int runClean(const CleanArguments& arguments)
   if (savedStabilize)
     options.stabilizeLabels = savedHeadMarkers(take, input);
   const CleanReport report = cleanAndRecord(take, options, "mocap clean");
+  if (const std::string outputs = describeModelOutputs(take); !outputs.empty())
+    std::cerr << "mocap clean: " << input << ": " << outputs << " left untouched\n";
   writeCleanedTake(take, report, options, output);
   if (arguments.report)
     writeFileAtomically(*arguments.report, reportJson(input, output, take, options, report));
-  return qualityExit(arguments, input, take.validFraction());
+  return qualityExit(arguments, input, markerValidFraction(take));
 }
 
 std::vector<std::string> fillChoices()

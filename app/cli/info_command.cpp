@@ -2,6 +2,7 @@
 #include "commands.h"
 
 #include "mocap/model/gaps.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/model/provenance.h"
 #include "mocap/io/c3d_reader.h"
@@ -43,12 +44,10 @@ void writePointTypesJson(JsonWriter& json, const Take& take)
 {
   constexpr std::array kTypes{PointType::Marker, PointType::Angle, PointType::Force,
                               PointType::Moment, PointType::Power, PointType::Other};
-  std::array<std::int64_t, kTypes.size()> counts{};
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    ++counts[static_cast<std::size_t>(take.pointType(m))];
+  const auto counts = pointTypeCounts(take);
   json.key("point_types").beginObject();
   for (const PointType type : kTypes)
-    json.key(pointTypeName(type)).value(counts[static_cast<std::size_t>(type)]);
+    json.key(pointTypeName(type)).value(static_cast<std::int64_t>(counts[static_cast<std::size_t>(type)]));
   json.endObject();
 }
 
@@ -92,7 +91,7 @@ void writeJson(const std::string& file, TakeFormat format, const Take& take, con
   for (const auto& e : take.events())
     json.beginObject().key("label").value(e.label).key("context").value(e.context).key("time").value(e.time).endObject();
   json.endArray();
-  json.key("valid_fraction").value(take.validFraction());
+  json.key("valid_fraction").value(markerValidFraction(take));
   json.key("gap_count").value(static_cast<std::int64_t>(gaps.size()));
   json.key("gaps").beginArray();
   for (const Gap& gap : gaps) {
@@ -156,7 +155,10 @@ void writeText(const std::string& file, TakeFormat format, const Take& take, con
     std::cerr << file << ": warning: " << w << '\n';
   std::cout << "file:            " << file << '\n'
             << "format:          " << formatName(format) << '\n'
-            << "markers:         " << take.markerCount() << '\n'
+            << "markers:         " << take.markerCount() << '\n';
+  if (const std::string outputs = describeModelOutputs(take); !outputs.empty())
+    std::cout << "  of which        " << outputs << ", left out of the valid fraction and gaps\n";
+  std::cout
             << "frames:          " << take.frameCount() << " (first frame " << take.firstFrame() << ")\n"
             << "frame rate:      " << take.frameRate() << " Hz\n"
             << "units:           " << unitName(take.units()) << '\n'
@@ -165,7 +167,7 @@ void writeText(const std::string& file, TakeFormat format, const Take& take, con
     std::cout << " at " << take.analog().rate << " Hz";
   std::cout << '\n' << "events:          " << take.events().size() << '\n';
   char fraction[32];
-  std::snprintf(fraction, sizeof fraction, "%.2f %%", 100.0 * take.validFraction());
+  std::snprintf(fraction, sizeof fraction, "%.2f %%", 100.0 * markerValidFraction(take));
   std::cout << "valid samples:   " << fraction << '\n' << "gaps:            " << gaps.size() << '\n';
   for (const Gap& gap : gaps)
     std::cout << "  " << take.label(gap.marker) << "  frame " << take.firstFrame() + gap.firstFrame << "  length "

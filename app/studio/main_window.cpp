@@ -35,6 +35,7 @@
 #include "views/weight_curve_view.h"
 #include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
+#include "views/model_outputs_note.h"
 #include "views/steady_label.h"
 #include "views/review_scene.h"
 #include "views/sample_colors.h"
@@ -132,6 +133,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   m_warningsButton->hide();
   connect(m_warningsButton, &QToolButton::clicked, this, &MainWindow::openReadWarnings);
   statusBar()->addPermanentWidget(m_warningsButton);
+  statusBar()->addPermanentWidget(new ui::ModelOutputsNote(*m_document, this));
   connect(m_timeline, &ui::TimelineWidget::message, this, [this](const QString& text) {
     statusBar()->showMessage(text, 5000);
   });
@@ -475,6 +477,17 @@ void MainWindow::createActions()
   connect(links, &QAction::toggled, this, [this](bool on) {
     m_view3d->setLinksVisible(on);
     QSettings().setValue(QStringLiteral("view/links"), on);
+  });
+  QAction* outputs = m_viewMenu->addAction(tr("Show &Model Outputs"));
+  outputs->setObjectName(QStringLiteral("showModelOutputsAction"));
+  outputs->setCheckable(true);
+  outputs->setToolTip(tr("Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points "
+                         "(they are never cleaned)"));
+  outputs->setChecked(QSettings().value(QStringLiteral("view/modelOutputs"), false).toBool());
+  m_document->setShowModelOutputs(outputs->isChecked());
+  connect(outputs, &QAction::toggled, this, [this](bool on) {
+    m_document->setShowModelOutputs(on);
+    QSettings().setValue(QStringLiteral("view/modelOutputs"), on);
   });
   QAction* follow = m_viewMenu->addAction(tr("&Follow Head"));
   follow->setObjectName(QStringLiteral("followHeadAction"));

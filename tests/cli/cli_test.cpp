@@ -1,8 +1,10 @@
 // The `mocap` executable end to end: exit codes, one-line errors, JSON output, no partial files.
 #include "../core/test_support.h"
+#include "foreign_takes.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
 #include "mocap/model/provenance.h"
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
@@ -169,6 +172,53 @@ TEST(Cli, InfoJsonReportsProvenanceAndDataLoss)
   const auto lossAt = cut.out.find("\"data_loss\": [");
   ASSERT_NE(lossAt, std::string::npos);
   EXPECT_NE(cut.out.find("truncated", lossAt), std::string::npos) << cut.out.substr(lossAt);
+}
+
+// A Nexus-style file (issue 30): info counts its point types and says how the file was laid out;
+// clean leaves the model outputs as they were and says so.
+TEST(Cli, ModelOutputsAreCountedAndLeftUntouched)
+{
+  test::TempDir dir;
+  writeTake(test::nexusCleaningTake(), dir.file("nexus.c3d"));
+  const CommandResult info = runMocap("info " + q(dir.file("nexus.c3d")) + " --json", dir);
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  const JsonValue json = parseJson(info.out, "info");
+  const JsonValue* types = json.find("point_types", "info");
+  ASSERT_NE(types, nullptr) << info.out.substr(0, 500);
+  const std::map<std::string, double> expected = {{"marker", 4}, {"angle", 2}, {"force", 1},
+                                                   {"moment", 1}, {"power", 1}, {"other", 0}};
+  for (const auto& [type, count] : expected) {
+    const JsonValue* value = types->find(type, "point_types");
+    ASSERT_NE(value, nullptr) << type;
+    EXPECT_EQ(value->number(type), count) << type;
+  }
+  const JsonValue* layout = json.find("layout", "info");
+  ASSERT_NE(layout, nullptr);
+  ASSERT_TRUE(layout->isObject());
+  EXPECT_EQ(layout->find("storage", "layout")->string("storage"), "float");
+  EXPECT_EQ(json.find("gap_count", "info")->number("gap_count"), 4) << "the outputs' gaps are not the take's";
+  const CommandResult text = runMocap("info " + q(dir.file("nexus.c3d")), dir);
+  EXPECT_NE(text.out.find("5 model outputs (2 angles, 1 force, 1 moment, 1 power)"), std::string::npos) << text.out;
+
+  const CommandResult clean = runMocap("clean " + q(dir.file("nexus.c3d")) + " -o " + q(dir.file("cleaned.c3d")) +
+                                           " --report " + q(dir.file("report.json")),
+                                       dir);
+  ASSERT_EQ(clean.exitCode, 0) << clean.err;
+  EXPECT_NE(clean.err.find("5 model outputs (2 angles, 1 force, 1 moment, 1 power) left untouched"),
+            std::string::npos)
+      << clean.err;
+  const JsonValue report = parseJson(readFileBytes(dir.file("report.json")), "report");
+  const JsonValue* outputs = report.find("model_outputs", "report");
+  ASSERT_NE(outputs, nullptr);
+  EXPECT_EQ(outputs->find("untouched", "model_outputs")->number("untouched"), 5);
+  const Take before = readTake(dir.file("nexus.c3d"));
+  const Take after = readTake(dir.file("cleaned.c3d"));
+  ASSERT_EQ(modelOutputPoints(after), modelOutputPoints(before));
+  for (const Eigen::Index m : modelOutputPoints(before)) {
+    EXPECT_TRUE(before.trajectory(m) == after.trajectory(m)) << before.label(m);
+    EXPECT_TRUE((before.valid().col(m) == after.valid().col(m)).all()) << before.label(m);
+    EXPECT_TRUE((before.states().col(m) == after.states().col(m)).all()) << before.label(m);
+  }
 }
 
 TEST(Cli, CorruptFileGivesExitOneAndOneClearLine)

@@ -3,6 +3,7 @@
 #include "document/take_document.h"
 
 #include "mocap/cleaning/head_stabilization.h"
+#include "mocap/model/marker_points.h"
 
 #include <QDialogButtonBox>
 #include <QHBoxLayout>
@@ -50,6 +51,10 @@ ReferenceMarkersDialog::ReferenceMarkersDialog(const TakeDocument& document, QWi
                                                        static_cast<double>(take.frameCount())
                                                  : 0.0;
     item->setToolTip(tr("Valid in %1 % of the frames").arg(present, 0, 'f', 1));
+    if (!isMarker(take, m)) {  // an angle or a force has no place on the head
+      item->setFlags(Qt::ItemIsUserCheckable);
+      item->setToolTip(tr("A model output, not a marker"));
+    }
   }
   layout->addWidget(m_list, 1);
 

@@ -5,6 +5,7 @@
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/model/provenance.h"
 #include "mocap/io/take_io.h"
+#include "mocap/model/marker_points.h"
 
 #include <algorithm>
 
@@ -248,7 +249,29 @@ Take TakeDocument::exchangeTake(Take take)
 bool TakeDocument::isHidden(Eigen::Index marker) const
 {
   const auto index = static_cast<std::size_t>(marker);
-  return marker >= 0 && index < m_hidden.size() && m_hidden[index];
+  return marker >= 0 && index < m_hidden.size() && (m_hidden[index] || !isListed(marker));
+}
+
+bool TakeDocument::isListed(Eigen::Index point) const
+{
+  return point >= 0 && point < m_take.markerCount() && (m_showModelOutputs || isMarker(m_take, point));
+}
+
+std::vector<Eigen::Index> TakeDocument::listedPoints() const
+{
+  std::vector<Eigen::Index> points;
+  for (Eigen::Index m = 0; m < m_take.markerCount(); ++m)
+    if (isListed(m))
+      points.push_back(m);
+  return points;
+}
+
+void TakeDocument::setShowModelOutputs(bool show)
+{
+  if (show == m_showModelOutputs)
+    return;
+  m_showModelOutputs = show;
+  emit visibilityChanged();
 }
 
 void TakeDocument::setHidden(const std::vector<Eigen::Index>& markers, bool hidden)

@@ -82,11 +82,24 @@ public:
   /// the undo history and file stay. Emits markersChanged.
   Take exchangeTake(Take take);
 
-  /// Hidden markers are not drawn in the 3D and curve views (a view setting, not an edit).
+  /// Hidden markers are not drawn in the 3D and curve views (a view setting, not an edit): the
+  /// ones the user hid, and model outputs while they are not listed (isListed).
   [[nodiscard]] bool isHidden(Eigen::Index marker) const;
   void setHidden(const std::vector<Eigen::Index>& markers, bool hidden);
   void showAllMarkers();
+  /// The markers the user hid (model outputs left out by isListed do not count).
   [[nodiscard]] Eigen::Index hiddenCount() const;
+
+  /// Whether point `point` is drawn and listed (3D view, gap list, timeline gap marks): every
+  /// marker point, and model outputs (marker_points.h: angles, forces...) only while
+  /// showsModelOutputs() is on. O(1).
+  [[nodiscard]] bool isListed(Eigen::Index point) const;
+  /// The listed points, ascending. O(#points).
+  [[nodiscard]] std::vector<Eigen::Index> listedPoints() const;
+  /// View ▸ Show Model Outputs (off by default; the studio remembers it). A view setting, not an
+  /// edit; emits visibilityChanged when it changes.
+  [[nodiscard]] bool showsModelOutputs() const { return m_showModelOutputs; }
+  void setShowModelOutputs(bool show);
 
   /// Appends a step to the take's processing history (for commands only); emits historyChanged.
   void appendHistory(ProcessingStep step);
@@ -172,6 +185,7 @@ private:
   std::vector<std::string> m_loadWarnings;
   std::vector<std::string> m_dataLoss;
   std::vector<bool> m_hidden;  // one per marker
+  bool m_showModelOutputs = false;
   std::vector<SamplePatch> m_preview;
   std::vector<std::pair<Eigen::Index, Eigen::Index>> m_flags;
   Eigen::Index m_rangeFirst = 0;

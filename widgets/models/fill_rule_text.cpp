@@ -32,6 +32,7 @@ QString fillRuleText(const GapFillReport& report, const Take& take, const FillOp
         .arg(QString::number(std::round(10.0 * seen) / 10.0));
   }
   case UnfilledCause::NeverValid: return QCoreApplication::translate("FillRuleText", "marker never seen");
+  case UnfilledCause::ModelOutput: return QCoreApplication::translate("FillRuleText", "a model output, not a marker");
   case UnfilledCause::Method:
   case UnfilledCause::None: break;
   }

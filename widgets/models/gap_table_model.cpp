@@ -20,6 +20,7 @@ GapTableModel::GapTableModel(TakeDocument& document, QObject* parent) : QAbstrac
   connect(&document, &TakeDocument::markersChanged, this, &GapTableModel::rebuild);
   connect(&document, &TakeDocument::markerRenamed, this, &GapTableModel::rebuild);
   connect(&document, &TakeDocument::samplesChanged, this, &GapTableModel::rebuild);
+  connect(&document, &TakeDocument::visibilityChanged, this, &GapTableModel::rebuild);
   connect(&document, &TakeDocument::previewChanged, this, &GapTableModel::updatePreviewed);
   rebuild();
 }
@@ -69,12 +70,13 @@ int GapTableModel::columnCount(const QModelIndex& parent) const
   return parent.isValid() ? 0 : ColumnCount;
 }
 
-// The open gaps (findGaps) and the runs of filled samples of every marker, ordered by marker,
-// then first frame. O(#frames · #markers).
+// The open gaps (findGaps) and the runs of filled samples of every listed point
+// (TakeDocument::isListed), ordered by point, then first frame. O(#frames · #markers).
 std::vector<GapTableModel::Row> GapTableModel::currentRows() const
 {
   const Take& take = m_document.take();
-  const std::vector<Gap> gaps = findGaps(take);
+  const std::vector<Eigen::Index> points = m_document.listedPoints();  // model outputs only when shown
+  const std::vector<Gap> gaps = findGaps(take, points);
   std::vector<Row> rows;
   rows.reserve(gaps.size());
   auto add = [&rows, &take](const Gap& gap, bool filled, SampleState operations) {
@@ -86,7 +88,7 @@ std::vector<GapTableModel::Row> GapTableModel::currentRows() const
     rows.push_back(std::move(row));
   };
   auto next = gaps.begin();
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+  for (const Eigen::Index m : points) {
     const std::size_t first = rows.size();
     for (; next != gaps.end() && next->marker == m; ++next)
       add(*next, false, {});

@@ -15,7 +15,8 @@ namespace mocap::ui {
 
 class TakeDocument;
 
-/// One row per gap of the take (exactly what findGaps returns), plus one per run of filled samples
+/// One row per gap of the take's listed points (TakeDocument::isListed: model outputs only while
+/// they are shown), plus one per run of filled samples
 /// so a fill stays in the list, marked "filled", until it is undone. Each open gap carries the
 /// user's choices: a check box (MarkerColumn, Qt::CheckStateRole) and a fill method
 /// (MethodColumn, Qt::EditRole gives and takes the FillMethod as int); they are view state, not

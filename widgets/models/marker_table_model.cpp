@@ -7,6 +7,7 @@
 #include <QUndoStack>
 
 #include "mocap/model/gaps.h"
+#include "mocap/model/marker_points.h"
 
 namespace mocap::ui {
 
@@ -66,6 +67,12 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
   }
   if (role == Qt::ForegroundRole && m_document.isHidden(marker))
     return QColor(Qt::gray);  // hidden in the 3D view
+  if (role == Qt::ToolTipRole && index.column() == LabelColumn && !isMarker(m_document.take(), marker)) {
+    const std::string_view type = pointTypeName(m_document.take().pointType(marker));
+    return tr("A model output (%1), not a marker: never cleaned; drawn and gap-listed only with View ▸ Show Model "
+              "Outputs")
+        .arg(QString::fromUtf8(type.data(), static_cast<int>(type.size())));
+  }
   if (role == Qt::TextAlignmentRole && index.column() != LabelColumn)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   return {};

@@ -40,7 +40,7 @@ QString filledText(int filledGaps, int samples)
 }
 
 // "1 gap filled, 66 samples; 3 left open (2 longer than 0.5 s, 1 edge gap)".
-QString summary(int filledGaps, int samples, const std::array<int, 6>& openByCause, double maxGapSeconds)
+QString summary(int filledGaps, int samples, const std::array<int, 7>& openByCause, double maxGapSeconds)
 {
   const QString text = filledText(filledGaps, samples);
   int open = 0;
@@ -60,6 +60,8 @@ QString summary(int filledGaps, int samples, const std::array<int, 6>& openByCau
     causes << QCoreApplication::translate("GapFillStep", "%n on markers never seen", nullptr, n);
   if (const int n = count(UnfilledCause::Method))
     causes << QCoreApplication::translate("GapFillStep", "%n the method could not fill", nullptr, n);
+  if (const int n = count(UnfilledCause::ModelOutput))
+    causes << QCoreApplication::translate("GapFillStep", "%n on model outputs", nullptr, n);
   return text + QCoreApplication::translate("GapFillStep", "; %n left open", nullptr, open) + QStringLiteral(" (") +
          causes.join(QStringLiteral(", ")) + QStringLiteral(")");
 }
@@ -221,7 +223,7 @@ StepJob GapFillStep::job() const
       return scope.hasMarker(marker) && (!ranged || (last >= scope.first && first <= scope.last));
     };
     StepResult result;
-    std::array<int, 6> openByCause{};
+    std::array<int, 7> openByCause{};
     for (const GapFillReport& report : filled.gaps) {
       const Eigen::Index end = report.gap.firstFrame + report.gap.length - 1;
       if (report.filled || !inScope(report.gap.marker, report.gap.firstFrame, end))

@@ -6,6 +6,7 @@
 
 #include "mocap/base/file_io.h"
 #include "mocap/model/marker_edits.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/marker_set.h"
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
@@ -479,8 +480,8 @@ QString LayoutPlanningPanel::checkedRequest(const LayoutPlanParameters& paramete
     request = layoutRequest(parameters, reference);
     // The patterns are checked here too, so a typo is answered at once rather than after the take files are read.
     const std::vector<std::string>& labels = m_document.take().labels();
-    if (!request.markerPatterns.empty())
-      (void)labelsMatching(labels, request.markerPatterns, Field::Markers);
+    if (!request.markerPatterns.empty())  // as planLayout: model outputs are never planned
+      (void)labelsMatching(markerLabels(m_document.take()), request.markerPatterns, Field::Markers);
     if (!request.excludePatterns.empty())
       (void)labelsMatching(labels, request.excludePatterns, Field::Exclude);
   } catch (const LayoutRequestError& e) {

@@ -7,6 +7,7 @@
 
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/model/marker_links.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/marker_set.h"
 #include "views/vtk_viewport.h"
 
@@ -59,7 +60,8 @@ unsigned char channel(int value)
   return static_cast<unsigned char>(std::clamp(value, 0, 255));
 }
 
-/// Mean and spread of all valid samples, for camera placement and marker size.
+/// Mean and spread of the marker points' valid samples (model outputs are no positions), for
+/// camera placement and marker size.
 struct Extent
 {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -76,7 +78,7 @@ Extent extentOf(const Take& take, Eigen::Index frame)
   extent.lo.setConstant(std::numeric_limits<double>::infinity());
   extent.hi.setConstant(-std::numeric_limits<double>::infinity());
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+  for (const Eigen::Index m : markerPoints(take)) {
     // Prefer the given frame; fall back to the marker's first valid sample.
     Eigen::Index f = frame;
     if (!take.isValid(f, m)) {
@@ -293,7 +295,7 @@ void MarkerView3d::resetCamera()
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(extent.covariance);
   Eigen::Vector3d normal = solver.eigenvectors().col(0);
   double front = 0.0, back = 0.0;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+  for (const Eigen::Index m : markerPoints(take)) {
     if (!take.isValid(m_document.currentFrame(), m))
       continue;
     const double d = normal.dot(take.position(m_document.currentFrame(), m) - extent.centre);
@@ -360,8 +362,7 @@ std::vector<Eigen::Index> MarkerView3d::markersToFollow() const
   const Take& take = m_document.take();
   std::vector<Eigen::Index> markers = m_document.referenceMarkers();
   if (markers.empty())  // no head markers: the whole face
-    for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-      markers.push_back(m);
+    markers = markerPoints(take);
   return markers;
 }
 

@@ -57,6 +57,7 @@ public:
     connect(&document, &TakeDocument::markersChanged, this, stale);
     connect(&document, &TakeDocument::selectionChanged, this, stale);
     connect(&document, &TakeDocument::flagsChanged, this, stale);
+    connect(&document, &TakeDocument::visibilityChanged, this, stale);
     connect(&document, &TakeDocument::rangeChanged, this, qOverload<>(&QWidget::update));
   }
 
@@ -133,7 +134,7 @@ private:
                   m_ticks.gaps.begin() + static_cast<std::ptrdiff_t>(column(gap.firstFrame + gap.length - 1)) + 1, 1);
     };
     if (selection.empty())
-      for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+      for (const Eigen::Index m : m_document.listedPoints())
         mark(m);
     for (Eigen::Index m : selection)
       mark(m);
@@ -326,11 +327,8 @@ void TimelineWidget::jumpToGap(int direction)
   const Take& take = m_document.take();
   const bool everyMarker = m_document.selection().empty() || m_document.selection() == m_jumpSelection;
   std::vector<Eigen::Index> markers = m_document.selection();
-  if (everyMarker) {
-    markers.clear();
-    for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-      markers.push_back(m);
-  }
+  if (everyMarker)
+    markers = m_document.listedPoints();
   // Gaps in (frame, marker) order, from where the last jump went (or the current frame), so
   // gaps of several markers that start on one frame are each visited. O(#frames · #markers).
   const Eigen::Index current = m_document.currentFrame();

@@ -9,6 +9,7 @@
 #include "mocap/batch/clean_preset.h"
 #include "mocap/batch/clean_run.h"
 #include "mocap/io/take_io.h"
+#include "mocap/model/marker_points.h"
 
 #include <algorithm>
 #include <mutex>
@@ -123,7 +124,7 @@ BatchTakeResult runBatchTake(const TakeManifest& manifest, std::size_t index, co
     Take take = readTake(entry.input, &report.warnings, &report.dataLoss);
     report.timings.read = step.seconds();
     step = Stopwatch();
-    report.validBefore = take.validFraction();
+    report.validBefore = markerValidFraction(take);
     std::vector<MarkerQuality> before = qualityBefore(take);
     const CleanReport cleaning = cleanAndRecord(take, options.preset, options.tool);
     recordCleaning(report, std::move(before), take, cleaning);

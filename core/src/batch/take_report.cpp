@@ -5,6 +5,7 @@
 #include "mocap/base/json_writer.h"
 #include "mocap/batch/clean_preset.h"
 #include "mocap/model/gaps.h"
+#include "mocap/model/marker_points.h"
 
 #include <cmath>
 
@@ -62,9 +63,9 @@ std::vector<std::string> strings(const JsonValue& object, const std::string& key
 
 std::vector<MarkerQuality> qualityBefore(const Take& take)
 {
-  std::vector<MarkerQuality> markers(static_cast<std::size_t>(take.markerCount()));
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
-    MarkerQuality& marker = markers[static_cast<std::size_t>(m)];
+  std::vector<MarkerQuality> markers;
+  for (const Eigen::Index m : markerPoints(take)) {
+    MarkerQuality& marker = markers.emplace_back();
     marker.label = take.label(m);
     marker.validBefore = markerValidFraction(take, m);
     for (const Gap& gap : findGaps(take.valid().col(m), m))
@@ -79,16 +80,20 @@ void recordCleaning(TakeReport& report, std::vector<MarkerQuality> before, const
   report.markers = std::move(before);
   report.frames = static_cast<std::int64_t>(cleaned.frameCount());
   report.frameRate = cleaned.frameRate();
-  report.validAfter = cleaned.validFraction();
-  for (Eigen::Index m = 0; m < cleaned.markerCount() && m < static_cast<Eigen::Index>(report.markers.size()); ++m) {
-    MarkerQuality& marker = report.markers[static_cast<std::size_t>(m)];
+  report.validAfter = markerValidFraction(cleaned);
+  // report.markers follows the marker points (model outputs have no entry); cleaning names points.
+  const std::vector<Eigen::Index> points = markerPoints(cleaned);
+  std::vector<MarkerQuality*> entry(static_cast<std::size_t>(cleaned.markerCount()), nullptr);
+  for (std::size_t j = 0; j < points.size() && j < report.markers.size(); ++j) {
+    const Eigen::Index m = points[j];
+    MarkerQuality& marker = report.markers[j];
+    entry[static_cast<std::size_t>(m)] = &marker;
     marker.validAfter = markerValidFraction(cleaned, m);
     if (cleaned.valid().col(m).count() == 0)
       report.missingMarkers.push_back(marker.label);
   }
-  auto markerOf = [&report](Eigen::Index m) -> MarkerQuality* {
-    return m >= 0 && m < static_cast<Eigen::Index>(report.markers.size()) ? &report.markers[static_cast<std::size_t>(m)]
-                                                                          : nullptr;
+  auto markerOf = [&entry](Eigen::Index m) -> MarkerQuality* {
+    return m >= 0 && m < static_cast<Eigen::Index>(entry.size()) ? entry[static_cast<std::size_t>(m)] : nullptr;
   };
   for (const SpikeFlag& flag : cleaning.spikes)
     if (MarkerQuality* marker = markerOf(flag.marker))
@@ -103,6 +108,7 @@ void recordCleaning(TakeReport& report, std::vector<MarkerQuality> before, const
   }
   report.filledSamples = static_cast<std::int64_t>(cleaning.filledSamples);
   report.smoothedSamples = static_cast<std::int64_t>(cleaning.smoothedSamples);
+  report.modelOutputs = static_cast<std::int64_t>(cleaning.modelOutputs.size());
 }
 
 std::string takeReportJson(const TakeReport& report)
@@ -134,6 +140,7 @@ std::string takeReportJson(const TakeReport& report)
     json.key("filled_samples").value(report.filledSamples);
     json.key("smoothed_samples").value(report.smoothedSamples);
     writeStrings(json, "markers_missing", report.missingMarkers);
+    json.key("model_outputs_untouched").value(report.modelOutputs);
     json.key("markers").beginArray();
     for (const MarkerQuality& marker : report.markers) {
       json.beginObject();
@@ -190,6 +197,7 @@ TakeReport parseTakeReport(std::string_view bytes, const std::string& sourceName
   report.filledSamples = whole(document, "filled_samples", where);
   report.smoothedSamples = whole(document, "smoothed_samples", where);
   report.missingMarkers = strings(document, "markers_missing", where);
+  report.modelOutputs = whole(document, "model_outputs_untouched", where);
   if (const JsonValue* markers = document.find("markers", where))
     for (const JsonValue& item : markers->array(where + ".markers")) {
       const std::string at = where + ".markers[" + std::to_string(report.markers.size()) + "]";

@@ -1,6 +1,7 @@
 #include "mocap/cleaning/clean_pipeline.h"
 
 #include "mocap/base/error.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/sample_patch.h"
 
 namespace mocap {
@@ -20,6 +21,7 @@ Eigen::Index patchSamples(const std::vector<SamplePatch>& patches)
 CleanReport cleanTake(Take& take, const CleanOptions& options)
 {
   CleanReport report;
+  report.modelOutputs = modelOutputPoints(take);
   if (!options.stabilizeLabels.empty()) {
     report.stabilizeMarkers = markerIndices(take, options.stabilizeLabels);
     report.headMotion = estimateHeadMotion(take, report.stabilizeMarkers);

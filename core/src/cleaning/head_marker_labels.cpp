@@ -1,5 +1,7 @@
 #include "mocap/cleaning/head_marker_labels.h"
 
+#include "mocap/model/marker_points.h"
+
 #include <cctype>
 #include <string>
 #include <string_view>
@@ -17,7 +19,7 @@ std::vector<Eigen::Index> labelledHeadMarkers(const Take& take)
     return true;
   };
   std::vector<Eigen::Index> markers;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))  // a model output is never a head marker
     if (startsWith(take.label(m), "root") || startsWith(take.label(m), "head"))
       markers.push_back(m);
   if (markers.size() < 3)

@@ -3,6 +3,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/math/kabsch.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/marker_set.h"
 
 #include <algorithm>
@@ -28,6 +29,9 @@ void checkMarkers(const Take& take, const std::vector<Eigen::Index>& markers)
       throw InvalidArgument("head stabilization: marker index " + std::to_string(m) + " out of range");
     if (!seen.insert(m).second)
       throw InvalidArgument("head stabilization: marker " + take.label(m) + " given twice");
+    if (!isMarker(take, m))
+      throw InvalidArgument("head stabilization: " + take.label(m) + " is a model output (" +
+                            std::string(pointTypeName(take.pointType(m))) + "), not a marker");
   }
 }
 
@@ -99,12 +103,13 @@ void checkMotion(const Take& take, const HeadMotion& motion)
 }
 
 // Says which samples hold head-frame values: valid ones gain Stabilized when the motion is
-// removed, and every sample loses it when the motion is restored. O(#frames · #markers).
+// removed, and every sample loses it when the motion is restored; model outputs are not positions
+// and are never stabilized. O(#frames · #markers).
 void markStabilized(Take& take, bool stabilized)
 {
   auto states = take.states();
   const auto valid = take.valid();
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
       const SampleState state = SampleState::fromBits(states(f, m));
       if (stabilized && valid(f, m))
@@ -114,16 +119,18 @@ void markStabilized(Take& take, bool stabilized)
     }
 }
 
-// Applies poses[f] (or its inverse) to every sample of frame f.
+// Applies poses[f] (or its inverse) to every marker sample of frame f (model outputs are no
+// positions and stay as they are).
 void transformTake(Take& take, const HeadMotion& motion, bool inverse)
 {
   checkMotion(take, motion);
+  const std::vector<Eigen::Index> markers = markerPoints(take);
   for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
     const Eigen::Isometry3d& pose = motion.poses[static_cast<std::size_t>(f)];
     const Eigen::Matrix3d rotation = inverse ? Eigen::Matrix3d(pose.linear().transpose()) : pose.linear();
     const Eigen::Vector3d translation =
         inverse ? Eigen::Vector3d(-(rotation * pose.translation())) : Eigen::Vector3d(pose.translation());
-    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    for (const Eigen::Index m : markers) {
       auto trajectory = take.trajectory(m);
       trajectory.row(f) = (rotation * trajectory.row(f).transpose() + translation).transpose();
     }
@@ -193,7 +200,7 @@ std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterO
     throw InvalidArgument("rigid cluster: the tolerance must be > 0 and at least two frames sampled");
   // Candidates: labelled markers valid in at least half the frames (a head marker is seen nearly always).
   std::vector<Eigen::Index> candidates;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     if (!isUnlabelledLabel(take.label(m)) && 2 * take.valid().col(m).count() >= take.frameCount() &&
         take.frameCount() > 0)
       candidates.push_back(m);
@@ -263,8 +270,9 @@ std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMo
   for (Eigen::Index f = 0; f < take.frameCount(); ++f)
     frames[static_cast<std::size_t>(f)] = f;
   std::vector<SamplePatch> patches;
-  patches.reserve(static_cast<std::size_t>(take.markerCount()));
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+  const std::vector<Eigen::Index> markers = markerPoints(take);
+  patches.reserve(markers.size());
+  for (const Eigen::Index m : markers) {
     SamplePatch patch;
     patch.marker = m;
     patch.frames = frames;

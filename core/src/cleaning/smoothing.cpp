@@ -6,6 +6,7 @@
 #include "mocap/base/error.h"
 #include "mocap/base/number_text.h"
 #include "mocap/cleaning/savitzky_golay.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/valid_runs.h"
 #include "mocap/cleaning/winter_cutoff.h"
 
@@ -114,7 +115,7 @@ private:
   std::map<Eigen::Index, BSplineFitter> m_fitters;
 };
 
-// Smooths each marker of `take` in turn and calls visit(marker, smoothed, changed): `changed` the
+// Smooths each marker point of `take` (model outputs are left alone) in turn and calls visit(marker, smoothed, changed): `changed` the
 // marker's usable samples whose position the smoothing changed, `smoothed` holding their new
 // positions (its other rows are undefined). `visit` may write marker `marker` of the take (the
 // smoothing has read it by then).
@@ -127,7 +128,10 @@ void smoothMarkers(const Take& take, const SmoothOptions& options, const JobCont
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
     job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
     const auto xyz = take.trajectory(m);
-    smoother.smoothRuns(xyz, TrajectorySmoother::usableSamples(xyz, take.valid().col(m)), smoothed, changed);
+    if (isMarker(take, m))
+      smoother.smoothRuns(xyz, TrajectorySmoother::usableSamples(xyz, take.valid().col(m)), smoothed, changed);
+    else
+      changed.setConstant(take.frameCount(), false);
     visit(m, static_cast<const Trajectory&>(smoothed), static_cast<const ValidMask&>(changed));
   }
 }

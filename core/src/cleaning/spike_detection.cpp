@@ -4,6 +4,7 @@
 #include "mocap/base/error.h"
 #include "mocap/model/valid_runs.h"
 #include "mocap/base/length_unit.h"
+#include "mocap/model/marker_points.h"
 
 #include "median_networks.h"
 #if defined(MOCAP_AVX2_KERNELS)
@@ -927,6 +928,8 @@ std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& option
   std::vector<SpikeFlag> flags;
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
     job.checkpoint(static_cast<double>(m) / static_cast<double>(take.markerCount()));
+    if (!isMarker(take, m))
+      continue;
     std::vector<Eigen::Index> frames;
     try {
       frames = detectIn(take.trajectory(m), take.valid().col(m), options, floor);

@@ -17,13 +17,15 @@ namespace mocap {
 namespace {
 
 /// Every `step`-th frame of `take` from `phase` on, as a take of its own at the rate over step;
-/// positions and validity only (what the solver reads). O(#frames / step · #markers).
+/// point types, positions and validity only (what the solver reads). O(#frames / step · #markers).
 Take everyNthFrame(const Take& take, Eigen::Index phase, Eigen::Index step)
 {
   const Eigen::Index count = (take.frameCount() - phase + step - 1) / step;
   Take picked(take.labels(), count, take.frameRate() / static_cast<double>(step));
   picked.setUnits(take.units());
   picked.setFirstFrame(take.firstFrame() + phase);
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    picked.setPointType(m, take.pointType(m));
   for (Eigen::Index i = 0; i < count; ++i)
     for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
       picked.setPosition(i, m, take.position(phase + i * step, m));

@@ -1,6 +1,8 @@
 #include "mocap/io/c3d_reader.h"
 
 #include "mocap/io/c3d_binary.h"
+#include "mocap/io/c3d_point_types.h"
+#include "mocap/io/c3d_string_lists.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/model/provenance.h"
@@ -234,7 +236,7 @@ public:
     const DataLayout layout = resolveLayout();
     reportLayout(layout);
     Take take = makeTake(layout);
-    readPointTypes(take);
+    readC3dPointTypes(m_tree, take);
     decodeData(layout, take);
     readEvents(take);
     take.parameters() = std::move(m_tree);
@@ -442,14 +444,7 @@ private:
   /// Strings of `base`, `base2`, `base3`... concatenated (C3D splits arrays over 255 entries).
   std::vector<std::string> stringsAcrossParts(std::string_view group, const std::string& base) const
   {
-    std::vector<std::string> all = m_tree.strings(group, base);
-    for (int part = 2;; ++part) {
-      const C3dParameter* p = m_tree.find(group, base + std::to_string(part));
-      if (!p)
-        return all;
-      const auto more = p->strings();
-      all.insert(all.end(), more.begin(), more.end());
-    }
+    return c3dStringsAcrossParts(m_tree, group, base);
   }
 
   DataLayout resolveLayout()
@@ -857,30 +852,6 @@ private:
     take.setUnits(unit.value_or(LengthUnit::Millimetre));
     makeAnalog(layout, take.analog());
     return take;
-  }
-
-  /// Each point's type from the label lists POINT:TYPE_GROUPS names (pairs of list parameter and
-  /// type: ANGLES, ANGLE...) or, without it, POINT:ANGLES, FORCES, MOMENTS and POWERS; a type
-  /// name we do not know is Other, a listed label the take does not have is ignored.
-  /// O(#points + #listed labels) expected.
-  void readPointTypes(Take& take) const
-  {
-    std::vector<std::pair<std::string, PointType>> lists;
-    const std::vector<std::string> groups = m_tree.strings("POINT", "TYPE_GROUPS");
-    for (std::size_t i = 0; i + 1 < groups.size(); i += 2)
-      lists.emplace_back(groups[i], parsePointType(toLower(groups[i + 1])).value_or(PointType::Other));
-    if (lists.empty())
-      lists = {{"ANGLES", PointType::Angle},
-               {"FORCES", PointType::Force},
-               {"MOMENTS", PointType::Moment},
-               {"POWERS", PointType::Power}};
-    std::unordered_map<std::string_view, Eigen::Index> index;
-    for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-      index.emplace(take.label(m), m);
-    for (const auto& [list, type] : lists)
-      for (const std::string& label : stringsAcrossParts("POINT", list))
-        if (const auto it = index.find(label); it != index.end())
-          take.setPointType(it->second, type);
   }
 
   void makeAnalog(const DataLayout& layout, AnalogData& analog)

@@ -1,6 +1,8 @@
 #include "mocap/io/c3d_writer.h"
 
 #include "mocap/io/c3d_binary.h"
+#include "mocap/io/c3d_point_types.h"
+#include "mocap/io/c3d_string_lists.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/model/provenance.h"
@@ -15,25 +17,6 @@ namespace mocap {
 namespace {
 
 constexpr std::size_t kMaxArrayEntries = 255;  // a C3D dimension is one byte
-
-/// Writes `values` as `base`, `base2`, `base3`... of at most 255 strings each and removes
-/// stale higher parts left from the original file.
-void setStringsAcrossParts(C3dParameterTree& tree, std::string_view group, const std::string& base,
-                           const std::vector<std::string>& values)
-{
-  std::size_t part = 1;
-  for (std::size_t start = 0; start < values.size() || start == 0; start += kMaxArrayEntries, ++part) {
-    const auto end = std::min(values.size(), start + kMaxArrayEntries);
-    const std::vector<std::string> chunk(values.begin() + static_cast<std::ptrdiff_t>(start),
-                                         values.begin() + static_cast<std::ptrdiff_t>(end));
-    const std::string name = part == 1 ? base : base + std::to_string(part);
-    tree.set(group, C3dParameter::makeStrings(name, chunk));
-    if (end == values.size())
-      break;
-  }
-  for (++part; tree.find(group, base + std::to_string(part)); ++part)
-    tree.remove(group, base + std::to_string(part));
-}
 
 /// Residual resolution: the file's own |POINT:SCALE| converted to the take's current units, so
 /// residuals from integer files come back exact; 1 mm otherwise.
@@ -94,6 +77,7 @@ private:
 
   void updatePointGroup()
   {
+    writeC3dPointTypes(m_take, m_tree);  // first: the group's own parameters below win any clash
     const auto markers = static_cast<int>(m_take.markerCount());
     const auto frames = static_cast<int>(std::min<Eigen::Index>(m_take.frameCount(), 65535));
     m_tree.set("POINT", C3dParameter::makeInt16("USED", {markers}, true));
@@ -101,7 +85,7 @@ private:
     m_tree.set("POINT", C3dParameter::makeFloat("SCALE", {-m_scale}, true));
     m_tree.set("POINT", C3dParameter::makeFloat("RATE", {m_take.frameRate()}, true));
     m_tree.set("POINT", C3dParameter::makeStrings("UNITS", {std::string(unitName(m_take.units()))}));
-    setStringsAcrossParts(m_tree, "POINT", "LABELS", m_take.labels());
+    setC3dStringsAcrossParts(m_tree, "POINT", "LABELS", m_take.labels());
     std::vector<std::string> descriptions;
     for (int part = 1;; ++part) {
       const C3dParameter* p = m_tree.find("POINT", part == 1 ? "DESCRIPTIONS" : "DESCRIPTIONS" + std::to_string(part));
@@ -111,7 +95,7 @@ private:
       descriptions.insert(descriptions.end(), more.begin(), more.end());
     }
     descriptions.resize(m_take.labels().size());
-    setStringsAcrossParts(m_tree, "POINT", "DESCRIPTIONS", descriptions);
+    setC3dStringsAcrossParts(m_tree, "POINT", "DESCRIPTIONS", descriptions);
   }
 
   void updateAnalogGroup()
@@ -138,9 +122,9 @@ private:
     m_tree.set("ANALOG", C3dParameter::makeFloat("GEN_SCALE", {analog.generalScale}, true));
     m_tree.set("ANALOG", C3dParameter::makeFloat("SCALE", scales, false));
     m_tree.set("ANALOG", C3dParameter::makeInt16("OFFSET", offsets, false));
-    setStringsAcrossParts(m_tree, "ANALOG", "LABELS", labels);
-    setStringsAcrossParts(m_tree, "ANALOG", "DESCRIPTIONS", descriptions);
-    setStringsAcrossParts(m_tree, "ANALOG", "UNITS", units);
+    setC3dStringsAcrossParts(m_tree, "ANALOG", "LABELS", labels);
+    setC3dStringsAcrossParts(m_tree, "ANALOG", "DESCRIPTIONS", descriptions);
+    setC3dStringsAcrossParts(m_tree, "ANALOG", "UNITS", units);
   }
 
   void updateTrialGroup()

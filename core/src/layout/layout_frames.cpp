@@ -3,6 +3,7 @@
 #include "mocap/base/error.h"
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/math/kabsch.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/marker_set.h"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ std::vector<Eigen::Index> indicesOf(const Take& take, const std::vector<std::str
 std::vector<std::string> defaultPlannedLabels(const Take& take, const std::vector<std::string>& excluded)
 {
   std::vector<std::string> labels;
-  for (const std::string& label : take.labels())
+  for (const std::string& label : markerLabels(take))
     if (!isUnlabelledLabel(label) && std::find(excluded.begin(), excluded.end(), label) == excluded.end())
       labels.push_back(label);
   return labels;

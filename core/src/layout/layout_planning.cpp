@@ -3,6 +3,7 @@
 #include "mocap/base/text.h"
 #include "mocap/io/marker_set_io.h"
 #include "mocap/layout/layout_symmetry.h"
+#include "mocap/model/marker_points.h"
 
 #include <algorithm>
 #include <optional>
@@ -15,12 +16,13 @@ namespace {
 
 using Field = LayoutRequestError::Field;
 
-// The planned markers: the patterns' matches (or the default set) without the excluded ones.
+// The planned markers: the patterns' matches among the marker points (model outputs are never
+// planned) or the default set, without the excluded ones.
 std::vector<std::string> plannedLabels(const Take& first, const LayoutRequest& request)
 {
   std::vector<std::string> planned = request.markerPatterns.empty()
                                          ? defaultPlannedLabels(first, request.stabilizeLabels)
-                                         : labelsMatching(first.labels(), request.markerPatterns, Field::Markers);
+                                         : labelsMatching(markerLabels(first), request.markerPatterns, Field::Markers);
   if (!request.excludePatterns.empty()) {
     const std::vector<std::string> excluded = labelsMatching(first.labels(), request.excludePatterns, Field::Exclude);
     const auto isExcluded = [&](const std::string& label) {

@@ -1,5 +1,7 @@
 #include "mocap/model/gaps.h"
 
+#include "mocap/model/marker_points.h"
+
 namespace mocap {
 
 std::vector<Gap> findGaps(const Eigen::Ref<const ValidMask>& valid, Eigen::Index marker)
@@ -22,8 +24,13 @@ std::vector<Gap> findGaps(const Eigen::Ref<const ValidMask>& valid, Eigen::Index
 
 std::vector<Gap> findGaps(const Take& take)
 {
+  return findGaps(take, markerPoints(take));
+}
+
+std::vector<Gap> findGaps(const Take& take, const std::vector<Eigen::Index>& points)
+{
   std::vector<Gap> gaps;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+  for (const Eigen::Index m : points) {
     const auto markerGaps = findGaps(take.valid().col(m), m);
     gaps.insert(gaps.end(), markerGaps.begin(), markerGaps.end());
   }

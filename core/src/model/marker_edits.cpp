@@ -133,6 +133,7 @@ Take subsetTake(const Take& source, const std::vector<std::string>& labels)
   take.setUnits(source.units());
   for (Eigen::Index j = 0; j < take.markerCount(); ++j) {
     const Eigen::Index m = markers[static_cast<std::size_t>(j)];
+    take.setPointType(j, source.pointType(m));
     take.trajectory(j) = source.trajectory(m);
     take.valid().col(j) = source.valid().col(m);
     take.residuals().col(j) = source.residuals().col(m);

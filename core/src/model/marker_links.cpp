@@ -1,6 +1,7 @@
 #include "mocap/model/marker_links.h"
 
 #include "mocap/base/error.h"
+#include "mocap/model/marker_points.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,7 @@ std::vector<MarkerLink> nearestNeighbourLinks(const Take& take, Eigen::Index fra
     throw InvalidArgument("frame " + std::to_string(frame) + " is outside the take (" +
                           std::to_string(take.frameCount()) + " frames)");
   std::vector<Eigen::Index> valid;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     if (take.isValid(frame, m) && take.position(frame, m).allFinite())
       valid.push_back(m);
   Eigen::Matrix<double, Eigen::Dynamic, 3> points(static_cast<Eigen::Index>(valid.size()), 3);

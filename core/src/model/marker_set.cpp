@@ -1,6 +1,7 @@
 #include "mocap/model/marker_set.h"
 
 #include "mocap/model/marker_links.h"
+#include "mocap/model/marker_points.h"
 
 #include "mocap/base/error.h"
 #include "mocap/base/text.h"
@@ -113,16 +114,14 @@ Eigen::Index mostCompleteFrame(const Take& take, const std::vector<Eigen::Index>
 
 Eigen::Index mostCompleteFrame(const Take& take)
 {
-  std::vector<Eigen::Index> all(static_cast<std::size_t>(take.markerCount()));
-  std::iota(all.begin(), all.end(), Eigen::Index{0});
-  return mostCompleteFrame(take, all);
+  return mostCompleteFrame(take, markerPoints(take));
 }
 
 MarkerSet markerSetFromTake(const Take& take, Eigen::Index frame)
 {
   std::vector<Eigen::Index> markers;
   const auto valid = take.valid();
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     if (!isUnlabelledLabel(take.label(m)) && valid.col(m).any())
       markers.push_back(m);
   if (markers.empty())

@@ -17,6 +17,7 @@ Take sliceFrames(const Take& take, Eigen::Index begin, Eigen::Index end)
   slice.residuals() = take.residuals().middleRows(begin, count);
   slice.cameraMasks() = take.cameraMasks().middleRows(begin, count);
   for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    slice.setPointType(m, take.pointType(m));
     slice.trajectory(m) = take.trajectory(m).middleRows(begin, count);
     for (Eigen::Index f = 0; f < count; ++f)
       slice.setState(f, m, take.state(begin + f, m));

@@ -67,6 +67,7 @@ void copyMarker(const Take& source, Eigen::Index from, Take& target, Eigen::Inde
   if (source.frameCount() != target.frameCount() || from < 0 || from >= source.markerCount() || to < 0 ||
       to >= target.markerCount())
     throw InvalidArgument("copy marker: frame counts differ or a marker is out of range");
+  target.setPointType(to, source.pointType(from));
   target.trajectory(to) = source.trajectory(from);
   target.valid().col(to) = source.valid().col(from);
   target.residuals().col(to) = source.residuals().col(from);

@@ -52,17 +52,19 @@ struct TakeReport
   std::int64_t filledSamples = 0;
   std::int64_t smoothedSamples = 0;
   std::vector<std::string> missingMarkers;  ///< markers with no valid sample after cleaning
+  std::int64_t modelOutputs = 0;            ///< points cleaning left untouched (angles, forces...)
   std::vector<MarkerQuality> markers;
   TakeTimings timings;
 
   [[nodiscard]] bool failed() const { return !error.empty(); }
 };
 
-/// The valid fraction and gaps of every marker of `take` as read, before cleaning. O(#frames · #markers).
+/// The valid fraction and gaps of every marker point of `take` (model outputs are left out,
+/// marker_points.h) as read, before cleaning. O(#frames · #markers).
 [[nodiscard]] std::vector<MarkerQuality> qualityBefore(const Take& take);
 
 /// Completes `report` from the markers as read (`before`), the cleaned take and what the pipeline
-/// did (validBefore is the caller's: the take's validFraction() as read): valid fractions after, spikes and filled/unfilled gaps per marker, markers missing.
+/// did (validBefore is the caller's: markerValidFraction of the take as read): valid fractions after, spikes and filled/unfilled gaps per marker, markers missing.
 /// O(#frames · #markers + #spikes + #gaps).
 void recordCleaning(TakeReport& report, std::vector<MarkerQuality> before, const Take& cleaned,
                     const CleanReport& cleaning);

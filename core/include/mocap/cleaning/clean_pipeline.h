@@ -36,9 +36,11 @@ struct CleanReport
   std::vector<GapFillReport> gaps;
   Eigen::Index filledSamples = 0;
   Eigen::Index smoothedSamples = 0;
+  /// Model outputs (marker_points.h) every step left untouched, ascending.
+  std::vector<Eigen::Index> modelOutputs;
 };
 
-/// Runs the steps on `take` in place. Throws InvalidArgument for an unknown stabilization label.
+/// Runs the steps on `take` in place, on its marker points only: model outputs keep every byte. Throws InvalidArgument for an unknown stabilization label.
 /// Cost: the sum of the steps (each O(#frames · #markers) up to its neighbour search).
 CleanReport cleanTake(Take& take, const CleanOptions& options);
 

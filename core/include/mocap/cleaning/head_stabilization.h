@@ -29,15 +29,18 @@ struct HeadMotion
 /// pose before the first / after the last one, and known = false. Not a paper equation: the
 /// paper restricts head motion at capture time (§5.1); this removes it in software so
 /// neighbour-based recovery (eqs 3-7) sees facial motion only. Throws InvalidArgument for fewer
-/// than three or repeated or out-of-range markers, an empty take, a reference frame out of range
+/// than three or repeated or out-of-range markers, a reference point that is a model output, an
+/// empty take, a reference frame out of range
 /// or with an invalid reference marker, no frame where all are valid, or a non-finite valid
 /// reference sample. O(#frames · #referenceMarkers).
 [[nodiscard]] HeadMotion estimateHeadMotion(const Take& take,
                                             const std::vector<Eigen::Index>& referenceMarkers,
                                             Eigen::Index referenceFrame = -1);
 
-/// Maps every sample (valid or not; validity untouched) into the stabilized head frame:
-/// p ← poses[f]⁻¹ · p. Valid samples gain SampleOperation::Stabilized (their origin stays). Throws InvalidArgument unless motion has one pose per frame.
+/// Maps every marker sample (valid or not; validity untouched; model outputs are left alone,
+/// marker_points.h) into the stabilized head frame: p ← poses[f]⁻¹ · p. Valid samples gain
+/// SampleOperation::Stabilized (their origin stays). Throws InvalidArgument unless motion has one
+/// pose per frame.
 /// Not a paper equation. O(#frames · #markers).
 void removeHeadMotion(Take& take, const HeadMotion& motion);
 
@@ -65,7 +68,7 @@ struct RigidClusterOptions
 
 /// The largest group of markers that moves as one rigid body: every pairwise distance keeps a
 /// strain (standard deviation / mean) ≤ tolerance over the sampled frames where both are valid. Only labelled
-/// markers (not isUnlabelledLabel) valid in at least half the frames are considered. Greedy:
+/// marker points (no model outputs) (not isUnlabelledLabel) valid in at least half the frames are considered. Greedy:
 /// starts from the most rigid pair and adds the marker whose worst spread to the cluster is least,
 /// while it is within the tolerance. Returns marker indices in take order, or nothing when fewer
 /// than three markers qualify (three are needed for a pose). Not a paper equation: a default for
@@ -73,9 +76,10 @@ struct RigidClusterOptions
 /// maxFrames < 2. O(#markers² · #sampled frames + #markers³).
 [[nodiscard]] std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options = {});
 
-/// removeHeadMotion as patches (one per marker, every frame): the studio previews and undoes
+/// removeHeadMotion as patches (one per marker point, every frame): the studio previews and undoes
 /// stabilization like any other edit. Validity, residuals and origins are kept (the samples move,
-/// they are not re-measured); valid samples gain SampleOperation::Stabilized. Throws InvalidArgument unless motion has one pose per frame.
+/// they are not re-measured); valid samples gain SampleOperation::Stabilized. Throws
+/// InvalidArgument unless motion has one pose per frame.
 /// O(#frames · #markers).
 [[nodiscard]] std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMotion& motion);
 

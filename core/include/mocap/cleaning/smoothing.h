@@ -80,9 +80,11 @@ void checkSmoothOptions(const SmoothOptions& options, double frameRate);
 smoothTrajectory(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& xyz,
                  const Eigen::Ref<const ValidMask>& valid, double frameRate, const SmoothOptions& options);
 
-/// One patch per marker (index = marker, possibly empty) holding the samples whose position
-/// changed, each gaining SampleOperation::Smoothed on top of its origin (a filled sample stays
-/// filled); validity and residuals are kept (a smoothed sample is still a measured one). Applying the patches smooths the take; applying their undo restores it.
+/// One patch per marker (index = marker, possibly empty: always for a model output, which is
+/// left alone, marker_points.h) holding the samples whose position changed, each gaining
+/// SampleOperation::Smoothed on top of its origin (a filled sample stays filled); validity and
+/// residuals are kept (a smoothed sample is still a measured one). Applying the patches smooths the
+/// take; applying their undo restores it.
 /// B-spline factorisations are shared between runs of equal length. Throws InvalidArgument as
 /// checkSmoothOptions with the take's frame rate. O(#markers · cost of smoothTrajectory).
 [[nodiscard]] std::vector<SamplePatch> smoothTake(const Take& take, const SmoothOptions& options,

@@ -111,7 +111,8 @@ struct SpikeFlag
 detectSpikes(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& xyz,
              const Eigen::Ref<const ValidMask>& valid, const SpikeOptions& options);
 
-/// Every flagged sample of every marker, markers then frames ascending; `noiseFloor` is converted
+/// Every flagged sample of every marker point (model outputs are never flagged: marker_points.h),
+/// markers then frames ascending; `noiseFloor` is converted
 /// from millimetres to the take's units, so the flags do not depend on the units. An empty take
 /// gives no flags. O(#frames · #markers). Throws InvalidArgument as above, naming the marker.
 [[nodiscard]] std::vector<SpikeFlag> detectSpikes(const Take& take, const SpikeOptions& options,

@@ -36,7 +36,9 @@ namespace mocap {
 /// The take as .trc text with `fileName` on line 1. Numbers use the shortest form that reads back
 /// to the same double, so formatTrc → parseTrc is exact; missing and non-finite samples are empty
 /// cells. Tabs and line breaks in labels become spaces and surrounding blanks are dropped, as the
-/// format cannot hold them. Throws InvalidArgument when the frame numbers would overflow.
+/// format cannot hold them. Model outputs (marker_points.h) are left out: a TRC file holds marker
+/// positions only. Throws InvalidArgument when the frame numbers would overflow or the take has
+/// no marker point but model outputs.
 /// O(#frames · #markers).
 [[nodiscard]] std::string formatTrc(const Take& take, std::string_view fileName = "take.trc");
 

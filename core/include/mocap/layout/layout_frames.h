@@ -45,8 +45,8 @@ struct LayoutFrames
   [[nodiscard]] Eigen::Index rowOf(std::size_t take, Eigen::Index frame) const;
 };
 
-/// The markers a layout is planned over unless told otherwise: every marker of `take` in take order
-/// except `excluded` (e.g. the head reference markers) and unlabelled points (isUnlabelledLabel:
+/// The markers a layout is planned over unless told otherwise: every marker point of `take`
+/// (markerLabels: no model outputs) in take order except `excluded` (e.g. the head reference markers) and unlabelled points (isUnlabelledLabel:
 /// fragments the tracker could not name, valid in too few frames to plan with).
 /// O(#markers · #excluded).
 [[nodiscard]] std::vector<std::string> defaultPlannedLabels(const Take& take,

@@ -38,8 +38,8 @@ void exchangeMarkersFrom(Take& take, Eigen::Index a, Eigen::Index b, Eigen::Inde
 /// an index outside the take or from == to. O(#frames).
 [[nodiscard]] SamplePatch validSamplesPatch(const Take& take, Eigen::Index from, Eigen::Index to);
 
-/// A take holding only the markers `labels` of `source`, in that order, with every frame and
-/// each sample's position, validity, residual, camera mask and state: a capture reduced to a
+/// A take holding only the markers `labels` of `source`, in that order, with their point types,
+/// every frame and each sample's position, validity, residual, camera mask and state: a capture reduced to a
 /// planned marker layout. Frame rate, first frame and units are kept; analog data, events and
 /// C3D parameters are not (they describe the full capture). Throws InvalidArgument for no
 /// labels, a label `source` does not have or a label given twice. O(#frames · #labels).

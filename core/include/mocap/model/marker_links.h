@@ -18,7 +18,7 @@ using MarkerLink = std::pair<Eigen::Index, Eigen::Index>;
 [[nodiscard]] std::vector<MarkerLink> nearestNeighbourLinks(const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, 3>>& points,
                                                             int neighbours, double maxRatio);
 
-/// The same over the markers valid (and finite) in `frame` of a take, as marker indices: by
+/// The same over the marker points (no model outputs) valid (and finite) in `frame` of a take, as marker indices: by
 /// default each to its three nearest, without links over twice the median (a stray marker is
 /// not drawn across the face). Also throws InvalidArgument for a frame outside the take.
 [[nodiscard]] std::vector<MarkerLink> nearestNeighbourLinks(const Take& take, Eigen::Index frame, int neighbours = 3,

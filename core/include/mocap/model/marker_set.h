@@ -45,11 +45,11 @@ void validateMarkerSet(const MarkerSet& set);
 /// The frame where most of `markers` are valid (the first such frame): the neutral frame a
 /// template is taken from. −1 when none is ever valid. O(#frames · #markers).
 [[nodiscard]] Eigen::Index mostCompleteFrame(const Take& take, const std::vector<Eigen::Index>& markers);
-/// The same over all markers of the take.
+/// The same over the take's marker points (marker_points.h: no model outputs).
 [[nodiscard]] Eigen::Index mostCompleteFrame(const Take& take);
 
-/// A marker set from a labelled take: its labelled markers (isUnlabelledLabel ones and markers
-/// never valid are left out), their positions in `frame` (−1: mostCompleteFrame) or, for a marker
+/// A marker set from a labelled take: its labelled markers (isUnlabelledLabel ones, model outputs
+/// and markers never valid are left out), their positions in `frame` (−1: mostCompleteFrame) or, for a marker
 /// invalid there, in its nearest valid frame; pairs from detectMarkerPairs; links from each marker
 /// to its two nearest neighbours in the template. Throws InvalidArgument when the take has no
 /// labelled marker with a valid sample or `frame` is out of range. O(#frames · #markers + #markers²).

@@ -19,7 +19,7 @@ namespace mocap {
 /// O(#fragments · (#added markers + fragment length)).
 Eigen::Index appendFragments(Take& take, const std::vector<Fragment>& fragments, const std::vector<Eigen::Index>& which);
 
-/// Copies every sample (positions, validity, residuals, camera masks, states) of marker `from` of
+/// Copies the point type and every sample (positions, validity, residuals, camera masks, states) of marker `from` of
 /// `source` into marker `to` of `target`; both takes must have the same number of frames.
 /// Throws InvalidArgument otherwise. O(#frames).
 void copyMarker(const Take& source, Eigen::Index from, Take& target, Eigen::Index to);

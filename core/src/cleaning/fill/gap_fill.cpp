@@ -9,6 +9,8 @@
 #include "mocap/base/number_text.h"
 #include "mocap/cleaning/fill/pca_fill.h"
 #include "mocap/cleaning/fill/rigid_fill.h"
+#include "mocap/model/marker_edits.h"
+#include "mocap/model/marker_points.h"
 
 #include <algorithm>
 #include <array>
@@ -31,13 +33,14 @@ constexpr EnumTable<FillMethod, 9> kNames{{{
     {FillMethod::Auto, "auto"},
 }}};
 
-constexpr EnumTable<UnfilledCause, 6> kCauses{{{
+constexpr EnumTable<UnfilledCause, 7> kCauses{{{
     {UnfilledCause::None, ""},
     {UnfilledCause::NeverValid, "never_valid"},
     {UnfilledCause::RarelyValid, "rarely_valid"},
     {UnfilledCause::TooLong, "too_long"},
     {UnfilledCause::EdgeGap, "edge_gap"},
     {UnfilledCause::Method, "method"},
+    {UnfilledCause::ModelOutput, "model_output"},
 }}};
 
 void checkOptions(const FillOptions& options)
@@ -128,6 +131,50 @@ GapPrediction predict(const GapQuery& query, const FillOptions& options, const P
   return GapPrediction::failure("unknown method");
 }
 
+// A take with model outputs is filled on a copy of its marker points, so no output serves as a
+// neighbour, and the results are mapped back in the order of `gaps`; a gap of an output stays
+// open. `gaps` and options are checked. O(#frames · #markers) more than filling the copy.
+FillResult fillMarkerPoints(const Take& take, const std::vector<Eigen::Index>& markers, const std::vector<Gap>& gaps,
+                            const FillOptions& options, const JobControl& job)
+{
+  std::vector<Eigen::Index> slot(static_cast<std::size_t>(take.markerCount()), -1);
+  for (std::size_t j = 0; j < markers.size(); ++j)
+    slot[static_cast<std::size_t>(markers[j])] = static_cast<Eigen::Index>(j);
+  FillOptions markerOptions = options;
+  markerOptions.fillAnyway.clear();
+  for (const Eigen::Index m : options.fillAnyway)
+    if (slot[static_cast<std::size_t>(m)] >= 0)
+      markerOptions.fillAnyway.push_back(slot[static_cast<std::size_t>(m)]);
+  std::vector<Gap> markerGaps;
+  for (const Gap& gap : gaps)
+    if (const Eigen::Index j = slot[static_cast<std::size_t>(gap.marker)]; j >= 0) {
+      markerGaps.push_back(gap);
+      markerGaps.back().marker = j;
+    }
+  FillResult filled;
+  if (!markerGaps.empty())
+    filled = fillGaps(subsetTake(take, markerLabels(take)), markerGaps, markerOptions, job);
+  FillResult result;
+  for (SamplePatch& patch : filled.patches) {
+    patch.marker = markers[static_cast<std::size_t>(patch.marker)];
+    result.patches.push_back(std::move(patch));
+  }
+  auto next = filled.gaps.begin();
+  for (const Gap& gap : gaps) {
+    GapFillReport report;
+    if (slot[static_cast<std::size_t>(gap.marker)] >= 0) {
+      report = std::move(*next++);
+    } else {
+      report.cause = UnfilledCause::ModelOutput;
+      report.reason = "a model output (" + std::string(pointTypeName(take.pointType(gap.marker))) +
+                      "), not a marker position";
+    }
+    report.gap = gap;
+    result.gaps.push_back(std::move(report));
+  }
+  return result;
+}
+
 } // namespace
 
 const std::vector<FillMethod>& allFillMethods()
@@ -190,7 +237,11 @@ std::vector<GapFillReport> checkFillRules(const Take& take, const std::vector<Ga
     const Gap& gap = gaps[i];
     report.gap = gap;
     const auto& verdict = verdicts[static_cast<std::size_t>(gap.marker)];
-    if (verdict.first != UnfilledCause::None) {
+    if (!isMarker(take, gap.marker)) {
+      report.cause = UnfilledCause::ModelOutput;
+      report.reason = "a model output (" + std::string(pointTypeName(take.pointType(gap.marker))) +
+                      "), not a marker position";
+    } else if (verdict.first != UnfilledCause::None) {
       report.cause = verdict.first;
       report.reason = verdict.second;
     } else if (longest > 0 && gap.length > longest) {
@@ -210,6 +261,9 @@ std::vector<GapFillReport> checkFillRules(const Take& take, const std::vector<Ga
 FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options, const JobControl& job)
 {
   std::vector<GapFillReport> rules = checkFillRules(take, gaps, options);
+  if (const std::vector<Eigen::Index> markers = markerPoints(take);
+      static_cast<Eigen::Index>(markers.size()) != take.markerCount())
+    return fillMarkerPoints(take, markers, gaps, options, job);
   checkFinite(take);
   FillResult result;
   std::unique_ptr<PcaFillModel> pca;

@@ -68,9 +68,11 @@ enum class UnfilledCause
   TooLong,      ///< longer than the longest gap to fill
   EdgeGap,      ///< touches the first or last frame and extrapolate is off
   Method,       ///< the method could not fill it (reason says why)
+  ModelOutput,  ///< the point is a model output (an angle, a force...), not a marker position
 };
 
-/// "never_valid", "rarely_valid", "too_long", "edge_gap", "method" ("" for None), for reports. O(1).
+/// "never_valid", "rarely_valid", "too_long", "edge_gap", "method", "model_output" ("" for None),
+/// for reports. O(1).
 [[nodiscard]] std::string_view unfilledCauseName(UnfilledCause cause);
 
 /// The longest gap `options` fill in a take recorded at `frameRate` Hz, in frames; 0 = unlimited.
@@ -123,7 +125,9 @@ struct FillResult
 
 /// Like fillGaps(take, options) but only for `gaps`, each of which must be a run of invalid
 /// samples of the take (as findGaps returns them; InvalidArgument otherwise). Reports follow
-/// `gaps`. Used by evaluations and by the studio to fill a selection.
+/// `gaps`. Used by evaluations and by the studio to fill a selection. Model outputs
+/// (marker_points.h) are neither filled (cause ModelOutput) nor used as neighbours: a take that
+/// holds some is filled on a copy of its marker points.
 /// `job` is checked between gaps (a cancelled fill throws JobCancelled).
 [[nodiscard]] FillResult fillGaps(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options,
                                   const JobControl& job = {});

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "mocap/model/take.h"
+
+namespace mocap::test {
+
+/// Takes shaped like files from other vendors' systems, built in code for the C3D tests (issue 30):
+/// write one with encodeC3d, break or check it, read it back.
+
+/// `markers` points "P1".. over `frames` frames at 100 Hz, every sample valid with residual 2, and
+/// `channels` analog channels sampled `samples` times per frame; every value differs (position of
+/// marker m in frame f: m·1000 + f), so bytes read from the wrong place show.
+[[nodiscard]] Take distinctValuesTake(int markers, int frames, int channels = 0, int samples = 1);
+
+/// A Vicon Nexus export in miniature: the marker LASI and the model outputs LHipAngles,
+/// LHipForce, LHipMoment, LHipPower, LHipScalar and RHipAngles over 4 frames, named in
+/// POINT:ANGLES (with "NotInTheTake"), FORCES, MOMENTS and POWERS; with `typeGroups`, also
+/// POINT:SCALARS and POINT:TYPE_GROUPS naming all five lists. The types are in the parameters
+/// only: reading the encoded file sets them.
+[[nodiscard]] Take nexusStyleTake(bool typeGroups);
+
+/// A longer Nexus-style take for cleaning and statistics: the markers LASI, RASI, LPSI, RPSI (a
+/// rigid body turning and moving smoothly, with a little noise) and the model outputs LHipAngles,
+/// RHipAngles, LHipForce, LHipMoment, LHipPower (curves of tens of units) over `frames` frames at
+/// 100 Hz, named in POINT:ANGLES, FORCES, MOMENTS and POWERS. Point m misses the 5 frames from
+/// 40 + 5m and jumps by 40 units in frame 120, so a step that touched an output would change it.
+/// `frames` ≥ 150.
+[[nodiscard]] Take nexusCleaningTake(Eigen::Index frames = 200);
+
+} // namespace mocap::test
