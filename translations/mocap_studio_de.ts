@@ -64,6 +64,11 @@
         <source>marker never seen</source>
         <translation>Marker nie sichtbar</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>a model output, not a marker</source>
+        <translation>eine Modellausgabe, kein Marker</translation>
+    </message>
 </context>
 <context>
     <name>GapFillStep</name>
@@ -130,6 +135,14 @@
         </translation>
     </message>
     <message numerus="yes">
+        <location line="+2"/>
+        <source>%n on model outputs</source>
+        <translation>
+            <numerusform>%n auf einer Modellausgabe</numerusform>
+            <numerusform>%n auf Modellausgaben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>; %n left open</source>
         <translation>
@@ -141,7 +154,7 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+67"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>Keine Referenzmarker: Wählen Sie sie unter Marker ▸ Referenzmarker… aus</translation>
     </message>
@@ -229,22 +242,27 @@
 <context>
     <name>SampleState</name>
     <message>
+        <location filename="../widgets/views/sample_colors.cpp" line="+73"/>
         <source>measured</source>
         <translation>gemessen</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>filled</source>
         <translation>gefüllt</translation>
     </message>
     <message>
+        <location line="+1"/>
         <source>edited</source>
         <translation>bearbeitet</translation>
     </message>
     <message>
+        <location line="-12"/>
         <source>smoothed</source>
         <translation>geglättet</translation>
     </message>
     <message>
+        <location line="+2"/>
         <source>stabilized</source>
         <translation>stabilisiert</translation>
     </message>
@@ -252,7 +270,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+158"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+171"/>
         <source>%1 smoothing</source>
         <translation>Glättung: %1</translation>
     </message>
@@ -265,7 +283,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+135"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+146"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>%n Ausreißer gefunden</numerusform>
@@ -284,17 +302,17 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+100"/>
+        <location filename="../app/studio/main_window.cpp" line="+115"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+34"/>
         <source>Frame %1 of %2–%3 — %4 markers selected</source>
         <translation>Frame %1 von %2–%3 — %4 Marker ausgewählt</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Autosave failed: %1</source>
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
@@ -304,52 +322,52 @@
         <translation>Marker</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Curves</source>
         <translation>Kurven</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Cleaning</source>
         <translation>Bereinigung</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>Layout planning</source>
         <translation>Layoutplanung</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Gaps</source>
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
         <source>Blendshape Solve</source>
         <translation>Blendshape-Solve</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+15"/>
         <source>Reference Video</source>
         <translation>Referenzvideo</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+67"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -440,7 +458,12 @@
         <translation>&amp;Bereinigungsvorgabe speichern…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>&amp;Load Cleaning Preset…</source>
+        <translation>Bereinigungsvorgabe &amp;laden…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -511,6 +534,16 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>Show &amp;Model Outputs</source>
+        <translation>&amp;Modellausgaben anzeigen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
+        <translation>Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;Follow Head</source>
         <translation>Kopf &amp;folgen</translation>
     </message>
@@ -526,23 +559,28 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+95"/>
+        <location line="+97"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-95"/>
-        <location line="+95"/>
+        <location line="-97"/>
+        <location line="+97"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-58"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Manual</source>
+        <translation>&amp;Handbuch</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;About Mocap Studio</source>
         <translation>&amp;Über Mocap Studio</translation>
     </message>
@@ -562,7 +600,7 @@
         <translation>Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="-108"/>
         <source>&amp;Head-Stabilized View</source>
         <translation>&amp;Kopfstabilisierte Ansicht</translation>
     </message>
@@ -572,7 +610,7 @@
         <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;</translation>
     </message>
@@ -597,7 +635,12 @@
         <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+15"/>
+        <source>Head markers set; Edit ▸ Undo takes them back</source>
+        <translation>Kopfmarker gesetzt; Bearbeiten ▸ Rückgängig nimmt sie zurück</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>Reference markers unchanged</source>
         <translation>Referenzmarker unverändert</translation>
     </message>
@@ -753,18 +796,33 @@
         <translation>Alle Warnungen beim Lesen der Datei anzeigen</translation>
     </message>
     <message>
-        <location line="+76"/>
-        <location line="+7"/>
+        <location line="+79"/>
+        <location line="+22"/>
         <source>Save Cleaning Preset</source>
         <translation>Bereinigungsvorgabe speichern</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-21"/>
         <source>Cleaning presets (*.json)</source>
         <translation>Bereinigungsvorgaben (*.json)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
+        <source>Include this take&apos;s head markers (%1)</source>
+        <translation>Die Kopfmarker dieser Aufnahme mitspeichern (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none chosen</source>
+        <translation>keine gewählt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A preset carries cleaning options; head markers belong to a take. Include them only when every take the preset is for names its head markers the same way: a take without them then fails with that reason.</source>
+        <translation>Eine Vorgabe enthält Bereinigungsoptionen; Kopfmarker gehören zu einer Aufnahme. Speichern Sie sie nur mit, wenn jede Aufnahme, für die die Vorgabe gedacht ist, ihre Kopfmarker gleich benennt: eine Aufnahme ohne sie schlägt dann mit diesem Grund fehl.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>The preset was not saved: %1</source>
         <translation>Die Vorgabe wurde nicht gespeichert: %1</translation>
     </message>
@@ -772,6 +830,37 @@
         <location line="+2"/>
         <source>Saved the cleaning preset %1</source>
         <translation>Bereinigungsvorgabe %1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply</source>
+        <translation>Bereinigungsvorgabe %1 in das Bereinigungsfenster geladen; die Aufnahme ändert sich erst mit Anwenden</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; it turns off %1 (left as they were)</source>
+        <translation>; sie schaltet %1 aus (unverändert gelassen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; its head markers (%1) are not this take&apos;s: the take keeps its own</source>
+        <translation>; ihre Kopfmarker (%1) gehören nicht zu dieser Aufnahme: die Aufnahme behält ihre eigenen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+6"/>
+        <source>Load Cleaning Preset</source>
+        <translation>Bereinigungsvorgabe laden</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Cleaning presets (*.json);;All files (*)</source>
+        <translation>Bereinigungsvorgaben (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The preset was not loaded: %1</source>
+        <translation>Die Vorgabe wurde nicht geladen: %1</translation>
     </message>
     <message>
         <location line="+119"/>
@@ -784,7 +873,7 @@
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-282"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -815,7 +904,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+89"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
@@ -885,7 +974,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-840"/>
+        <location line="-903"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1298,7 +1387,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+125"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -1334,7 +1423,7 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+112"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+135"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
@@ -1367,12 +1456,12 @@
         <translation type="vanished">+%1 weitere</translation>
     </message>
     <message>
-        <location line="+319"/>
+        <location line="+315"/>
         <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
         <translation>%1 · Bild %2 (%3 s) · %4 %5 %6</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source> → preview %1</source>
         <translation> → Vorschau %1</translation>
     </message>
@@ -2003,7 +2092,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+81"/>
         <source>%1, frames %2–%3 (%4)</source>
         <translation>%1, Frames %2–%3 (%4)</translation>
     </message>
@@ -2218,7 +2307,7 @@
 <context>
     <name>mocap::ui::GapTableModel</name>
     <message>
-        <location filename="../widgets/models/gap_table_model.cpp" line="+29"/>
+        <location filename="../widgets/models/gap_table_model.cpp" line="+31"/>
         <source>Auto (best blend)</source>
         <translation>Automatisch (beste Überblendung)</translation>
     </message>
@@ -2308,16 +2397,17 @@
         <translation>Bewegt den Marker um die Verschiebungen seiner Nachbarn, nähere zählen mehr</translation>
     </message>
     <message>
-        <location line="+262"/>
+        <location line="+274"/>
         <source>filled</source>
         <translation>gefüllt</translation>
     </message>
     <message>
+        <location line="-2"/>
         <source>filled (%1)</source>
         <translation>gefüllt (%1)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>previewed</source>
         <translation>in der Vorschau</translation>
     </message>
@@ -2423,9 +2513,47 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::HeadMarkersProposalBar</name>
+    <message>
+        <location filename="../widgets/panels/head_markers_proposal_bar.cpp" line="+30"/>
+        <source>The take names no head markers (root… or head…) and has none saved: these move together as one rigid body. Nothing uses them until you accept them.</source>
+        <translation>Die Aufnahme benennt keine Kopfmarker (root… oder head…) und hat keine gespeichert: diese bewegen sich gemeinsam als ein starrer Körper. Nichts verwendet sie, bevor Sie sie annehmen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Accept</source>
+        <translation>Annehmen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use these markers for head stabilization, the head-stabilized view, layout planning and the face mesh, and save them with the take (undoable)</source>
+        <translation>Diese Marker für die Kopfstabilisierung, die kopfstabilisierte Ansicht, die Layoutplanung und das Gesichtsnetz verwenden und mit der Aufnahme speichern (rückgängig machbar)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the head markers yourself (Marker ▸ Reference Markers…)</source>
+        <translation>Die Kopfmarker selbst wählen (Marker ▸ Referenzmarker…)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Not now: no head markers for this take</source>
+        <translation>Nicht jetzt: keine Kopfmarker für diese Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Head markers guessed: %1</source>
+        <translation>Kopfmarker vermutet: %1</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-53"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>Am Kopf befestigte Marker, die sich nur mit dem Kopf bewegen: An ihnen wird die Kopfhaltung jedes Bildes gemessen.</translation>
     </message>
@@ -2676,7 +2804,7 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+99"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+100"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
@@ -3090,6 +3218,19 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::ManualWindow</name>
+    <message>
+        <location filename="../widgets/dialogs/manual_window.cpp" line="+27"/>
+        <source>Mocap Studio Manual</source>
+        <translation>Mocap-Studio-Handbuch</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>The manual is not part of this build (:/manual/manual.md is missing).</source>
+        <translation>Das Handbuch ist nicht Teil dieses Builds (:/manual/manual.md fehlt).</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::MarkerEditActions</name>
     <message>
         <location filename="../widgets/actions/marker_edit_actions.cpp" line="+35"/>
@@ -3166,7 +3307,12 @@
 <context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
-        <location filename="../widgets/models/marker_table_model.cpp" line="+79"/>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+72"/>
+        <source>A model output (%1), not a marker: never cleaned; drawn and gap-listed only with View ▸ Show Model Outputs</source>
+        <translation>Eine Modellausgabe (%1), kein Marker: wird nie bereinigt; gezeichnet und in der Lückenliste nur mit Ansicht ▸ Modellausgaben anzeigen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -3194,7 +3340,7 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+148"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+150"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -3212,6 +3358,24 @@
         <location line="+3"/>
         <source>Camera follows the head</source>
         <translation>Kamera folgt dem Kopf</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ModelOutputsNote</name>
+    <message>
+        <location filename="../widgets/views/model_outputs_note.cpp" line="+24"/>
+        <source>%1 shown; never cleaned</source>
+        <translation>%1 angezeigt; nie bereinigt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 hidden; View ▸ Show Model Outputs</source>
+        <translation>%1 ausgeblendet; Ansicht ▸ Modellausgaben anzeigen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model outputs are joint angles, forces, moments and powers the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
+        <translation>Modellausgaben sind Gelenkwinkel, Kräfte, Momente und Leistungen, die die Aufnahmesoftware als Punkte gespeichert hat. Sie bleiben erhalten und werden gespeichert, aber nicht bereinigt, in der Lückenliste gezeigt oder in Statistiken gezählt.</translation>
     </message>
 </context>
 <context>
@@ -3376,7 +3540,7 @@
 <context>
     <name>mocap::ui::ReferenceMarkersDialog</name>
     <message>
-        <location filename="../widgets/dialogs/reference_markers_dialog.cpp" line="+22"/>
+        <location filename="../widgets/dialogs/reference_markers_dialog.cpp" line="+34"/>
         <source>Reference Markers</source>
         <translation>Referenzmarker</translation>
     </message>
@@ -3391,7 +3555,12 @@
         <translation>Gültig in %1 % der Bilder</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>A model output, not a marker</source>
+        <translation>Eine Modellausgabe, kein Marker</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Guess</source>
         <translation>&amp;Vorschlagen</translation>
     </message>
@@ -3782,7 +3951,7 @@
 <context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-92"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-105"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV-Glättungsspline (Woltring)</translation>
     </message>
@@ -3881,7 +4050,7 @@
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-86"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-97"/>
         <source>Robust (local fit + MAD)</source>
         <translation>Robust (lokale Anpassung + MAD)</translation>
     </message>
@@ -3946,7 +4115,7 @@
         <translation>Ausreißer</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+57"/>
         <source>%1 at frame %2</source>
         <translation>%1 bei Frame %2</translation>
     </message>
@@ -3990,12 +4159,12 @@
 <context>
     <name>mocap::ui::TimelineWidget</name>
     <message>
-        <location filename="../widgets/views/timeline_widget.cpp" line="+47"/>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+49"/>
         <source>Dark: gaps, red: bad points under review — of the selected markers, or of all when none is selected. Yellow: the selected frame range.</source>
         <translation>Dunkel: Lücken, rot: zu prüfende Ausreißer — der ausgewählten Marker oder aller, wenn keiner ausgewählt ist. Gelb: der ausgewählte Frame-Bereich.</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+134"/>
         <source>Previous gap</source>
         <translation>Vorherige Lücke</translation>
     </message>
@@ -4035,7 +4204,7 @@
         <translation>Wiedergabegeschwindigkeit</translation>
     </message>
     <message>
-        <location line="+148"/>
+        <location line="+145"/>
         <source>No gap after this frame</source>
         <translation>Keine Lücke nach diesem Frame</translation>
     </message>
@@ -4048,6 +4217,26 @@
         <location line="+10"/>
         <source>Gap of %1 at frame %2 (%3 frames)</source>
         <translation>Lücke von %1 bei Frame %2 (%3 Frames)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>No bad point after this frame</source>
+        <translation>Kein Ausreißer nach diesem Frame</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No bad point before this frame</source>
+        <translation>Kein Ausreißer vor diesem Frame</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Bad point at frame %1: %2</source>
+        <translation>Ausreißer bei Frame %1: %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1, %2 %3 off the mid-point of its neighbours</source>
+        <translation>%1, %2 %3 neben der Mitte seiner Nachbarn</translation>
     </message>
 </context>
 <context>
@@ -4127,7 +4316,7 @@
 <context>
     <name>mocap::ui::WeightEditActions</name>
     <message>
-        <location filename="../widgets/actions/weight_edit_actions.cpp" line="+23"/>
+        <location filename="../widgets/actions/weight_edit_actions.cpp" line="+25"/>
         <source>Solve the take first.</source>
         <translation>Lösen Sie zuerst die Aufnahme.</translation>
     </message>
@@ -4142,7 +4331,7 @@
         <translation>Gewichte mit %1 skalieren</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Zero weights</source>
         <translation>Gewichte nullen</translation>
     </message>

@@ -63,6 +63,11 @@
         <source>marker never seen</source>
         <translation>标记点从未出现</translation>
     </message>
+    <message>
+        <location line="+1"/>
+        <source>a model output, not a marker</source>
+        <translation>模型输出，不是标记点</translation>
+    </message>
 </context>
 <context>
     <name>GapFillStep</name>
@@ -125,6 +130,13 @@
         </translation>
     </message>
     <message numerus="yes">
+        <location line="+2"/>
+        <source>%n on model outputs</source>
+        <translation>
+            <numerusform>%n 个在模型输出上</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
         <location line="+1"/>
         <source>; %n left open</source>
         <translation>
@@ -135,7 +147,7 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+67"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>没有参考标记点：请在“标记点 ▸ 参考标记点…”中选择</translation>
     </message>
@@ -221,9 +233,37 @@
     </message>
 </context>
 <context>
+    <name>SampleState</name>
+    <message>
+        <location filename="../widgets/views/sample_colors.cpp" line="+63"/>
+        <source>smoothed</source>
+        <translation>已平滑</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stabilized</source>
+        <translation>已稳定</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>filled</source>
+        <translation>已填补</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>edited</source>
+        <translation>已编辑</translation>
+    </message>
+</context>
+<context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+158"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+171"/>
         <source>%1 smoothing</source>
         <translation>%1 平滑</translation>
     </message>
@@ -236,7 +276,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+135"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+146"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>发现 %n 个坏点</numerusform>
@@ -253,17 +293,17 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+100"/>
+        <location filename="../app/studio/main_window.cpp" line="+115"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+34"/>
         <source>Frame %1 of %2–%3 — %4 markers selected</source>
         <translation>第 %1 帧（%2–%3）— 已选择 %4 个标记点</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
@@ -273,52 +313,52 @@
         <translation>标记点</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Curves</source>
         <translation>曲线</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>History</source>
         <translation>历史记录</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Cleaning</source>
         <translation>清理</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>Layout planning</source>
         <translation>布局规划</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Gaps</source>
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+45"/>
         <source>Face Mesh</source>
         <translation>面部网格</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
         <source>Blendshape Solve</source>
         <translation>混合形状求解</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+15"/>
         <source>Reference Video</source>
         <translation>参考视频</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>Weights</source>
         <translation>权重</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+67"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -409,7 +449,12 @@
         <translation>保存清理预设(&amp;C)…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>&amp;Load Cleaning Preset…</source>
+        <translation>加载清理预设(&amp;L)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -480,6 +525,16 @@
     </message>
     <message>
         <location line="+9"/>
+        <source>Show &amp;Model Outputs</source>
+        <translation>显示模型输出(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
+        <translation>绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>&amp;Follow Head</source>
         <translation>跟随头部(&amp;F)</translation>
     </message>
@@ -495,23 +550,28 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+95"/>
+        <location line="+97"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-95"/>
-        <location line="+95"/>
+        <location line="-97"/>
+        <location line="+97"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-58"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Manual</source>
+        <translation>手册(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;About Mocap Studio</source>
         <translation>关于 Mocap Studio(&amp;A)</translation>
     </message>
@@ -531,7 +591,7 @@
         <translation>头部稳定视图</translation>
     </message>
     <message>
-        <location line="-106"/>
+        <location line="-108"/>
         <source>&amp;Head-Stabilized View</source>
         <translation>头部稳定视图(&amp;H)</translation>
     </message>
@@ -541,7 +601,7 @@
         <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+33"/>
         <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;</translation>
     </message>
@@ -566,7 +626,12 @@
         <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+15"/>
+        <source>Head markers set; Edit ▸ Undo takes them back</source>
+        <translation>已设置头部标记点；编辑 ▸ 撤销可取消</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>Reference markers unchanged</source>
         <translation>参考标记点未更改</translation>
     </message>
@@ -720,18 +785,33 @@
         <translation>显示读取文件时的所有警告</translation>
     </message>
     <message>
-        <location line="+76"/>
-        <location line="+7"/>
+        <location line="+79"/>
+        <location line="+22"/>
         <source>Save Cleaning Preset</source>
         <translation>保存清理预设</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-21"/>
         <source>Cleaning presets (*.json)</source>
         <translation>清理预设 (*.json)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
+        <source>Include this take&apos;s head markers (%1)</source>
+        <translation>包含此录制的头部标记点（%1）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none chosen</source>
+        <translation>未选择</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A preset carries cleaning options; head markers belong to a take. Include them only when every take the preset is for names its head markers the same way: a take without them then fails with that reason.</source>
+        <translation>预设保存清理选项；头部标记点属于某个录制。仅当预设适用的每个录制都以相同方式命名其头部标记点时才包含它们：没有这些标记点的录制将因此失败。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>The preset was not saved: %1</source>
         <translation>预设未保存：%1</translation>
     </message>
@@ -739,6 +819,37 @@
         <location line="+2"/>
         <source>Saved the cleaning preset %1</source>
         <translation>已保存清理预设 %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply</source>
+        <translation>已将清理预设 %1 加载到清理面板；点击应用之前录制不会改变</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; it turns off %1 (left as they were)</source>
+        <translation>；它关闭了 %1（保持原样）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; its head markers (%1) are not this take&apos;s: the take keeps its own</source>
+        <translation>；其头部标记点（%1）不属于此录制：录制保留自己的</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+6"/>
+        <source>Load Cleaning Preset</source>
+        <translation>加载清理预设</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Cleaning presets (*.json);;All files (*)</source>
+        <translation>清理预设 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The preset was not loaded: %1</source>
+        <translation>预设未加载：%1</translation>
     </message>
     <message>
         <location line="+119"/>
@@ -751,7 +862,7 @@
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-232"/>
+        <location line="-282"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -782,7 +893,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+89"/>
         <source>Export</source>
         <translation>导出</translation>
     </message>
@@ -852,7 +963,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-840"/>
+        <location line="-903"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1263,7 +1374,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+125"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -1298,7 +1409,7 @@
 <context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+112"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+135"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
@@ -1331,12 +1442,12 @@
         <translation type="vanished">另有 %1 个</translation>
     </message>
     <message>
-        <location line="+319"/>
+        <location line="+315"/>
         <source>%1 · frame %2 (%3 s) · %4 %5 %6</source>
         <translation>%1 · 第 %2 帧（%3 s）· %4 %5 %6</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source> → preview %1</source>
         <translation> → 预览 %1</translation>
     </message>
@@ -1961,7 +2072,7 @@
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+81"/>
         <source>%1, frames %2–%3 (%4)</source>
         <translation>%1，第 %2–%3 帧（%4）</translation>
     </message>
@@ -2175,7 +2286,7 @@
 <context>
     <name>mocap::ui::GapTableModel</name>
     <message>
-        <location filename="../widgets/models/gap_table_model.cpp" line="+29"/>
+        <location filename="../widgets/models/gap_table_model.cpp" line="+31"/>
         <source>Auto (best blend)</source>
         <translation>自动（最佳混合）</translation>
     </message>
@@ -2265,7 +2376,12 @@
         <translation>按邻近点的位移移动该标记点，越近权重越大</translation>
     </message>
     <message>
-        <location line="+262"/>
+        <location line="+272"/>
+        <source>filled (%1)</source>
+        <translation>已填补（%1）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>filled</source>
         <translation>已填补</translation>
     </message>
@@ -2376,9 +2492,47 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::HeadMarkersProposalBar</name>
+    <message>
+        <location filename="../widgets/panels/head_markers_proposal_bar.cpp" line="+30"/>
+        <source>The take names no head markers (root… or head…) and has none saved: these move together as one rigid body. Nothing uses them until you accept them.</source>
+        <translation>此录制没有命名头部标记点（root… 或 head…），也没有保存：这些标记点作为一个刚体一起运动。在您接受之前不会使用它们。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Accept</source>
+        <translation>接受</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use these markers for head stabilization, the head-stabilized view, layout planning and the face mesh, and save them with the take (undoable)</source>
+        <translation>将这些标记点用于头部稳定、头部稳定视图、布局规划和面部网格，并随录制保存（可撤销）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose…</source>
+        <translation>选择…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the head markers yourself (Marker ▸ Reference Markers…)</source>
+        <translation>自行选择头部标记点（标记点 ▸ 参考标记点…）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Not now: no head markers for this take</source>
+        <translation>暂不：此录制没有头部标记点</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Head markers guessed: %1</source>
+        <translation>推测的头部标记点：%1</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-53"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>仅随头部运动的头戴标记点：每一帧的头部姿态都基于它们测得。</translation>
     </message>
@@ -2627,7 +2781,7 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+99"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+100"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
@@ -3040,6 +3194,19 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::ManualWindow</name>
+    <message>
+        <location filename="../widgets/dialogs/manual_window.cpp" line="+27"/>
+        <source>Mocap Studio Manual</source>
+        <translation>Mocap Studio 手册</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>The manual is not part of this build (:/manual/manual.md is missing).</source>
+        <translation>此版本不包含手册（缺少 :/manual/manual.md）。</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::MarkerEditActions</name>
     <message>
         <location filename="../widgets/actions/marker_edit_actions.cpp" line="+35"/>
@@ -3116,7 +3283,12 @@
 <context>
     <name>mocap::ui::MarkerTableModel</name>
     <message>
-        <location filename="../widgets/models/marker_table_model.cpp" line="+79"/>
+        <location filename="../widgets/models/marker_table_model.cpp" line="+72"/>
+        <source>A model output (%1), not a marker: never cleaned; drawn and gap-listed only with View ▸ Show Model Outputs</source>
+        <translation>模型输出（%1），不是标记点：从不清理；仅在 视图 ▸ 显示模型输出 时绘制并列入缺口列表</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -3144,7 +3316,7 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+148"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+150"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -3161,6 +3333,24 @@
         <location line="+3"/>
         <source>Camera follows the head</source>
         <translation>相机跟随头部</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ModelOutputsNote</name>
+    <message>
+        <location filename="../widgets/views/model_outputs_note.cpp" line="+24"/>
+        <source>%1 shown; never cleaned</source>
+        <translation>%1 已显示；从不清理</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 hidden; View ▸ Show Model Outputs</source>
+        <translation>%1 已隐藏；视图 ▸ 显示模型输出</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model outputs are joint angles, forces, moments and powers the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
+        <translation>模型输出是采集软件以点存储的关节角度、力、力矩和功率。它们会被保留和保存，但不会被清理、列入缺口列表或计入统计。</translation>
     </message>
 </context>
 <context>
@@ -3324,7 +3514,7 @@
 <context>
     <name>mocap::ui::ReferenceMarkersDialog</name>
     <message>
-        <location filename="../widgets/dialogs/reference_markers_dialog.cpp" line="+22"/>
+        <location filename="../widgets/dialogs/reference_markers_dialog.cpp" line="+34"/>
         <source>Reference Markers</source>
         <translation>参考标记点</translation>
     </message>
@@ -3339,7 +3529,12 @@
         <translation>在 %1 % 的帧中有效</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>A model output, not a marker</source>
+        <translation>模型输出，不是标记点</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Guess</source>
         <translation>自动推测(&amp;G)</translation>
     </message>
@@ -3728,7 +3923,7 @@
 <context>
     <name>mocap::ui::SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="-92"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="-105"/>
         <source>GCV smoothing spline (Woltring)</source>
         <translation>GCV 平滑样条（Woltring）</translation>
     </message>
@@ -3827,7 +4022,7 @@
 <context>
     <name>mocap::ui::SpikeStep</name>
     <message>
-        <location filename="../widgets/panels/spike_step.cpp" line="-86"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="-97"/>
         <source>Robust (local fit + MAD)</source>
         <translation>稳健（局部拟合 + MAD）</translation>
     </message>
@@ -3892,7 +4087,7 @@
         <translation>坏点</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+57"/>
         <source>%1 at frame %2</source>
         <translation>%1，第 %2 帧</translation>
     </message>
@@ -3935,12 +4130,12 @@
 <context>
     <name>mocap::ui::TimelineWidget</name>
     <message>
-        <location filename="../widgets/views/timeline_widget.cpp" line="+47"/>
+        <location filename="../widgets/views/timeline_widget.cpp" line="+49"/>
         <source>Dark: gaps, red: bad points under review — of the selected markers, or of all when none is selected. Yellow: the selected frame range.</source>
         <translation>深色：缺口；红色：待检查的坏点 — 针对所选标记点，未选择时针对全部标记点。黄色：所选帧范围。</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+134"/>
         <source>Previous gap</source>
         <translation>上一个缺口</translation>
     </message>
@@ -3980,7 +4175,7 @@
         <translation>播放速度</translation>
     </message>
     <message>
-        <location line="+148"/>
+        <location line="+145"/>
         <source>No gap after this frame</source>
         <translation>此帧之后没有缺口</translation>
     </message>
@@ -3993,6 +4188,26 @@
         <location line="+10"/>
         <source>Gap of %1 at frame %2 (%3 frames)</source>
         <translation>%1 在第 %2 帧处的缺口（%3 帧）</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>No bad point after this frame</source>
+        <translation>此帧之后没有坏点</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>No bad point before this frame</source>
+        <translation>此帧之前没有坏点</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Bad point at frame %1: %2</source>
+        <translation>第 %1 帧的坏点：%2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1, %2 %3 off the mid-point of its neighbours</source>
+        <translation>%1，偏离相邻点中点 %2 %3</translation>
     </message>
 </context>
 <context>
@@ -4072,7 +4287,7 @@
 <context>
     <name>mocap::ui::WeightEditActions</name>
     <message>
-        <location filename="../widgets/actions/weight_edit_actions.cpp" line="+23"/>
+        <location filename="../widgets/actions/weight_edit_actions.cpp" line="+25"/>
         <source>Solve the take first.</source>
         <translation>请先求解拍摄。</translation>
     </message>
@@ -4087,7 +4302,7 @@
         <translation>将权重缩放 %1 倍</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Zero weights</source>
         <translation>权重清零</translation>
     </message>

@@ -3,6 +3,8 @@
 #include "test_support.h"
 
 #include "mocap/io/c3d_reader.h"
+#include "mocap/model/marker_edits.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/io/c3d_writer.h"
 #include "mocap/base/error.h"
 #include "mocap/io/trc_io.h"
@@ -138,9 +140,12 @@ TEST(C3dRoundTrip, MoreThan65535FramesUseTrialFields)
 
 TEST(C3dRoundTrip, ThroughTrcKeepsSamplesGapsLabelsRateAndFirstFrame)
 {
-  const Take original = readC3d(dataFile("c3d/sample03/gait-pig-nz.c3d"));
+  // TRC holds marker positions only: the file's model outputs (Nexus angles) are left out.
+  const Take read = readC3d(dataFile("c3d/sample03/gait-pig-nz.c3d"));
+  ASSERT_LT(markerPoints(read).size(), static_cast<std::size_t>(read.markerCount())) << "the file has model outputs";
+  const Take original = subsetTake(read, markerLabels(read));
   test::TempDir dir;
-  writeTrc(original, dir.file("take.trc"));
+  writeTrc(read, dir.file("take.trc"));
   const Take viaTrc = readTrc(dir.file("take.trc"));
   const Take back = reparse(viaTrc);
   ASSERT_EQ(back.labels(), original.labels());

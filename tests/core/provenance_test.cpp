@@ -355,6 +355,7 @@ TEST(Provenance, VersionOneGroupStillReads)
   C3dParameter runs = C3dParameter::makeFloat("STATE_RUNS", {1, 10, 20, 1, 0, 50, 10, 2, 2, 100, 1, 3}, false);
   runs.dimensions = {4, 3};
   group.parameters.push_back(runs);
+  const std::vector<C3dParameter> versionOne = group.parameters;  // loading removes the group
   std::vector<std::string> warnings;
   loadProvenance(take, &warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
@@ -365,7 +366,7 @@ TEST(Provenance, VersionOneGroupStillReads)
   // A code version 1 did not have is skipped with a warning, not misread.
   Take other = measuredTake();
   C3dGroup& bad = other.parameters().ensureGroup("PROCESSING");
-  bad.parameters = group.parameters;
+  bad.parameters = versionOne;
   bad.find("STATE_RUNS")->numbers[3] = 5;
   warnings.clear();
   loadProvenance(other, &warnings);

@@ -1,5 +1,7 @@
 #include "foreign_takes.h"
 
+#include "mocap/io/c3d_point_types.h"
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -49,6 +51,7 @@ Take nexusStyleTake(bool typeGroups)
     tree.set("POINT", C3dParameter::makeStrings("TYPE_GROUPS", {"ANGLES", "ANGLE", "FORCES", "FORCE", "MOMENTS",
                                                                  "MOMENT", "POWERS", "POWER", "SCALARS", "SCALAR"}));
   }
+  readC3dPointTypes(tree, take);  // the writer writes the lists from the take's types
   return take;
 }
 
@@ -86,6 +89,7 @@ Take nexusCleaningTake(Eigen::Index frames)
   tree.set("POINT", C3dParameter::makeStrings("FORCES", {"LHipForce"}));
   tree.set("POINT", C3dParameter::makeStrings("MOMENTS", {"LHipMoment"}));
   tree.set("POINT", C3dParameter::makeStrings("POWERS", {"LHipPower"}));
+  readC3dPointTypes(tree, take);
   return take;
 }
 

@@ -15,8 +15,8 @@ namespace mocap::test {
 /// A Vicon Nexus export in miniature: the marker LASI and the model outputs LHipAngles,
 /// LHipForce, LHipMoment, LHipPower, LHipScalar and RHipAngles over 4 frames, named in
 /// POINT:ANGLES (with "NotInTheTake"), FORCES, MOMENTS and POWERS; with `typeGroups`, also
-/// POINT:SCALARS and POINT:TYPE_GROUPS naming all five lists. The types are in the parameters
-/// only: reading the encoded file sets them.
+/// POINT:SCALARS and POINT:TYPE_GROUPS naming all five lists. The take's point types are set
+/// from those lists, as a reader would (the writer writes the lists from the types).
 [[nodiscard]] Take nexusStyleTake(bool typeGroups);
 
 /// A longer Nexus-style take for cleaning and statistics: the markers LASI, RASI, LPSI, RPSI (a
