@@ -28,11 +28,14 @@ if(MOCAP_CCACHE AND MOCAP_CCACHE_PROGRAM)
   # pch_defines,time_macros: what ccache needs to cache compiles that use a precompiled header
   # (documented in ccache's manual); the header's contents are still hashed. Depend mode takes the
   # files a compile read from the compiler's own -MD list, so a miss runs the compiler once, not the
-  # preprocessor first.
+  # preprocessor first. The inode cache remembers a file's hash by device, inode, size and times:
+  # every compile of a target reads its precompiled header (110-280 MB), and hashing it again for
+  # each made a cache hit cost 1.4 s where it costs 0.15 s (a warm build of build/: 232 s → 76 s).
   set(launcher ${CMAKE_COMMAND} -E env
     "CCACHE_BASEDIR=${PROJECT_SOURCE_DIR}"
     "CCACHE_SLOPPINESS=pch_defines,time_macros"
     "CCACHE_DEPEND=true"
+    "CCACHE_INODECACHE=true"
     "CCACHE_STATSLOG=${MOCAP_CCACHE_STATS_LOG}"
     ${MOCAP_CCACHE_PROGRAM})
   set(CMAKE_C_COMPILER_LAUNCHER ${launcher})
