@@ -796,7 +796,17 @@
         <translation>Alle Warnungen beim Lesen der Datei anzeigen</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+61"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 — note: %2</source>
+        <translation>%1 — Hinweis: %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <location line="+22"/>
         <source>Save Cleaning Preset</source>
         <translation>Bereinigungsvorgabe speichern</translation>
@@ -873,7 +883,7 @@
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-282"/>
+        <location line="-292"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -904,7 +914,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+99"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
@@ -974,7 +984,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-903"/>
+        <location line="-913"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1474,7 +1484,7 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+75"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -1530,12 +1540,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+341"/>
+        <location line="+347"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-310"/>
+        <location line="-316"/>
         <source>Whole take (%1–%2)</source>
         <translation>Gesamte Aufnahme (%1–%2)</translation>
     </message>
@@ -1649,7 +1659,7 @@
         <translation>Wird abgebrochen…</translation>
     </message>
     <message numerus="yes">
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>%n Bild nach %1 exportiert.</numerusform>
@@ -1657,7 +1667,12 @@
         </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Note: %1.</source>
+        <translation>Hinweis: %1.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>

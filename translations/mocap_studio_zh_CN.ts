@@ -785,7 +785,17 @@
         <translation>显示读取文件时的所有警告</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+61"/>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 — note: %2</source>
+        <translation>%1 — 注意：%2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <location line="+22"/>
         <source>Save Cleaning Preset</source>
         <translation>保存清理预设</translation>
@@ -862,7 +872,7 @@
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-282"/>
+        <location line="-292"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -893,7 +903,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+99"/>
         <source>Export</source>
         <translation>导出</translation>
     </message>
@@ -963,7 +973,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-903"/>
+        <location line="-913"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1460,7 +1470,7 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+75"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -1516,12 +1526,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+341"/>
+        <location line="+347"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-310"/>
+        <location line="-316"/>
         <source>Whole take (%1–%2)</source>
         <translation>整个拍摄数据（%1–%2）</translation>
     </message>
@@ -1632,14 +1642,19 @@
         <translation>正在取消…</translation>
     </message>
     <message numerus="yes">
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 帧导出到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Note: %1.</source>
+        <translation>注意：%1。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>导出已取消，未写入任何内容。</translation>
     </message>

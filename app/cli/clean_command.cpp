@@ -1,4 +1,5 @@
 #include "take_input.h"
+#include "take_output.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -296,6 +297,7 @@ int runClean(const CleanArguments& arguments)
   if (const std::string outputs = describeModelOutputs(take); !outputs.empty())
     std::cerr << "mocap clean: " << input << ": " << outputs << " left untouched\n";
   writeCleanedTake(take, report, options, output);
+  noteLeftOut(take, output);
   if (arguments.report)
     writeFileAtomically(*arguments.report, reportJson(input, output, take, options, report));
   return qualityExit(arguments, input, markerValidFraction(take));

@@ -1,4 +1,5 @@
 #include "take_input.h"
+#include "take_output.h"
 #include "cli_error.h"
 #include "commands.h"
 
@@ -33,7 +34,7 @@ int runConvert(const ConvertArguments& arguments)
   Take take = readInputTake(input);
   if (units)
     take.convertUnits(*units);
-  writeTake(take, output);
+  writeOutputTake(take, output);
   return kExitOk;
 }
 

@@ -2,6 +2,7 @@
 // labels exchange and repairs them (core/include/mocap/tracking/swap_detection.h); the report lists each
 // swap for review.
 #include "take_input.h"
+#include "take_output.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -58,7 +59,7 @@ int runFixSwaps(const FixSwapsArguments& arguments)
   SwapOptions options = arguments.options;
   Take take = readInputTake(input);
   const std::vector<LabelSwap> swaps = repairSwaps(take, options);
-  writeTake(take, output);
+  writeOutputTake(take, output);
   const std::string report = reportJson(input, output, take, swaps);
   if (arguments.report)
     writeFileAtomically(*arguments.report, report);

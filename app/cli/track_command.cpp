@@ -3,6 +3,7 @@
 // are unlabelled fragments, or a CSV of frame,x,y,z points) into labelled trajectories
 // (core/include/mocap/tracking/take_tracking.h).
 #include "take_input.h"
+#include "take_output.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
@@ -87,7 +88,7 @@ int runTrack(const TrackArguments& arguments)
     options.tracker.maxSpeed = maxSpeedMm / millimetresPer(take.units());
     result = trackTake(take, set ? &*set : nullptr, options, &report);
   }
-  writeTake(result, output);
+  writeOutputTake(result, output);
   if (arguments.saveMarkerSet)
     writeMarkerSet(markerSetFromTake(result), *arguments.saveMarkerSet);
   if (arguments.json) {

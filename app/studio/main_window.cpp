@@ -836,7 +836,17 @@ bool MainWindow::saveAs()
   }
   m_confirmedOverwrite = true;  // the user chose this file
   addRecent(path);
+  showSavedMessage(tr("Saved %1").arg(path), path);
   return true;
+}
+
+void MainWindow::showSavedMessage(const QString& message, const QString& path)
+{
+  const std::string leftOut = leftOutOnWriting(m_document->take(), formatFromPath(path.toStdString()));
+  if (leftOut.empty())
+    statusBar()->showMessage(message, 5000);
+  else  // data the file does not hold: shown longer, and not only in passing
+    statusBar()->showMessage(tr("%1 — note: %2").arg(message, QString::fromStdString(leftOut)), 15000);
 }
 
 QString MainWindow::saveCleaningPreset(const QString& path, bool withHeadMarkers)
@@ -923,7 +933,7 @@ void MainWindow::exportDialog()
   if (!error.isEmpty())
     QMessageBox::critical(this, tr("Cannot export"), error);
   else
-    statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+    showSavedMessage(tr("Exported %1").arg(path), path);
 }
 
 bool MainWindow::confirmDiscard()

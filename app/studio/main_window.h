@@ -130,6 +130,9 @@ private:
   bool save();
   bool saveAs();
   void exportDialog();
+  /// `message` in the status bar, with what the file at `path` leaves out (leftOutOnWriting), if
+  /// anything, shown longer.
+  void showSavedMessage(const QString& message, const QString& path);
   /// File ▸ Export Animation: BVH of the markers, and the face mesh deformed by the take when
   /// one is loaded.
   void exportAnimation();

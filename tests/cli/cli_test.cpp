@@ -221,6 +221,15 @@ TEST(Cli, ModelOutputsAreCountedAndLeftUntouched)
     EXPECT_TRUE((before.valid().col(m) == after.valid().col(m)).all()) << before.label(m);
     EXPECT_TRUE((before.states().col(m) == after.states().col(m)).all()) << before.label(m);
   }
+
+  // A marker-only format drops the outputs, and says so.
+  const CommandResult trc = runMocap("convert " + q(dir.file("nexus.c3d")) + " " + q(dir.file("nexus.trc")), dir);
+  ASSERT_EQ(trc.exitCode, 0) << trc.err;
+  EXPECT_NE(trc.err.find("nexus.trc: note: the TRC file holds marker positions only: 5 model outputs"),
+            std::string::npos)
+      << trc.err;
+  const CommandResult c3d = runMocap("convert " + q(dir.file("nexus.c3d")) + " " + q(dir.file("copy.c3d")), dir);
+  EXPECT_EQ(c3d.err.find("note:"), std::string::npos) << c3d.err;
 }
 
 TEST(Cli, CorruptFileGivesExitOneAndOneClearLine)

@@ -8,7 +8,10 @@
 #include "mocap/batch/take_report.h"
 #include "mocap/cleaning/clean_pipeline.h"
 #include "mocap/io/c3d_reader.h"
+#include "mocap/io/bvh_writer.h"
 #include "mocap/io/c3d_writer.h"
+#include "mocap/io/csv_writer.h"
+#include "mocap/io/take_io.h"
 #include "mocap/io/trc_io.h"
 #include "mocap/layout/layout_frames.h"
 #include "mocap/model/gaps.h"
@@ -220,6 +223,31 @@ TEST(ModelOutputs, TypesSurviveWritingSlicingAndSubsets)
   const Take trc = parseTrc(formatTrc(nexus), "nexus.trc");
   EXPECT_EQ(trc.labels(), kMarkers);
   EXPECT_THROW((void)formatTrc(subsetTake(nexus, {"LHipForce"})), InvalidArgument);
+}
+
+TEST(ModelOutputs, MarkerOnlyFormatsLeaveThemOutAndSaySo)
+{
+  const Take nexus = nexusTake();
+  // A BVH joint is a position: only the markers become joints.
+  const std::string bvh = formatBvh(nexus);
+  for (const std::string& marker : kMarkers)
+    EXPECT_NE(bvh.find("JOINT " + marker + "\n"), std::string::npos) << marker;
+  EXPECT_EQ(bvh.find("JOINT LHipAngles"), std::string::npos);
+  EXPECT_EQ(bvh.find("JOINT LHipPower"), std::string::npos);
+  EXPECT_EQ(bvh, formatBvh(subsetTake(nexus, kMarkers)));
+  EXPECT_THROW((void)formatBvh(subsetTake(nexus, {"LHipForce"})), InvalidArgument);
+
+  // Saying what is left out: TRC and BVH name the outputs; C3D and CSV hold them.
+  const std::string trcNote = leftOutOnWriting(nexus, TakeFormat::Trc);
+  EXPECT_NE(trcNote.find("the TRC file holds marker positions only: 5 model outputs (2 angles, 1 force, 1 moment, "
+                         "1 power) not written"),
+            std::string::npos)
+      << trcNote;
+  EXPECT_NE(leftOutOnWriting(nexus, TakeFormat::Bvh).find("the BVH file"), std::string::npos);
+  EXPECT_EQ(leftOutOnWriting(nexus, TakeFormat::C3d), "");
+  EXPECT_EQ(leftOutOnWriting(nexus, TakeFormat::Csv), "");
+  EXPECT_EQ(leftOutOnWriting(subsetTake(nexus, kMarkers), TakeFormat::Trc), "");
+  EXPECT_NE(formatCsv(nexus).find("LHipAngles:X"), std::string::npos) << "a CSV table keeps every point";
 }
 
 TEST(ModelOutputs, AHostileTypeListCannotRewriteTheLabels)

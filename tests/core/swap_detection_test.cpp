@@ -44,6 +44,27 @@ TEST(SwapDetection, FindsAndRepairsInjectedSwapsOfNeighbouringMarkers)
   }
 }
 
+TEST(SwapDetection, ModelOutputsAreNeverSwappedOrFlagged)
+{
+  TrackingEvaluationOptions options;
+  options.seed = 1;
+  options.swaps = 8;
+  std::vector<InjectedSwap> injected;
+  Take swapped = makeSwappedCopy(noseTake(), options, injected);
+  ASSERT_FALSE(injected.empty());
+  // The first swapped marker is, in this take, a model output (an angle stored as a point).
+  const Eigen::Index output = injected.front().first;
+  swapped.setPointType(output, PointType::Angle);
+  const Eigen::MatrixXd before = swapped.trajectory(output);
+  EXPECT_FALSE(findJumps(swapped).col(output).any());
+  const std::vector<LabelSwap> found = repairSwaps(swapped);
+  EXPECT_FALSE(found.empty()) << "the other markers' swaps are still repaired";
+  for (const LabelSwap& swap : found)
+    EXPECT_TRUE(swap.first != output && swap.second != output) << "frame " << swap.frame;
+  const Eigen::ArrayXXd after = swapped.trajectory(output);
+  EXPECT_TRUE((after == before.array() || (after.isNaN() && before.array().isNaN())).all());
+}
+
 TEST(SwapDetection, DetectLeavesTheTakeAloneAndFindsNothingInACleanTake)
 {
   const Take take = noseTake();

@@ -33,17 +33,9 @@ QString qpath(const std::filesystem::path& path)
   return QString::fromStdString(path.string());
 }
 
-class HeadMarkers : public ::testing::Test
+class HeadMarkers : public test::SampleWindowTest
 {
 protected:
-  void SetUp() override
-  {
-    window = test::openSampleWindow(1280, 900);
-    ASSERT_NE(window, nullptr);
-  }
-  void TearDown() override { QSettings().clear(); }
-
-  TakeDocument& doc() { return window->document(); }
   /// Makes the first four roots the set, as the Reference Markers dialog's OK does.
   void chooseFourRoots()
   {
@@ -52,8 +44,6 @@ protected:
       markers.push_back(*doc().take().markerIndex(label));
     ASSERT_TRUE(window->changeReferenceMarkers(markers));
   }
-
-  std::unique_ptr<studio::MainWindow> window;
 };
 
 TEST_F(HeadMarkers, TheChosenSetIsSavedWithTheTakeAndRestoredOnReopen)

@@ -67,20 +67,7 @@ QAction* actionNamed(const QWidget& window, const QString& text)
   return nullptr;
 }
 
-class ReferenceMarkers : public ::testing::Test
-{
-protected:
-  void SetUp() override
-  {
-    window = test::openSampleWindow(1280, 900);
-    ASSERT_NE(window, nullptr);
-  }
-  void TearDown() override { QSettings().clear(); }
-
-  TakeDocument& doc() { return window->document(); }
-
-  std::unique_ptr<MainWindow> window;
-};
+using ReferenceMarkers = test::SampleWindowTest;
 
 TEST_F(ReferenceMarkers, TheSampleOpensWithItsRootMarkersAsTheReference)
 {

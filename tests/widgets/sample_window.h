@@ -3,8 +3,11 @@
 #include "main_window.h"
 
 #include <QApplication>
+#include <QSettings>
 #include <QElapsedTimer>
 #include <QTimer>
+
+#include <gtest/gtest.h>
 
 #include <functional>
 #include <memory>
@@ -15,6 +18,22 @@ namespace mocap::test {
 /// fixed size, shown, exposed and (where the display allows) active, so shortcuts work.
 /// Returns nullptr after a test failure when the window or the take did not come up.
 [[nodiscard]] std::unique_ptr<studio::MainWindow> openSampleWindow(int width = 1280, int height = 800);
+
+/// A test fixture on openSampleWindow(1280, 900) that forgets the settings it changed.
+class SampleWindowTest : public ::testing::Test
+{
+protected:
+  void SetUp() override
+  {
+    window = openSampleWindow(1280, 900);
+    ASSERT_NE(window, nullptr);
+  }
+  void TearDown() override { QSettings().clear(); }
+
+  ui::TakeDocument& doc() { return window->document(); }
+
+  std::unique_ptr<studio::MainWindow> window;
+};
 
 /// Runs `act` on the first modal widget of type T to come up, polling every 10 ms for up to
 /// 10 s: for a dialog opened after work the UI thread waits on (a zero timer would fire then,

@@ -2,6 +2,7 @@
 
 #include "document/take_document.h"
 
+#include "mocap/io/take_io.h"
 #include "mocap/model/take_slice.h"
 
 #include <QComboBox>
@@ -454,8 +455,14 @@ void ExportDialog::onFinished()
   const ExportOutcome outcome = m_watcher.result();
   switch (outcome.status) {
   case ExportStatus::Done:
-    showStatus(tr("Exported %n frame(s) to %1.", nullptr, static_cast<int>(m_total)).arg(m_runningOutput), false);
+  {
+    QString done = tr("Exported %n frame(s) to %1.", nullptr, static_cast<int>(m_total)).arg(m_runningOutput);
+    if (format() == AnimationFormat::Bvh)
+      if (const std::string leftOut = leftOutOnWriting(m_document.take(), TakeFormat::Bvh); !leftOut.empty())
+        done += QLatin1Char(' ') + tr("Note: %1.").arg(QString::fromStdString(leftOut));
+    showStatus(done, false);
     break;
+  }
   case ExportStatus::Cancelled:
     m_progressBar->setValue(0);
     showStatus(tr("Export cancelled; nothing was written."), false);

@@ -3,6 +3,7 @@
 #include "mocap/base/error.h"
 #include "mocap/base/number_text.h"
 #include "mocap/base/file_io.h"
+#include "mocap/model/marker_points.h"
 
 #include <charconv>
 #include <cmath>
@@ -100,6 +101,8 @@ Eigen::Matrix3d zxyRotation(const Eigen::Vector3d& zxyDegrees)
 
 std::string formatBvh(const Take& take, const BvhOptions& options)
 {
+  if (const std::optional<Take> markers = withoutModelOutputs(take, "a BVH file"))
+    return formatBvh(*markers, options);
   const Eigen::Index frames = take.frameCount();
   const Eigen::Index markers = take.markerCount();
   const bool moving = !options.headPoses.empty();

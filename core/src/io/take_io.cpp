@@ -7,6 +7,8 @@
 #include "mocap/io/csv_writer.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/base/text.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/model/provenance.h"
 #include "mocap/io/trc_io.h"
 
@@ -92,6 +94,15 @@ void writeTake(const Take& take, const std::filesystem::path& path)
   case TakeFormat::Csv: writeCsv(take, path); writeSidecar(take, path); return;
   case TakeFormat::Bvh: writeBvh(take, path); return;
   }
+}
+
+std::string leftOutOnWriting(const Take& take, TakeFormat format)
+{
+  const bool markersOnly = format == TakeFormat::Trc || format == TakeFormat::Bvh;
+  const std::string outputs = describeModelOutputs(take);
+  if (!markersOnly || outputs.empty())
+    return {};
+  return "the " + toUpper(formatName(format)) + " file holds marker positions only: " + outputs + " not written";
 }
 
 } // namespace mocap

@@ -458,14 +458,8 @@ Take parseTrc(std::string_view text, const std::string& sourceName, std::vector<
 
 std::string formatTrc(const Take& take, std::string_view fileName)
 {
-  // A TRC file is marker positions and cannot say a column is an angle: its readers (OpenSim)
-  // would take model outputs for markers, so they are not written.
-  if (!modelOutputPoints(take).empty()) {
-    if (markerPoints(take).empty())
-      throw InvalidArgument("a TRC file holds marker positions; this take has only model outputs (" +
-                            describeModelOutputs(take) + ")");
-    return formatTrc(subsetTake(take, markerLabels(take)), fileName);
-  }
+  if (const std::optional<Take> markers = withoutModelOutputs(take, "a TRC file"))
+    return formatTrc(*markers, fileName);
   const Eigen::Index frames = take.frameCount();
   const Eigen::Index markers = take.markerCount();
   std::string out;

@@ -1,5 +1,8 @@
 #include "mocap/model/marker_points.h"
 
+#include "mocap/base/error.h"
+#include "mocap/model/marker_edits.h"
+
 namespace mocap {
 
 namespace {
@@ -72,6 +75,16 @@ std::string describeModelOutputs(const Take& take)
              std::string(pointTypeName(static_cast<PointType>(t))) + (counts[t] == 1 ? "" : "s");
   }
   return std::to_string(outputs) + (outputs == 1 ? " model output (" : " model outputs (") + kinds + ")";
+}
+
+std::optional<Take> withoutModelOutputs(const Take& take, const std::string& file)
+{
+  if (modelOutputPoints(take).empty())
+    return std::nullopt;
+  if (markerPoints(take).empty())
+    throw InvalidArgument(file + " holds marker positions; this take has only model outputs (" +
+                          describeModelOutputs(take) + ")");
+  return subsetTake(take, markerLabels(take));
 }
 
 } // namespace mocap

@@ -1,6 +1,7 @@
 #include "mocap/tracking/swap_detection.h"
 
 #include "mocap/base/error.h"
+#include "mocap/model/marker_points.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,7 +61,7 @@ SampleMask findJumps(const Take& take, const SwapOptions& options)
 {
   const Eigen::VectorXd threshold = jumpThresholds(take, options);
   SampleMask jumps = SampleMask::Constant(take.frameCount(), take.markerCount(), false);
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+  for (const Eigen::Index m : markerPoints(take))
     for (Eigen::Index f = 2; f < take.frameCount(); ++f)
       jumps(f, m) = predictable(take, f, m) && (take.position(f, m) - prediction(take, f, m)).norm() > threshold(m);
   return jumps;
@@ -108,11 +109,12 @@ std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options, const
     return swaps;
   const Eigen::VectorXd threshold = jumpThresholds(take, options);
   Eigen::VectorXd error = Eigen::VectorXd::Zero(take.markerCount());
+  const std::vector<Eigen::Index> markers = markerPoints(take);
   std::vector<Eigen::Index> jumping;
   for (Eigen::Index f = 2; f < take.frameCount(); ++f) {
     job.checkpoint(static_cast<double>(f) / static_cast<double>(take.frameCount()));
     jumping.clear();
-    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+    for (const Eigen::Index m : markers) {  // a model output's jump is no swap, and never a partner
       if (!predictable(take, f, m))
         continue;
       error(m) = (take.position(f, m) - prediction(take, f, m)).norm();

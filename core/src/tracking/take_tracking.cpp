@@ -1,11 +1,11 @@
 #include "mocap/tracking/take_tracking.h"
 
 #include "mocap/base/error.h"
+#include "mocap/model/marker_points.h"
 #include "mocap/tracking/fragment_joining.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace mocap {
 
@@ -25,10 +25,9 @@ std::vector<Fragment> fragmentsToLabel(const Take& take, const std::vector<Eigen
     return fragmentsOfMarkers(take, unlabelled);
   TrackerOptions tracker = options.tracker;
   if (tracker.maxSpeed == 0.0) {
-    // Measure the spacing on every marker: a few unlabelled points alone do not show it.
-    std::vector<Eigen::Index> all(static_cast<std::size_t>(take.markerCount()));
-    std::iota(all.begin(), all.end(), Eigen::Index{0});
-    const double gate = automaticGate(pointCloudFromTake(take, all));
+    // Measure the spacing on every marker (model outputs are no positions): a few unlabelled
+    // points alone do not show it.
+    const double gate = automaticGate(pointCloudFromTake(take, markerPoints(take)));
     tracker.maxSpeed = std::isfinite(gate) ? gate : 0.0;
   }
   TrackingResult tracked = trackPoints(pointCloudFromTake(take, unlabelled), tracker, job);

@@ -35,4 +35,9 @@ enum class TakeFormat
 /// (a stale sidecar of a take without them is removed).
 void writeTake(const Take& take, const std::filesystem::path& path);
 
+/// What writeTake(take, path in `format`) leaves out, in words to show the user: "" when the file
+/// holds everything, else e.g. "the TRC file holds marker positions only: 34 model outputs (…) are
+/// not written". TRC and BVH leave model outputs out; C3D and CSV keep them. O(#points).
+[[nodiscard]] std::string leftOutOnWriting(const Take& take, TakeFormat format);
+
 } // namespace mocap

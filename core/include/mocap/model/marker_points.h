@@ -3,6 +3,7 @@
 #include "mocap/model/take.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,5 +37,11 @@ namespace mocap {
 /// "34 model outputs (12 angles, 8 forces, 8 moments, 6 powers)", the kinds the take holds in
 /// enum order; "" when every point is a marker. O(#points).
 [[nodiscard]] std::string describeModelOutputs(const Take& take);
+
+/// The take with its marker points only, for a file that holds marker positions and cannot say a
+/// column is an angle (TRC, BVH: their readers would take model outputs for markers); nullopt when
+/// the take has no model outputs (write it as it is). Throws InvalidArgument naming `file` ("a TRC
+/// file") when the take has only model outputs. O(take size) when it copies, else O(#points).
+[[nodiscard]] std::optional<Take> withoutModelOutputs(const Take& take, const std::string& file);
 
 } // namespace mocap

@@ -25,7 +25,8 @@ struct SwapOptions
 [[nodiscard]] Eigen::VectorXd jumpThresholds(const Take& take, const SwapOptions& options = {});
 
 /// #frames × #markers: the samples whose constant-velocity prediction error is a jump (a swap, a
-/// mislabelled stretch or a glitch). O(#frames · #markers).
+/// mislabelled stretch or a glitch); false throughout for model outputs (isMarker), which are no
+/// positions. O(#frames · #markers).
 [[nodiscard]] SampleMask findJumps(const Take& take, const SwapOptions& options = {});
 
 /// Two labels exchanging their trajectories from `frame` on (until the next swap of the pair).
@@ -44,7 +45,8 @@ struct LabelSwap
 /// exchanging every later sample of the two markers (positions, validity, residuals, camera
 /// masks, states), so the swap back, where the labels return, is found as the next swap of the
 /// pair and undone in turn. Works on and repairs `take` in place; returns the swaps in frame
-/// order for review. Needs the three samples t−2..t of both markers valid. Not a paper equation.
+/// order for review. Needs the three samples t−2..t of both markers valid; model outputs are never
+/// swapped. Not a paper equation.
 /// Throws InvalidArgument for options out of range. O(#frames · #markers + #swaps · #frames).
 std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options = {}, const JobControl& job = {});
 
