@@ -21,6 +21,8 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QCheckBox>
+#include <QDockWidget>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
@@ -107,9 +109,34 @@ TEST_F(GapList, ShowsExactlyTheGapsCoreFinds)
   EXPECT_EQ(cell(row, GapTableModel::MethodColumn), GapTableModel::methodTitle(FillOptions{}.method));
   const int shorter = rowOf("section3-1", 887);  // 33 frames
   EXPECT_EQ(cell(shorter, GapTableModel::StateColumn), "open");
-  EXPECT_EQ(model->index(shorter, GapTableModel::AllowColumn).data(Qt::CheckStateRole), QVariant())
+  EXPECT_EQ(model->index(shorter, GapTableModel::StateColumn).data(Qt::CheckStateRole), QVariant())
       << "nothing to allow";
-  EXPECT_EQ(model->index(row, GapTableModel::AllowColumn).data(Qt::CheckStateRole).toInt(), Qt::Unchecked);
+  EXPECT_EQ(model->index(row, GapTableModel::StateColumn).data(Qt::CheckStateRole).toInt(), Qt::Unchecked);
+}
+
+TEST_F(GapList, MarkerFramesAndStateFitTheDockOnA1280PixelScreen)
+{
+  auto* dock = window->findChild<QDockWidget*>(QStringLiteral("gapListDock"));
+  ASSERT_NE(dock, nullptr);
+  dock->show();
+  dock->raise();
+  QTest::qWait(50);
+  QTableView* view = panel->view();
+  ASSERT_GT(view->model()->rowCount(), 0);
+  // What decides a gap (its state and override box) is seen without scrolling sideways; method and
+  // seconds may follow.
+  const int visible = view->viewport()->width();
+  for (const int column : {GapTableModel::MarkerColumn, GapTableModel::FirstFrameColumn, GapTableModel::LengthColumn,
+                           GapTableModel::StateColumn})
+    EXPECT_LE(view->columnViewportPosition(column) + view->columnWidth(column), visible)
+        << model->headerData(column, Qt::Horizontal).toString().toStdString() << " in a viewport " << visible
+        << " px wide";
+  EXPECT_EQ(view->horizontalScrollBar()->value(), 0);
+  // The state column elides: the tooltip holds its whole text (here with what its box overrides).
+  const int row = rowOf("section5-1", 1723);
+  const QString tip = model->index(row, GapTableModel::StateColumn).data(Qt::ToolTipRole).toString();
+  EXPECT_TRUE(tip.contains(cell(row, GapTableModel::StateColumn))) << tip.toStdString();
+  EXPECT_TRUE(model->flags(model->index(row, GapTableModel::StateColumn)) & Qt::ItemIsUserCheckable);
 }
 
 TEST_F(GapList, SortingByLengthPutsTheLongestFirst)
@@ -317,7 +344,7 @@ TEST_F(GapList, AGapOverTheLimitIsPreviewedAndFilledOnlyWhenAllowed)
   EXPECT_EQ(doc().undoStack()->count(), 0);
   EXPECT_TRUE(sameSamples(doc().take(), before));
 
-  ASSERT_TRUE(model->setData(model->index(row, GapTableModel::AllowColumn), Qt::Checked, Qt::CheckStateRole));
+  ASSERT_TRUE(model->setData(model->index(row, GapTableModel::StateColumn), Qt::Checked, Qt::CheckStateRole));
   EXPECT_EQ(cell(row, GapTableModel::StateColumn), QStringLiteral("allowed: over the 0.5 s limit"));
   panel->waitUntilIdle();
   ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();

@@ -248,7 +248,7 @@ void GapTableModel::setMethod(int row, FillMethod method)
   r.method = method;
   r.unfillable = false;  // the reason was the old method's
   r.note.clear();
-  emit dataChanged(index(row, MethodColumn), index(row, StateColumn));
+  emit dataChanged(index(row, StateColumn), index(row, MethodColumn));
   emit choicesChanged();
 }
 
@@ -283,7 +283,7 @@ void GapTableModel::setAllowed(int row, bool allowed)
   if (r.allowed == allowed)
     return;
   r.allowed = allowed;
-  emit dataChanged(index(row, AllowColumn), index(row, StateColumn));
+  emit dataChanged(index(row, StateColumn), index(row, StateColumn));
   emit choicesChanged();
 }
 
@@ -364,7 +364,6 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
     case LengthColumn: return static_cast<qlonglong>(row.gap.length);
     case SecondsColumn: return seconds;
     case MethodColumn: return row.filled ? QString() : methodTitle(row.method);
-    case AllowColumn: return row.allowed;
     case StateColumn: return static_cast<int>(stateAt(index.row()));
     default: return {};
     }
@@ -373,15 +372,14 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
     return static_cast<int>(row.method);
   if (role == Qt::CheckStateRole && index.column() == MarkerColumn && !row.filled)
     return row.checked ? Qt::Checked : Qt::Unchecked;
-  if (role == Qt::CheckStateRole && index.column() == AllowColumn && !row.filled &&
-      row.refusal != UnfilledCause::None)
+  const bool overridable = !row.filled && row.refusal != UnfilledCause::None;
+  if (role == Qt::CheckStateRole && index.column() == StateColumn && overridable)
     return row.allowed ? Qt::Checked : Qt::Unchecked;
-  if (role == Qt::ToolTipRole && index.column() == AllowColumn && !row.filled &&
-      row.refusal != UnfilledCause::None)
+  if (role == Qt::ToolTipRole && index.column() == StateColumn && overridable)
     return tr("Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples")
         .arg(row.refusalText);
-  if (role == Qt::ToolTipRole && index.column() == StateColumn && !row.note.isEmpty())
-    return row.unfillable ? row.note : tr("Filled by: %1").arg(row.note);
+  if (role == Qt::ToolTipRole && index.column() == StateColumn)  // the column is narrow: the whole text
+    return row.note.isEmpty() ? stateText(row) : row.unfillable ? row.note : tr("Filled by: %1").arg(row.note);
   if (role == Qt::ToolTipRole && index.column() == MethodColumn && !row.filled)
     return tr("%1: %2. Double-click to choose how this gap is filled")
         .arg(methodTitle(row.method), methodTip(row.method));
@@ -407,9 +405,9 @@ QVariant GapTableModel::headerData(int section, Qt::Orientation orientation, int
     case LengthColumn: return tr("Length in frames");
     case SecondsColumn: return tr("Length in seconds");
     case MethodColumn: return tr("How the gap is filled (double-click to choose)");
-    case AllowColumn:
-      return tr("Fill a gap the rules leave open (too long, at the take's ends, a marker seen too rarely)");
-    case StateColumn: return tr("Open, previewed, filled, or why it is not filled");
+    case StateColumn:
+      return tr("Open, previewed, filled, or why it is not filled. A gap the rules leave open (too long, at the "
+                "take's ends, a marker seen too rarely) has a box: check it to fill the gap anyway");
     default: return {};
     }
   }
@@ -421,7 +419,6 @@ QVariant GapTableModel::headerData(int section, Qt::Orientation orientation, int
   case LengthColumn: return tr("Frames");
   case SecondsColumn: return tr("s");
   case MethodColumn: return tr("Method");
-  case AllowColumn: return tr("Allow");
   case StateColumn: return tr("State");
   default: return {};
   }
@@ -436,7 +433,7 @@ Qt::ItemFlags GapTableModel::flags(const QModelIndex& index) const
     flags |= Qt::ItemIsUserCheckable;
   if (index.column() == MethodColumn)
     flags |= Qt::ItemIsEditable;
-  if (index.column() == AllowColumn && m_rows[static_cast<std::size_t>(index.row())].refusal != UnfilledCause::None)
+  if (index.column() == StateColumn && m_rows[static_cast<std::size_t>(index.row())].refusal != UnfilledCause::None)
     flags |= Qt::ItemIsUserCheckable;
   return flags;
 }
@@ -449,7 +446,7 @@ bool GapTableModel::setData(const QModelIndex& index, const QVariant& value, int
     setChecked(index.row(), static_cast<Qt::CheckState>(value.toInt()) == Qt::Checked);
     return true;
   }
-  if (role == Qt::CheckStateRole && index.column() == AllowColumn) {
+  if (role == Qt::CheckStateRole && index.column() == StateColumn) {
     setAllowed(index.row(), static_cast<Qt::CheckState>(value.toInt()) == Qt::Checked);
     return true;
   }

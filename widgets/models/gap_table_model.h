@@ -32,15 +32,17 @@ class GapTableModel final : public QAbstractTableModel
   Q_OBJECT
 
 public:
+  /// In the order a technician reads a gap in a narrow dock: which, where, how long, what will
+  /// happen to it; the method and the length in seconds last. A gap the fill rules leave open has
+  /// its override box in the state column, beside the reason it overrides.
   enum Column
   {
     MarkerColumn,
     FirstFrameColumn,
     LengthColumn,
-    SecondsColumn,
-    MethodColumn,
-    AllowColumn,
     StateColumn,
+    MethodColumn,
+    SecondsColumn,
     ColumnCount
   };
   enum class FillState

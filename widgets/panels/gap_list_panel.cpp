@@ -28,6 +28,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <utility>
 
 namespace mocap::ui {
 
@@ -210,11 +211,17 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   m_view->setContextMenuPolicy(Qt::CustomContextMenu);
   m_view->setWordWrap(false);  // one line per gap; long method names are elided
   m_view->verticalHeader()->hide();
-  m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  // Method titles are long ("Distance-weighted neighbours (Lin–Ouhyoung)"): a fixed width, elided.
-  m_view->horizontalHeader()->setSectionResizeMode(GapTableModel::MethodColumn, QHeaderView::Interactive);
-  m_view->horizontalHeader()->resizeSection(GapTableModel::MethodColumn, 110);
-  m_view->horizontalHeader()->setStretchLastSection(true);
+  QHeaderView* header = m_view->horizontalHeader();
+  header->setSectionResizeMode(QHeaderView::ResizeToContents);
+  // States ("allowed: over the 0.5 s limit") and method titles ("Distance-weighted neighbours
+  // (Lin–Ouhyoung)") are long: fixed widths, elided, the whole text in the tooltip, so marker, frames,
+  // state and override fit the dock's width on a 1280-pixel screen.
+  for (const auto& [column, width] :
+       {std::pair{GapTableModel::StateColumn, 120}, std::pair{GapTableModel::MethodColumn, 110}}) {
+    header->setSectionResizeMode(column, QHeaderView::Interactive);
+    header->resizeSection(column, width);
+  }
+  header->setStretchLastSection(true);
   layout->addWidget(m_view, 1);
 
   auto* checks = new QHBoxLayout;
