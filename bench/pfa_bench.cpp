@@ -4,6 +4,7 @@
 // both errors at every size). Target: the multi-threaded sweep under 10 s on a 2-core machine.
 // A wall-clock line for each is printed before the benchmark table.
 #include "mocap/layout/layout_frames.h"
+#include "mocap/layout/layout_planning.h"
 #include "mocap/layout/marker_selection.h"
 #include "mocap/io/take_io.h"
 #include "checkout_paths.h"

@@ -36,6 +36,7 @@
 #include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
 #include "views/model_outputs_note.h"
+#include "views/status_timeout.h"
 #include "views/steady_label.h"
 #include "views/review_scene.h"
 #include "views/sample_colors.h"
@@ -135,7 +136,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui
   statusBar()->addPermanentWidget(m_warningsButton);
   statusBar()->addPermanentWidget(new ui::ModelOutputsNote(*m_document, this));
   connect(m_timeline, &ui::TimelineWidget::message, this, [this](const QString& text) {
-    statusBar()->showMessage(text, 5000);
+    statusBar()->showMessage(text, ui::kStatusMessageMs);
   });
 
   connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
@@ -396,7 +397,7 @@ void MainWindow::exportReviewVideo()
   });
   progress.reset();
   if (outcome.cancelled) {
-    statusBar()->showMessage(tr("Review video cancelled; nothing was written."), 5000);
+    statusBar()->showMessage(tr("Review video cancelled; nothing was written."), ui::kStatusMessageMs);
     return;
   }
   if (!outcome.done) {
@@ -617,7 +618,7 @@ void MainWindow::setHeadStabilizedView(bool on)
   if (!on) {
     m_view3d->setHeadReference({});
     m_headStabilizedView->setChecked(false);
-    statusBar()->showMessage(tr("3D view in the lab frame"), 5000);
+    statusBar()->showMessage(tr("3D view in the lab frame"), ui::kStatusMessageMs);
     return;
   }
   const QString error = m_document->referenceMarkers().size() < 3
@@ -627,7 +628,8 @@ void MainWindow::setHeadStabilizedView(bool on)
   if (!error.isEmpty())
     QMessageBox::warning(this, tr("Head-Stabilized View"), error);
   else
-    statusBar()->showMessage(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"), 5000);
+    statusBar()->showMessage(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"),
+                             ui::kStatusMessageMs);
 }
 
 void MainWindow::followReferenceMarkers()
@@ -655,7 +657,7 @@ QWidget* MainWindow::centralArea()
   connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::acceptRequested, this,
           [this](const std::vector<Eigen::Index>& markers) {
             if (changeReferenceMarkers(markers))
-              statusBar()->showMessage(tr("Head markers set; Edit ▸ Undo takes them back"), 5000);
+              statusBar()->showMessage(tr("Head markers set; Edit ▸ Undo takes them back"), ui::kStatusMessageMs);
           });
   connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::chooseRequested, this, &MainWindow::editReferenceMarkers);
   layout->addWidget(m_headMarkersBar);
@@ -681,17 +683,17 @@ void MainWindow::editReferenceMarkers()
   if (dialog.exec() != QDialog::Accepted)
     return;
   if (!changeReferenceMarkers(dialog.chosen()))
-    statusBar()->showMessage(tr("Reference markers unchanged"), 5000);
+    statusBar()->showMessage(tr("Reference markers unchanged"), ui::kStatusMessageMs);
 }
 
 void MainWindow::setSelectedAsReferenceMarkers()
 {
   if (m_document->selection().size() < 3) {
-    statusBar()->showMessage(tr("Select at least three head-mounted markers first"), 5000);
+    statusBar()->showMessage(tr("Select at least three head-mounted markers first"), ui::kStatusMessageMs);
     return;
   }
   if (!changeReferenceMarkers(m_document->selection()))
-    statusBar()->showMessage(tr("The selected markers already are the reference markers"), 5000);
+    statusBar()->showMessage(tr("The selected markers already are the reference markers"), ui::kStatusMessageMs);
 }
 
 void MainWindow::createMarkerMenu()
@@ -844,9 +846,10 @@ void MainWindow::showSavedMessage(const QString& message, const QString& path)
 {
   const std::string leftOut = leftOutOnWriting(m_document->take(), formatFromPath(path.toStdString()));
   if (leftOut.empty())
-    statusBar()->showMessage(message, 5000);
+    statusBar()->showMessage(message, ui::kStatusMessageMs);
   else  // data the file does not hold: shown longer, and not only in passing
-    statusBar()->showMessage(tr("%1 — note: %2").arg(message, QString::fromStdString(leftOut)), 15000);
+    statusBar()->showMessage(tr("%1 — note: %2").arg(message, QString::fromStdString(leftOut)),
+                             3 * ui::kStatusMessageMs);
 }
 
 QString MainWindow::saveCleaningPreset(const QString& path, bool withHeadMarkers)
@@ -888,7 +891,7 @@ void MainWindow::saveCleaningPresetDialog()
   if (!error.isEmpty())
     QMessageBox::warning(this, tr("Save Cleaning Preset"), tr("The preset was not saved: %1").arg(error));
   else
-    statusBar()->showMessage(tr("Saved the cleaning preset %1").arg(path), 5000);
+    statusBar()->showMessage(tr("Saved the cleaning preset %1").arg(path), ui::kStatusMessageMs);
 }
 
 QString MainWindow::loadCleaningPreset(const QString& path)
@@ -1089,7 +1092,7 @@ void MainWindow::syncTableSelection()
 void MainWindow::closeEvent(QCloseEvent* event)
 {
   if (ui::jobRunning()) {  // the worker reads the document: it must end before the window does
-    statusBar()->showMessage(tr("Cancel the running job before closing"), 5000);
+    statusBar()->showMessage(tr("Cancel the running job before closing"), ui::kStatusMessageMs);
     event->ignore();
     return;
   }

@@ -4,6 +4,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/layout/layout_frames.h"
+#include "mocap/layout/layout_planning.h"
 #include "mocap/layout/marker_selection.h"
 #include "mocap/io/take_io.h"
 

@@ -5,6 +5,7 @@
 #include "dialogs/job_dialog.h"
 #include "dialogs/swap_review_dialog.h"
 #include "document/take_document.h"
+#include "views/status_timeout.h"
 
 #include "mocap/base/job_control.h"
 #include "mocap/tracking/take_tracking.h"
@@ -17,7 +18,6 @@ namespace mocap::ui {
 
 namespace {
 
-constexpr int kHintMs = 5000;
 constexpr int kReportMs = 10000;
 
 } // namespace
@@ -37,7 +37,7 @@ void LabellingActions::trackAndLabel()
   try {
     if (!runJob(&m_dialogParent, tr("Tracking and labelling…"),
                 [&](const JobControl& job) { tracked = trackTake(take, nullptr, {}, &report, job); })) {
-      emit message(tr("Track and Label cancelled; the take is unchanged"), kHintMs);
+      emit message(tr("Track and Label cancelled; the take is unchanged"), kStatusMessageMs);
       return;
     }
   } catch (const std::exception& e) {
@@ -73,7 +73,7 @@ std::optional<std::vector<LabelSwap>> LabellingActions::findSwaps()
   try {
     if (!runJob(&m_dialogParent, tr("Looking for label swaps…"),
                 [&](const JobControl& job) { swaps = detectSwaps(m_document.take(), {}, job); })) {
-      emit message(tr("Swap search cancelled"), kHintMs);
+      emit message(tr("Swap search cancelled"), kStatusMessageMs);
       return std::nullopt;
     }
   } catch (const std::exception& e) {
@@ -92,7 +92,7 @@ void LabellingActions::reviewSwaps()
   if (!found)
     return;
   if (found->empty()) {
-    emit message(tr("No label swaps found"), kHintMs);
+    emit message(tr("No label swaps found"), kStatusMessageMs);
     return;
   }
   SwapReviewDialog dialog(take, std::move(*found), &m_dialogParent);
@@ -101,7 +101,7 @@ void LabellingActions::reviewSwaps()
     return;
   const std::vector<LabelSwap> accepted = dialog.acceptedSwaps();
   if (accepted.empty()) {
-    emit message(tr("No swap accepted; the take is unchanged"), kHintMs);
+    emit message(tr("No swap accepted; the take is unchanged"), kStatusMessageMs);
     return;
   }
   Take repaired = take;

@@ -5,6 +5,7 @@
 #include "commands/record_step_command.h"
 #include "commands/remove_markers_command.h"
 #include "document/take_document.h"
+#include "views/status_timeout.h"
 
 #include "mocap/model/marker_edits.h"
 
@@ -18,12 +19,6 @@
 
 namespace mocap::ui {
 
-namespace {
-
-constexpr int kHintMs = 5000;
-
-} // namespace
-
 MarkerEditActions::MarkerEditActions(TakeDocument& document, QWidget& dialogParent, QObject* parent)
     : QObject(parent), m_document(document), m_dialogParent(dialogParent)
 {
@@ -32,7 +27,7 @@ MarkerEditActions::MarkerEditActions(TakeDocument& document, QWidget& dialogPare
 void MarkerEditActions::deleteMarkers()
 {
   if (m_document.selection().empty()) {
-    emit message(tr("Select the markers to delete first"), kHintMs);
+    emit message(tr("Select the markers to delete first"), kStatusMessageMs);
     return;
   }
   m_document.undoStack()->push(new RemoveMarkersCommand(m_document, m_document.selection()));
@@ -42,7 +37,7 @@ void MarkerEditActions::addAveragedMarker()
 {
   const auto& selection = m_document.selection();
   if (selection.empty()) {
-    emit message(tr("Select the markers to average first"), kHintMs);
+    emit message(tr("Select the markers to average first"), kStatusMessageMs);
     return;
   }
   const Take& take = m_document.take();
@@ -71,7 +66,7 @@ void MarkerEditActions::swapOverRange()
 {
   const auto& selection = m_document.selection();
   if (selection.size() != 2 || !m_document.hasRange()) {
-    emit message(tr("Select exactly two markers and Shift-drag a frame range on the curves first"), kHintMs);
+    emit message(tr("Select exactly two markers and Shift-drag a frame range on the curves first"), kStatusMessageMs);
     return;
   }
   const Take& take = m_document.take();
@@ -79,7 +74,7 @@ void MarkerEditActions::swapOverRange()
   const Eigen::Index length = last - first + 1;
   if (!take.valid().col(selection[0]).segment(first, length).any() &&
       !take.valid().col(selection[1]).segment(first, length).any()) {
-    emit message(tr("Nothing to swap: both markers are gaps over the selected range"), kHintMs);
+    emit message(tr("Nothing to swap: both markers are gaps over the selected range"), kStatusMessageMs);
     return;
   }
   auto patches = swapMarkersOverRange(take, selection[0], selection[1], first, last);
@@ -95,7 +90,7 @@ void MarkerEditActions::swapOverRange()
 void MarkerEditActions::deleteRange()
 {
   if (!m_document.hasRange() || m_document.selection().empty()) {
-    emit message(tr("Select markers and Shift-drag a frame range on the curves first"), kHintMs);
+    emit message(tr("Select markers and Shift-drag a frame range on the curves first"), kStatusMessageMs);
     return;
   }
   const Take& take = m_document.take();
@@ -107,7 +102,7 @@ void MarkerEditActions::deleteRange()
       patches.push_back(std::move(patch));
   }
   if (patches.empty()) {
-    emit message(tr("Nothing to delete: the selected range is already a gap"), kHintMs);
+    emit message(tr("Nothing to delete: the selected range is already a gap"), kStatusMessageMs);
     return;
   }
   m_document.undoStack()->push(makeRecordedEdit(m_document, std::move(patches),
@@ -122,7 +117,7 @@ void MarkerEditActions::assignLabel(Eigen::Index point)
   const Take& take = m_document.take();
   const auto& selection = m_document.selection();
   if (selection.size() != 1 || selection.front() == point) {
-    emit message(tr("Select the one marker whose label the point gets, then click the point"), kHintMs);
+    emit message(tr("Select the one marker whose label the point gets, then click the point"), kStatusMessageMs);
     return;
   }
   const Eigen::Index target = selection.front();

@@ -10,6 +10,7 @@
 #include "panels/status_line.h"
 #include "views/blendshape_scene.h"
 #include "views/face_mesh_scene.h"
+#include "views/status_timeout.h"
 
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/rig_io.h"
@@ -537,7 +538,7 @@ void BlendshapeSolvePanel::showEditResult(const QString& why)
   if (why.isEmpty())
     return;
   showStatus(why, true);
-  emit message(why, 5000);
+  emit message(why, kStatusMessageMs);
 }
 
 QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)

@@ -7,6 +7,8 @@
 #include "models/gap_table_model.h"
 #include "panels/job_progress_row.h"
 
+#include "mocap/cleaning/fill/per_gap_fill.h"
+
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
@@ -99,73 +101,6 @@ public:
     model->setData(index, static_cast<QComboBox*>(editor)->currentData(), Qt::EditRole);
   }
 };
-
-/// The options one group of gaps is filled with: the rules (longest gap, extrapolation, least
-/// seen) for gaps the user has not allowed, none for the ones allowed past them. The neighbours
-/// stay the method's default, so a gap fills the same whichever panel asks.
-FillOptions groupOptions(const FillOptions& rules, FillMethod method, bool allowed, const std::vector<Gap>& gaps)
-{
-  FillOptions options;
-  options.method = method;
-  if (!allowed) {
-    options.maxGap = rules.maxGap;
-    options.maxGapSeconds = rules.maxGapSeconds;
-    options.extrapolate = rules.extrapolate;
-    options.minValidFraction = rules.minValidFraction;
-    return options;
-  }
-  options.maxGap = 0;
-  options.maxGapSeconds = 0.0;
-  options.extrapolate = true;
-  for (const Gap& gap : gaps)
-    options.fillAnyway.push_back(gap.marker);
-  return options;
-}
-
-/// Fills each gap with its own method: one fillGaps call per method and override (pca models the
-/// take once per call), reports back in the order of `gaps`. Each gap is filled from the take's
-/// valid samples only, so grouping does not change any fill. A gap not in `allowed` obeys
-/// `rules` (mocap::checkFillRules decides, inside fillGaps). Cost: that of fillGaps per group.
-FillResult fillEach(const Take& take, const std::vector<Gap>& gaps, const std::vector<FillMethod>& methods,
-                    const std::vector<bool>& allowed, const FillOptions& rules, const JobControl& job)
-{
-  FillResult result;
-  result.gaps.resize(gaps.size());
-  std::size_t done = 0;
-  for (FillMethod method : allFillMethods())
-    for (const bool overridden : {false, true}) {
-      std::vector<Gap> some;
-      std::vector<std::size_t> where;
-      for (std::size_t i = 0; i < gaps.size(); ++i)
-        if (methods[i] == method && allowed[i] == overridden) {
-          some.push_back(gaps[i]);
-          where.push_back(i);
-        }
-      if (some.empty())
-        continue;
-      const FillOptions options = groupOptions(rules, method, overridden, some);
-      const double share = 1.0 / static_cast<double>(gaps.size());
-      const JobControl part =
-          job.part(static_cast<double>(done) * share, static_cast<double>(done + some.size()) * share);
-      done += some.size();
-      try {
-        FillResult filled = fillGaps(take, some, options, part);
-        for (std::size_t k = 0; k < where.size() && k < filled.gaps.size(); ++k)
-          result.gaps[where[k]] = std::move(filled.gaps[k]);
-        for (SamplePatch& patch : filled.patches)
-          result.patches.push_back(std::move(patch));
-      } catch (const JobCancelled&) {
-        throw;  // the panel drops the whole result
-      } catch (const std::exception& e) {  // nothing may throw across the event loop
-        for (std::size_t k = 0; k < where.size(); ++k)
-          result.gaps[where[k]] = GapFillReport{some[k], false, {}, e.what(), UnfilledCause::Method};
-      }
-    }
-  std::sort(result.patches.begin(), result.patches.end(), [](const SamplePatch& a, const SamplePatch& b) {
-    return std::make_pair(a.marker, a.frames.front()) < std::make_pair(b.marker, b.frames.front());
-  });
-  return result;
-}
 
 } // namespace
 
@@ -476,7 +411,7 @@ void GapListPanel::launch(const Request& request)
   m_watcher.setFuture(
       QtConcurrent::run([take = m_document.take(), request, rules = m_model->fillRules(), control] {
         try {
-          return fillEach(take, request.gaps, request.methods, request.allowed, rules, control);
+          return fillEachGap(take, request.gaps, request.methods, request.allowed, rules, control);
         } catch (const JobCancelled&) {
           return FillResult{};  // dropped by onFinished (cancelled)
         }
@@ -629,9 +564,7 @@ void GapListPanel::push()
 
 void GapListPanel::setFillRules(const FillOptions& rules)
 {
-  const FillOptions& now = m_model->fillRules();
-  if (rules.maxGap == now.maxGap && rules.maxGapSeconds == now.maxGapSeconds && rules.extrapolate == now.extrapolate &&
-      rules.minValidFraction == now.minValidFraction)
+  if (sameFillRules(rules, m_model->fillRules()))
     return;  // e.g. the method changed: not a rule
   m_model->setFillRules(rules);
   takeChanged();  // results computed under the old rules are stale

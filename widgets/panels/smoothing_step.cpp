@@ -2,6 +2,7 @@
 
 #include "views/display_units.h"
 
+#include "mocap/cleaning/position_change.h"
 #include "mocap/cleaning/smoothing.h"
 
 #include <QComboBox>
@@ -10,47 +11,9 @@
 #include <QFormLayout>
 #include <QSpinBox>
 
-#include <cmath>
-
 namespace mocap::ui {
 
 namespace {
-
-/// How far `patches` move the samples of `take` they replace: the RMS and the largest
-/// Euclidean distance between old and new positions (take units), over every sample valid both
-/// before and after. O(total patch size).
-struct PositionChange
-{
-  double rms = 0.0;
-  double max = 0.0;
-  Eigen::Index maxMarker = -1;
-  Eigen::Index maxFrame = 0;
-  Eigen::Index samples = 0;
-};
-
-PositionChange positionChange(const Take& take, const std::vector<SamplePatch>& patches)
-{
-  PositionChange change;
-  double sumSquares = 0.0;
-  for (const SamplePatch& patch : patches)
-    for (std::size_t i = 0; i < patch.frames.size(); ++i) {
-      const auto row = static_cast<Eigen::Index>(i);
-      const Eigen::Index frame = patch.frames[i];
-      if (!patch.valid(row) || !take.isValid(frame, patch.marker))
-        continue;
-      const double d = (patch.positions.row(row).transpose() - take.position(frame, patch.marker)).norm();
-      sumSquares += d * d;
-      ++change.samples;
-      if (d > change.max) {
-        change.max = d;
-        change.maxMarker = patch.marker;
-        change.maxFrame = frame;
-      }
-    }
-  if (change.samples > 0)
-    change.rms = std::sqrt(sumSquares / static_cast<double>(change.samples));
-  return change;
-}
 
 // A change in the display unit with a hundredth of a millimetre visible: smoothing moves
 // samples by fractions of a millimetre, finer than formatLength shows positions.

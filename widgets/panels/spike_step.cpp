@@ -2,6 +2,7 @@
 
 #include "document/take_document.h"
 
+#include "mocap/cleaning/flags_beside_repairs.h"
 #include "mocap/cleaning/spike_detection.h"
 
 #include <QCheckBox>
@@ -11,36 +12,11 @@
 #include <QFormLayout>
 #include <QListWidget>
 
-#include <algorithm>
-
 namespace mocap::ui {
 
 namespace {
 constexpr int kMarkerRole = Qt::UserRole;
 constexpr int kFrameRole = Qt::UserRole + 1;
-constexpr Eigen::Index kBeside = 2;  // frames either side of a repaired sample
-
-/// The flags within kBeside frames of a sample `repairs` replaced that the take still holds as
-/// repaired (an undone repair does not count). O(#repaired + #flags · log #repaired).
-int flagsBesideRepairs(const Take& take, const std::vector<SpikeFlag>& flags, const std::vector<SamplePatch>& repairs)
-{
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> repaired;  // (marker, frame), sorted
-  for (const SamplePatch& patch : repairs)
-    for (std::size_t i = 0; i < patch.size(); ++i) {
-      const Eigen::Index frame = patch.frames[i];
-      if (patch.marker < take.markerCount() && frame < take.frameCount() && take.isValid(frame, patch.marker) &&
-          take.position(frame, patch.marker) == patch.positions.row(static_cast<Eigen::Index>(i)).transpose())
-        repaired.emplace_back(patch.marker, frame);
-    }
-  std::sort(repaired.begin(), repaired.end());
-  int beside = 0;
-  for (const SpikeFlag& flag : flags) {
-    const auto near = std::lower_bound(repaired.begin(), repaired.end(), std::make_pair(flag.marker, flag.frame - kBeside));
-    if (near != repaired.end() && near->first == flag.marker && near->second <= flag.frame + kBeside)
-      ++beside;
-  }
-  return beside;
-}
 } // namespace
 
 SpikeStep::SpikeStep(TakeDocument& document, QWidget* parent) : CleaningStep(parent), m_document(document)
@@ -144,7 +120,7 @@ StepJob SpikeStep::job() const
     result.patches = replaceSpikes(take, flags);
     const int count = static_cast<int>(flags.size());  // a plain variable, so lupdate sees the plural
     result.summary = QCoreApplication::translate("SpikeStep", "%n bad point(s) found", nullptr, count);
-    const int beside = flagsBesideRepairs(take, flags, repairs);
+    const auto beside = static_cast<int>(flagsBesideRepairs(take, flags, repairs));  // plain, for lupdate's plural
     if (beside > 0)  // why a repair seems to breed flags, and what to do about it
       result.summary += QCoreApplication::translate(
           "SpikeStep",

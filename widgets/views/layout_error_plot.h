@@ -1,7 +1,7 @@
 #pragma once
 
 #include "mocap/evaluation/layout_rig_error.h"
-#include "mocap/layout/marker_selection.h"
+#include "mocap/layout/layout_planning.h"
 
 #include <QWidget>
 

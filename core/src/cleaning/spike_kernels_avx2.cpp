@@ -32,7 +32,7 @@ Lanes4 load(const double* p)
   return {_mm256_loadu_pd(p)};
 }
 
-constexpr std::ptrdiff_t kLineHalfWidth = 3;  // spike_detection.cpp's: a 7-sample window
+constexpr std::ptrdiff_t kLineHalfWidth = 3;  // spike_detector_parts.h's: a 7-sample window
 
 } // namespace
 

@@ -1,11 +1,11 @@
 #pragma once
 // Kernels of the robust spike detector on four lanes (AVX2), in a unit of their own that is
-// compiled with -mavx2 and called only when the CPU has AVX2 (spike_detection.cpp checks at run
+// compiled with -mavx2 and called only when the CPU has AVX2 (spike_median_line.cpp checks at run
 // time). Raw pointers only: nothing with external linkage but these functions is compiled for
 // AVX2, so no AVX2 code can stand in for a baseline function at link time.
 //
-// Each gives, lane by lane, the very operations of the two-lane (SSE2) code in
-// spike_detection.cpp, so the detector's results do not depend on which path ran.
+// Each gives, lane by lane, the very operations of the two-lane (SSE2) code of
+// spike_lanes.h and spike_median_line.cpp, so the detector's results do not depend on which path ran.
 
 #include <cstddef>
 

@@ -2,6 +2,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/base/random.h"
+#include "mocap/cleaning/fill/per_gap_fill.h"
 
 #include <algorithm>
 #include <cmath>
@@ -236,10 +237,7 @@ FillEvaluation evaluateFill(const Take& take, const FillEvaluationOptions& optio
       for (std::size_t k = 0; k < options.methods.size(); ++k) {
         // The methods are measured, not the defaults that leave gaps open: every hidden gap is
         // filled whatever its length, place or marker.
-        FillOptions measured{options.methods[k], 0, options.neighbours};
-        measured.maxGapSeconds = 0.0;
-        measured.extrapolate = true;
-        measured.minValidFraction = 0.0;
+        const FillOptions measured = withoutFillRules(FillOptions{options.methods[k], 0, options.neighbours});
         const FillResult result = fillGaps(corrupted, gaps, measured);
         std::size_t patch = 0;
         for (const GapFillReport& report : result.gaps) {

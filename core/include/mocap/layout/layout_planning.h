@@ -16,6 +16,73 @@
 
 namespace mocap {
 
+struct LayoutPlanOptions
+{
+  SelectionMethod method = SelectionMethod::Pfa;  ///< the method whose sets the plan recommends
+  PfaOptions pfa;
+  bool compare = true;                  ///< also score the other method and random sets at every size
+  int randomSubsets = 20;               ///< random sets per size for the baseline mean
+  Eigen::Index keyPoseCount = 10;       ///< automatic key poses (extreme frames)
+  std::vector<Eigen::Index> keyFrames;  ///< rows of LayoutFrames::frames as key poses; empty: automatic
+  SubsetErrorOptions errors;            ///< the reconstruction model and the greedy objective
+};
+
+/// One scored marker set.
+struct ScoredLayout
+{
+  std::vector<Eigen::Index> markers;  ///< sorted indices into LayoutFrames::labels
+  Eigen::Index k = 0;                 ///< PFA: the cluster count that produced it; 0 otherwise
+  std::vector<double> unitFrequency;  ///< PFA: as PfaSelection
+  double stability = 0.0;             ///< PFA: as PfaSelection
+  double blendshapeError = 0.0;       ///< SubsetErrors::blendshapeError
+  double reconstructionRmse = 0.0;    ///< SubsetErrors::reconstructionRmse, mm
+};
+
+/// One point of the error-vs-marker-count curve (Wellein et al. 2007 Fig. 2).
+struct LayoutSize
+{
+  Eigen::Index markerCount = 0;
+  std::optional<ScoredLayout> pfa;
+  std::optional<ScoredLayout> greedy;
+  int randomCount = 0;                 ///< random sets scored
+  double randomBlendshapeError = 0.0;  ///< means over the random sets
+  double randomReconstructionRmse = 0.0;
+
+  /// The layout `method` chose at this size, or nullptr. O(1).
+  [[nodiscard]] const ScoredLayout* layout(SelectionMethod method) const;
+};
+
+struct LayoutPlan
+{
+  SelectionMethod method = SelectionMethod::Pfa;
+  std::vector<LayoutSize> sizes;       ///< ascending marker count; sizes no method reached are left out
+  std::vector<PfaSelection> pfaSweep;  ///< the PFA result of every k (empty when PFA did not run)
+  Eigen::Index pcaComponents = 0;
+  double explainedVariance = 0.0;
+  BlendshapeBasis basis;             ///< neutral and key-pose rows of the frames
+  double motionRms = 0.0;            ///< SubsetErrors::motionRms
+  Eigen::Index recommendedSize = 0;  ///< marker count at the knee of `method`'s curve; 0 if none
+  std::string recommendationRule;    ///< how it was chosen, in words
+  bool cancelled = false;
+
+  /// The entry for `markerCount`, or nullptr. O(#sizes).
+  [[nodiscard]] const LayoutSize* size(Eigen::Index markerCount) const;
+};
+
+/// The whole issue: PFA sweep over k (when the method is PFA or compare is on), each size's PFA set
+/// being the k with the smallest training residual among those giving that size; greedy and random
+/// sets (mean of randomSubsets) at every size (when the method is greedy or compare is on); both
+/// errors of every set on the test frames against the full set (blendshape basis from the full set
+/// with automatic or given key poses); the knee of the chosen method's curve (with the full set as
+/// its last point). Progress covers the whole run; on cancellation the PFA selections done so far
+/// are returned, without sizes, and cancelled = true.
+/// Cost: sweepPfa + selectGreedy over all sizes + #sizes · (randomSubsets + 2) subset scorings,
+/// each stage in parallel.
+/// Throws InvalidArgument as sweepPfa and SubsetErrors, and for a key frame out of range.
+[[nodiscard]] LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& symmetry,
+                                          const LayoutPlanOptions& options = {},
+                                          const RunControl& control = {});
+
 /// A request that names something its takes do not have: a marker pattern nothing matches, a key
 /// pose outside its take or given twice. The caller's words were wrong, not the data (the CLI
 /// answers it as a usage error naming the option, the panel beside the field).
