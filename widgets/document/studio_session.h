@@ -4,6 +4,8 @@
 
 #include <QObject>
 
+#include <memory>
+
 class QUndoStack;
 
 namespace mocap::ui {
@@ -15,8 +17,9 @@ class TakeDocument;
 /// The studio's composition root for the open take: it owns the TakeDocument (the take, its
 /// undo stack, frame, selection and reference markers), the FaceMeshModel (mesh, binding, rigs)
 /// and the BlendshapeSolveModel (blendshape rig, solved weights), which share the document's one
-/// undo stack. Panels and views are given the session (or its models) and observe them; no
-/// panel owns a model or knows another panel.
+/// undo stack, and keeps the face mesh on the take's reference markers (head motion removed with
+/// them). Panels and views are given the session (or its models) and observe them; no panel owns
+/// a model or knows another panel.
 ///
 /// Context belongs to one take: when the document gets a new take (opened, recovered), the
 /// previous take's face mesh, binding, blendshape rig and weights are dropped, so nothing of
@@ -53,12 +56,18 @@ signals:
   void takeContextReset(bool rigKept);
 
 private:
-  void startTakeContext();
+  struct KeptRig;
+  /// First on a new take: the previous take's context goes (kept aside when keepRig()).
+  void dropPreviousTake();
+  void followReferenceMarkers();
+  /// Last on a new take, once the models have it: the kept rig bound to its labels.
+  void restoreKeptRig();
 
   TakeDocument* m_document = nullptr;
   FaceMeshModel* m_faceMesh = nullptr;
   BlendshapeSolveModel* m_blendshapes = nullptr;
   bool m_keepRig = false;
+  std::unique_ptr<KeptRig> m_kept;  // between dropPreviousTake and restoreKeptRig
 };
 
 } // namespace mocap::ui

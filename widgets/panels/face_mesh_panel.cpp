@@ -74,7 +74,6 @@ FaceMeshPanel::FaceMeshPanel(StudioSession& session, MarkerView3d& view, QWidget
   connect(&m_model, &FaceMeshModel::rigChanged, this, &FaceMeshPanel::updateRigStatus);
   connect(m_scene, &FaceMeshScene::deformed, this, [this] { m_timing->setText(timingText()); });
   connect(&document, &TakeDocument::takeReset, this, &FaceMeshPanel::onTakeReset);
-  connect(&document, &TakeDocument::referenceMarkersChanged, this, &FaceMeshPanel::applyStabilization);
   connect(&document, &TakeDocument::selectionChanged, this, &FaceMeshPanel::onSelectionChanged);
   view.viewport()->installEventFilter(this);  // vertex clicks, before the view selects markers
   onTakeReset();
@@ -292,13 +291,6 @@ void FaceMeshPanel::applyOptions()
   writeSettings();
 }
 
-void FaceMeshPanel::applyStabilization()
-{
-  const std::vector<std::string> labels = m_document.referenceLabels();
-  if (labels != m_model.stabilization())
-    m_model.setStabilization(labels);
-}
-
 void FaceMeshPanel::onTakeReset()
 {
   const Take& take = m_document.take();
@@ -310,7 +302,6 @@ void FaceMeshPanel::onTakeReset()
   m_neutral->setValue(first - 1);
   m_pendingLabel.clear();
   m_model.setOptions(optionsFromUi());
-  applyStabilization();
 }
 
 QString FaceMeshPanel::loadMesh(const QString& path)
@@ -382,7 +373,6 @@ QString FaceMeshPanel::autoBind()
         labels.push_back(label);
     }
   }
-  applyStabilization();
   const QString error = m_model.autoBindMarkers(labels);
   if (!error.isEmpty()) {
     showError(tr("Auto-bind: %1").arg(error));

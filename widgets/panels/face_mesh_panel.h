@@ -88,7 +88,6 @@ private:
   void writeSettings() const;
   void applyOptions();
   [[nodiscard]] FaceRigOptions optionsFromUi() const;
-  void applyStabilization();
   void onTakeReset();
   void onSelectionChanged();
   void updateBindingSummary();
