@@ -128,7 +128,7 @@ TEST_F(StudioSessionTest, AKeptRigIsReboundToTheMarkersEachTakeHasAndSaysHowMany
   EXPECT_EQ(faceMesh().keptRigMarkers(), bound);
   EXPECT_NE(faceMesh().rig(), nullptr) << faceMesh().error().toStdString();  // set up on the markers found
   EXPECT_TRUE(panel().bindingSummary().startsWith(
-      QStringLiteral("%1 of %2 rig markers found in this take").arg(bound - 3).arg(total)))
+      QStringLiteral("%1 of %2 rig marker(s) found in this take").arg(bound - 3).arg(total)))
       << panel().bindingSummary().toStdString();
 
   // A take with none of them: nothing bound, nothing drawn, and the rig is still the actor's.
@@ -136,7 +136,7 @@ TEST_F(StudioSessionTest, AKeptRigIsReboundToTheMarkersEachTakeHasAndSaysHowMany
   EXPECT_TRUE(faceMesh().binding().markers.empty());
   EXPECT_EQ(faceMesh().rig(), nullptr);
   EXPECT_FALSE(panel().scene().layer().isVisible());
-  EXPECT_TRUE(panel().bindingSummary().startsWith(QStringLiteral("0 of %1 rig markers").arg(total)))
+  EXPECT_TRUE(panel().bindingSummary().startsWith(QStringLiteral("0 of %1 rig marker(s)").arg(total)))
       << panel().bindingSummary().toStdString();
 
   // Back on the sample every marker of the rig is found again.

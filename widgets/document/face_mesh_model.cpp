@@ -116,9 +116,10 @@ MeshBinding FaceMeshModel::bindingToKeep() const
 {
   MeshBinding kept = m_binding;
   kept.hasAlignment = false;  // made in this take's frame; a rig set up on the next one places the mesh
-  const Take& take = m_document.take();
+  // By label, not by the take: when this is asked the document may already hold the next take.
   for (const MarkerBinding& marker : m_keptRig.markers)
-    if (!take.markerIndex(marker.label))
+    if (std::none_of(m_binding.markers.begin(), m_binding.markers.end(),
+                     [&](const MarkerBinding& bound) { return bound.label == marker.label; }))
       kept.markers.push_back(marker);
   return kept;
 }

@@ -58,8 +58,8 @@ public:
   /// What is bound in this take: "31 marker(s) bound", or with a kept rig "5 of 31 rig
   /// marker(s) found in this take".
   [[nodiscard]] QString bindingSummary() const;
-  /// The binding to keep for the next take: this one, plus the kept rig's markers this take
-  /// does not have (so a take without some markers does not lose them for the next).
+  /// The binding to keep for the next take: this one, plus the kept rig's markers it does not
+  /// bind (so a take without some markers does not lose them for the next). O(#bound²).
   [[nodiscard]] MeshBinding bindingToKeep() const;
   /// Counts replacements of the whole binding (a mesh, a binding file, auto-bind): an edit made
   /// for an earlier binding no longer applies (RebindMarkerCommand checks it).
