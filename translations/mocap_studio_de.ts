@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+115"/>
+        <location filename="../app/studio/main_window.cpp" line="+117"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -357,7 +357,7 @@
         <translation>Blendshape-Solve</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+9"/>
         <source>Reference Video</source>
         <translation>Referenzvideo</translation>
     </message>
@@ -429,6 +429,21 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Keep Face Rig for the Next Take</source>
+        <translation>Gesichts-&amp;Rig für den nächsten Take behalten</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Opening another take keeps the face mesh, its marker binding and the blendshape rig (the actor&apos;s), bound to the markers the new take has; off, every take starts without them</source>
+        <translation>Beim Öffnen eines anderen Takes bleiben das Gesichtsnetz, seine Markerbindung und das Blendshape-Rig (die des Darstellers) erhalten, gebunden an die Marker des neuen Takes; aus: jeder Take beginnt ohne sie</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Face rig kept for this take: %1</source>
+        <translation>Gesichts-Rig für diesen Take behalten: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
@@ -1000,27 +1015,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+105"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+106"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
     <message>
         <location line="+24"/>
+        <location line="+280"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-275"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+263"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-259"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1211,7 +1228,7 @@
         <translation>Das Rig %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+18"/>
         <source>%1: %n shape(s), %2 vertices</source>
         <translation>
             <numerusform>%1: %n Shape, %2 Vertices</numerusform>
@@ -1219,7 +1236,7 @@
         </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-8"/>
         <source>Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.</source>
         <translation>Rig geladen. Binden Sie die Marker im Face-Mesh-Panel an seine Neutralform (Automatisch binden oder Bindung laden) und lösen Sie dann.</translation>
     </message>
@@ -1229,7 +1246,12 @@
         <translation>Rig geladen. Lösen, sobald bereit.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+18"/>
+        <source>Rig kept from the previous take: %1. Solve when ready.</source>
+        <translation>Rig aus dem vorigen Take behalten: %1. Lösen, sobald bereit.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>A job is already running.</source>
         <translation>Es läuft bereits ein Auftrag.</translation>
     </message>
@@ -1689,8 +1711,24 @@
 </context>
 <context>
     <name>mocap::ui::FaceMeshModel</name>
+    <message numerus="yes">
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+111"/>
+        <source>%n marker(s) bound</source>
+        <translation>
+            <numerusform>%n Marker gebunden</numerusform>
+            <numerusform>%n Marker gebunden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%1 of %n rig marker(s) found in this take</source>
+        <translation>
+            <numerusform>%1 von %n Rig-Marker in diesem Take gefunden</numerusform>
+            <numerusform>%1 von %n Rig-Markern in diesem Take gefunden</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../widgets/document/face_mesh_model.cpp" line="+101"/>
+        <location line="+37"/>
         <source>Load a mesh first.</source>
         <translation>Laden Sie zuerst ein Netz.</translation>
     </message>
@@ -1708,17 +1746,18 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+86"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+88"/>
         <source>Mesh and binding</source>
         <translation>Netz und Bindung</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+234"/>
         <source>No mesh</source>
         <translation>Kein Netz</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-230"/>
         <source>Load Mesh…</source>
         <translation>Netz laden…</translation>
     </message>
@@ -1763,12 +1802,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+289"/>
+        <location line="+283"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>Wählen Sie einen Marker aus und klicken Sie dann auf seinen Scheitelpunkt im Netz</translation>
     </message>
     <message>
-        <location line="-286"/>
+        <location line="-280"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
@@ -1804,18 +1843,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+339"/>
+        <location line="+333"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-338"/>
-        <location line="+338"/>
+        <location line="-332"/>
+        <location line="+332"/>
         <source>Laplacian</source>
         <translation>Laplace</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-331"/>
         <source>Method:</source>
         <translation>Methode:</translation>
     </message>
@@ -1880,17 +1919,22 @@
         <translation>Deckkraft:</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+86"/>
         <source>first complete</source>
         <translation>erstes vollständiges</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Cannot read the mesh %1: %2</source>
         <translation>Das Netz %1 kann nicht gelesen werden: %2</translation>
     </message>
+    <message>
+        <location line="+14"/>
+        <source>Mesh</source>
+        <translation>Netz</translation>
+    </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+1"/>
         <source>%1: %n vertices</source>
         <translation>
             <numerusform>%1: %n Scheitelpunkt</numerusform>
@@ -1898,7 +1942,7 @@
         </translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>Load the mesh the binding is for first.</source>
         <translation>Laden Sie zuerst das Netz, zu dem die Bindung gehört.</translation>
     </message>
@@ -1918,7 +1962,7 @@
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>Auto-bind: %1</source>
         <translation>Automatische Bindung: %1</translation>
     </message>
@@ -1953,20 +1997,19 @@
         <translation>, %1 %2 ms</translation>
     </message>
     <message numerus="yes">
-        <location line="+14"/>
         <source>%n marker(s) bound</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>%n Marker gebunden</numerusform>
             <numerusform>%n Marker gebunden</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>; mean residual %1 mm</source>
         <translation>; mittleres Residuum %1 mm</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+19"/>
         <source>Neutral frame %1; set-up %2 ms</source>
         <translation>Neutralbild %1; Vorbereitung %2 ms</translation>
     </message>

@@ -293,7 +293,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+115"/>
+        <location filename="../app/studio/main_window.cpp" line="+117"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -348,7 +348,7 @@
         <translation>混合形状求解</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+9"/>
         <source>Reference Video</source>
         <translation>参考视频</translation>
     </message>
@@ -420,6 +420,21 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Keep Face Rig for the Next Take</source>
+        <translation>为下一个拍摄保留面部绑定(&amp;K)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Opening another take keeps the face mesh, its marker binding and the blendshape rig (the actor&apos;s), bound to the markers the new take has; off, every take starts without them</source>
+        <translation>打开另一个拍摄时保留面部网格、其标记点绑定和混合形状绑定（演员的），并绑定到新拍摄中已有的标记点；关闭时，每个拍摄都从空白开始</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Face rig kept for this take: %1</source>
+        <translation>已为此拍摄保留面部绑定：%1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
@@ -989,27 +1004,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+105"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+106"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
     <message>
         <location line="+24"/>
+        <location line="+280"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-275"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+263"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-259"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1200,14 +1217,14 @@
         <translation>无法读取绑定模型 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+18"/>
         <source>%1: %n shape(s), %2 vertices</source>
         <translation>
             <numerusform>%1：%n 个形状，%2 个顶点</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-8"/>
         <source>Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.</source>
         <translation>绑定模型已加载。请在面部网格面板中将标记点绑定到其中性形状（自动绑定或加载绑定），然后求解。</translation>
     </message>
@@ -1217,7 +1234,12 @@
         <translation>绑定模型已加载。准备好后即可求解。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+18"/>
+        <source>Rig kept from the previous take: %1. Solve when ready.</source>
+        <translation>已保留上一个拍摄的绑定：%1。准备好后求解。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>A job is already running.</source>
         <translation>已有任务在运行。</translation>
     </message>
@@ -1671,8 +1693,22 @@
 </context>
 <context>
     <name>mocap::ui::FaceMeshModel</name>
+    <message numerus="yes">
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+111"/>
+        <source>%n marker(s) bound</source>
+        <translation>
+            <numerusform>已绑定 %n 个标记点</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%1 of %n rig marker(s) found in this take</source>
+        <translation>
+            <numerusform>在此拍摄中找到 %n 个绑定标记点中的 %1 个</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../widgets/document/face_mesh_model.cpp" line="+101"/>
+        <location line="+37"/>
         <source>Load a mesh first.</source>
         <translation>请先加载网格。</translation>
     </message>
@@ -1690,17 +1726,18 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+86"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+88"/>
         <source>Mesh and binding</source>
         <translation>网格与绑定</translation>
     </message>
     <message>
         <location line="+2"/>
+        <location line="+234"/>
         <source>No mesh</source>
         <translation>无网格</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-230"/>
         <source>Load Mesh…</source>
         <translation>加载网格…</translation>
     </message>
@@ -1745,12 +1782,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+289"/>
+        <location line="+283"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>选择一个标记点，然后在网格上点击其对应的顶点</translation>
     </message>
     <message>
-        <location line="-286"/>
+        <location line="-280"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
@@ -1786,18 +1823,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+339"/>
+        <location line="+333"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-338"/>
-        <location line="+338"/>
+        <location line="-332"/>
+        <location line="+332"/>
         <source>Laplacian</source>
         <translation>拉普拉斯</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-331"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
@@ -1862,24 +1899,29 @@
         <translation>不透明度：</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+86"/>
         <source>first complete</source>
         <translation>第一个完整帧</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Cannot read the mesh %1: %2</source>
         <translation>无法读取网格 %1：%2</translation>
     </message>
+    <message>
+        <location line="+14"/>
+        <source>Mesh</source>
+        <translation>网格</translation>
+    </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+1"/>
         <source>%1: %n vertices</source>
         <translation>
             <numerusform>%1：%n 个顶点</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>Load the mesh the binding is for first.</source>
         <translation>请先加载该绑定所对应的网格。</translation>
     </message>
@@ -1899,7 +1941,7 @@
         <translation>已保存 %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>Auto-bind: %1</source>
         <translation>自动绑定：%1</translation>
     </message>
@@ -1934,19 +1976,18 @@
         <translation>，%1 %2 ms</translation>
     </message>
     <message numerus="yes">
-        <location line="+14"/>
         <source>%n marker(s) bound</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>已绑定 %n 个标记点</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+16"/>
         <source>; mean residual %1 mm</source>
         <translation>；平均残差 %1 mm</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+19"/>
         <source>Neutral frame %1; set-up %2 ms</source>
         <translation>中性帧 %1；预处理 %2 ms</translation>
     </message>

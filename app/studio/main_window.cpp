@@ -15,6 +15,7 @@
 #include "dialogs/read_warnings_dialog.h"
 #include "dialogs/review_export_dialog.h"
 #include "document/autosave.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "models/marker_table_model.h"
 #include "panels/cleaning_panel.h"
@@ -106,7 +107,8 @@ QString joinLabels(const std::vector<std::string>& labels)
 }
 } // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new ui::TakeDocument(this))
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_session(new ui::StudioSession(this)), m_document(&m_session->document())
 {
   setAcceptDrops(true);
   ui::WheelGuard::install();
@@ -265,27 +267,21 @@ void MainWindow::createDocks()
     }
     showLayout(kept);
   });
-  m_faceMesh = new ui::FaceMeshPanel(*m_document, *m_view3d, this);
+  m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
   m_faceMeshDock = addDock(tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
 
-  m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_document, *m_faceMesh, *m_view3d, this);
+  m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_session, *m_view3d, this);
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::message, statusBar(), &QStatusBar::showMessage);
   m_blendshapeDock =
       addDock(tr("Blendshape Solve"), QStringLiteral("blendshapeSolveDock"), m_blendshapeSolve, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_blendshapeDock);
   m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
 
-  // Layout planning judges layouts on the rig through the binding on its neutral.
-  m_layoutPlanning->setRigSource([this] {
-    const auto& rig = m_blendshapeSolve->model().rig();
-    const ui::FaceMeshModel& face = m_faceMesh->model();
-    if (!rig || face.mesh().vertexCount() != rig->neutral.vertexCount())
-      return ui::LayoutRig{};
-    return ui::LayoutRig{rig, face.binding()};
-  });
+  // Layout planning judges layouts on the session's rig through the binding on its neutral.
+  m_layoutPlanning->setRigSource([this] { return m_session->boundRig(); });
 
   m_referenceVideo = new ui::ReferenceVideoPanel(*m_document, this);
   QDockWidget* videoDock =
@@ -295,7 +291,7 @@ void MainWindow::createDocks()
   connect(m_referenceVideo, &ui::ReferenceVideoPanel::videosRestored, this,
           [this] { (void)showDock(QStringLiteral("referenceVideoDock")); });
 
-  m_weights = new ui::WeightCurveView(*m_document, m_blendshapeSolve->model(), this);
+  m_weights = new ui::WeightCurveView(*m_document, m_session->blendshapes(), this);
   m_weightsDock =
       addDock(tr("Weights"), QStringLiteral("weightsDock"), m_weights, Qt::BottomDockWidgetArea, DockContent::Fixed);
   tabifyDockWidget(curveDock, m_weightsDock);
@@ -326,14 +322,14 @@ QString MainWindow::loadRig(const QString& rigPath, const QString& shapeFolder, 
   m_blendshapeDock->raise();
   QString error = m_blendshapeSolve->loadRig(rigPath, shapeFolder);
   m_blendshapeSolve->waitForJob();
-  if (error.isEmpty() && !m_blendshapeSolve->model().hasRig())
+  if (error.isEmpty() && !m_session->blendshapes().hasRig())
     error = m_blendshapeSolve->statusText();
   if (error.isEmpty() && !bindingPath.isEmpty())
     error = m_faceMesh->loadBinding(bindingPath);
   if (error.isEmpty() && solve) {
     error = m_blendshapeSolve->solve();
     m_blendshapeSolve->waitForJob();
-    if (error.isEmpty() && !m_blendshapeSolve->model().hasResult())
+    if (error.isEmpty() && !m_session->blendshapes().hasResult())
       error = m_blendshapeSolve->statusText();
   }
   return error;
@@ -353,7 +349,7 @@ QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& binding
 void MainWindow::exportAnimation()
 {
   ui::ExportDialog dialog(*m_document, this);
-  const ui::FaceMeshModel& mesh = m_faceMesh->model();
+  const ui::FaceMeshModel& mesh = m_session->faceMesh();
   if (mesh.rig()) {
     // The export runs on a worker thread: it gets its own rig and copy of the take, since the
     // panel's rig follows every edit and option change.
@@ -418,6 +414,22 @@ void MainWindow::createActions()
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
   m_recentMenu = file->addMenu(tr("Open &Recent"));
+  QAction* keepRig = file->addAction(tr("&Keep Face Rig for the Next Take"));
+  keepRig->setObjectName(QStringLiteral("keepRigAction"));
+  keepRig->setCheckable(true);
+  keepRig->setToolTip(tr("Opening another take keeps the face mesh, its marker binding and the blendshape rig (the "
+                         "actor's), bound to the markers the new take has; off, every take starts without them"));
+  keepRig->setChecked(QSettings().value(QStringLiteral("session/keepRig"), false).toBool());
+  m_session->setKeepRig(keepRig->isChecked());
+  connect(keepRig, &QAction::toggled, this, [this](bool on) {
+    m_session->setKeepRig(on);
+    QSettings().setValue(QStringLiteral("session/keepRig"), on);
+  });
+  connect(m_session, &ui::StudioSession::takeContextReset, this, [this](bool rigKept) {
+    if (rigKept)
+      statusBar()->showMessage(tr("Face rig kept for this take: %1").arg(m_session->faceMesh().bindingSummary()), 10000);
+  });
+  file->addSeparator();
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
   file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAs);
   file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
@@ -1019,9 +1031,9 @@ QVariantMap MainWindow::recoverySession() const
 {
   QVariantMap session;
   session.insert(QStringLiteral("windowState"), saveState());
-  const ui::FaceMeshModel& mesh = m_faceMesh->model();
+  const ui::FaceMeshModel& mesh = m_session->faceMesh();
   if (mesh.hasMesh()) {
-    session.insert(QStringLiteral("mesh"), m_faceMesh->meshPath());
+    session.insert(QStringLiteral("mesh"), mesh.meshPath());
     session.insert(QStringLiteral("binding"), QString::fromStdString(bindingJson(mesh.binding())));
   }
   return session;

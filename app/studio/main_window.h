@@ -38,15 +38,17 @@ class ManualWindow;
 class MarkerTableModel;
 class MarkerView3d;
 struct ReviewSource;
+class StudioSession;
 class TakeDocument;
 class TimelineWidget;
 } // namespace mocap::ui
 
 namespace mocap::studio {
 
-/// The studio's main window: wires the document to the 3D view (centre), the marker table and
-/// curves (docks) and the timeline, plus menus, shortcuts, recent files and remembered layout.
-/// It only wires; every view, model and command lives in mocap::widgets.
+/// The studio's main window: wires the session (its document and models) to the 3D view
+/// (centre), the marker table and curves (docks), the panels and the timeline, plus menus,
+/// shortcuts, recent files and remembered layout. It only wires; every view, model and command
+/// lives in mocap::widgets.
 class MainWindow final : public QMainWindow
 {
   Q_OBJECT
@@ -59,6 +61,8 @@ public:
   /// Returns the error message, empty on success.
   QString openFile(const QString& path, bool quiet = false);
   [[nodiscard]] ui::TakeDocument& document() { return *m_document; }
+  /// The open take's session: the document and the models the docks observe.
+  [[nodiscard]] ui::StudioSession& session() { return *m_session; }
   [[nodiscard]] ui::MarkerView3d* markerView() const { return m_view3d; }
   [[nodiscard]] QTableView* markerTable() const { return m_table; }
   [[nodiscard]] ui::CurveView* curveView() const { return m_curves; }
@@ -182,7 +186,8 @@ private:
   void readSettings();
   void writeSettings() const;
 
-  ui::TakeDocument* m_document = nullptr;
+  ui::StudioSession* m_session = nullptr;
+  ui::TakeDocument* m_document = nullptr;  // the session's
   ui::Autosave* m_autosave = nullptr;
   ui::MarkerView3d* m_view3d = nullptr;
   ui::HeadMarkersProposalBar* m_headMarkersBar = nullptr;

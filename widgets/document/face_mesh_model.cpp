@@ -5,6 +5,7 @@
 #include "mocap/deform/retarget.h"
 
 #include <QCursor>
+#include <QFileInfo>
 #include <QGuiApplication>
 
 #include <algorithm>
@@ -53,9 +54,11 @@ const Take& FaceMeshModel::rigTake() const
   return m_stabilized ? *m_stabilized : m_document.take();
 }
 
-void FaceMeshModel::setMesh(Mesh mesh)
+void FaceMeshModel::setMesh(Mesh mesh, const QString& path)
 {
   m_mesh = std::move(mesh);
+  m_meshPath = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+  m_keptRig = MeshBinding{};
   if (m_binding.meshVertices != m_mesh.vertexCount()) {
     ++m_bindingGeneration;
     m_binding = MeshBinding{};
@@ -66,13 +69,59 @@ void FaceMeshModel::setMesh(Mesh mesh)
   rebuild();
 }
 
+void FaceMeshModel::clear()
+{
+  m_mesh = Mesh{};
+  m_meshPath.clear();
+  m_keptRig = MeshBinding{};
+  ++m_bindingGeneration;
+  m_binding = MeshBinding{};
+  emit bindingChanged();
+  emit meshChanged();
+  rebuild();
+}
+
 void FaceMeshModel::setBinding(MeshBinding binding)
 {
+  m_keptRig = MeshBinding{};
   ++m_bindingGeneration;
   m_binding = std::move(binding);
   m_binding.meshVertices = m_mesh.vertexCount();
   emit bindingChanged();
   rebuild();
+}
+
+void FaceMeshModel::bindKeptRig(MeshBinding rig)
+{
+  const Take& take = m_document.take();
+  MeshBinding found;
+  found.meshVertices = rig.meshVertices;
+  for (const MarkerBinding& marker : rig.markers)
+    if (take.markerIndex(marker.label))
+      found.markers.push_back(marker);
+  setBinding(std::move(found));
+  m_keptRig = std::move(rig);
+  emit bindingChanged();  // the summary counts the kept rig's markers too
+}
+
+QString FaceMeshModel::bindingSummary() const
+{
+  const auto bound = static_cast<int>(m_binding.markers.size());
+  if (m_keptRig.markers.empty())
+    return tr("%n marker(s) bound", nullptr, bound);
+  return tr("%1 of %n rig marker(s) found in this take", nullptr, static_cast<int>(m_keptRig.markers.size())).arg(bound);
+}
+
+MeshBinding FaceMeshModel::bindingToKeep() const
+{
+  MeshBinding kept = m_binding;
+  kept.hasAlignment = false;  // made in this take's frame; a rig set up on the next one places the mesh
+  // By label, not by the take: when this is asked the document may already hold the next take.
+  for (const MarkerBinding& marker : m_keptRig.markers)
+    if (std::none_of(m_binding.markers.begin(), m_binding.markers.end(),
+                     [&](const MarkerBinding& bound) { return bound.label == marker.label; }))
+      kept.markers.push_back(marker);
+  return kept;
 }
 
 std::optional<MarkerBinding> FaceMeshModel::rebind(const std::string& label, std::optional<MarkerBinding> binding)

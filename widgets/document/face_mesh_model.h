@@ -37,12 +37,30 @@ public:
 
   [[nodiscard]] TakeDocument& document() const { return m_document; }
 
-  /// Replaces the mesh; a binding made for another vertex count is dropped.
-  void setMesh(Mesh mesh);
+  /// Replaces the mesh (read from `path`, e.g. an OBJ or a glTF rig's neutral); a binding made
+  /// for another vertex count is dropped.
+  void setMesh(Mesh mesh, const QString& path = {});
   [[nodiscard]] const Mesh& mesh() const { return m_mesh; }
   [[nodiscard]] bool hasMesh() const { return m_mesh.vertexCount() > 0; }
+  /// The file the mesh came from, absolute ("" when none is loaded or it was made in code).
+  [[nodiscard]] const QString& meshPath() const { return m_meshPath; }
+  /// Drops the mesh, binding and rigs (a new take starts without them); the options stay.
+  void clear();
   void setBinding(MeshBinding binding);
   [[nodiscard]] const MeshBinding& binding() const { return m_binding; }
+
+  /// Binds the markers of `rig` (a binding kept from another take: the actor's) that this take
+  /// has; the others are remembered, not bound, and the alignment (made in the other take) is
+  /// dropped, so the mesh is placed only by a rig set up on this take. O(#bound · #markers).
+  void bindKeptRig(MeshBinding rig);
+  /// How many markers the kept rig binds (0 when the binding was made for this take, not kept).
+  [[nodiscard]] std::size_t keptRigMarkers() const { return m_keptRig.markers.size(); }
+  /// What is bound in this take: "31 marker(s) bound", or with a kept rig "5 of 31 rig
+  /// marker(s) found in this take".
+  [[nodiscard]] QString bindingSummary() const;
+  /// The binding to keep for the next take: this one, plus the kept rig's markers it does not
+  /// bind (so a take without some markers does not lose them for the next). O(#bound²).
+  [[nodiscard]] MeshBinding bindingToKeep() const;
   /// Counts replacements of the whole binding (a mesh, a binding file, auto-bind): an edit made
   /// for an earlier binding no longer applies (RebindMarkerCommand checks it).
   [[nodiscard]] int bindingGeneration() const { return m_bindingGeneration; }
@@ -89,7 +107,9 @@ private:
 
   TakeDocument& m_document;
   Mesh m_mesh;
+  QString m_meshPath;
   MeshBinding m_binding;
+  MeshBinding m_keptRig;  // the whole binding kept from another take (bindKeptRig), else empty
   int m_bindingGeneration = 0;
   std::vector<std::string> m_stabilization;
   FaceRigOptions m_options;

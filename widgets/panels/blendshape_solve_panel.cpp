@@ -3,13 +3,12 @@
 #include "actions/weight_edit_actions.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
-#include "panels/face_mesh_panel.h"
 #include "panels/job_progress_row.h"
 #include "panels/panel_folder.h"
 #include "panels/status_line.h"
 #include "views/blendshape_scene.h"
-#include "views/face_mesh_scene.h"
 #include "views/status_timeout.h"
 
 #include "mocap/io/gltf_writer.h"
@@ -87,22 +86,24 @@ Eigen::VectorXd peaks(const Eigen::MatrixXd& weights)
 
 } // namespace
 
-BlendshapeSolvePanel::BlendshapeSolvePanel(TakeDocument& document, FaceMeshPanel& faceMesh, MarkerView3d& view,
-                                           QWidget* parent)
-    : QWidget(parent), m_document(document), m_faceMesh(faceMesh), m_model(new BlendshapeSolveModel(this)),
-      m_scene(new BlendshapeScene(*m_model, faceMesh.scene(), view, this)),
-      m_edits(new WeightEditActions(document, *m_model, this))
+BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
+    : QWidget(parent), m_document(session.document()), m_faceMesh(session.faceMesh()), m_model(session.blendshapes()),
+      m_scene(new BlendshapeScene(m_model, m_faceMesh, view, this)),
+      m_edits(new WeightEditActions(m_document, m_model, this))
 {
+  TakeDocument& document = m_document;
   buildUi();
   readSettings();
   connect(&m_loadWatcher, &QFutureWatcher<RigLoad>::finished, this, &BlendshapeSolvePanel::onRigLoaded);
   connect(&m_solveWatcher, &QFutureWatcher<SolveRun>::finished, this, &BlendshapeSolvePanel::onSolved);
-  connect(m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
-  connect(m_model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeSolvePanel::fillShapeList);
-  connect(&document, &TakeDocument::takeReset, m_model, &BlendshapeSolveModel::clearResult);
+  connect(&m_model, &BlendshapeSolveModel::rigChanged, this, &BlendshapeSolvePanel::showRig);
+  connect(&session, &StudioSession::takeContextReset, this, &BlendshapeSolvePanel::onTakeContextReset);
+  connect(&m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
+  connect(&m_model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeSolvePanel::fillShapeList);
+  connect(&document, &TakeDocument::takeReset, &m_model, &BlendshapeSolveModel::clearResult);
   // Weights solved before an edit of the take no longer follow it: say so (they stay, as a product).
   const auto stale = [this] {
-    if (m_model->hasResult() && !busy())
+    if (m_model.hasResult() && !busy())
       showStatus(tr("The take has changed since this solve; Solve again to update the weights."));
   };
   connect(&document, &TakeDocument::samplesChanged, this, stale);
@@ -276,9 +277,9 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   buttons->addWidget(m_exportGlb);
   buttons->addStretch();
   rows->addLayout(buttons);
-  connect(m_model, &BlendshapeSolveModel::resultChanged, this, [this] {
-    m_exportCsv->setEnabled(m_model->hasResult());
-    m_exportGlb->setEnabled(m_model->hasResult());
+  connect(&m_model, &BlendshapeSolveModel::resultChanged, this, [this] {
+    m_exportCsv->setEnabled(m_model.hasResult());
+    m_exportGlb->setEnabled(m_model.hasResult());
   });
   m_exportCsv->setEnabled(false);
   m_exportGlb->setEnabled(false);
@@ -340,8 +341,8 @@ BlendshapeSolveOptions BlendshapeSolvePanel::optionsFromUi() const
   options.smoothness = m_smoothness->value();
   options.sparsity = m_sparsity->value();
   // The neutral frame is the face mesh's: the binding was made on it.
-  options.neutralFrame = m_faceMesh.model().options().neutralFrame;
-  options.scale = m_faceMesh.model().options().scale;
+  options.neutralFrame = m_faceMesh.options().neutralFrame;
+  options.scale = m_faceMesh.options().scale;
   return options;
 }
 
@@ -379,32 +380,48 @@ void BlendshapeSolvePanel::onRigLoaded()
     emit rigLoaded(m_status->text());
     return;
   }
-  m_model->setRig(load.rig, load.path);
-  // The binding is made on the rig's neutral: the Face Mesh panel shows it (a mesh of the same
+  m_model.setRig(load.rig, load.path);
+  // The binding is made on the rig's neutral: it becomes the face mesh (a mesh of the same
   // vertex count, e.g. the OBJ it came from, and its binding are kept).
-  if (m_faceMesh.model().mesh().vertexCount() != load.rig->neutral.vertexCount())
-    m_faceMesh.useMesh(load.rig->neutral, load.path);
-  m_rigLabel->setText(tr("%1: %n shape(s), %2 vertices", nullptr, static_cast<int>(load.rig->shapeCount()))
-                          .arg(QFileInfo(load.path).fileName())
-                          .arg(static_cast<qlonglong>(load.rig->neutral.vertexCount())));
-  fillShapeList();
-  showStatus(m_faceMesh.model().binding().markers.empty()
+  if (m_faceMesh.mesh().vertexCount() != load.rig->neutral.vertexCount())
+    m_faceMesh.setMesh(load.rig->neutral, load.path);
+  showStatus(m_faceMesh.binding().markers.empty()
                  ? tr("Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.")
                  : tr("Rig loaded. Solve when ready."));
   emit rigLoaded({});
 }
 
+void BlendshapeSolvePanel::showRig()
+{
+  if (const auto& rig = m_model.rig())
+    m_rigLabel->setText(tr("%1: %n shape(s), %2 vertices", nullptr, static_cast<int>(rig->shapeCount()))
+                            .arg(QFileInfo(m_model.rigPath()).fileName())
+                            .arg(static_cast<qlonglong>(rig->neutral.vertexCount())));
+  else
+    m_rigLabel->setText(tr("No rig"));
+  fillShapeList();
+}
+
+void BlendshapeSolvePanel::onTakeContextReset(bool rigKept)
+{
+  if (rigKept && m_model.hasRig())
+    showStatus(tr("Rig kept from the previous take: %1. Solve when ready.").arg(m_faceMesh.bindingSummary()),
+               m_faceMesh.binding().markers.size() < 3);
+  else
+    showStatus(tr("Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve."));
+}
+
 QString BlendshapeSolvePanel::solve()
 {
   QString problem;
-  const FaceMeshModel& face = m_faceMesh.model();
+  const FaceMeshModel& face = m_faceMesh;
   if (busy())
     problem = tr("A job is already running.");
   else if (!m_document.hasTake())
     problem = tr("Open a take first.");
-  else if (!m_model->hasRig())
+  else if (!m_model.hasRig())
     problem = tr("Load a rig first.");
-  else if (face.mesh().vertexCount() != m_model->rig()->neutral.vertexCount())
+  else if (face.mesh().vertexCount() != m_model.rig()->neutral.vertexCount())
     problem = tr("The Face Mesh panel shows another mesh than this rig's neutral; load the rig again.");
   else if (face.binding().markers.empty())
     problem = tr("Bind the markers to the rig's neutral in the Face Mesh panel first (Auto-Bind or Load Binding).");
@@ -414,7 +431,7 @@ QString BlendshapeSolvePanel::solve()
   }
   showStatus(tr("Solving…"));
   m_solve->setEnabled(false);
-  m_solveWatcher.setFuture(QtConcurrent::run(solveInBackground, m_model->rig(), face.binding(), face.rigTake(),
+  m_solveWatcher.setFuture(QtConcurrent::run(solveInBackground, m_model.rig(), face.binding(), face.rigTake(),
                                              optionsFromUi(), m_progress->begin()));
   return {};
 }
@@ -464,7 +481,7 @@ void BlendshapeSolvePanel::onSolved()
                                    "(shaded red in the Weights view).",
                                    nullptr, held);
   const BlendshapeSolveOptions options = run.options;
-  m_model->setResult(std::move(run.result), options);
+  m_model.setResult(std::move(run.result), options);
   fillShapeList();
   showStatus(text, held > 0);
   emit solveFinished({});
@@ -474,16 +491,16 @@ void BlendshapeSolvePanel::fillShapeList()
 {
   const QSignalBlocker blocker(m_shapes);
   m_shapes->clear();
-  if (!m_model->hasRig())
+  if (!m_model.hasRig())
     return;
-  const Eigen::VectorXd peak = peaks(m_model->weights());
-  for (Eigen::Index s = 0; s < m_model->rig()->shapeCount(); ++s) {
-    QString text = m_model->shapeName(s);
-    if (m_model->hasResult())
+  const Eigen::VectorXd peak = peaks(m_model.weights());
+  for (Eigen::Index s = 0; s < m_model.rig()->shapeCount(); ++s) {
+    QString text = m_model.shapeName(s);
+    if (m_model.hasResult())
       text += tr("  (peak %1)").arg(peak(s), 0, 'f', 2);
     auto* item = new QListWidgetItem(text, m_shapes);
     item->setData(Qt::UserRole, static_cast<qlonglong>(s));
-    if (m_model->hasResult() && peak(s) < 0.01)
+    if (m_model.hasResult() && peak(s) < 0.01)
       item->setForeground(QColor(130, 130, 130));  // never used in this take
   }
   applyShapeFilter();
@@ -497,7 +514,7 @@ void BlendshapeSolvePanel::applyShapeFilter()
   const QString filter = m_filter->text().trimmed();
   for (int i = 0; i < m_shapes->count(); ++i) {
     QListWidgetItem* item = m_shapes->item(i);
-    item->setHidden(!filter.isEmpty() && !m_model->shapeName(item->data(Qt::UserRole).toLongLong())
+    item->setHidden(!filter.isEmpty() && !m_model.shapeName(item->data(Qt::UserRole).toLongLong())
                                               .contains(filter, Qt::CaseInsensitive));
   }
 }
@@ -510,16 +527,16 @@ void BlendshapeSolvePanel::onListSelectionChanged()
   for (const QListWidgetItem* item : m_shapes->selectedItems())
     shapes.push_back(static_cast<Eigen::Index>(item->data(Qt::UserRole).toLongLong()));
   m_syncingSelection = true;
-  m_model->setSelectedShapes(std::move(shapes));
+  m_model.setSelectedShapes(std::move(shapes));
   m_syncingSelection = false;
 }
 
 void BlendshapeSolvePanel::onModelSelectionChanged()
 {
-  if (m_syncingSelection && sender() == m_model)
+  if (m_syncingSelection && sender() == &m_model)
     return;
   const QSignalBlocker blocker(m_shapes);
-  const auto& selected = m_model->selectedShapes();
+  const auto& selected = m_model.selectedShapes();
   for (int i = 0; i < m_shapes->count(); ++i) {
     QListWidgetItem* item = m_shapes->item(i);
     const auto shape = static_cast<Eigen::Index>(item->data(Qt::UserRole).toLongLong());
@@ -543,11 +560,11 @@ void BlendshapeSolvePanel::showEditResult(const QString& why)
 
 QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
 {
-  if (!m_model->hasResult())
+  if (!m_model.hasResult())
     return tr("Solve the take first.");
   try {
     const Take& take = m_document.take();
-    writeWeightsCsv(path.toStdString(), m_model->rig()->shapeNames(), m_model->weights(), take.firstFrame(),
+    writeWeightsCsv(path.toStdString(), m_model.rig()->shapeNames(), m_model.weights(), take.firstFrame(),
                     take.frameRate(), liveLink ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
   } catch (const std::exception& e) {
     showStatus(tr("Cannot write the weights: %1").arg(QString::fromStdString(e.what())), true);
@@ -559,10 +576,10 @@ QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
 
 QString BlendshapeSolvePanel::exportGlb(const QString& path)
 {
-  if (!m_model->hasResult())
+  if (!m_model.hasResult())
     return tr("Solve the take first.");
   try {
-    writeRigGlb(path.toStdString(), *m_model->rig(), m_model->weights(), m_document.take().frameRate());
+    writeRigGlb(path.toStdString(), *m_model.rig(), m_model.weights(), m_document.take().frameRate());
   } catch (const std::exception& e) {
     showStatus(tr("Cannot write the rig: %1").arg(QString::fromStdString(e.what())), true);
     return m_status->text();

@@ -21,9 +21,10 @@ namespace mocap::ui {
 
 class BlendshapeScene;
 class BlendshapeSolveModel;
-class FaceMeshPanel;
+class FaceMeshModel;
 class JobProgressRow;
 class MarkerView3d;
+class StudioSession;
 class TakeDocument;
 class WeightEditActions;
 
@@ -46,8 +47,9 @@ struct SolveRun
 };
 
 /// The Blendshape solve dock: load a rig (a glTF/GLB with morph targets, or a neutral OBJ and a
-/// folder of shape OBJs; read on a worker), whose neutral becomes the Face Mesh dock's mesh so
-/// the binding is made and edited there; choose the method (bvls, ridge, temporal) and its λ,
+/// folder of shape OBJs; read on a worker) into the session's BlendshapeSolveModel; its neutral
+/// becomes the session's face mesh (FaceMeshModel), so the binding is made and edited in the
+/// Face Mesh dock; choose the method (bvls, ridge, temporal) and its λ,
 /// smoothness and sparsity; Solve runs BlendshapeSolver on a worker with progress and Cancel, on
 /// the take the face mesh sees (head motion removed). Then: the rig posed by the weights in the
 /// 3D view (BlendshapeScene), the shapes with their peak weights (selecting them shows their
@@ -60,10 +62,10 @@ class BlendshapeSolvePanel final : public QWidget
   Q_OBJECT
 
 public:
-  BlendshapeSolvePanel(TakeDocument& document, FaceMeshPanel& faceMesh, MarkerView3d& view, QWidget* parent = nullptr);
+  BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent = nullptr);
   ~BlendshapeSolvePanel() override;
 
-  [[nodiscard]] BlendshapeSolveModel& model() const { return *m_model; }
+  [[nodiscard]] BlendshapeSolveModel& model() const { return m_model; }
   [[nodiscard]] BlendshapeScene& scene() const { return *m_scene; }
   [[nodiscard]] WeightEditActions& edits() const { return *m_edits; }
 
@@ -101,6 +103,10 @@ private:
   void readSettings();
   void writeSettings() const;
   void onRigLoaded();
+  /// The rig line, shape list and status for the model's rig (loaded, kept for a new take, dropped).
+  void showRig();
+  /// A new take: what of the rig was kept, or back to the first step.
+  void onTakeContextReset(bool rigKept);
   void onSolved();
   void fillShapeList();
   void applyShapeFilter();
@@ -115,8 +121,8 @@ private:
   void exportGlbDialog();
 
   TakeDocument& m_document;
-  FaceMeshPanel& m_faceMesh;
-  BlendshapeSolveModel* m_model = nullptr;
+  FaceMeshModel& m_faceMesh;
+  BlendshapeSolveModel& m_model;
   BlendshapeScene* m_scene = nullptr;
   WeightEditActions* m_edits = nullptr;
   QFutureWatcher<RigLoad> m_loadWatcher;

@@ -2,6 +2,7 @@
 
 #include "commands/rebind_marker_command.h"
 #include "document/face_mesh_model.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/panel_folder.h"
 #include "panels/reference_markers_row.h"
@@ -60,18 +61,19 @@ QString nameText(std::string_view name)
 
 } // namespace
 
-FaceMeshPanel::FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent)
-    : QWidget(parent), m_document(document), m_view(view), m_model(new FaceMeshModel(document, this)),
-      m_scene(new FaceMeshScene(*m_model, view, this)),
-      m_undo(document.undoStack())
+FaceMeshPanel::FaceMeshPanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
+    : QWidget(parent), m_document(session.document()), m_view(view), m_model(session.faceMesh()),
+      m_scene(new FaceMeshScene(m_model, view, this)),
+      m_undo(session.undoStack())
 {
+  TakeDocument& document = m_document;
   buildUi();
   readSettings();
-  connect(m_model, &FaceMeshModel::bindingChanged, this, &FaceMeshPanel::updateBindingSummary);
-  connect(m_model, &FaceMeshModel::rigChanged, this, &FaceMeshPanel::updateRigStatus);
+  connect(&m_model, &FaceMeshModel::meshChanged, this, &FaceMeshPanel::updateMeshLabel);
+  connect(&m_model, &FaceMeshModel::bindingChanged, this, &FaceMeshPanel::updateBindingSummary);
+  connect(&m_model, &FaceMeshModel::rigChanged, this, &FaceMeshPanel::updateRigStatus);
   connect(m_scene, &FaceMeshScene::deformed, this, [this] { m_timing->setText(timingText()); });
   connect(&document, &TakeDocument::takeReset, this, &FaceMeshPanel::onTakeReset);
-  connect(&document, &TakeDocument::referenceMarkersChanged, this, &FaceMeshPanel::applyStabilization);
   connect(&document, &TakeDocument::selectionChanged, this, &FaceMeshPanel::onSelectionChanged);
   view.viewport()->installEventFilter(this);  // vertex clicks, before the view selects markers
   onTakeReset();
@@ -241,8 +243,8 @@ void FaceMeshPanel::readSettings()
   m_opacity->setValue(settings.value(settingKey("opacity"), 60).toInt());
   m_methodPages->setCurrentIndex(std::max(0, m_method->currentIndex()));
   m_loadingSettings = false;
-  m_model->setOptions(optionsFromUi());
-  m_model->setCompare(m_compare->isChecked());
+  m_model.setOptions(optionsFromUi());
+  m_model.setCompare(m_compare->isChecked());
 }
 
 void FaceMeshPanel::writeSettings() const
@@ -283,17 +285,10 @@ void FaceMeshPanel::applyOptions()
     return;
   m_methodPages->setCurrentIndex(std::max(0, m_method->currentIndex()));
   const bool compare = m_compare->isChecked();
-  if (compare != m_model->compare())
-    m_model->setCompare(compare);
-  m_model->setOptions(optionsFromUi());
+  if (compare != m_model.compare())
+    m_model.setCompare(compare);
+  m_model.setOptions(optionsFromUi());
   writeSettings();
-}
-
-void FaceMeshPanel::applyStabilization()
-{
-  const std::vector<std::string> labels = m_document.referenceLabels();
-  if (labels != m_model->stabilization())
-    m_model->setStabilization(labels);
 }
 
 void FaceMeshPanel::onTakeReset()
@@ -306,8 +301,7 @@ void FaceMeshPanel::onTakeReset()
   m_neutral->setSpecialValueText(tr("first complete"));
   m_neutral->setValue(first - 1);
   m_pendingLabel.clear();
-  m_model->setOptions(optionsFromUi());
-  applyStabilization();
+  m_model.setOptions(optionsFromUi());
 }
 
 QString FaceMeshPanel::loadMesh(const QString& path)
@@ -319,40 +313,43 @@ QString FaceMeshPanel::loadMesh(const QString& path)
     showError(tr("Cannot read the mesh %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())));
     return m_status->text();
   }
-  useMesh(std::move(mesh), path);
+  m_model.setMesh(std::move(mesh), path);
+  updateRigStatus();
   return {};
 }
 
-void FaceMeshPanel::useMesh(Mesh mesh, const QString& path)
+void FaceMeshPanel::updateMeshLabel()
 {
-  m_meshLabel->setText(tr("%1: %n vertices", nullptr, static_cast<int>(mesh.vertexCount())).arg(QFileInfo(path).fileName()));
-  m_model->setMesh(std::move(mesh));
-  m_meshPath = QFileInfo(path).absoluteFilePath();
-  updateRigStatus();
+  if (!m_model.hasMesh()) {
+    m_meshLabel->setText(tr("No mesh"));
+    return;
+  }
+  const QString name = m_model.meshPath().isEmpty() ? tr("Mesh") : QFileInfo(m_model.meshPath()).fileName();
+  m_meshLabel->setText(tr("%1: %n vertices", nullptr, static_cast<int>(m_model.mesh().vertexCount())).arg(name));
 }
 
 QString FaceMeshPanel::loadBinding(const QString& path)
 {
-  if (!m_model->hasMesh()) {
+  if (!m_model.hasMesh()) {
     showError(tr("Load the mesh the binding is for first."));
     return m_status->text();
   }
   MeshBinding binding;
   try {
-    binding = readBinding(path.toStdString(), m_model->mesh().vertexCount());
+    binding = readBinding(path.toStdString(), m_model.mesh().vertexCount());
   } catch (const std::exception& e) {
     showError(tr("Cannot read the binding %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())));
     return m_status->text();
   }
-  m_model->setBinding(std::move(binding));
+  m_model.setBinding(std::move(binding));
   updateRigStatus();
-  return m_model->error();
+  return m_model.error();
 }
 
 QString FaceMeshPanel::saveBinding(const QString& path)
 {
   try {
-    writeFileAtomically(path.toStdString(), bindingJson(m_model->binding()));
+    writeFileAtomically(path.toStdString(), bindingJson(m_model.binding()));
   } catch (const std::exception& e) {
     showError(tr("Cannot save the binding: %1").arg(QString::fromStdString(e.what())));
     return m_status->text();
@@ -376,14 +373,13 @@ QString FaceMeshPanel::autoBind()
         labels.push_back(label);
     }
   }
-  applyStabilization();
-  const QString error = m_model->autoBindMarkers(labels);
+  const QString error = m_model.autoBindMarkers(labels);
   if (!error.isEmpty()) {
     showError(tr("Auto-bind: %1").arg(error));
     return m_status->text();
   }
   updateRigStatus();
-  return m_model->error();
+  return m_model.error();
 }
 
 void FaceMeshPanel::setPicking(bool on)
@@ -437,7 +433,7 @@ bool FaceMeshPanel::pickVertex(QPoint position)
   if (vertex < 0)
     return false;
   const double before = pickResidual(*marker);
-  m_undo->push(new RebindMarkerCommand(*m_model, m_pendingLabel,
+  m_undo->push(new RebindMarkerCommand(m_model, m_pendingLabel,
                                        MarkerBinding{m_pendingLabel, MeshPoint::atVertex(vertex),
                                                      std::numeric_limits<double>::quiet_NaN()}));
   QString text = tr("%1 bound to vertex %2").arg(QString::fromStdString(m_pendingLabel)).arg(vertex);
@@ -458,20 +454,20 @@ double FaceMeshPanel::pickResidual(Eigen::Index marker) const
 {
   // The rig's placement puts the neutral frame on the mesh; the residual is how far the placed
   // marker is from its bound point, in take units (the placement's scale divided out).
-  const FaceRig* rig = m_model->rig();
+  const FaceRig* rig = m_model.rig();
   if (!rig)
     return std::numeric_limits<double>::quiet_NaN();
   const auto& labels = rig->labels();
   const auto bound = std::find(labels.begin(), labels.end(), m_document.take().label(marker));
   if (bound == labels.end())
     return std::numeric_limits<double>::quiet_NaN();
-  const Take& take = m_model->rigTake();
+  const Take& take = m_model.rigTake();
   const auto i = static_cast<std::size_t>(bound - labels.begin());
   const Eigen::Index frame = rig->neutralFrame(), index = rig->markers()[i];
   if (frame < 0 || frame >= take.frameCount() || !take.valid()(frame, index))
     return std::numeric_limits<double>::quiet_NaN();
   const Eigen::Vector3d placed = rig->placement().apply(take.position(frame, index));
-  return (placed - rig->points()[i].on(m_model->mesh().vertices)).norm() / rig->placement().scale;
+  return (placed - rig->points()[i].on(m_model.mesh().vertices)).norm() / rig->placement().scale;
 }
 
 QString FaceMeshPanel::timingText() const
@@ -482,16 +478,16 @@ QString FaceMeshPanel::timingText() const
     return rig && rig->options().method == DeformMethod::Laplacian ? tr("Laplacian") : tr("RBF");
   };
   QString text = tr("Deform per frame: %1 %2 ms")
-                     .arg(name(m_model->rig()))
+                     .arg(name(m_model.rig()))
                      .arg(m_scene->lastDeformMs(), 0, 'f', 3);
   if (m_scene->lastCompareMs() >= 0.0)
-    text += tr(", %1 %2 ms").arg(name(m_model->compareRig())).arg(m_scene->lastCompareMs(), 0, 'f', 3);
+    text += tr(", %1 %2 ms").arg(name(m_model.compareRig())).arg(m_scene->lastCompareMs(), 0, 'f', 3);
   return text;
 }
 
-void FaceMeshPanel::updateBindingSummary()
+QString FaceMeshPanel::bindingSummary() const
 {
-  const MeshBinding& binding = m_model->binding();
+  const MeshBinding& binding = m_model.binding();
   double sum = 0.0;
   int known = 0;
   for (const MarkerBinding& marker : binding.markers)
@@ -499,20 +495,27 @@ void FaceMeshPanel::updateBindingSummary()
       sum += marker.residual;
       ++known;
     }
-  QString text = tr("%n marker(s) bound", nullptr, static_cast<int>(binding.markers.size()));
+  QString text = m_model.bindingSummary();
   if (known > 0)
     text += tr("; mean residual %1 mm").arg(sum / known, 0, 'f', 2);
-  m_bindingLabel->setText(text);
+  return text;
+}
+
+void FaceMeshPanel::updateBindingSummary()
+{
+  m_bindingLabel->setText(bindingSummary());
 }
 
 void FaceMeshPanel::updateRigStatus()
 {
-  if (!m_model->error().isEmpty()) {
-    showError(m_model->error());
+  if (!m_model.error().isEmpty()) {
+    showError(m_model.error());
     return;
   }
   m_status->setStyleSheet(QString());
-  if (const FaceRig* rig = m_model->rig())
+  if (!m_model.hasMesh())
+    m_status->clear();  // a new take without the previous one's mesh
+  else if (const FaceRig* rig = m_model.rig())
     m_status->setText(tr("Neutral frame %1; set-up %2 ms")
                           .arg(static_cast<qlonglong>(m_document.take().firstFrame() + rig->neutralFrame()))
                           .arg(1e3 * rig->setupSeconds(), 0, 'f', 1));

@@ -24,6 +24,7 @@ class FaceMeshModel;
 class FaceMeshScene;
 class MarkerView3d;
 class ReferenceMarkersRow;
+class StudioSession;
 class TakeDocument;
 
 /// The Face mesh dock: load a mesh (OBJ/PLY) and a marker binding (JSON), bind automatically or
@@ -31,14 +32,15 @@ class TakeDocument;
 /// edit undoable on the document's stack, and the status says the marker's new residual), choose
 /// RBF (kernel, radius, regions) or Laplacian (weights, constraint weight, rotations) deformation
 /// or both side by side, and read the per-frame deform time. The mesh, binding and rigs live in
-/// FaceMeshModel (document/), drawn by FaceMeshScene (views/). Settings are remembered
-/// (QSettings, "faceMesh/…").
+/// the session's FaceMeshModel (document/), drawn by FaceMeshScene (views/, owned here). The
+/// binding line says what is bound in this take, and how many of a kept rig's markers it has.
+/// Settings are remembered (QSettings, "faceMesh/…").
 class FaceMeshPanel final : public QWidget
 {
   Q_OBJECT
 
 public:
-  FaceMeshPanel(TakeDocument& document, MarkerView3d& view, QWidget* parent = nullptr);
+  FaceMeshPanel(StudioSession& session, MarkerView3d& view, QWidget* parent = nullptr);
   ~FaceMeshPanel() override;
   /// How far `marker` (bound) sits from its mesh point once the rig places the neutral frame on
   /// the mesh, in take units; NaN without a rig or with the marker missing there. O(1).
@@ -46,19 +48,17 @@ public:
   /// The panel's status line (the last pick: vertex and residual, or what to do next).
   [[nodiscard]] QString statusText() const;
 
-  /// The mesh, binding and rigs the take drives.
-  [[nodiscard]] FaceMeshModel& model() const { return *m_model; }
+  /// The mesh, binding and rigs the take drives (the session's).
+  [[nodiscard]] FaceMeshModel& model() const { return m_model; }
   /// Their drawing in the 3D view.
   [[nodiscard]] FaceMeshScene& scene() const { return *m_scene; }
   [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }
 
   /// Each returns an error message (also shown in the panel) or "".
   QString loadMesh(const QString& path);
-  /// Uses `mesh` (read from `path`, e.g. a blendshape rig's neutral) as loadMesh does.
-  void useMesh(Mesh mesh, const QString& path);
-  /// The file the loaded mesh came from ("" when none is loaded).
-  [[nodiscard]] const QString& meshPath() const { return m_meshPath; }
   QString loadBinding(const QString& path);
+  /// What the binding line says, e.g. "31 marker(s) bound" or "5 of 31 rig markers found in this take".
+  [[nodiscard]] QString bindingSummary() const;
   QString saveBinding(const QString& path);
   /// Binds the selected markers (three or more) or else every labelled marker that is not one of
   /// the take's reference markers and is present in the most complete frame.
@@ -88,10 +88,10 @@ private:
   void writeSettings() const;
   void applyOptions();
   [[nodiscard]] FaceRigOptions optionsFromUi() const;
-  void applyStabilization();
   void onTakeReset();
   void onSelectionChanged();
   void updateBindingSummary();
+  void updateMeshLabel();
   void updateRigStatus();
   void showError(const QString& message);
   void loadMeshDialog();
@@ -100,9 +100,8 @@ private:
 
   TakeDocument& m_document;
   MarkerView3d& m_view;
-  FaceMeshModel* m_model = nullptr;
+  FaceMeshModel& m_model;
   FaceMeshScene* m_scene = nullptr;
-  QString m_meshPath;
   QUndoStack* m_undo = nullptr;  // the document's: binding edits undo in order with every other edit
   std::string m_pendingLabel;
   QPoint m_pressPosition;

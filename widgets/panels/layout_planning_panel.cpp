@@ -64,7 +64,7 @@ QStringList splitLabels(const QString& text)
 // The worker: the open take (a copy) and the extra take files, planned as `mocap pfa` plans them.
 // Never throws: a failure is the result's error.
 std::shared_ptr<LayoutPlanResult> planInBackground(Take openTake, const QStringList& extraTakes,
-                                                   const LayoutRequest& request, const LayoutRig& rig,
+                                                   const LayoutRequest& request, const BoundRig& rig,
                                                    const std::shared_ptr<std::atomic<bool>>& cancel,
                                                    const std::shared_ptr<std::atomic<int>>& progress)
 {
@@ -444,9 +444,9 @@ QString LayoutPlanningPanel::run()
   LayoutRequest request;
   if (problem.isEmpty())
     problem = checkedRequest(p, reference, request);
-  LayoutRig rig;
+  BoundRig rig;
   if (problem.isEmpty() && m_judgeOnRig->isChecked()) {
-    rig = m_rigSource ? m_rigSource() : LayoutRig{};
+    rig = m_rigSource ? m_rigSource() : BoundRig{};
     if (!rig.rig || rig.binding.markers.empty())
       problem = tr("Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its "
                    "neutral (Face Mesh panel); or switch it off.");

@@ -1,9 +1,9 @@
 #pragma once
 
+#include "document/bound_rig.h"
+
 #include "mocap/evaluation/layout_rig_error.h"
 #include "mocap/layout/layout_planning.h"
-#include "mocap/deform/mesh_binding.h"
-#include "mocap/model/blendshape_rig.h"
 
 #include <QFutureWatcher>
 #include <QString>
@@ -67,13 +67,6 @@ struct LayoutPlanResult : LayoutResult
   QString rigError;                  ///< why they could not be (the plan itself stands)
 };
 
-/// The blendshape rig and binding layouts may be judged on (the studio: the Blendshape Solve
-/// panel's rig and the Face Mesh panel's binding on its neutral).
-struct LayoutRig
-{
-  std::shared_ptr<const BlendshapeRig> rig;
-  MeshBinding binding;
-};
 
 /// The marker layout planning dock (Wellein et al. 2007 via layout_planning.h, the planning `mocap pfa`
 /// runs): the open take
@@ -93,7 +86,7 @@ public:
 
   [[nodiscard]] LayoutPlanParameters parameters() const;
   /// Where Run takes the rig from when "Judge on the blendshape rig" is on (asked at each Run).
-  void setRigSource(std::function<LayoutRig()> source) { m_rigSource = std::move(source); }
+  void setRigSource(std::function<BoundRig()> source) { m_rigSource = std::move(source); }
   /// Judge layouts on the rig too (as `mocap pfa --rig`); remembered.
   void setJudgeOnRig(bool on);
   void setParameters(const LayoutPlanParameters& parameters);
@@ -147,7 +140,7 @@ private:
   [[nodiscard]] const ScoredLayout* selectedLayout() const;
 
   TakeDocument& m_document;
-  std::function<LayoutRig()> m_rigSource;
+  std::function<BoundRig()> m_rigSource;
   QCheckBox* m_judgeOnRig = nullptr;
   QLabel* m_rigSummary = nullptr;
   QListWidget* m_takes = nullptr;

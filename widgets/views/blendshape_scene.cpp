@@ -10,7 +10,7 @@
 
 namespace mocap::ui {
 
-BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshScene& faceMesh, MarkerView3d& view,
+BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshModel& faceMesh, MarkerView3d& view,
                                  QObject* parent)
     : QObject(parent), m_model(model), m_faceMesh(faceMesh), m_view(view),
       m_layer(std::make_unique<MeshLayer>(view.viewport()->renderer()))
@@ -20,8 +20,8 @@ BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshScene& fac
   connect(&model, &BlendshapeSolveModel::rigChanged, this, &BlendshapeScene::updateMesh);
   connect(&model, &BlendshapeSolveModel::resultChanged, this, &BlendshapeScene::updateFrame);
   connect(&model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeScene::updateFrame);
-  connect(&faceMesh.model(), &FaceMeshModel::rigChanged, this, &BlendshapeScene::updateFrame);
-  connect(&faceMesh.model().document(), &TakeDocument::currentFrameChanged, this, &BlendshapeScene::updateFrame);
+  connect(&faceMesh, &FaceMeshModel::rigChanged, this, &BlendshapeScene::updateFrame);
+  connect(&faceMesh.document(), &TakeDocument::currentFrameChanged, this, &BlendshapeScene::updateFrame);
   connect(view.viewport(), &VtkViewport::aboutToRender, this, &BlendshapeScene::updatePlacement);
 }
 
@@ -52,7 +52,7 @@ void BlendshapeScene::updateMesh()
 void BlendshapeScene::updateFrame()
 {
   const bool posed = m_shown && m_layer->hasMesh() &&
-                     m_model.pose(m_faceMesh.model().document().currentFrame(), m_posed) &&
+                     m_model.pose(m_faceMesh.document().currentFrame(), m_posed) &&
                      m_posed.rows() == m_layer->vertices().rows();
   if (posed)
     m_layer->setVertices(m_posed);
@@ -63,7 +63,7 @@ void BlendshapeScene::updateFrame()
 
 void BlendshapeScene::updatePlacement()
 {
-  const std::optional<Eigen::Affine3d> placement = m_faceMesh.placement();
+  const std::optional<Eigen::Affine3d> placement = meshPlacement(m_faceMesh, m_view);
   m_layer->setVisible(m_posedShown && placement.has_value());
   if (!m_posedShown || !placement)
     return;

@@ -9,12 +9,12 @@
 namespace mocap::ui {
 
 class BlendshapeSolveModel;
-class FaceMeshScene;
+class FaceMeshModel;
 class MarkerView3d;
 class MeshLayer;
 
 /// The blendshape rig posed by the solved weights (BlendshapeSolveModel) in the 3D view, placed
-/// as the face mesh is (FaceMeshScene::placement: the binding's alignment, on the captured head),
+/// as the face mesh is (meshPlacement: the binding's alignment, on the captured head),
 /// over the markers or beside them (on the side away from the compared mesh). Hidden without a
 /// solve or when switched off. A frame costs the rig's evaluate, O(#vertices + Σ #moved).
 class BlendshapeScene final : public QObject
@@ -22,7 +22,7 @@ class BlendshapeScene final : public QObject
   Q_OBJECT
 
 public:
-  BlendshapeScene(BlendshapeSolveModel& model, FaceMeshScene& faceMesh, MarkerView3d& view,
+  BlendshapeScene(BlendshapeSolveModel& model, FaceMeshModel& faceMesh, MarkerView3d& view,
                   QObject* parent = nullptr);
   ~BlendshapeScene() override;
 
@@ -40,7 +40,7 @@ private:
   void updatePlacement();
 
   BlendshapeSolveModel& m_model;
-  FaceMeshScene& m_faceMesh;
+  FaceMeshModel& m_faceMesh;
   MarkerView3d& m_view;
   std::unique_ptr<MeshLayer> m_layer;
   MeshVertices m_posed;

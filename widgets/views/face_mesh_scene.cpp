@@ -27,6 +27,27 @@ double sideOffset(const Mesh& mesh)
   return kGap * (mesh.vertices.col(0).maxCoeff() - mesh.vertices.col(0).minCoeff());
 }
 
+std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const MarkerView3d& view)
+{
+  if (!model.hasMesh())
+    return std::nullopt;
+  // The view draws markers in the head frame of its reference markers: so is the mesh placed.
+  std::shared_ptr<const HeadMotion> viewMotion;
+  if (!view.headReference().empty()) {
+    try {
+      viewMotion = model.document().headMotion(view.headReference());
+    } catch (const std::exception&) {
+      viewMotion.reset();  // the view refuses such a reference too and stays in the lab frame
+    }
+  }
+  const Eigen::Index frame = model.document().currentFrame();
+  std::optional<Eigen::Affine3d> placement = model.meshToLab(frame);
+  const auto index = static_cast<std::size_t>(frame);
+  if (placement && viewMotion && index < viewMotion->poses.size())
+    placement = Eigen::Affine3d(viewMotion->poses[index].inverse()) * *placement;  // as the view draws markers
+  return placement;
+}
+
 FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* parent)
     : QObject(parent), m_model(model), m_view(view),
       m_layer(std::make_unique<MeshLayer>(view.viewport()->renderer())),
@@ -34,8 +55,13 @@ FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* 
 {
   m_compareLayer->setColor(QColor(172, 200, 236));
   connect(&model, &FaceMeshModel::meshChanged, this, [this] {
-    m_layer->setMesh(m_model.mesh());
-    m_compareLayer->setMesh(m_model.mesh());
+    for (MeshLayer* layer : {m_layer.get(), m_compareLayer.get()}) {
+      if (m_model.hasMesh())
+        layer->setMesh(m_model.mesh());
+      else
+        layer->clear();  // nothing left drawn (or framed by Reset Camera)
+    }
+    m_view.viewport()->requestRender();
   });
   connect(&model, &FaceMeshModel::rigChanged, this, [this] {
     showRestPose();
@@ -76,27 +102,6 @@ void FaceMeshScene::updateFrame()
   m_view.viewport()->requestRender();
   if (m_deformMs >= 0.0)
     emit deformed(m_deformMs, m_compareMs);
-}
-
-std::optional<Eigen::Affine3d> FaceMeshScene::placement() const
-{
-  if (!m_model.hasMesh())
-    return std::nullopt;
-  // The view draws markers in the head frame of its reference markers: so is the mesh placed.
-  std::shared_ptr<const HeadMotion> viewMotion;
-  if (!m_view.headReference().empty()) {
-    try {
-      viewMotion = m_model.document().headMotion(m_view.headReference());
-    } catch (const std::exception&) {
-      viewMotion.reset();  // the view refuses such a reference too and stays in the lab frame
-    }
-  }
-  const Eigen::Index frame = m_model.document().currentFrame();
-  std::optional<Eigen::Affine3d> placement = m_model.meshToLab(frame);
-  const auto index = static_cast<std::size_t>(frame);
-  if (placement && viewMotion && index < viewMotion->poses.size())
-    placement = Eigen::Affine3d(viewMotion->poses[index].inverse()) * *placement;  // as the view draws markers
-  return placement;
 }
 
 void FaceMeshScene::updatePlacement()

@@ -21,6 +21,12 @@ class MeshLayer;
 /// than its width. O(#vertices).
 [[nodiscard]] double sideOffset(const Mesh& mesh);
 
+/// Mesh units → the coordinates `view` draws markers in for the document's current frame: the
+/// model's meshToLab, in the view's head-stabilized frame when it has one; nullopt when the mesh
+/// cannot be placed. What the face mesh and the posed blendshape rig are both placed by. O(1) (the
+/// head motion is cached by the document).
+[[nodiscard]] std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const MarkerView3d& view);
+
 /// The face mesh model (FaceMeshModel) drawn in the 3D view: deforms the mesh whenever the current
 /// frame or the rigs change, and places it where the markers are drawn, in the lab frame or in the
 /// view's head-stabilized frame alike. When comparing, the other method's mesh is drawn offset
@@ -40,10 +46,8 @@ public:
   [[nodiscard]] Eigen::Index vertexAt(QPoint position) const;
   /// Where vertex `vertex` of the (first) mesh is drawn, in 3D view widget coordinates.
   [[nodiscard]] QPointF vertexPosition(Eigen::Index vertex) const;
-  /// Mesh units → the view's coordinates for the current frame: the model's meshToLab, in the
-  /// view's head-stabilized frame when it has one (as the markers are drawn); nullopt when the
-  /// mesh cannot be placed. O(1) (the head motion is cached by the document).
-  [[nodiscard]] std::optional<Eigen::Affine3d> placement() const;
+  /// Where the mesh is drawn now (meshPlacement).
+  [[nodiscard]] std::optional<Eigen::Affine3d> placement() const { return meshPlacement(m_model, m_view); }
   /// Milliseconds the last frame's deform took (−1 when it did not run).
   [[nodiscard]] double lastDeformMs() const { return m_deformMs; }
   [[nodiscard]] double lastCompareMs() const { return m_compareMs; }

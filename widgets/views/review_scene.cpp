@@ -126,7 +126,7 @@ void ReviewScene::copyBlendshapes(const BlendshapeScene& source)
   m_blendshapeModel->setRig(from.rig(), from.rigPath());
   if (from.hasResult())
     (void)m_blendshapeModel->setResult(from.result(), from.solvedWith());
-  m_blendshapes = std::make_unique<BlendshapeScene>(*m_blendshapeModel, *m_faceMesh, *m_view);
+  m_blendshapes = std::make_unique<BlendshapeScene>(*m_blendshapeModel, *m_faceMeshModel, *m_view);
   m_blendshapes->setBeside(source.beside());
   m_blendshapes->setShown(source.shown());
   m_blendshapes->layer().copyAppearance(source.layer());

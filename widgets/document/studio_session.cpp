@@ -1,0 +1,88 @@
+#include "document/studio_session.h"
+
+#include "document/blendshape_solve_model.h"
+#include "document/face_mesh_model.h"
+#include "document/take_document.h"
+
+#include <QUndoStack>
+
+#include <string>
+#include <vector>
+
+namespace mocap::ui {
+
+/// What an actor's rig is made of, kept across takes.
+struct StudioSession::KeptRig
+{
+  Mesh mesh;
+  QString meshPath;
+  MeshBinding binding;
+  std::shared_ptr<const BlendshapeRig> rig;
+  QString rigPath;
+};
+
+StudioSession::StudioSession(QObject* parent) : QObject(parent), m_document(new TakeDocument(this))
+{
+  // Connected before the models exist: the previous take's context is gone before they or any
+  // view handle the new take.
+  connect(m_document, &TakeDocument::takeReset, this, &StudioSession::dropPreviousTake);
+  m_faceMesh = new FaceMeshModel(*m_document, this);
+  m_blendshapes = new BlendshapeSolveModel(this);
+  // After the models have the new take, before any view: the face follows the take's head
+  // markers, then a kept rig is bound to the new take (so Reset Camera frames it).
+  connect(m_document, &TakeDocument::takeReset, this, &StudioSession::followReferenceMarkers);
+  connect(m_document, &TakeDocument::referenceMarkersChanged, this, &StudioSession::followReferenceMarkers);
+  connect(m_document, &TakeDocument::takeReset, this, &StudioSession::restoreKeptRig);
+}
+
+StudioSession::~StudioSession() = default;
+
+QUndoStack* StudioSession::undoStack() const
+{
+  return m_document->undoStack();
+}
+
+BoundRig StudioSession::boundRig() const
+{
+  const auto& rig = m_blendshapes->rig();
+  if (!rig || m_faceMesh->mesh().vertexCount() != rig->neutral.vertexCount())
+    return {};
+  return {rig, m_faceMesh->binding()};
+}
+
+void StudioSession::dropPreviousTake()
+{
+  m_kept.reset();
+  if (m_keepRig && (m_faceMesh->hasMesh() || m_blendshapes->hasRig()))
+    m_kept.reset(new KeptRig{m_faceMesh->mesh(), m_faceMesh->meshPath(), m_faceMesh->bindingToKeep(),
+                             m_blendshapes->rig(), m_blendshapes->rigPath()});
+  // Still the previous take's, they would be drawn on this one.
+  if (m_faceMesh->hasMesh())
+    m_faceMesh->clear();
+  m_faceMesh->setStabilization({});  // the previous take's head markers mean nothing here
+  if (m_blendshapes->hasRig() || m_blendshapes->hasResult())
+    m_blendshapes->setRig(nullptr, {});
+}
+
+void StudioSession::followReferenceMarkers()
+{
+  std::vector<std::string> labels = m_document->referenceLabels();
+  if (labels != m_faceMesh->stabilization())
+    m_faceMesh->setStabilization(std::move(labels));
+}
+
+void StudioSession::restoreKeptRig()
+{
+  const std::unique_ptr<KeptRig> kept = std::move(m_kept);
+  if (kept) {
+    if (kept->mesh.vertexCount() > 0) {
+      m_faceMesh->setMesh(std::move(kept->mesh), kept->meshPath);
+      m_faceMesh->bindKeptRig(std::move(kept->binding));
+    }
+    if (kept->rig)
+      m_blendshapes->setRig(std::move(kept->rig), kept->rigPath);
+  }
+  emit takeContextReset(kept != nullptr);
+}
+
+} // namespace mocap::ui

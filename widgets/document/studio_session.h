@@ -1,0 +1,73 @@
+#pragma once
+
+#include "document/bound_rig.h"
+
+#include <QObject>
+
+#include <memory>
+
+class QUndoStack;
+
+namespace mocap::ui {
+
+class BlendshapeSolveModel;
+class FaceMeshModel;
+class TakeDocument;
+
+/// The studio's composition root for the open take: it owns the TakeDocument (the take, its
+/// undo stack, frame, selection and reference markers), the FaceMeshModel (mesh, binding, rigs)
+/// and the BlendshapeSolveModel (blendshape rig, solved weights), which share the document's one
+/// undo stack, and keeps the face mesh on the take's reference markers (head motion removed with
+/// them). Panels and views are given the session (or its models) and observe them; no panel owns
+/// a model or knows another panel.
+///
+/// Context belongs to one take: when the document gets a new take (opened, recovered), the
+/// previous take's face mesh, binding, blendshape rig and weights are dropped, so nothing of
+/// another take is drawn on this one. With keepRig() on (an actor's rig reused across takes),
+/// the mesh, its binding and the blendshape rig are kept instead and the binding is re-bound to
+/// the new take's labels (FaceMeshModel::bindKeptRig); solved weights never carry over.
+class StudioSession final : public QObject
+{
+  Q_OBJECT
+
+public:
+  explicit StudioSession(QObject* parent = nullptr);
+  ~StudioSession() override;
+  StudioSession(const StudioSession&) = delete;
+  StudioSession& operator=(const StudioSession&) = delete;
+
+  [[nodiscard]] TakeDocument& document() const { return *m_document; }
+  [[nodiscard]] FaceMeshModel& faceMesh() const { return *m_faceMesh; }
+  [[nodiscard]] BlendshapeSolveModel& blendshapes() const { return *m_blendshapes; }
+  /// The one undo stack (the document's): take edits, binding edits and weight edits undo in order.
+  [[nodiscard]] QUndoStack* undoStack() const;
+
+  /// Keep the face mesh, binding and blendshape rig when another take is opened (off: a new
+  /// take starts without them).
+  void setKeepRig(bool keep) { m_keepRig = keep; }
+  [[nodiscard]] bool keepRig() const { return m_keepRig; }
+
+  /// The blendshape rig with the binding made on its neutral (the face mesh is the rig's
+  /// neutral); empty otherwise.
+  [[nodiscard]] BoundRig boundRig() const;
+
+signals:
+  /// A new take's context is set up: emptied, or with the kept rig re-bound (`rigKept`).
+  void takeContextReset(bool rigKept);
+
+private:
+  struct KeptRig;
+  /// First on a new take: the previous take's context goes (kept aside when keepRig()).
+  void dropPreviousTake();
+  void followReferenceMarkers();
+  /// Last on a new take, once the models have it: the kept rig bound to its labels.
+  void restoreKeptRig();
+
+  TakeDocument* m_document = nullptr;
+  FaceMeshModel* m_faceMesh = nullptr;
+  BlendshapeSolveModel* m_blendshapes = nullptr;
+  bool m_keepRig = false;
+  std::unique_ptr<KeptRig> m_kept;  // between dropPreviousTake and restoreKeptRig
+};
+
+} // namespace mocap::ui
