@@ -270,7 +270,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+171"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
         <source>%1 smoothing</source>
         <translation>Glättung: %1</translation>
     </message>
@@ -283,7 +283,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+146"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+122"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>%n Ausreißer gefunden</numerusform>
@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+117"/>
+        <location filename="../app/studio/main_window.cpp" line="+118"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -645,7 +645,7 @@
         <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
         <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
@@ -821,7 +821,7 @@
         <translation>%1 — Hinweis: %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <location line="+22"/>
         <source>Save Cleaning Preset</source>
         <translation>Bereinigungsvorgabe speichern</translation>
@@ -898,7 +898,7 @@
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-293"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -929,7 +929,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+100"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
@@ -999,7 +999,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-913"/>
+        <location line="-926"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1015,7 +1015,7 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+106"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
@@ -1728,7 +1728,7 @@
         </translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Load a mesh first.</source>
         <translation>Laden Sie zuerst ein Netz.</translation>
     </message>
@@ -2163,7 +2163,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+191"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+127"/>
         <source>Filter markers…</source>
         <translation>Marker filtern…</translation>
     </message>
@@ -2173,7 +2173,7 @@
         <translation>Nur offene Lücken</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+34"/>
         <source>Check Shown</source>
         <translation>Angezeigte abhaken</translation>
     </message>
@@ -2485,7 +2485,7 @@
         <translation>offen</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+40"/>
         <source>Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples</source>
         <translation>Von den Füllregeln offen gelassen (%1). Abhaken, um sie trotzdem zu füllen: Füllen fragt, bevor es Abtastwerte erfindet</translation>
     </message>
@@ -2500,17 +2500,15 @@
         <translation>%1: %2. Doppelklicken, um zu wählen, wie diese Lücke gefüllt wird</translation>
     </message>
     <message>
-        <location line="+25"/>
         <source>Fill a gap the rules leave open (too long, at the take&apos;s ends, a marker seen too rarely)</source>
-        <translation>Eine Lücke füllen, die die Regeln offen lassen (zu lang, an den Enden der Aufnahme, ein zu selten sichtbarer Marker)</translation>
+        <translation type="vanished">Eine Lücke füllen, die die Regeln offen lassen (zu lang, an den Enden der Aufnahme, ein zu selten sichtbarer Marker)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Open, previewed, filled, or why it is not filled</source>
-        <translation>Offen, in der Vorschau, gefüllt oder warum sie nicht gefüllt wird</translation>
+        <translation type="vanished">Offen, in der Vorschau, gefüllt oder warum sie nicht gefüllt wird</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+19"/>
         <source>Check the gaps to fill together</source>
         <translation>Die gemeinsam zu füllenden Lücken abhaken</translation>
     </message>
@@ -2535,7 +2533,12 @@
         <translation>Wie die Lücke gefüllt wird (Doppelklick zum Wählen)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+2"/>
+        <source>Open, previewed, filled, or why it is not filled. A gap the rules leave open (too long, at the take&apos;s ends, a marker seen too rarely) has a box: check it to fill the gap anyway</source>
+        <translation>Offen, in der Vorschau, gefüllt oder warum nicht gefüllt. Eine Lücke, die die Regeln offen lassen (zu lang, an den Enden der Aufnahme, ein zu selten gesehener Marker), hat ein Kästchen: ankreuzen, um sie trotzdem zu füllen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -2560,9 +2563,8 @@
         <translation>Methode</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Allow</source>
-        <translation>Erlauben</translation>
+        <translation type="vanished">Erlauben</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3291,7 +3293,7 @@
 <context>
     <name>mocap::ui::MarkerEditActions</name>
     <message>
-        <location filename="../widgets/actions/marker_edit_actions.cpp" line="+35"/>
+        <location filename="../widgets/actions/marker_edit_actions.cpp" line="+30"/>
         <source>Select the markers to delete first</source>
         <translation>Wählen Sie zuerst die zu löschenden Marker aus</translation>
     </message>

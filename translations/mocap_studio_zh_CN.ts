@@ -263,7 +263,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+171"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
         <source>%1 smoothing</source>
         <translation>%1 平滑</translation>
     </message>
@@ -276,7 +276,7 @@
 <context>
     <name>SpikeStep</name>
     <message numerus="yes">
-        <location filename="../widgets/panels/spike_step.cpp" line="+146"/>
+        <location filename="../widgets/panels/spike_step.cpp" line="+122"/>
         <source>%n bad point(s) found</source>
         <translation>
             <numerusform>发现 %n 个坏点</numerusform>
@@ -293,7 +293,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+117"/>
+        <location filename="../app/studio/main_window.cpp" line="+118"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -636,7 +636,7 @@
         <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
         <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
@@ -810,7 +810,7 @@
         <translation>%1 — 注意：%2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <location line="+22"/>
         <source>Save Cleaning Preset</source>
         <translation>保存清理预设</translation>
@@ -887,7 +887,7 @@
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-293"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -918,7 +918,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+100"/>
         <source>Export</source>
         <translation>导出</translation>
     </message>
@@ -988,7 +988,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-913"/>
+        <location line="-926"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1004,7 +1004,7 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+106"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
@@ -1708,7 +1708,7 @@
         </translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Load a mesh first.</source>
         <translation>请先加载网格。</translation>
     </message>
@@ -2141,7 +2141,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+191"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+127"/>
         <source>Filter markers…</source>
         <translation>筛选标记点…</translation>
     </message>
@@ -2151,7 +2151,7 @@
         <translation>仅未填补的缺口</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+34"/>
         <source>Check Shown</source>
         <translation>勾选显示项</translation>
     </message>
@@ -2462,7 +2462,7 @@
         <translation>未填补</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+40"/>
         <source>Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples</source>
         <translation>被填补规则保留为未填补（%1）。勾选以仍然填补：填补前会先询问是否编造这些采样点</translation>
     </message>
@@ -2477,17 +2477,15 @@
         <translation>%1：%2。双击以选择此缺口的填补方式</translation>
     </message>
     <message>
-        <location line="+25"/>
         <source>Fill a gap the rules leave open (too long, at the take&apos;s ends, a marker seen too rarely)</source>
-        <translation>填补规则保留为未填补的缺口（过长、位于拍摄数据两端、标记点出现过少）</translation>
+        <translation type="vanished">填补规则保留为未填补的缺口（过长、位于拍摄数据两端、标记点出现过少）</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Open, previewed, filled, or why it is not filled</source>
-        <translation>未填补、已预览、已填补，或不填补的原因</translation>
+        <translation type="vanished">未填补、已预览、已填补，或不填补的原因</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+19"/>
         <source>Check the gaps to fill together</source>
         <translation>勾选要一起填补的缺口</translation>
     </message>
@@ -2512,7 +2510,12 @@
         <translation>缺口的填补方式（双击以选择）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+2"/>
+        <source>Open, previewed, filled, or why it is not filled. A gap the rules leave open (too long, at the take&apos;s ends, a marker seen too rarely) has a box: check it to fill the gap anyway</source>
+        <translation>未填充、预览中、已填充，或未填充的原因。规则保留未填的间隙（过长、位于拍摄两端、标记点很少可见）带有复选框：勾选即可仍然填充该间隙</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -2537,9 +2540,8 @@
         <translation>方法</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Allow</source>
-        <translation>允许</translation>
+        <translation type="vanished">允许</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3265,7 +3267,7 @@
 <context>
     <name>mocap::ui::MarkerEditActions</name>
     <message>
-        <location filename="../widgets/actions/marker_edit_actions.cpp" line="+35"/>
+        <location filename="../widgets/actions/marker_edit_actions.cpp" line="+30"/>
         <source>Select the markers to delete first</source>
         <translation>请先选择要删除的标记点</translation>
     </message>
