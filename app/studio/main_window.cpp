@@ -409,25 +409,34 @@ void MainWindow::exportReviewVideo()
   statusBar()->showMessage(tr("Wrote %1 (%2 frames, %3)").arg(written).arg(outcome.frames).arg(codec), 8000);
 }
 
+QAction* MainWindow::addRememberedToggle(QMenu* menu, const QString& text, const QString& settingsKey,
+                                         const std::function<void(bool)>& apply)
+{
+  QAction* action = menu->addAction(text);
+  action->setCheckable(true);
+  action->setChecked(QSettings().value(settingsKey, false).toBool());
+  apply(action->isChecked());
+  connect(action, &QAction::toggled, this, [apply, settingsKey](bool on) {
+    apply(on);
+    QSettings().setValue(settingsKey, on);
+  });
+  return action;
+}
+
 void MainWindow::createActions()
 {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
   m_recentMenu = file->addMenu(tr("Open &Recent"));
-  QAction* keepRig = file->addAction(tr("&Keep Face Rig for the Next Take"));
+  QAction* keepRig = addRememberedToggle(file, tr("&Keep Face Rig for the Next Take"), QStringLiteral("session/keepRig"),
+                                         [this](bool on) { m_session->setKeepRig(on); });
   keepRig->setObjectName(QStringLiteral("keepRigAction"));
-  keepRig->setCheckable(true);
   keepRig->setToolTip(tr("Opening another take keeps the face mesh, its marker binding and the blendshape rig (the "
                          "actor's), bound to the markers the new take has; off, every take starts without them"));
-  keepRig->setChecked(QSettings().value(QStringLiteral("session/keepRig"), false).toBool());
-  m_session->setKeepRig(keepRig->isChecked());
-  connect(keepRig, &QAction::toggled, this, [this](bool on) {
-    m_session->setKeepRig(on);
-    QSettings().setValue(QStringLiteral("session/keepRig"), on);
-  });
   connect(m_session, &ui::StudioSession::takeContextReset, this, [this](bool rigKept) {
     if (rigKept)
-      statusBar()->showMessage(tr("Face rig kept for this take: %1").arg(m_session->faceMesh().bindingSummary()), 10000);
+      statusBar()->showMessage(tr("Face rig kept for this take: %1").arg(m_session->faceMesh().bindingSummary()),
+                               2 * ui::kStatusMessageMs);
   });
   file->addSeparator();
   file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
@@ -482,37 +491,19 @@ void MainWindow::createActions()
   connect(m_trails, &QAction::triggered, this, [this](bool on) {
     changePreferences([on](ui::Preferences& p) { p.trailFrames = on ? std::max(p.trailFrames, 50) : 0; });
   });
-  QAction* links = m_viewMenu->addAction(tr("Marker &Links"));
+  QAction* links = addRememberedToggle(m_viewMenu, tr("Marker &Links"), QStringLiteral("view/links"),
+                                       [this](bool on) { m_view3d->setLinksVisible(on); });
   links->setShortcut(QKeySequence(Qt::Key_L));
-  links->setCheckable(true);
-  links->setChecked(QSettings().value(QStringLiteral("view/links"), false).toBool());
-  m_view3d->setLinksVisible(links->isChecked());
-  connect(links, &QAction::toggled, this, [this](bool on) {
-    m_view3d->setLinksVisible(on);
-    QSettings().setValue(QStringLiteral("view/links"), on);
-  });
-  QAction* outputs = m_viewMenu->addAction(tr("Show &Model Outputs"));
+  QAction* outputs = addRememberedToggle(m_viewMenu, tr("Show &Model Outputs"), QStringLiteral("view/modelOutputs"),
+                                         [this](bool on) { m_document->setShowModelOutputs(on); });
   outputs->setObjectName(QStringLiteral("showModelOutputsAction"));
-  outputs->setCheckable(true);
   outputs->setToolTip(tr("Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points "
                          "(they are never cleaned)"));
-  outputs->setChecked(QSettings().value(QStringLiteral("view/modelOutputs"), false).toBool());
-  m_document->setShowModelOutputs(outputs->isChecked());
-  connect(outputs, &QAction::toggled, this, [this](bool on) {
-    m_document->setShowModelOutputs(on);
-    QSettings().setValue(QStringLiteral("view/modelOutputs"), on);
-  });
-  QAction* follow = m_viewMenu->addAction(tr("&Follow Head"));
+  QAction* follow = addRememberedToggle(m_viewMenu, tr("&Follow Head"), QStringLiteral("view/followHead"),
+                                        [this](bool on) { m_view3d->setFollowHead(on); });
   follow->setObjectName(QStringLiteral("followHeadAction"));
   follow->setShortcut(QKeySequence(Qt::Key_F));
-  follow->setCheckable(true);
   follow->setToolTip(tr("Keep the camera on the head as it moves (the centroid of the head markers)"));
-  follow->setChecked(QSettings().value(QStringLiteral("view/followHead"), false).toBool());
-  m_view3d->setFollowHead(follow->isChecked());
-  connect(follow, &QAction::toggled, this, [this](bool on) {
-    m_view3d->setFollowHead(on);
-    QSettings().setValue(QStringLiteral("view/followHead"), on);
-  });
   QMenu* languages = m_viewMenu->addMenu(tr("&Language"));
   auto* languageGroup = new QActionGroup(this);
   const QString current = QSettings().value(QStringLiteral("language"), defaultLanguage()).toString();

@@ -128,6 +128,10 @@ protected:
   void dropEvent(QDropEvent* event) override;
 
 private:
+  /// A checkable action in `menu`, off unless QSettings' `settingsKey` says on; `apply` runs with the
+  /// restored state now and with each change, which is remembered.
+  QAction* addRememberedToggle(QMenu* menu, const QString& text, const QString& settingsKey,
+                               const std::function<void(bool)>& apply);
   void createActions();
   void createDocks();
   void openDialog();
