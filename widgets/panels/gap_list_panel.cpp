@@ -148,11 +148,14 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   m_view->verticalHeader()->hide();
   QHeaderView* header = m_view->horizontalHeader();
   header->setSectionResizeMode(QHeaderView::ResizeToContents);
-  // States ("allowed: over the 0.5 s limit") and method titles ("Distance-weighted neighbours
-  // (Lin–Ouhyoung)") are long: fixed widths, elided, the whole text in the tooltip, so marker, frames,
-  // state and override fit the dock's width on a 1280-pixel screen.
+  // Frame numbers need 5 digits, not their headers' width; states ("allowed: over the 0.5 s limit")
+  // and method titles ("Distance-weighted neighbours (Lin–Ouhyoung)") are long: fixed widths, elided,
+  // the whole text in the tooltip, so marker, frames, state and override fit the dock as the studio
+  // first opens on a 1280×800 screen.
+  const int digits = m_view->fontMetrics().horizontalAdvance(QStringLiteral("000000"));
   for (const auto& [column, width] :
-       {std::pair{GapTableModel::StateColumn, 120}, std::pair{GapTableModel::MethodColumn, 110}}) {
+       {std::pair{GapTableModel::FirstFrameColumn, digits}, std::pair{GapTableModel::LengthColumn, digits},
+        std::pair{GapTableModel::StateColumn, 100}, std::pair{GapTableModel::MethodColumn, 110}}) {
     header->setSectionResizeMode(column, QHeaderView::Interactive);
     header->resizeSection(column, width);
   }
