@@ -3,6 +3,7 @@
 # support (test_support.h, shell_run.h, the checkout's paths: never relative to the cwd) and reuses
 # its precompiled header; NO_PCH for a test linking Qt, which compiles with -fPIC and so cannot.
 include(GoogleTest)
+include(mocap_unity_build)
 
 # mocap_optimize_as_test_code(<target>...): test code compiles at -O1 in optimized builds (it comes
 # after CMake's -O2 on the command line). It only drives the library, which stays at -O2 as users run
@@ -20,7 +21,8 @@ endfunction()
 
 function(mocap_add_test name)
   cmake_parse_arguments(ARG "NO_PCH" "LABEL" "SOURCES;LIBRARIES" ${ARGN})
-  add_executable(${name} ${ARG_SOURCES})
+  mocap_unity_sources(sources ${name} ${ARG_SOURCES})
+  add_executable(${name} ${sources})
   target_link_libraries(${name} PRIVATE ${ARG_LIBRARIES} mocap_test_support GTest::gtest GTest::gtest_main)
   mocap_enable_warnings(${name})
   mocap_optimize_as_test_code(${name})

@@ -27,7 +27,7 @@ constexpr double kMmPerCm = 10.0;  // ICT FaceKit is in cm; the take is in mm
 constexpr Eigen::Index kFrames = 800;
 constexpr double kRate = 100.0;
 constexpr std::size_t kFaceMarkers = 40;
-constexpr std::size_t kHeadMarkers = 4;
+constexpr std::size_t kHeadMarkerCount = 4;
 constexpr double kNoiseMm = 0.3;
 
 const BlendshapeRig& ictRig()
@@ -110,7 +110,7 @@ SyntheticIctTake syntheticTake()
   std::sort(still.begin(), still.end(), [&](Eigen::Index a, Eigen::Index b) { return motion(a) < motion(b); });
   still.resize(300);
   const std::vector<Eigen::Index> face = spread(rig.neutral.vertices, moving, kFaceMarkers);
-  const std::vector<Eigen::Index> head = spread(rig.neutral.vertices, still, kHeadMarkers);
+  const std::vector<Eigen::Index> head = spread(rig.neutral.vertices, still, kHeadMarkerCount);
   std::cout << "head markers move at most " << kMmPerCm * motion(still.back()) << " mm with any one shape\n";
 
   SyntheticIctTake s;
@@ -172,7 +172,7 @@ TEST(BlendshapeIctEvaluation, TheDefaultClearlyBeatsPerFrameBvlsOnTheFaceRegion)
   ASSERT_EQ(rig.neutral.vertexCount(), 9409);  // ICT's face region, vertices 0–9408
   const SyntheticIctTake s = syntheticTake();
   std::cout << "ICT face region, " << kFaceMarkers << " markers, " << kFrames << " frames, noise " << kNoiseMm
-            << " mm, head motion removed with " << kHeadMarkers << " markers\n"
+            << " mm, head motion removed with " << kHeadMarkerCount << " markers\n"
             << "method     weight RMS   face vertex RMS (mm)\n";
   double bvls = 0.0, temporal = 0.0;
   for (const BlendshapeSolveMethod method :

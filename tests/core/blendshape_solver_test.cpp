@@ -43,7 +43,7 @@ const BlendshapeRig& bumpRig()
 }
 
 // The take sees the mesh in mm (×10), rotated and offset.
-Similarity meshToTake()
+Similarity obliqueMeshToTake()
 {
   Similarity t;
   t.scale = 10.0;
@@ -92,7 +92,7 @@ Synthetic synthetic(double noise, Eigen::Index frames = 300)
   for (Eigen::Index f = 0; f < frames; ++f) {
     rig.evaluate(s.weights.row(f).transpose(), posed);
     for (std::size_t i = 0; i < vertices.size(); ++i) {
-      Eigen::Vector3d p = meshToTake().apply(posed.row(vertices[i]).transpose());
+      Eigen::Vector3d p = obliqueMeshToTake().apply(posed.row(vertices[i]).transpose());
       if (f > 0)
         p += noise * Eigen::Vector3d(random.normal(), random.normal(), random.normal());
       s.take.setPosition(f, static_cast<Eigen::Index>(i), p);

@@ -352,14 +352,6 @@ TEST(C3dForeignLayout, FallbackLabelNeverTakesARealLabel)
   EXPECT_EQ(read.take.trajectory(2), take.trajectory(2)) << "the real M2 keeps its name and its samples";
 }
 
-std::vector<PointType> pointTypes(const Take& take)
-{
-  std::vector<PointType> types;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    types.push_back(take.pointType(m));
-  return types;
-}
-
 TEST(C3dForeignLayout, NexusModelOutputsKeepTheirPointTypes)
 {
   using T = PointType;
@@ -369,13 +361,13 @@ TEST(C3dForeignLayout, NexusModelOutputsKeepTheirPointTypes)
     const Read read = parse(bytes);
     const std::vector<T> expected = {T::Marker, T::Angle, T::Force, T::Moment, T::Power,
                                      typeGroups ? T::Other : T::Marker, T::Angle};
-    EXPECT_EQ(pointTypes(read.take), expected);
+    EXPECT_EQ(test::pointTypes(read.take), expected);
     EXPECT_TRUE(read.warnings.empty()) << read.warnings.front();
     // Written back, the lists say exactly the take's points ("NotInTheTake" is gone) and read to
     // the same types; TYPE_GROUPS is kept as the file had it.
     const std::string again = encodeC3d(read.take);
     const Read back = parse(again);
-    EXPECT_EQ(pointTypes(back.take), expected);
+    EXPECT_EQ(test::pointTypes(back.take), expected);
     const C3dParameterTree& lists = back.take.parameters();
     EXPECT_EQ(lists.strings("POINT", "ANGLES"), (std::vector<std::string>{"LHipAngles", "RHipAngles"}));
     EXPECT_EQ(lists.strings("POINT", "FORCES"), (std::vector<std::string>{"LHipForce"}));
@@ -401,7 +393,7 @@ TEST(C3dForeignLayout, RealNexusFileHasItsModelOutputsTyped)
   std::vector<std::string> warnings;
   const Take take = readC3d(test::dataFile("c3d/sample03/gait-pig-nz.c3d"), &warnings);
   std::map<PointType, int> counts;
-  for (const PointType type : pointTypes(take))
+  for (const PointType type : test::pointTypes(take))
     ++counts[type];
   EXPECT_EQ(counts[PointType::Angle], 12);
   EXPECT_EQ(counts[PointType::Force], 8);

@@ -145,4 +145,12 @@ Eigen::Index codedFrameNumber(int width, int height, const std::function<bool(in
   return value;
 }
 
+Eigen::Index codedFrameNumber(const VideoImage& image)
+{
+  return codedFrameNumber(image.width, image.height, [&](int x, int y) {
+    const auto at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 3;
+    return image.rgb[at + 1] > 128;
+  });
+}
+
 } // namespace mocap::test

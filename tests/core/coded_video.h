@@ -31,4 +31,7 @@ bool writeVariableRateCodedVideo(const std::filesystem::path& path, double rate,
 /// whether the pixel there is light.
 [[nodiscard]] Eigen::Index codedFrameNumber(int width, int height, const std::function<bool(int, int)>& whiteAt);
 
+/// The number a decoded RGB frame's bars spell, read on its green channel.
+[[nodiscard]] Eigen::Index codedFrameNumber(const VideoImage& image);
+
 } // namespace mocap::test

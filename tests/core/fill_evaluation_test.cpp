@@ -1,3 +1,4 @@
+#include "nose_mocap_fixture.h"
 #include "test_support.h"
 
 #include "mocap/base/error.h"
@@ -11,15 +12,9 @@
 namespace mocap {
 namespace {
 
-const Take& noseTake()
-{
-  static const Take take = readTake(test::dataFile("trc/NoseMoCap.trc"));
-  return take;
-}
-
 TEST(FillEvaluation, HiddenGapsFollowTheProtocol)
 {
-  Take take = noseTake();
+  Take take = test::noseMoCapTake();
   // A gap of the take's own: hidden gaps must avoid it, and count it in the quarter rule.
   for (Eigen::Index f = 300; f < 340; ++f)
     for (Eigen::Index m = 0; m < 8; ++m)
@@ -58,7 +53,7 @@ TEST(FillEvaluation, HiddenGapsFollowTheProtocol)
 
 TEST(FillEvaluation, HiddenGapsAvoidJumpsInTheTake)
 {
-  Take take = noseTake();
+  Take take = test::noseMoCapTake();
   for (Eigen::Index f = 480; f < take.frameCount(); ++f)  // marker 5 swaps with a marker 30 mm away
     take.setPosition(f, 5, take.position(f, 5) + Eigen::Vector3d(30, 0, 0));
   FillEvaluationOptions options;
@@ -82,8 +77,8 @@ TEST(FillEvaluation, IsSeededAndReproducible)
   options.copies = 2;
   options.gapLengths = {20};
   options.methods = {FillMethod::Linear, FillMethod::Zhang3};
-  const FillEvaluation a = evaluateFill(noseTake(), options);
-  const FillEvaluation b = evaluateFill(noseTake(), options);
+  const FillEvaluation a = evaluateFill(test::noseMoCapTake(), options);
+  const FillEvaluation b = evaluateFill(test::noseMoCapTake(), options);
   ASSERT_EQ(a.scores.size(), 2u);
   for (std::size_t i = 0; i < a.scores.size(); ++i) {
     EXPECT_EQ(a.scores[i].rmse, b.scores[i].rmse);
@@ -94,9 +89,9 @@ TEST(FillEvaluation, IsSeededAndReproducible)
     EXPECT_LE(a.scores[i].p95, a.scores[i].max);
   }
   options.seed = 2;
-  EXPECT_NE(evaluateFill(noseTake(), options).scores[0].rmse, a.scores[0].rmse);
+  EXPECT_NE(evaluateFill(test::noseMoCapTake(), options).scores[0].rmse, a.scores[0].rmse);
   // Millimetres whatever the take's units.
-  Take metres = noseTake();
+  Take metres = test::noseMoCapTake();
   metres.convertUnits(LengthUnit::Metre);
   options.seed = 1;
   EXPECT_NEAR(evaluateFill(metres, options).scores[0].rmse, a.scores[0].rmse, 1e-9 * a.scores[0].rmse);
@@ -106,26 +101,26 @@ TEST(FillEvaluation, BadOptionsAreRejected)
 {
   FillEvaluationOptions options;
   options.copies = 0;
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   options = {};
   options.gapLengths = {};
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   options.gapLengths = {961};
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   options.gapLengths = {0};
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   options = {};
   options.methods = {};
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   options = {};
   options.neighbours = 0;
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   options = {};
   options.gapsPerCopy = -1;
-  EXPECT_THROW((void)evaluateFill(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateFill(test::noseMoCapTake(), options), InvalidArgument);
   EXPECT_THROW((void)evaluateFill(Take(), {}), InvalidArgument);
   EXPECT_THROW((void)evaluateFill(Take({"a", "b", "c"}, 100, 60.0), {}), InvalidArgument);
-  EXPECT_THROW((void)evaluationGaps(noseTake(), 10, -1), InvalidArgument);
+  EXPECT_THROW((void)evaluationGaps(test::noseMoCapTake(), 10, -1), InvalidArgument);
 }
 
 // The product targets on a real take (5 copies, lengths 10, 60 and 100 frames at 60 Hz):
@@ -140,11 +135,11 @@ TEST(FillEvaluation, AutoMeetsTheTargetsOnNoseMoCap)
   FillEvaluationOptions options;
   options.copies = 5;
   options.gapLengths = {10, 60, 100};
-  const FillEvaluation evaluation = evaluateFill(noseTake(), options);
+  const FillEvaluation evaluation = evaluateFill(test::noseMoCapTake(), options);
   std::map<std::pair<Eigen::Index, FillMethod>, FillScore> scores;
   for (const FillScore& score : evaluation.scores)
     scores[{score.gapLength, score.method}] = score;
-  const double rate = noseTake().frameRate();
+  const double rate = test::noseMoCapTake().frameRate();
   for (const Eigen::Index length : options.gapLengths) {
     const FillScore& best = scores.at({length, FillMethod::Auto});
     EXPECT_EQ(best.unfilled, 0);

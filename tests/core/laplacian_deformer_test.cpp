@@ -13,10 +13,7 @@
 namespace mocap {
 namespace {
 
-const Mesh& face()
-{
-  return test::mediaPipeFace();
-}
+using test::mediaPipeFace;
 
 std::vector<MeshPoint> everyNth(Eigen::Index step)
 {
@@ -30,7 +27,7 @@ PointSet displacementsOf(const MeshVertices& moved, const std::vector<MeshPoint>
 {
   PointSet d(static_cast<Eigen::Index>(points.size()), 3);
   for (std::size_t i = 0; i < points.size(); ++i)
-    d.row(static_cast<Eigen::Index>(i)) = (points[i].on(moved) - points[i].on(face().vertices)).transpose();
+    d.row(static_cast<Eigen::Index>(i)) = (points[i].on(moved) - points[i].on(mediaPipeFace().vertices)).transpose();
   return d;
 }
 
@@ -39,7 +36,8 @@ const LaplacianWeights kWeights[] = {LaplacianWeights::Uniform, LaplacianWeights
 TEST(LaplacianWeights, RowsSumToZeroAndCotangentIsSymmetric)
 {
   for (const LaplacianWeights weights : kWeights) {
-    const Eigen::SparseMatrix<double> k = laplacianMatrix(face().vertices, face().triangles(), weights);
+    const Mesh& face = mediaPipeFace();
+    const Eigen::SparseMatrix<double> k = laplacianMatrix(face.vertices, face.triangles(), weights);
     const Eigen::VectorXd rowSums = k * Eigen::VectorXd::Ones(k.cols());
     EXPECT_LT(rowSums.cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().sum() / static_cast<double>(k.rows()))
         << laplacianWeightsName(weights);
@@ -58,7 +56,7 @@ TEST(LaplacianWeights, RowsSumToZeroAndCotangentIsSymmetric)
         }
     }
   }
-  EXPECT_EQ(countNonManifoldEdges(face().triangles()), 0);
+  EXPECT_EQ(countNonManifoldEdges(mediaPipeFace().triangles()), 0);
 }
 
 TEST(LaplacianWeights, DegenerateTriangleIsAClearErrorExceptForUniformWeights)
@@ -100,8 +98,8 @@ TEST(LaplacianDeformer, TranslationIsExactAndSmallRigidMotionWithinTolerance)
     LaplacianOptions options;
     options.weights = weights;
     options.constraintWeight = 10.0;
-    const LaplacianDeformer deformer(face().vertices, face().triangles(), controls, options);
-    const MeshVertices shifted = face().vertices.rowwise() + Eigen::RowVector3d(0.5, -1.0, 2.0);
+    const LaplacianDeformer deformer(mediaPipeFace().vertices, mediaPipeFace().triangles(), controls, options);
+    const MeshVertices shifted = mediaPipeFace().vertices.rowwise() + Eigen::RowVector3d(0.5, -1.0, 2.0);
     MeshVertices out;
     deformer.deform(displacementsOf(shifted, controls), out);
     EXPECT_LT((out - shifted).cwiseAbs().maxCoeff(), 1e-5) << laplacianWeightsName(weights);
@@ -113,9 +111,9 @@ TEST(LaplacianDeformer, TranslationIsExactAndSmallRigidMotionWithinTolerance)
     motion.linear() = Eigen::AngleAxisd(0.05, Eigen::Vector3d(0.1, 1.0, 0.3).normalized()).toRotationMatrix();
     motion.translation() = Eigen::Vector3d(0.2, 0.1, -0.3);
     const MeshVertices moved =
-        (face().vertices * motion.linear().transpose()).rowwise() + motion.translation().transpose();
+        (mediaPipeFace().vertices * motion.linear().transpose()).rowwise() + motion.translation().transpose();
     deformer.deform(displacementsOf(moved, controls), out);
-    const double largest = (moved - face().vertices).rowwise().norm().maxCoeff();
+    const double largest = (moved - mediaPipeFace().vertices).rowwise().norm().maxCoeff();
     EXPECT_LT((out - moved).rowwise().norm().maxCoeff(), 0.25 * largest) << laplacianWeightsName(weights);
     EXPECT_LT((out - moved).rowwise().norm().mean(), 0.04 * largest) << laplacianWeightsName(weights);
   }
@@ -124,10 +122,11 @@ TEST(LaplacianDeformer, TranslationIsExactAndSmallRigidMotionWithinTolerance)
 TEST(LaplacianDeformer, RotationAwareIterationsFollowARotationCloser)
 {
   const std::vector<MeshPoint> controls = everyNth(12);
-  LaplacianDeformer deformer(face().vertices, face().triangles(), controls);
+  LaplacianDeformer deformer(mediaPipeFace().vertices, mediaPipeFace().triangles(), controls);
   Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
   motion.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.1, 1.0, 0.3).normalized()).toRotationMatrix();
-  const MeshVertices moved = (face().vertices * motion.linear().transpose()).rowwise() + motion.translation().transpose();
+  const MeshVertices moved =
+      (mediaPipeFace().vertices * motion.linear().transpose()).rowwise() + motion.translation().transpose();
   const PointSet displacements = displacementsOf(moved, controls);
   const std::vector<bool> all(controls.size(), true);
   MeshVertices linear, rotated;
@@ -138,7 +137,7 @@ TEST(LaplacianDeformer, RotationAwareIterationsFollowARotationCloser)
   EXPECT_LT(rotatedError, 0.5 * linearError) << linearError << " → " << rotatedError;
   // Zero iterations is the linear solution; a translation stays exact with rotations too.
   EXPECT_EQ(linear, [&] { MeshVertices out; deformer.deform(displacements, out); return out; }());
-  const MeshVertices shifted = face().vertices.rowwise() + Eigen::RowVector3d(0.5, -1.0, 2.0);
+  const MeshVertices shifted = mediaPipeFace().vertices.rowwise() + Eigen::RowVector3d(0.5, -1.0, 2.0);
   deformer.deformRotationAware(displacementsOf(shifted, controls), all, 3, rotated);
   EXPECT_LT((rotated - shifted).cwiseAbs().maxCoeff(), 1e-5);
   EXPECT_THROW(deformer.deformRotationAware(displacements, all, 101, rotated), InvalidArgument);
@@ -147,10 +146,10 @@ TEST(LaplacianDeformer, RotationAwareIterationsFollowARotationCloser)
 TEST(LaplacianDeformer, ZeroDisplacementLeavesTheMeshUnchanged)
 {
   const std::vector<MeshPoint> controls = everyNth(20);
-  const LaplacianDeformer deformer(face().vertices, face().triangles(), controls);
+  const LaplacianDeformer deformer(mediaPipeFace().vertices, mediaPipeFace().triangles(), controls);
   MeshVertices out;
   deformer.deform(PointSet::Zero(static_cast<Eigen::Index>(controls.size()), 3), out);
-  EXPECT_EQ(out, face().vertices);
+  EXPECT_EQ(out, mediaPipeFace().vertices);
 }
 
 TEST(LaplacianDeformer, PrecomputedResponseEqualsPerFrameBackSubstitution)
@@ -160,7 +159,7 @@ TEST(LaplacianDeformer, PrecomputedResponseEqualsPerFrameBackSubstitution)
   for (const LaplacianWeights weights : kWeights) {
     LaplacianOptions options;
     options.weights = weights;
-    const LaplacianDeformer deformer(face().vertices, face().triangles(), controls, options);
+    const LaplacianDeformer deformer(mediaPipeFace().vertices, mediaPipeFace().triangles(), controls, options);
     const PointSet displacements = PointSet::Random(static_cast<Eigen::Index>(controls.size()), 3);
     MeshVertices fast, substituted;
     deformer.deform(displacements, fast);
@@ -179,7 +178,7 @@ TEST(LaplacianDeformer, LargerConstraintWeightFollowsControlsMoreClosely)
   for (const double w : {0.1, 1.0, 10.0}) {
     LaplacianOptions options;
     options.constraintWeight = w;
-    const LaplacianDeformer deformer(face().vertices, face().triangles(), controls, options);
+    const LaplacianDeformer deformer(mediaPipeFace().vertices, mediaPipeFace().triangles(), controls, options);
     MeshVertices out;
     deformer.deform(displacements, out);
     const double miss = (displacementsOf(out, controls) - displacements).norm();
@@ -192,7 +191,7 @@ TEST(LaplacianDeformer, MissingControlUsesTheDowndateNotTheStaleSolution)
 {
   const std::vector<MeshPoint> controls = everyNth(20);
   const PointSet displacements = PointSet::Random(static_cast<Eigen::Index>(controls.size()), 3);
-  LaplacianDeformer deformer(face().vertices, face().triangles(), controls);
+  LaplacianDeformer deformer(mediaPipeFace().vertices, mediaPipeFace().triangles(), controls);
   std::vector<bool> present(controls.size(), true);
   present[0] = present[7] = false;
   MeshVertices skipped;
@@ -205,7 +204,7 @@ TEST(LaplacianDeformer, MissingControlUsesTheDowndateNotTheStaleSolution)
       fewerDisplacements.row(static_cast<Eigen::Index>(fewer.size())) = displacements.row(static_cast<Eigen::Index>(c));
       fewer.push_back(controls[c]);
     }
-  const LaplacianDeformer reference(face().vertices, face().triangles(), fewer);
+  const LaplacianDeformer reference(mediaPipeFace().vertices, mediaPipeFace().triangles(), fewer);
   MeshVertices expected;
   reference.deform(fewerDisplacements, expected);
   EXPECT_LT((skipped - expected).cwiseAbs().maxCoeff(), 1e-5);
@@ -214,18 +213,19 @@ TEST(LaplacianDeformer, MissingControlUsesTheDowndateNotTheStaleSolution)
 TEST(LaplacianDeformer, ComponentWithoutControlsStaysAtRestAndBadInputIsRejected)
 {
   // The face plus a separate triangle far away that no control reaches.
-  MeshVertices vertices(face().vertexCount() + 3, 3);
-  vertices << face().vertices, Eigen::RowVector3d(100, 0, 0), Eigen::RowVector3d(101, 0, 0),
+  MeshVertices vertices(mediaPipeFace().vertexCount() + 3, 3);
+  vertices << mediaPipeFace().vertices, Eigen::RowVector3d(100, 0, 0), Eigen::RowVector3d(101, 0, 0),
       Eigen::RowVector3d(100, 1, 0);
-  std::vector<Triangle> triangles = face().triangles();
-  const Eigen::Index n = face().vertexCount();
+  std::vector<Triangle> triangles = mediaPipeFace().triangles();
+  const Eigen::Index n = mediaPipeFace().vertexCount();
   triangles.push_back({n, n + 1, n + 2});
   const std::vector<MeshPoint> controls = everyNth(20);
   const LaplacianDeformer deformer(vertices, triangles, controls);
   MeshVertices out;
   deformer.deform(PointSet::Ones(static_cast<Eigen::Index>(controls.size()), 3), out);
   EXPECT_EQ(out.bottomRows(3), vertices.bottomRows(3));
-  EXPECT_LT((out.topRows(n).rowwise() - Eigen::RowVector3d::Ones() - face().vertices).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_LT((out.topRows(n).rowwise() - Eigen::RowVector3d::Ones() - mediaPipeFace().vertices).cwiseAbs().maxCoeff(),
+            1e-5);
 
   EXPECT_THROW(LaplacianDeformer(vertices, triangles, {}), InvalidArgument);
   EXPECT_THROW(LaplacianDeformer(vertices, triangles, {MeshPoint::atVertex(n + 3)}), InvalidArgument);

@@ -14,13 +14,10 @@
 namespace mocap {
 namespace {
 
-const Mesh& face()
-{
-  return test::mediaPipeFace();
-}
+using test::mediaPipeFace;
 
 // The take's view of mesh points: mm, Z up, facing −Y, offset — the mesh→take similarity inverted.
-Similarity meshToTake()
+Similarity turnedMeshToTake()
 {
   Similarity t;
   t.scale = 10.0;  // cm → mm
@@ -56,8 +53,8 @@ TEST(MeshBinding, ClosestTriangleWeightsCoverFaceEdgeAndVertexRegions)
 
 TEST(MeshBinding, SimilarityFitRecoversScaleRotationAndTranslation)
 {
-  const Similarity truth = meshToTake();
-  const PointSet from = face().vertices(markerVertices(), Eigen::all);
+  const Similarity truth = turnedMeshToTake();
+  const PointSet from = mediaPipeFace().vertices(markerVertices(), Eigen::all);
   const Similarity fit = fitSimilarity(from, truth.applyToRows(from));
   EXPECT_NEAR(fit.scale, 10.0, 1e-9);
   EXPECT_TRUE(fit.rotation.isApprox(truth.rotation, 1e-9));
@@ -69,39 +66,38 @@ TEST(MeshBinding, SimilarityFitRecoversScaleRotationAndTranslation)
 TEST(MeshBinding, PairsAndIcpBothBindMarkersOnMeshVerticesBack)
 {
   const std::vector<Eigen::Index> vertices = markerVertices();
-  const PointSet markers = meshToTake().applyToRows(face().vertices(vertices, Eigen::all));
+  const PointSet markers = turnedMeshToTake().applyToRows(mediaPipeFace().vertices(vertices, Eigen::all));
   const std::vector<std::string> labels = labelsFor(vertices.size());
   AutoBindOptions withPairs;
   withPairs.pairs = {{0, vertices[0]}, {10, vertices[10]}, {20, vertices[20]}};
   AutoBindOptions icp;
   for (const AutoBindOptions& options : {withPairs, icp}) {
-    const MeshBinding binding = autoBind(face(), labels, markers, options);
+    const MeshBinding binding = autoBind(mediaPipeFace(), labels, markers, options);
     ASSERT_EQ(binding.markers.size(), vertices.size());
     EXPECT_NEAR(binding.alignment.scale, 0.1, 1e-3);
     for (std::size_t i = 0; i < vertices.size(); ++i) {
       EXPECT_LT(binding.markers[i].residual, 0.05) << labels[i];
-      EXPECT_LT((binding.markers[i].point.on(face().vertices) - face().vertices.row(vertices[i]).transpose()).norm(),
-                1e-3)
-          << labels[i];
+      const MeshVertices& face = mediaPipeFace().vertices;
+      EXPECT_LT((binding.markers[i].point.on(face) - face.row(vertices[i]).transpose()).norm(), 1e-3) << labels[i];
     }
   }
   AutoBindOptions twoPairs;
   twoPairs.pairs = {{0, 1}, {1, 2}};
-  EXPECT_THROW((void)autoBind(face(), labels, markers, twoPairs), InvalidArgument);
+  EXPECT_THROW((void)autoBind(mediaPipeFace(), labels, markers, twoPairs), InvalidArgument);
   AutoBindOptions outside;
   outside.pairs = {{0, 1}, {1, 2}, {2, 100000}};
-  EXPECT_THROW((void)autoBind(face(), labels, markers, outside), InvalidArgument);
+  EXPECT_THROW((void)autoBind(mediaPipeFace(), labels, markers, outside), InvalidArgument);
 }
 
 TEST(MeshBinding, JsonRoundTripAndClearErrorsForBindingsOffTheMesh)
 {
   MeshBinding binding;
-  binding.meshVertices = face().vertexCount();
+  binding.meshVertices = mediaPipeFace().vertexCount();
   binding.markers.push_back({"a", MeshPoint::atVertex(5), 0.25});
   binding.markers.push_back({"b", MeshPoint{{1, 2, 3}, Eigen::Vector3d(0.2, 0.3, 0.5)}, 1.5});
-  binding.alignment = meshToTake();
+  binding.alignment = turnedMeshToTake();
   binding.hasAlignment = true;
-  const MeshBinding back = parseBinding(bindingJson(binding), "b.json", face().vertexCount());
+  const MeshBinding back = parseBinding(bindingJson(binding), "b.json", mediaPipeFace().vertexCount());
   ASSERT_EQ(back.markers.size(), 2u);
   EXPECT_EQ(back.markers[0].point.vertices, binding.markers[0].point.vertices);
   EXPECT_TRUE(back.markers[0].point.isVertex());
@@ -142,12 +138,12 @@ TEST(MeshBinding, LeaveOutErrorIsSmallForMotionTheControlsSpan)
   const std::vector<std::string> labels = labelsFor(vertices.size());
   Take take(labels, 20, 100.0);
   take.valid().setConstant(true);
-  const Similarity toTake = meshToTake();
+  const Similarity toTake = turnedMeshToTake();
   for (Eigen::Index f = 0; f < 20; ++f) {
     Eigen::Matrix3d stretch = Eigen::Matrix3d::Identity();
     stretch(1, 1) += 0.01 * static_cast<double>(f);  // a growing vertical stretch of the face
     for (std::size_t m = 0; m < vertices.size(); ++m) {
-      const Eigen::Vector3d p = stretch * face().vertices.row(vertices[m]).transpose();
+      const Eigen::Vector3d p = stretch * mediaPipeFace().vertices.row(vertices[m]).transpose();
       take.setPosition(f, static_cast<Eigen::Index>(m), toTake.apply(p));
     }
   }
@@ -158,24 +154,26 @@ TEST(MeshBinding, LeaveOutErrorIsSmallForMotionTheControlsSpan)
     markers[m] = static_cast<Eigen::Index>(m);
     points.push_back(MeshPoint::atVertex(vertices[m]));
   }
-  const Retarget retarget = fitRetarget(markerPositions(take, 0, markers), face().vertices(vertices, Eigen::all),
-                                        RetargetScale::Uniform);
+  const Retarget retarget =
+      fitRetarget(markerPositions(take, 0, markers), mediaPipeFace().vertices(vertices, Eigen::all),
+                  RetargetScale::Uniform);
   EXPECT_NEAR(retarget.uniformScale, 0.1, 1e-9);
   const DeformerFactory factory = [](const std::vector<MeshPoint>& controls) -> std::unique_ptr<MeshDeformer> {
-    return std::make_unique<RbfDeformer>(face().vertices, boundPositions(face().vertices, controls));
+    return std::make_unique<RbfDeformer>(mediaPipeFace().vertices, boundPositions(mediaPipeFace().vertices, controls));
   };
-  const LeaveOutResult result = evaluateLeaveOut(take, markers, points, 0, retarget, face().vertices, factory);
+  const LeaveOutResult result = evaluateLeaveOut(take, markers, points, 0, retarget, mediaPipeFace().vertices, factory);
   EXPECT_EQ(result.hidden.size(), static_cast<std::size_t>(std::lround(0.2 * static_cast<double>(vertices.size()))));
   EXPECT_GT(result.samples, 0);
   EXPECT_LT(result.meanError, 1e-4);
   EXPECT_GT(result.restError, 0.5);
   // Per-axis scale of a uniformly scaled set is the uniform scale.
-  const Retarget perAxis = fitRetarget(markerPositions(take, 0, markers), face().vertices(vertices, Eigen::all),
-                                       RetargetScale::PerAxis);
+  const Retarget perAxis =
+      fitRetarget(markerPositions(take, 0, markers), mediaPipeFace().vertices(vertices, Eigen::all),
+                  RetargetScale::PerAxis);
   EXPECT_TRUE(perAxis.axisScale.isApprox(Eigen::Vector3d::Constant(0.1), 1e-9));
   LeaveOutOptions bad;
   bad.fraction = 1.0;
-  EXPECT_THROW((void)evaluateLeaveOut(take, markers, points, 0, retarget, face().vertices, factory, bad),
+  EXPECT_THROW((void)evaluateLeaveOut(take, markers, points, 0, retarget, mediaPipeFace().vertices, factory, bad),
                InvalidArgument);
 }
 

@@ -42,14 +42,6 @@ Take nexusTake()
   return readBack(test::nexusCleaningTake());
 }
 
-std::vector<PointType> pointTypes(const Take& take)
-{
-  std::vector<PointType> types;
-  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    types.push_back(take.pointType(m));
-  return types;
-}
-
 /// True when point `m` holds the same bytes in both takes (positions, validity, residuals,
 /// camera masks, states).
 bool sameBytes(const Take& a, const Take& b, Eigen::Index m)
@@ -66,7 +58,7 @@ TEST(ModelOutputs, TheFileSaysWhichPointsAreMarkers)
 {
   const Take take = nexusTake();
   using T = PointType;
-  EXPECT_EQ(pointTypes(take), (std::vector<T>{T::Marker, T::Marker, T::Marker, T::Marker, T::Angle, T::Angle,
+  EXPECT_EQ(test::pointTypes(take), (std::vector<T>{T::Marker, T::Marker, T::Marker, T::Marker, T::Angle, T::Angle,
                                               T::Force, T::Moment, T::Power}));
   EXPECT_EQ(markerPoints(take), (std::vector<Eigen::Index>{0, 1, 2, 3}));
   EXPECT_EQ(markerLabels(take), kMarkers);
@@ -198,7 +190,7 @@ TEST(ModelOutputs, TypesSurviveWritingSlicingAndSubsets)
   take.setPointType(4, PointType::Power);
   take.setPointType(5, PointType::Other);
   Take back = readBack(take);
-  EXPECT_EQ(pointTypes(back), pointTypes(take));
+  EXPECT_EQ(test::pointTypes(back), test::pointTypes(take));
   EXPECT_EQ(back.parameters().strings("POINT", "ANGLES"), (std::vector<std::string>{"P2"}));
   EXPECT_EQ(back.parameters().strings("POINT", "OTHERS"), (std::vector<std::string>{"P6"}));
 
@@ -209,15 +201,15 @@ TEST(ModelOutputs, TypesSurviveWritingSlicingAndSubsets)
   column.label = "NEW";
   back.insertMarker(1, std::move(column));
   const Take again = readBack(back);
-  EXPECT_EQ(pointTypes(again), pointTypes(back));
+  EXPECT_EQ(test::pointTypes(again), test::pointTypes(back));
   EXPECT_EQ(again.parameters().strings("POINT", "ANGLES"), (std::vector<std::string>{"LKneeAngles"}));
   EXPECT_EQ(again.parameters().strings("POINT", "FORCES"), (std::vector<std::string>{}));
 
   const Take nexus = nexusTake();
-  EXPECT_EQ(pointTypes(sliceFrames(nexus, 10, 50)), pointTypes(nexus));
-  EXPECT_EQ(pointTypes(readBack(sliceFrames(nexus, 10, 50))), pointTypes(nexus));
+  EXPECT_EQ(test::pointTypes(sliceFrames(nexus, 10, 50)), test::pointTypes(nexus));
+  EXPECT_EQ(test::pointTypes(readBack(sliceFrames(nexus, 10, 50))), test::pointTypes(nexus));
   const Take subset = subsetTake(nexus, {"LHipForce", "LASI"});
-  EXPECT_EQ(pointTypes(subset), (std::vector<PointType>{PointType::Force, PointType::Marker}));
+  EXPECT_EQ(test::pointTypes(subset), (std::vector<PointType>{PointType::Force, PointType::Marker}));
 
   // A TRC file holds marker positions: the outputs are not written as markers.
   const Take trc = parseTrc(formatTrc(nexus), "nexus.trc");

@@ -18,16 +18,11 @@
 namespace mocap {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
+constexpr int kVideoWidth = 320, kVideoHeight = 240;
 
 std::size_t pixelAt(const VideoImage& image, int x, int y)
 {
   return (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 3;
-}
-
-Eigen::Index decodeBars(const VideoImage& image)
-{
-  return test::codedFrameNumber(image.width, image.height, [&](int x, int y) { return image.rgb[pixelAt(image, x, y) + 1] > 128; });
 }
 
 /// Files in `folder` (the writer's temporary files start with a dot).
@@ -60,12 +55,12 @@ TEST(ReviewLayout, PutsTheViewLeftTheVideoRightAndTheCaptionBelow)
 
 TEST(ReviewFrame, ComposesTheViewTheLetterboxedVideoAndACaption)
 {
-  const ReviewLayout layout = reviewLayout(kWidth * 2, kHeight, true);
+  const ReviewLayout layout = reviewLayout(kVideoWidth * 2, kVideoHeight, true);
   const VideoImage view = test::codedImage(5, layout.view.width, layout.view.height);
   const VideoImage video = test::codedImage(9, 160, 90);  // wider than its half: bars above and below
   const VideoImage frame = composeReviewFrame(layout, view, &video, {"Facial-Sing", "frame 7  00:00:00:07.000", ""});
-  ASSERT_EQ(frame.width, kWidth * 2);
-  ASSERT_EQ(frame.height, kHeight);
+  ASSERT_EQ(frame.width, kVideoWidth * 2);
+  ASSERT_EQ(frame.height, kVideoHeight);
   // The view half is the view, unscaled.
   for (int y = 0; y < layout.view.height; y += 7)
     for (int x = 0; x < layout.view.width; x += 5)
@@ -78,7 +73,7 @@ TEST(ReviewFrame, ComposesTheViewTheLetterboxedVideoAndACaption)
   for (int y = 0; y < half.height; ++y)
     std::copy_n(frame.rgb.begin() + static_cast<std::ptrdiff_t>(pixelAt(frame, layout.video.x, y)), half.width * 3,
                 half.rgb.begin() + static_cast<std::ptrdiff_t>(pixelAt(half, 0, y)));
-  EXPECT_EQ(decodeBars(half), 9);
+  EXPECT_EQ(test::codedFrameNumber(half), 9);
   EXPECT_EQ(frame.rgb[pixelAt(frame, layout.video.x + half.width - 2, 2)], 0);
   // The caption band is dark with light text on it.
   int light = 0, dark = 0;
@@ -91,13 +86,13 @@ TEST(ReviewFrame, ComposesTheViewTheLetterboxedVideoAndACaption)
 
 TEST(ReviewFrame, SaysWhenThereIsNoVideoAtAFrame)
 {
-  const ReviewLayout layout = reviewLayout(kWidth * 2, kHeight, true);
+  const ReviewLayout layout = reviewLayout(kVideoWidth * 2, kVideoHeight, true);
   const VideoImage view = test::codedImage(1, layout.view.width, layout.view.height);
   const VideoImage silent = composeReviewFrame(layout, view, nullptr, {"take", "frame 1", ""});
   const VideoImage noted = composeReviewFrame(layout, view, nullptr, {"take", "frame 1", "no video at this frame"});
   int lightSilent = 0, lightNoted = 0;
   for (int y = 0; y < layout.video.height; ++y)
-    for (int x = layout.video.x; x < kWidth * 2; ++x) {
+    for (int x = layout.video.x; x < kVideoWidth * 2; ++x) {
       lightSilent += silent.rgb[pixelAt(silent, x, y)] > 150 ? 1 : 0;
       lightNoted += noted.rgb[pixelAt(noted, x, y)] > 150 ? 1 : 0;
     }
@@ -116,9 +111,9 @@ void expectRoundTrip(const std::filesystem::path& path, double rate, int frames)
 {
   ReviewEncoding encoding;
   {
-    ReviewVideoWriter writer(path, kWidth, kHeight, rate);
+    ReviewVideoWriter writer(path, kVideoWidth, kVideoHeight, rate);
     for (int f = 0; f < frames; ++f)
-      writer.write(test::codedImage(f, kWidth, kHeight));
+      writer.write(test::codedImage(f, kVideoWidth, kVideoHeight));
     encoding = writer.encoding();
     EXPECT_FALSE(std::filesystem::exists(encoding.path)) << "nothing in place before finish";
     writer.finish();
@@ -126,11 +121,11 @@ void expectRoundTrip(const std::filesystem::path& path, double rate, int frames)
   ASSERT_TRUE(std::filesystem::exists(encoding.path));
   VideoSource video(encoding.path);
   EXPECT_EQ(video.info().frames, frames);
-  EXPECT_EQ(video.info().width, kWidth);
-  EXPECT_EQ(video.info().height, kHeight);
+  EXPECT_EQ(video.info().width, kVideoWidth);
+  EXPECT_EQ(video.info().height, kVideoHeight);
   EXPECT_NEAR(video.info().rate, rate, 1e-3);
   for (int f = 0; f < frames; ++f)
-    ASSERT_EQ(decodeBars(video.frame(f)), f) << encoding.codec << " frame " << f;
+    ASSERT_EQ(test::codedFrameNumber(video.frame(f)), f) << encoding.codec << " frame " << f;
   EXPECT_EQ(filesIn(path.parent_path()), std::vector<std::string>{encoding.path.filename().string()});
 }
 
@@ -141,7 +136,7 @@ TEST(ReviewVideoWriter, WritesMp4OrSaysItFellBackToMjpegAvi)
   const std::filesystem::path path = folder / "review.mp4";
   ReviewEncoding encoding;
   {
-    ReviewVideoWriter writer(path, kWidth, kHeight, 60.0);
+    ReviewVideoWriter writer(path, kVideoWidth, kVideoHeight, 60.0);
     encoding = writer.encoding();
   }
   if (encoding.container == "mp4") {
@@ -167,27 +162,27 @@ TEST(ReviewVideoWriter, LeavesNoFileWhenAbandonedOrEmpty)
   const test::TempDir dir;
   const std::filesystem::path& folder = dir.path();
   {
-    ReviewVideoWriter writer(folder / "cancelled.avi", kWidth, kHeight, 30.0);
+    ReviewVideoWriter writer(folder / "cancelled.avi", kVideoWidth, kVideoHeight, 30.0);
     for (int f = 0; f < 5; ++f)
-      writer.write(test::codedImage(f, kWidth, kHeight));
+      writer.write(test::codedImage(f, kVideoWidth, kVideoHeight));
   }  // cancelled: destroyed without finish
   {
-    ReviewVideoWriter writer(folder / "empty.avi", kWidth, kHeight, 30.0);
+    ReviewVideoWriter writer(folder / "empty.avi", kVideoWidth, kVideoHeight, 30.0);
     EXPECT_THROW(writer.finish(), IoError);
   }
   EXPECT_TRUE(filesIn(folder).empty());
   // An existing file is replaced only by a finished video.
   const std::filesystem::path kept = folder / "kept.avi";
   {
-    ReviewVideoWriter writer(kept, kWidth, kHeight, 30.0);
-    writer.write(test::codedImage(3, kWidth, kHeight));
+    ReviewVideoWriter writer(kept, kVideoWidth, kVideoHeight, 30.0);
+    writer.write(test::codedImage(3, kVideoWidth, kVideoHeight));
     writer.finish();
   }
   const auto size = std::filesystem::file_size(kept);
   {
-    ReviewVideoWriter writer(kept, kWidth, kHeight, 30.0);
+    ReviewVideoWriter writer(kept, kVideoWidth, kVideoHeight, 30.0);
     for (int f = 0; f < 20; ++f)
-      writer.write(test::codedImage(f, kWidth, kHeight));
+      writer.write(test::codedImage(f, kVideoWidth, kVideoHeight));
   }
   EXPECT_EQ(std::filesystem::file_size(kept), size);
   EXPECT_EQ(filesIn(folder), std::vector<std::string>{"kept.avi"});
@@ -199,10 +194,10 @@ TEST(ReviewVideoWriter, RefusesBadSizesFramesAndFolders)
   const std::filesystem::path& folder = dir.path();
   EXPECT_THROW(ReviewVideoWriter(folder / "odd.avi", 321, 240, 30.0), InvalidArgument);
   EXPECT_THROW(ReviewVideoWriter(folder / "zero.avi", 0, 240, 30.0), InvalidArgument);
-  EXPECT_THROW(ReviewVideoWriter(folder / "rate.avi", kWidth, kHeight, 0.0), InvalidArgument);
-  EXPECT_THROW(ReviewVideoWriter(folder / "no" / "such" / "folder.avi", kWidth, kHeight, 30.0), IoError);
-  ReviewVideoWriter writer(folder / "size.avi", kWidth, kHeight, 30.0);
-  EXPECT_THROW(writer.write(test::codedImage(0, kWidth / 2, kHeight)), InvalidArgument);
+  EXPECT_THROW(ReviewVideoWriter(folder / "rate.avi", kVideoWidth, kVideoHeight, 0.0), InvalidArgument);
+  EXPECT_THROW(ReviewVideoWriter(folder / "no" / "such" / "folder.avi", kVideoWidth, kVideoHeight, 30.0), IoError);
+  ReviewVideoWriter writer(folder / "size.avi", kVideoWidth, kVideoHeight, 30.0);
+  EXPECT_THROW(writer.write(test::codedImage(0, kVideoWidth / 2, kVideoHeight)), InvalidArgument);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "mocap/model/sample_patch.h"
 #include "mocap/evaluation/spike_evaluation.h"
 #include "mocap/io/trc_io.h"
+#include "nose_mocap_fixture.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -59,12 +60,6 @@ Xyz fastMotion(Eigen::Index frames)
     xyz.row(f) << 30.0 * std::sin(2.0 * pi * 1.5 * t), 10.0 * std::cos(2.0 * pi * 0.7 * t), 5.0 * t;
   }
   return xyz;
-}
-
-const Take& noseTake()
-{
-  static const Take take = readTrc(test::dataFile("trc/NoseMoCap.trc"));
-  return take;
 }
 
 Frames framesOf(const std::vector<SpikeFlag>& flags, Eigen::Index marker)
@@ -173,7 +168,7 @@ TEST(SpikeDetection, RobustLeavesSmoothMotionAloneAndFindsSpikesInIt)
 
 TEST(SpikeDetection, RobustCatchesWhatEq9Misses)
 {
-  const Take& take = noseTake();
+  const Take& take = test::noseMoCapTake();
   const Eigen::Index marker = *take.markerIndex("NoseHead");
   Xyz xyz = take.trajectory(marker);
   ValidMask valid = take.valid().col(marker);
@@ -218,7 +213,7 @@ TEST(SpikeDetection, RunsAreJudgedAloneInATakeWithGaps)
 
 TEST(SpikeDetection, InjectedSpikeInCleanRealDataIsFoundAndRestored)
 {
-  const Take& clean = noseTake();
+  const Take& clean = test::noseMoCapTake();
   ASSERT_EQ(clean.markerCount(), 41);
   ASSERT_EQ(clean.frameCount(), 962);
   const std::vector<SpikeFlag> before = detectSpikes(clean, robust());
@@ -241,7 +236,7 @@ TEST(SpikeDetection, InjectedSpikeInCleanRealDataIsFoundAndRestored)
 
 TEST(SpikeDetection, FlagsAreTheSameInAnyUnit)
 {
-  Take metres = noseTake();
+  Take metres = test::noseMoCapTake();
   const Eigen::Index marker = *metres.markerIndex("Chin_L1");
   metres.setPosition(500, marker, metres.position(500, marker) + Eigen::Vector3d(4.0, 3.0, 0.0));
   const std::vector<SpikeFlag> millimetreFlags = detectSpikes(metres, robust());
@@ -375,7 +370,7 @@ TEST(SpikeDetection, BadInput)
   options.threshold = 6.0;
   options.noiseFloor = -0.1;
   EXPECT_THROW((void)detectSpikes(xyz, allValid(10), options), InvalidArgument);
-  EXPECT_THROW((void)detectSpikes(noseTake(), paper(-1.0)), InvalidArgument);
+  EXPECT_THROW((void)detectSpikes(test::noseMoCapTake(), paper(-1.0)), InvalidArgument);
   EXPECT_THROW(checkSpikeOptions(paper(-1.0)), InvalidArgument);
   // Sizes that disagree, flags outside the take.
   EXPECT_THROW((void)detectSpikes(xyz, allValid(9), robust()), InvalidArgument);
@@ -445,7 +440,7 @@ TEST(SpikeDetection, RepairedSpikesAreNotFlaggedAgain)
 TEST(SpikeEvaluation, RobustMeetsTheTargetOnCleanRealData)
 {
   // The target at 5 mm: recall >= 99 % with at most 1 % false alarms.
-  const std::vector<SpikeEvaluation> results = evaluateSpikes(noseTake(), {});
+  const std::vector<SpikeEvaluation> results = evaluateSpikes(test::noseMoCapTake(), {});
   ASSERT_EQ(results.size(), 2u);
   const SpikeEvaluation& paperResult = results[0];
   const SpikeEvaluation& robustResult = results[1];
@@ -467,23 +462,23 @@ TEST(SpikeEvaluation, IsReproducibleAndChecksItsOptions)
   SpikeEvaluationOptions options;
   options.count = 30;
   options.seed = 7;
-  const auto first = evaluateSpikes(noseTake(), options);
-  const auto second = evaluateSpikes(noseTake(), options);
+  const auto first = evaluateSpikes(test::noseMoCapTake(), options);
+  const auto second = evaluateSpikes(test::noseMoCapTake(), options);
   for (std::size_t i = 0; i < first.size(); ++i) {
     EXPECT_EQ(first[i].injected, second[i].injected);
     EXPECT_EQ(first[i].detected, second[i].detected);
     EXPECT_EQ(first[i].falseAlarms, second[i].falseAlarms);
   }
   options.count = 0;
-  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateSpikes(test::noseMoCapTake(), options), InvalidArgument);
   options.count = 10;
   options.amplitude = -5.0;
-  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateSpikes(test::noseMoCapTake(), options), InvalidArgument);
   options.amplitude = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateSpikes(test::noseMoCapTake(), options), InvalidArgument);
   options.amplitude = 5.0;
   options.detector.factor = -1.0;
-  EXPECT_THROW((void)evaluateSpikes(noseTake(), options), InvalidArgument);
+  EXPECT_THROW((void)evaluateSpikes(test::noseMoCapTake(), options), InvalidArgument);
   EXPECT_THROW((void)evaluateSpikes(Take({"a"}, 10, 100.0), {}), InvalidArgument);
   EXPECT_THROW((void)evaluateSpikes(Take(), {}), InvalidArgument);
 }

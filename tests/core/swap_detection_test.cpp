@@ -1,3 +1,4 @@
+#include "nose_mocap_fixture.h"
 #include "test_support.h"
 
 #include "mocap/base/error.h"
@@ -13,14 +14,9 @@
 namespace mocap {
 namespace {
 
-Take noseTake()
-{
-  return readTake(test::dataFile("trc/NoseMoCap.trc"));
-}
-
 TEST(SwapDetection, FindsAndRepairsInjectedSwapsOfNeighbouringMarkers)
 {
-  const Take take = noseTake();
+  const Take take = test::noseMoCapTake();
   for (const std::uint64_t seed : {1U, 2U, 3U}) {
     TrackingEvaluationOptions options;
     options.seed = seed;
@@ -50,7 +46,7 @@ TEST(SwapDetection, ModelOutputsAreNeverSwappedOrFlagged)
   options.seed = 1;
   options.swaps = 8;
   std::vector<InjectedSwap> injected;
-  Take swapped = makeSwappedCopy(noseTake(), options, injected);
+  Take swapped = makeSwappedCopy(test::noseMoCapTake(), options, injected);
   ASSERT_FALSE(injected.empty());
   // The first swapped marker is, in this take, a model output (an angle stored as a point).
   const Eigen::Index output = injected.front().first;
@@ -67,7 +63,7 @@ TEST(SwapDetection, ModelOutputsAreNeverSwappedOrFlagged)
 
 TEST(SwapDetection, DetectLeavesTheTakeAloneAndFindsNothingInACleanTake)
 {
-  const Take take = noseTake();
+  const Take take = test::noseMoCapTake();
   EXPECT_TRUE(detectSwaps(take).empty());
   TrackingEvaluationOptions options;
   std::vector<InjectedSwap> injected;
@@ -79,7 +75,7 @@ TEST(SwapDetection, DetectLeavesTheTakeAloneAndFindsNothingInACleanTake)
 
 TEST(SwapDetection, ExchangingTwiceRestoresTheTake)
 {
-  const Take take = noseTake();
+  const Take take = test::noseMoCapTake();
   Take copy = take;
   copy.setState(500, 3, SampleOrigin::Edited);
   const Take edited = copy;
@@ -95,7 +91,7 @@ TEST(SwapDetection, ExchangingTwiceRestoresTheTake)
 
 TEST(SwapDetection, RejectsOptionsOutOfRange)
 {
-  Take take = noseTake();
+  Take take = test::noseMoCapTake();
   SwapOptions options;
   options.jumpFactor = 1.0;
   EXPECT_THROW((void)repairSwaps(take, options), InvalidArgument);

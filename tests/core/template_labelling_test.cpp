@@ -1,3 +1,4 @@
+#include "nose_mocap_fixture.h"
 #include "test_support.h"
 
 #include "mocap/base/error.h"
@@ -12,11 +13,6 @@
 
 namespace mocap {
 namespace {
-
-Take noseTake()
-{
-  return readTake(test::dataFile("trc/NoseMoCap.trc"));
-}
 
 PointSet randomPoints(Eigen::Index n)
 {
@@ -42,7 +38,7 @@ TEST(TemplateLabelling, LooseSimilarityFitDegradesGracefullyOnFewPoints)
 
 TEST(TemplateLabelling, AlignsATemplateToShuffledMovedPointsWithoutCorrespondences)
 {
-  const Take take = noseTake();
+  const Take take = test::noseMoCapTake();
   const MarkerSet set = markerSetFromTake(take);
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()).toRotationMatrix();
   PointSet moved(set.size(), 3);
@@ -57,7 +53,7 @@ TEST(TemplateLabelling, AlignsATemplateToShuffledMovedPointsWithoutCorrespondenc
 
 TEST(TemplateLabelling, RecoversTheLabelsOfAFragmentedUnlabelledTake)
 {
-  const Take take = noseTake();
+  const Take take = test::noseMoCapTake();
   TrackingEvaluationOptions options;
   options.seed = 4;
   const UnlabelledCopy copy = makeUnlabelledCopy(take, options);
@@ -81,7 +77,7 @@ TEST(TemplateLabelling, RecoversTheLabelsOfAFragmentedUnlabelledTake)
 
 TEST(TemplateLabelling, JoinsAnUnlabelledFragmentIntoTheGapItFills)
 {
-  Take take = noseTake();
+  Take take = test::noseMoCapTake();
   const Take truth = take;
   const Eigen::Index marker = 7;
   const Eigen::Index stray = take.addMarker("Unlabeled1");
@@ -102,7 +98,7 @@ TEST(TemplateLabelling, JoinsAnUnlabelledFragmentIntoTheGapItFills)
 
 TEST(TemplateLabelling, RejectsBadOptions)
 {
-  Take take = noseTake();
+  Take take = test::noseMoCapTake();
   const MarkerSet set = markerSetFromTake(take);
   LabellingOptions options;
   options.gateFactor = 0.0;

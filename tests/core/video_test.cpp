@@ -26,14 +26,6 @@ bool writeCodedVideo(const std::filesystem::path& path, int fourcc, double rate,
   return test::writeCodedVideo(path, fourcc, rate, frames, kWidth, kHeight);
 }
 
-Eigen::Index decodeBars(const VideoImage& image)
-{
-  return test::codedFrameNumber(image.width, image.height, [&](int x, int y) {
-    const std::size_t at = (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 3;
-    return image.rgb[at + 1] > 128;
-  });
-}
-
 /// Reads `order` and expects each decoded frame to be the one asked for.
 void expectExactFrames(VideoSource& video, const std::vector<Eigen::Index>& order)
 {
@@ -42,7 +34,7 @@ void expectExactFrames(VideoSource& video, const std::vector<Eigen::Index>& orde
     ASSERT_EQ(image.frame, f);
     ASSERT_EQ(image.width, kWidth);
     ASSERT_EQ(image.height, kHeight);
-    EXPECT_EQ(decodeBars(image), f) << "asked for frame " << f;
+    EXPECT_EQ(test::codedFrameNumber(image), f) << "asked for frame " << f;
   }
 }
 
@@ -115,7 +107,7 @@ TEST(VideoSource, ATakeSteppedWithAnOffsetShowsTheMatchingVideoFrames)
     const auto frame = videoFrameAt(sync, n, video.info().frames);
     ASSERT_TRUE(frame.has_value()) << n;
     EXPECT_EQ(*frame, static_cast<Eigen::Index>(std::round((static_cast<double>(n) / 100.0 + 0.52) * 25.0)));
-    EXPECT_EQ(decodeBars(video.frame(*frame)), *frame) << "take frame " << n;
+    EXPECT_EQ(test::codedFrameNumber(video.frame(*frame)), *frame) << "take frame " << n;
   }
 }
 
@@ -130,7 +122,7 @@ TEST(VideoSource, BadFilesAndFramesGiveClearErrors)
   VideoSource video(path);
   EXPECT_THROW((void)video.frame(5), InvalidArgument);
   EXPECT_THROW((void)video.frame(-1), InvalidArgument);
-  EXPECT_EQ(decodeBars(video.frame(4)), 4);  // still usable after the refusals
+  EXPECT_EQ(test::codedFrameNumber(video.frame(4)), 4);  // still usable after the refusals
   // A video file with no frames in it: refused, the file named.
   const auto empty = dir.file("empty.avi");
   {
@@ -210,7 +202,7 @@ TEST(VideoSource, AVariableFrameRateFileIsSaidSoAndMappedByItsTimestamps)
   EXPECT_EQ(videoFrameAt(sync, 290, info.frameTimes), Eigen::Index{70});
   EXPECT_EQ(videoFrameAt({100.0, 25.0, 0.3}, 290, info.frames), Eigen::Index{80});
   EXPECT_NE(videoFrameAt(sync, 290, info.frames), Eigen::Index{70});
-  EXPECT_EQ(decodeBars(video.frame(70)), 70);
+  EXPECT_EQ(test::codedFrameNumber(video.frame(70)), 70);
 }
 
 } // namespace

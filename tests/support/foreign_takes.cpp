@@ -93,4 +93,12 @@ Take nexusCleaningTake(Eigen::Index frames)
   return take;
 }
 
+std::vector<PointType> pointTypes(const Take& take)
+{
+  std::vector<PointType> types;
+  for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+    types.push_back(take.pointType(m));
+  return types;
+}
+
 } // namespace mocap::test

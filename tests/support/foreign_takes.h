@@ -2,6 +2,8 @@
 
 #include "mocap/model/take.h"
 
+#include <vector>
+
 namespace mocap::test {
 
 /// Takes shaped like files from other vendors' systems, built in code for the C3D tests (issue 30):
@@ -26,5 +28,8 @@ namespace mocap::test {
 /// 40 + 5m and jumps by 40 units in frame 120, so a step that touched an output would change it.
 /// `frames` ≥ 150.
 [[nodiscard]] Take nexusCleaningTake(Eigen::Index frames = 200);
+
+/// The point type of each point of `take`, in order.
+[[nodiscard]] std::vector<PointType> pointTypes(const Take& take);
 
 } // namespace mocap::test

@@ -1,5 +1,6 @@
 // Autosave and crash recovery: the recovery file exists exactly while there are unsaved edits,
 // holds them, and a file left by a dead process is found with the name of what it was editing.
+#include "sample_files.h"
 #include "../core/test_support.h"
 
 #include "commands/apply_patches_command.h"
@@ -16,13 +17,10 @@
 namespace mocap {
 namespace {
 
+using test::qpath;
+
 using ui::Autosave;
 using ui::TakeDocument;
-
-QString qpath(const std::filesystem::path& p)
-{
-  return QString::fromStdString(p.string());
-}
 
 TEST(Autosave, KeepsUnsavedEditsUntilSavedAndOffersLeftoversOfDeadSessions)
 {

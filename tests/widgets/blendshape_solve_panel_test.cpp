@@ -1,6 +1,7 @@
 // The Blendshape Solve dock under Xvfb: a small OBJ rig on the sample mesh, solved from the
 // sample take off the UI thread; the posed rig in the 3D view, weight curves with click-to-select,
 // undoable weight edits, exports, and clear errors.
+#include "sample_files.h"
 #include "../core/test_support.h"
 
 #include "main_window.h"
@@ -37,8 +38,6 @@ namespace {
 
 using studio::MainWindow;
 
-const QString kMesh = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/canonical_face_model.obj");
-const QString kBinding = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.binding.json");
 
 class BlendshapeSolvePanelTest : public ::testing::Test
 {
@@ -60,7 +59,7 @@ protected:
   /// The sample binding on the sample mesh, then the rig (same vertices) and a solve.
   void solveSample()
   {
-    ASSERT_EQ(window->loadFaceMesh(kMesh, kBinding), QString());
+    ASSERT_EQ(window->loadFaceMesh(test::sampleMesh(), test::sampleBinding()), QString());
     ASSERT_EQ(window->loadRig(neutral(), shapes(), {}, true), QString()) << panel->statusText().toStdString();
   }
 

@@ -1,5 +1,6 @@
 // The Face mesh dock under Xvfb: the sample mesh and binding driven by the sample take, binding
 // edits by picking (undoable), RBF vs Laplacian, clear errors, and a render against a baseline.
+#include "sample_files.h"
 #include "../core/test_support.h"
 
 #include "commands/apply_patches_command.h"
@@ -41,8 +42,6 @@ using studio::MainWindow;
 using ui::FaceMeshModel;
 using ui::FaceMeshScene;
 
-const QString kMesh = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/canonical_face_model.obj");
-const QString kBinding = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.binding.json");
 constexpr Eigen::Index kStart = 1000;  // the actor sings here: the mouth markers move
 
 class FaceMeshPanelTest : public ::testing::Test
@@ -52,7 +51,7 @@ protected:
   {
     window = test::openSampleWindow(1280, 800);
     ASSERT_NE(window, nullptr);
-    ASSERT_EQ(window->loadFaceMesh(kMesh, kBinding), QString());
+    ASSERT_EQ(window->loadFaceMesh(test::sampleMesh(), test::sampleBinding()), QString());
     panel = window->faceMeshPanel();
   }
 

@@ -2,6 +2,7 @@
 // with it (C3D PROCESSING group, TRC sidecar) and comes back on reopen and from a crash recovery
 // file; a take with no saved set and no root…/head… labels is not guessed silently: a bar proposes
 // the most rigid cluster and asks once, and Accept is one undoable edit.
+#include "sample_files.h"
 #include "../core/test_support.h"
 
 #include "document/autosave.h"
@@ -24,14 +25,11 @@
 namespace mocap {
 namespace {
 
+using test::qpath;
+
 using ui::TakeDocument;
 
 const std::vector<std::string> kChosen = {"root-1", "root-2", "root-3", "root-4"};
-
-QString qpath(const std::filesystem::path& path)
-{
-  return QString::fromStdString(path.string());
-}
 
 class HeadMarkers : public test::SampleWindowTest
 {

@@ -4,7 +4,7 @@
 // exactly the video frame each one's offset maps each take frame to; several videos per take,
 // remembered beside it and restored on reopening (a missing one kept and located); Sync here and
 // Sync to event.
-#include "../core/coded_video.h"
+#include "coded_image.h"
 #include "../core/test_support.h"
 
 #include "main_window.h"
@@ -33,9 +33,9 @@ namespace mocap {
 namespace {
 
 constexpr int kWidth = 240, kHeight = 136;
-constexpr double kVideoRate = 25.0;
+constexpr double kCodedVideoRate = 25.0;
 
-void writeCodedVideo(const std::filesystem::path& path, int frames, double rate = kVideoRate)
+void writeCodedVideo(const std::filesystem::path& path, int frames, double rate = kCodedVideoRate)
 {
   ASSERT_TRUE(test::writeCodedVideo(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), rate, frames, kWidth, kHeight));
 }
@@ -43,12 +43,6 @@ void writeCodedVideo(const std::filesystem::path& path, int frames, double rate 
 QString qPath(const std::filesystem::path& path)
 {
   return QString::fromStdString(path.string());
-}
-
-Eigen::Index decodeBars(const QImage& image)
-{
-  return test::codedFrameNumber(image.width(), image.height(),
-                                [&](int x, int y) { return qGreen(image.pixel(x, y)) > 128; });
 }
 
 /// Waits (processing events, at most 5 s) until the video has delivered `frame`.
@@ -62,7 +56,7 @@ bool waitForFrame(const ui::ReferenceVideo& video, Eigen::Index frame)
 }
 
 /// The expected video frame at take frame `n` (the sample is 100 Hz): round((n / 100 + offset) · rate).
-Eigen::Index expectedFrame(Eigen::Index n, double offset, double rate = kVideoRate)
+Eigen::Index expectedFrame(Eigen::Index n, double offset, double rate = kCodedVideoRate)
 {
   return static_cast<Eigen::Index>(std::round((static_cast<double>(n) / 100.0 + offset) * rate));
 }
@@ -109,7 +103,7 @@ TEST(ReferenceVideo, ShowsTheExactVideoFrameForEachTakeFrameWithTheOffset)
     const Eigen::Index expected = expectedFrame(n, 0.52);
     ASSERT_EQ(video.wantedFrame(), expected) << n;
     ASSERT_TRUE(waitForFrame(video, expected)) << "take frame " << n << " waits for video frame " << expected;
-    EXPECT_EQ(decodeBars(video.image()), expected) << "take frame " << n;
+    EXPECT_EQ(test::codedFrameNumber(video.image()), expected) << "take frame " << n;
   }
   EXPECT_TRUE(panel->view().caption().startsWith(QStringLiteral("video frame")));
   // Idle, the worker decodes ahead: the next video frames are cached, and stepping onto one shows
@@ -124,7 +118,7 @@ TEST(ReferenceVideo, ShowsTheExactVideoFrameForEachTakeFrameWithTheOffset)
   document.setCurrentFrame(ahead);
   ASSERT_EQ(video.wantedFrame(), shown + 4);
   EXPECT_EQ(video.imageFrame(), shown + 4) << "a cached frame is shown without a round trip to the worker";
-  EXPECT_EQ(decodeBars(video.image()), shown + 4);
+  EXPECT_EQ(test::codedFrameNumber(video.image()), shown + 4);
   // Nudging by one video frame moves the offset by 1/25 s.
   video.nudge(1);
   EXPECT_NEAR(video.offset(), 0.56, 1e-12);
@@ -196,7 +190,7 @@ TEST(ReferenceVideo, SeveralVideosPerTakeEachWithItsOwnOffsetShowTheirFrames)
                                                   videos[static_cast<std::size_t>(v)].second);
       ASSERT_EQ(video.wantedFrame(), expected);
       ASSERT_TRUE(waitForFrame(video, expected)) << "video " << v << " at take frame " << n;
-      EXPECT_EQ(decodeBars(video.image()), expected);
+      EXPECT_EQ(test::codedFrameNumber(video.image()), expected);
     }
   }
   panel->removeVideo(0);
@@ -240,7 +234,7 @@ TEST(ReferenceVideo, VideosAndOffsetsAreRememberedBesideTheTakeAndAMissingOneIsK
   window->document().setCurrentFrame(500);
   panel->setCurrentIndex(1);
   ASSERT_TRUE(waitForFrame(panel->video(), expectedFrame(500, -0.2)));
-  EXPECT_EQ(decodeBars(panel->video().image()), expectedFrame(500, -0.2));
+  EXPECT_EQ(test::codedFrameNumber(panel->video().image()), expectedFrame(500, -0.2));
 
   // A video moved away: reopening says so, restores the other, and loses nothing from the sidecar.
   const std::string before = readFileBytes(sidecar);
@@ -309,7 +303,7 @@ TEST(ReferenceVideo, SyncHereLinesTheHeldVideoFrameUpWithTheTakesFrame)
   document.setCurrentFrame(400);  // and it follows the take with the new offset
   EXPECT_EQ(video.wantedFrame(), expectedFrame(400, 40.0 / 25.0 - 3.0));
   ASSERT_TRUE(waitForFrame(video, expectedFrame(400, 40.0 / 25.0 - 3.0)));
-  EXPECT_EQ(decodeBars(video.image()), 65);
+  EXPECT_EQ(test::codedFrameNumber(video.image()), 65);
 }
 
 TEST(ReferenceVideo, SyncToEventPutsTheVideosFirstFrameAtTheTakesSyncEvent)
@@ -341,7 +335,7 @@ TEST(ReferenceVideo, SyncToEventPutsTheVideosFirstFrameAtTheTakesSyncEvent)
   document.setCurrentFrame(eventFrame);
   EXPECT_EQ(video.wantedFrame(), Eigen::Index{12});
   ASSERT_TRUE(waitForFrame(video, 12));
-  EXPECT_EQ(decodeBars(video.image()), 12);
+  EXPECT_EQ(test::codedFrameNumber(video.image()), 12);
 }
 
 TEST(ReferenceVideo, AVariableFrameRateVideoIsSaidSoAndShownByItsTimestamps)
@@ -366,7 +360,7 @@ TEST(ReferenceVideo, AVariableFrameRateVideoIsSaidSoAndShownByItsTimestamps)
   window->document().setCurrentFrame(320);
   EXPECT_EQ(video.wantedFrame(), Eigen::Index{70});
   ASSERT_TRUE(waitForFrame(video, 70));
-  EXPECT_EQ(decodeBars(video.image()), 70);
+  EXPECT_EQ(test::codedFrameNumber(video.image()), 70);
   EXPECT_TRUE(panel->view().caption().contains(QStringLiteral("3.200 s"))) << panel->view().caption().toStdString();
 }
 

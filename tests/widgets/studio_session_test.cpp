@@ -2,6 +2,7 @@
 // its face mesh, a body take from another lab opens without the face (no mesh drawn, no markers
 // claimed bound, the camera framed on the body); a rig kept on request is re-bound to the labels
 // each take has, and the docks say how many of its markers were found.
+#include "sample_files.h"
 #include "../core/test_support.h"
 #include "foreign_takes.h"
 
@@ -35,13 +36,8 @@
 namespace mocap {
 namespace {
 
-const QString kMesh = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/canonical_face_model.obj");
-const QString kBinding = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.binding.json");
+using test::qpath;
 
-QString qpath(const std::filesystem::path& path)
-{
-  return QString::fromStdString(path.string());
-}
 
 class StudioSessionTest : public ::testing::Test
 {
@@ -50,7 +46,7 @@ protected:
   {
     window = test::openSampleWindow(1280, 800);
     ASSERT_NE(window, nullptr);
-    ASSERT_EQ(window->loadFaceMesh(kMesh, kBinding), QString());
+    ASSERT_EQ(window->loadFaceMesh(test::sampleMesh(), test::sampleBinding()), QString());
     ASSERT_NE(faceMesh().rig(), nullptr);
     bound = faceMesh().binding().markers.size();
     ASSERT_GT(bound, 10u);

@@ -1,6 +1,7 @@
 // What a technician must be able to trust in the studio: provenance survives save, reopen and
 // crash recovery; nothing the reader warned about is hidden; the first run is usable; the wheel
 // never changes a value it merely passes over.
+#include "sample_files.h"
 #include "../core/test_support.h"
 
 #include "commands/apply_patches_command.h"
@@ -54,13 +55,10 @@
 namespace mocap {
 namespace {
 
+using test::qpath;
+
 using studio::MainWindow;
 using ui::TakeDocument;
-
-QString qpath(const std::filesystem::path& p)
-{
-  return QString::fromStdString(p.string());
-}
 
 /// Fills the sample's gaps of up to 20 frames linearly as one command that records its step.
 Eigen::Index fillShortGaps(TakeDocument& document)
