@@ -12,7 +12,8 @@
 #
 # Sources of one batch share a translation unit: two test files must not both define a helper of
 # the same name in an anonymous namespace (the compiler says so when they do; name it for what it
-# holds, or move it to the test support).
+# holds, or move it to the test support). A new test file goes at the end of its target's list:
+# one inserted in the middle moves every later file to another batch, and those batches compile again.
 option(MOCAP_UNITY_TESTS "Compile test sources in batches (unity files)" ON)
 set(MOCAP_UNITY_BATCH_SIZE 8 CACHE STRING "Test sources per unity file")
 

@@ -76,6 +76,22 @@ TEST(GltfWriter, WritesTheNeutralSparseTargetsTheirNamesAndTheWeightAnimation)
             (std::vector<float>{0.0f, 0.0f, 0.25f, 1.0f, 0.5f, 0.125f, 1.0f, 0.0f}));
 }
 
+TEST(GltfWriter, KeysOnlyTheFramesItIsGiven)
+{
+  const BlendshapeRig rig = twoShapeRig();
+  Eigen::MatrixXd weights(5, 2);
+  weights << 0.0, 0.0, 0.25, 0.5, 0.5, 1.0, 0.75, 1.0, 1.0, 1.0;
+  const tinygltf::Model model = test::glbModel(rigGlb(rig, weights, 50.0, {0, 2, 4}));
+  const tinygltf::AnimationSampler& sampler = model.animations.at(0).samplers.at(0);
+  const tinygltf::Accessor& times = model.accessors[static_cast<std::size_t>(sampler.input)];
+  const tinygltf::Accessor& values = model.accessors[static_cast<std::size_t>(sampler.output)];
+  ASSERT_EQ(times.count, 3u);
+  EXPECT_EQ(accessorValues<float>(model, times.bufferView, 3), (std::vector<float>{0.0f, 0.04f, 0.08f}));
+  EXPECT_EQ(accessorValues<float>(model, values.bufferView, 6), (std::vector<float>{0.0f, 0.0f, 0.5f, 1.0f, 1.0f, 1.0f}));
+  EXPECT_THROW((void)rigGlb(rig, weights, 50.0, {0, 2}), InvalidArgument) << "the last frame is a key";
+  EXPECT_THROW((void)rigGlb(rig, weights, 50.0, {0, 3, 2, 4}), InvalidArgument) << "keys ascend";
+}
+
 TEST(GltfWriter, RefusesBadWeightsAndRates)
 {
   const BlendshapeRig rig = twoShapeRig();

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <system_error>
 
 namespace mocap {
 
@@ -21,6 +22,17 @@ std::string fixedText(double value, int decimals, std::string_view notFinite)
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);
   return text;
+}
+
+bool parseNumber(std::string_view text, double& value)
+{
+  if (!text.empty() && text.front() == '+')
+    text.remove_prefix(1);
+  if (text.empty())
+    return false;
+  const char* end = text.data() + text.size();
+  const auto result = std::from_chars(text.data(), end, value);
+  return result.ec == std::errc() && result.ptr == end;
 }
 
 std::string timecodeText(double seconds, double frameRate)

@@ -5,9 +5,11 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <sstream>
 
 namespace mocap {
@@ -114,10 +116,13 @@ int addMorphTarget(tinygltf::Model& model, const SparseShape& shape, std::size_t
   return addAccessor(model, a);
 }
 
-void addAnimation(tinygltf::Model& model, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate)
+void addAnimation(tinygltf::Model& model, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
+                  const std::vector<Eigen::Index>& keys)
 {
   std::vector<float> times, values;
-  for (Eigen::Index f = 0; f < weights.rows(); ++f) {
+  const auto keyCount = keys.empty() ? weights.rows() : static_cast<Eigen::Index>(keys.size());
+  for (Eigen::Index k = 0; k < keyCount; ++k) {
+    const Eigen::Index f = keys.empty() ? k : keys[static_cast<std::size_t>(k)];
     times.push_back(static_cast<float>(static_cast<double>(f) / frameRate));
     for (Eigen::Index s = 0; s < weights.cols(); ++s)
       values.push_back(static_cast<float>(weights(f, s)));
@@ -151,7 +156,8 @@ void addAnimation(tinygltf::Model& model, const Eigen::Ref<const Eigen::MatrixXd
 
 } // namespace
 
-std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate)
+std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
+                   const std::vector<Eigen::Index>& keys)
 {
   checkRig(rig);
   if (weights.rows() > 0 && weights.cols() != rig.shapeCount())
@@ -161,6 +167,9 @@ std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
     throw InvalidArgument("glTF: a weight is not finite");
   if (!(frameRate > 0.0) || !std::isfinite(frameRate))
     throw InvalidArgument("glTF: the frame rate must be positive");
+  if (!keys.empty() && (keys.front() != 0 || keys.back() != weights.rows() - 1 ||
+                        std::adjacent_find(keys.begin(), keys.end(), std::greater_equal<>()) != keys.end()))
+    throw InvalidArgument("glTF: the key frames must ascend from the first frame to the last");
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "Mocap Studio";
@@ -190,7 +199,7 @@ std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
   model.scenes.push_back(scene);
   model.defaultScene = 0;
   if (weights.rows() > 0)
-    addAnimation(model, weights, frameRate);
+    addAnimation(model, weights, frameRate, keys);
 
   std::ostringstream out;
   if (!tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, out, false, true))
@@ -199,9 +208,10 @@ std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
 }
 
 void writeRigGlb(const std::filesystem::path& path, const BlendshapeRig& rig,
-                 const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate)
+                 const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
+                 const std::vector<Eigen::Index>& keys)
 {
-  writeFileAtomically(path, rigGlb(rig, weights, frameRate));
+  writeFileAtomically(path, rigGlb(rig, weights, frameRate, keys));
 }
 
 } // namespace mocap

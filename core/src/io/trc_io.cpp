@@ -126,18 +126,6 @@ std::vector<std::string_view> blankTokens(std::string_view line)
   }
 }
 
-// A whole cell as a double ("NaN", "inf" included). False when the cell is not a number. O(cell).
-bool parseDouble(std::string_view cell, double& value)
-{
-  if (!cell.empty() && cell.front() == '+')
-    cell.remove_prefix(1);
-  if (cell.empty())
-    return false;
-  const char* end = cell.data() + cell.size();
-  const auto result = std::from_chars(cell.data(), end, value);
-  return result.ec == std::errc() && result.ptr == end;
-}
-
 // A whole cell as an integer; "12.0" is accepted as some writers print counts as reals. O(cell).
 bool parseInteger(std::string_view cell, std::int64_t& value)
 {
@@ -152,7 +140,7 @@ bool parseInteger(std::string_view cell, std::int64_t& value)
     return true;
   double real = 0.0;
   constexpr double kLimit = 9007199254740992.0;  // 2^53: every integer below is exact
-  if (!parseDouble(cell, real) || !std::isfinite(real) || std::fabs(real) > kLimit ||
+  if (!parseNumber(cell, real) || !std::isfinite(real) || std::fabs(real) > kLimit ||
       std::trunc(real) != real)
     return false;
   value = static_cast<std::int64_t>(real);
@@ -279,11 +267,11 @@ private:
 
     double rate = 0.0;
     const auto dataRate = value("DataRate");
-    if (dataRate && parseDouble(*dataRate, rate) && std::isfinite(rate) && rate > 0.0) {
+    if (dataRate && parseNumber(*dataRate, rate) && std::isfinite(rate) && rate > 0.0) {
       m_rate = rate;
     } else {
       const auto cameraRate = value("CameraRate");
-      if (!cameraRate || !parseDouble(*cameraRate, rate) || !std::isfinite(rate) || rate <= 0.0)
+      if (!cameraRate || !parseNumber(*cameraRate, rate) || !std::isfinite(rate) || rate <= 0.0)
         fail(3, "no valid DataRate or CameraRate");
       warn("line 3: no valid DataRate; using CameraRate " + std::string(*cameraRate));
       m_rate = rate;
@@ -376,7 +364,7 @@ private:
         return;
       }
       double value = std::numeric_limits<double>::quiet_NaN();
-      if (!cell.empty() && !parseDouble(cell, value))
+      if (!cell.empty() && !parseNumber(cell, value))
         fail(lineNumber, "bad number '" + excerpt(cell) + "' in column " + std::to_string(index + 1));
       if (index == 1)
         return;  // time is implied by the frame rate

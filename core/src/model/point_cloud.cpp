@@ -2,6 +2,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/base/number_text.h"
 #include "mocap/base/text.h"
 
 #include <algorithm>
@@ -23,12 +24,7 @@ struct RawPoint
 
 bool parseDouble(std::string_view field, double& value)
 {
-  field = trim(field);
-  if (!field.empty() && field.front() == '+')
-    field.remove_prefix(1);
-  const char* end = field.data() + field.size();
-  const auto result = std::from_chars(field.data(), end, value);
-  return result.ec == std::errc() && result.ptr == end && std::isfinite(value);
+  return parseNumber(trim(field), value) && std::isfinite(value);
 }
 
 PointCloud groupByFrame(std::vector<RawPoint>& raw, double frameRate)

@@ -9,6 +9,10 @@ namespace mocap {
 /// text formats round-trip doubles bit for bit. O(1).
 void appendNumber(std::string& out, double value);
 
+/// The whole of `text` as a number (std::from_chars; a leading '+' is taken, "nan" and "inf"
+/// too, so check isfinite where they are not wanted). False when any of it is not. O(|text|).
+[[nodiscard]] bool parseNumber(std::string_view text, double& value);
+
 /// `value` with `decimals` decimals ("%.*f"), or `notFinite` for NaN and infinities, for text
 /// tables and drawings. O(1).
 [[nodiscard]] std::string fixedText(double value, int decimals, std::string_view notFinite);

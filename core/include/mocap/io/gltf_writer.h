@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace mocap {
 
@@ -13,14 +14,17 @@ namespace mocap {
 /// per shape — sparse accessors holding only the moved vertices — named in the mesh's
 /// `extras.targetNames` (which Blender, three.js and Unity read as shape-key names), and, when
 /// `weights` has rows, an animation of the node's `weights` path with one key per frame (frame i
-/// at i / frameRate seconds, linear interpolation). Coordinates are written as float32 in the
+/// at i / frameRate seconds, linear interpolation), or at the frames `keys` only when it is not
+/// empty (ascending from the first frame to the last: reduceKeys' choice, which all shapes share,
+/// as glTF's one weights sampler requires). Coordinates are written as float32 in the
 /// rig's units. Throws InvalidArgument for an invalid rig (checkRig), weights with another column
 /// count or outside a finite range, or a non-positive rate. O(#vertices + Σ #moved + #frames · #shapes).
 [[nodiscard]] std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights,
-                                 double frameRate);
+                                 double frameRate, const std::vector<Eigen::Index>& keys = {});
 
 /// Writes rigGlb atomically. Throws as rigGlb and IoError.
 void writeRigGlb(const std::filesystem::path& path, const BlendshapeRig& rig,
-                 const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate);
+                 const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
+                 const std::vector<Eigen::Index>& keys = {});
 
 } // namespace mocap
