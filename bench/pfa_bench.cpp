@@ -42,9 +42,8 @@ const Input& input()
 mocap::PfaSweep sweep(int threads)
 {
   const Input& data = input();
-  mocap::RunControl control;
-  control.threads = threads;
-  return mocap::sweepPfa(data.frames.frames(data.frames.training, Eigen::all), data.symmetry, {}, control);
+  return mocap::sweepPfa(data.frames.frames(data.frames.training, Eigen::all), data.symmetry, {},
+                         mocap::JobControl().withThreads(threads));
 }
 
 void BM_PfaSweep(benchmark::State& state)

@@ -167,7 +167,7 @@
 <context>
     <name>QProgressDialog</name>
     <message>
-        <location filename="../widgets/dialogs/job_dialog.cpp" line="+43"/>
+        <location filename="../widgets/dialogs/job_dialog.cpp" line="+35"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
@@ -413,7 +413,7 @@
         <translation>%1 geschrieben (%2 Frames, %3)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+19"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -438,12 +438,12 @@
         <translation>Beim Öffnen eines anderen Takes bleiben das Gesichtsnetz, seine Markerbindung und das Blendshape-Rig (die des Darstellers) erhalten, gebunden an die Marker des neuen Takes; aus: jeder Take beginnt ohne sie</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+4"/>
         <source>Face rig kept for this take: %1</source>
         <translation>Gesichts-Rig für diesen Take behalten: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
@@ -548,7 +548,7 @@
         <translation>Marker&amp;verbindungen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+3"/>
         <source>Show &amp;Model Outputs</source>
         <translation>&amp;Modellausgaben anzeigen</translation>
     </message>
@@ -558,7 +558,7 @@
         <translation>Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
         <source>&amp;Follow Head</source>
         <translation>Kopf &amp;folgen</translation>
     </message>
@@ -568,7 +568,7 @@
         <translation>Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -999,7 +999,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-926"/>
+        <location line="-917"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1015,29 +1015,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+104"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <location line="+280"/>
+        <location line="+19"/>
+        <location line="+274"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-275"/>
+        <location line="-269"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+263"/>
+        <location line="+257"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-253"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1123,7 +1123,7 @@
         <translation>Jeden Frame der Aufnahme auf die Gewichte des Rigs lösen (im Hintergrund; Abbrechen stoppt es)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
@@ -1213,7 +1213,7 @@
         <translation>Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+88"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
     </message>
@@ -1419,12 +1419,12 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+118"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
     <message numerus="yes">
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 — %n sample(s) would change</source>
         <translation>
             <numerusform>%1 — %n Abtastwert würde sich ändern</numerusform>
@@ -1437,12 +1437,12 @@
         <translation>Nächster Durchgang: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+20"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+70"/>
         <source>Nothing to apply</source>
         <translation>Nichts anzuwenden</translation>
     </message>
@@ -1506,12 +1506,12 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+75"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
         <source>BVH of the markers (.bvh)</source>
         <translation>BVH der Marker (.bvh)</translation>
     </message>
@@ -1556,18 +1556,18 @@
         <translation>&amp;Bilder:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+347"/>
+        <location line="+333"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-316"/>
+        <location line="-305"/>
         <source>Whole take (%1–%2)</source>
         <translation>Gesamte Aufnahme (%1–%2)</translation>
     </message>
@@ -1668,7 +1668,7 @@
         <translation>Nicht exportiert: Die vorhandenen Dateien bleiben erhalten.</translation>
     </message>
     <message numerus="yes">
-        <location line="+14"/>
+        <location line="+12"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>%n Bild wird exportiert…</numerusform>
@@ -1676,12 +1676,12 @@
         </translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-319"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message numerus="yes">
-        <location line="+42"/>
+        <location line="+364"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>%n Bild nach %1 exportiert.</numerusform>
@@ -1694,7 +1694,7 @@
         <translation>Hinweis: %1.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
@@ -2163,7 +2163,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+127"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+126"/>
         <source>Filter markers…</source>
         <translation>Marker filtern…</translation>
     </message>
@@ -2173,7 +2173,7 @@
         <translation>Nur offene Lücken</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>Check Shown</source>
         <translation>Angezeigte abhaken</translation>
     </message>
@@ -2199,12 +2199,12 @@
     </message>
     <message>
         <location line="+13"/>
-        <location line="+145"/>
+        <location line="+141"/>
         <source>Fill</source>
         <translation>Füllen</translation>
     </message>
     <message>
-        <location line="-102"/>
+        <location line="-99"/>
         <source>Show Gap</source>
         <translation>Lücke anzeigen</translation>
     </message>
@@ -2224,7 +2224,7 @@
         <translation>Haken Sie Lücken ab oder wählen Sie Zeilen aus, um ihre Füllung in der Vorschau zu sehen; ein Doppelklick auf eine Lücke springt zu ihr.</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+52"/>
         <source>Fill 1 Checked Gap</source>
         <translation>1 abgehakte Lücke füllen</translation>
     </message>
@@ -2249,12 +2249,12 @@
         <translation>Die abgehakten Lücken füllen, sonst die ausgewählten, jede mit ihrer Methode (Strg+Eingabe)</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+57"/>
         <source>No open gap to fill</source>
         <translation>Keine offene Lücke zu füllen</translation>
     </message>
     <message numerus="yes">
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Computing the fill of %n gap(s)…</source>
         <translation>
             <numerusform>Füllung von %n Lücke wird berechnet…</numerusform>
@@ -2262,7 +2262,7 @@
         </translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+26"/>
         <source>Cancelled</source>
         <translation>Abgebrochen</translation>
     </message>
@@ -2710,7 +2710,28 @@
 <context>
     <name>mocap::ui::JobProgressRow</name>
     <message>
-        <location filename="../widgets/panels/job_progress_row.cpp" line="+20"/>
+        <source>about %1 s left</source>
+        <translation type="vanished">noch etwa %1 s</translation>
+    </message>
+    <message>
+        <source>about %1 min left</source>
+        <translation type="vanished">noch etwa %1 min</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/job_progress_row.cpp" line="+22"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the computation (Esc)</source>
+        <translation>Berechnung abbrechen (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::JobRunner</name>
+    <message>
+        <location filename="../widgets/document/job_runner.cpp" line="+17"/>
         <source>about %1 s left</source>
         <translation>noch etwa %1 s</translation>
     </message>
@@ -2720,14 +2741,9 @@
         <translation>noch etwa %1 min</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Stop the computation (Esc)</source>
-        <translation>Berechnung abbrechen (Esc)</translation>
+        <location line="+42"/>
+        <source>unknown error</source>
+        <translation>unbekannter Fehler</translation>
     </message>
 </context>
 <context>
@@ -2864,12 +2880,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+100"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+89"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+59"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>Aufnahmedateien, die zusammen mit der geöffneten Aufnahme geplant werden (sie müssen deren Marker enthalten)</translation>
     </message>
@@ -3049,12 +3065,12 @@
         <translation>Außerdem die Gewichte des geladenen Rigs aus jedem Layout und aus allen gebundenen Markern lösen und ihren MSE zeichnen (das Maß des Ausgangsartikels an einem semantischen Rig; mocap pfa --rig)</translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+169"/>
         <source>Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its neutral (Face Mesh panel); or switch it off.</source>
         <translation>Die Beurteilung am Rig braucht ein Blendshape-Rig (Blendshape-Solve-Panel) und an seine Neutralform gebundene Marker (Face-Mesh-Panel); oder schalten Sie sie aus.</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+88"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
@@ -3072,7 +3088,7 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-280"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -3093,12 +3109,11 @@
         <translation>Ausführen</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Cancel</source>
-        <translation>Abbrechen</translation>
+        <translation type="vanished">Abbrechen</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+16"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -3188,12 +3203,12 @@
         <translation>Zum Entfernen der Kopfbewegung sind mindestens drei Referenzmarker nötig (Marker ▸ Referenzmarker…).</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
         <source>Planning…</source>
         <translation>Planung läuft…</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Key poses</source>
         <translation>Schlüsselposen</translation>
     </message>
@@ -3213,12 +3228,12 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-193"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+237"/>
         <source>Planning failed: %1</source>
         <translation>Planung fehlgeschlagen: %1</translation>
     </message>

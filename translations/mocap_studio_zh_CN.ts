@@ -160,7 +160,7 @@
 <context>
     <name>QProgressDialog</name>
     <message>
-        <location filename="../widgets/dialogs/job_dialog.cpp" line="+43"/>
+        <location filename="../widgets/dialogs/job_dialog.cpp" line="+35"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -404,7 +404,7 @@
         <translation>已写入 %1（%2 帧，%3）</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+19"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -429,12 +429,12 @@
         <translation>打开另一个拍摄时保留面部网格、其标记点绑定和混合形状绑定（演员的），并绑定到新拍摄中已有的标记点；关闭时，每个拍摄都从空白开始</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+4"/>
         <source>Face rig kept for this take: %1</source>
         <translation>已为此拍摄保留面部绑定：%1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Save</source>
         <translation>保存(&amp;S)</translation>
     </message>
@@ -539,7 +539,7 @@
         <translation>标记点连线(&amp;L)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+3"/>
         <source>Show &amp;Model Outputs</source>
         <translation>显示模型输出(&amp;M)</translation>
     </message>
@@ -549,7 +549,7 @@
         <translation>绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
         <source>&amp;Follow Head</source>
         <translation>跟随头部(&amp;F)</translation>
     </message>
@@ -559,7 +559,7 @@
         <translation>头部移动时相机始终对准头部（头部标记点的质心）</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+1"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
@@ -988,7 +988,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-926"/>
+        <location line="-917"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1004,29 +1004,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+104"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
     <message>
-        <location line="+24"/>
-        <location line="+280"/>
+        <location line="+19"/>
+        <location line="+274"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="-275"/>
+        <location line="-269"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+263"/>
+        <location line="+257"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-253"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1112,7 +1112,7 @@
         <translation>将拍摄的每一帧求解为绑定模型的权重（在后台运行；取消可停止）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
@@ -1202,7 +1202,7 @@
         <translation>带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+88"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>请等待正在运行的任务，或将其取消。</translation>
     </message>
@@ -1406,12 +1406,12 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+118"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
     <message numerus="yes">
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 — %n sample(s) would change</source>
         <translation>
             <numerusform>%1 — 将更改 %n 个采样点</numerusform>
@@ -1423,12 +1423,12 @@
         <translation>下一遍：%1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+20"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+70"/>
         <source>Nothing to apply</source>
         <translation>没有可应用的更改</translation>
     </message>
@@ -1492,12 +1492,12 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+75"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+14"/>
         <source>BVH of the markers (.bvh)</source>
         <translation>标记点的 BVH（.bvh）</translation>
     </message>
@@ -1542,18 +1542,18 @@
         <translation>帧(&amp;R)：</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&amp;Export</source>
         <translation>导出(&amp;E)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+347"/>
+        <location line="+333"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-316"/>
+        <location line="-305"/>
         <source>Whole take (%1–%2)</source>
         <translation>整个拍摄数据（%1–%2）</translation>
     </message>
@@ -1652,19 +1652,19 @@
         <translation>未导出：已保留现有文件。</translation>
     </message>
     <message numerus="yes">
-        <location line="+14"/>
+        <location line="+12"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>正在导出 %n 帧…</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-319"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message numerus="yes">
-        <location line="+42"/>
+        <location line="+364"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 帧导出到 %1。</numerusform>
@@ -1676,7 +1676,7 @@
         <translation>注意：%1。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>导出已取消，未写入任何内容。</translation>
     </message>
@@ -2141,7 +2141,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+127"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+126"/>
         <source>Filter markers…</source>
         <translation>筛选标记点…</translation>
     </message>
@@ -2151,7 +2151,7 @@
         <translation>仅未填补的缺口</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+37"/>
         <source>Check Shown</source>
         <translation>勾选显示项</translation>
     </message>
@@ -2177,12 +2177,12 @@
     </message>
     <message>
         <location line="+13"/>
-        <location line="+145"/>
+        <location line="+141"/>
         <source>Fill</source>
         <translation>填补</translation>
     </message>
     <message>
-        <location line="-102"/>
+        <location line="-99"/>
         <source>Show Gap</source>
         <translation>显示缺口</translation>
     </message>
@@ -2202,7 +2202,7 @@
         <translation>勾选缺口或选中行以预览其填补结果；双击缺口可跳转到该处。</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+52"/>
         <source>Fill 1 Checked Gap</source>
         <translation>填补 1 个已勾选的缺口</translation>
     </message>
@@ -2227,19 +2227,19 @@
         <translation>填补已勾选的缺口（若无则填补所选缺口），各自使用其方法（Ctrl+Return）</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+57"/>
         <source>No open gap to fill</source>
         <translation>没有可填补的缺口</translation>
     </message>
     <message numerus="yes">
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Computing the fill of %n gap(s)…</source>
         <translation>
             <numerusform>正在计算 %n 个缺口的填补…</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+26"/>
         <source>Cancelled</source>
         <translation>已取消</translation>
     </message>
@@ -2687,7 +2687,28 @@
 <context>
     <name>mocap::ui::JobProgressRow</name>
     <message>
-        <location filename="../widgets/panels/job_progress_row.cpp" line="+20"/>
+        <source>about %1 s left</source>
+        <translation type="vanished">剩余约 %1 秒</translation>
+    </message>
+    <message>
+        <source>about %1 min left</source>
+        <translation type="vanished">剩余约 %1 分钟</translation>
+    </message>
+    <message>
+        <location filename="../widgets/panels/job_progress_row.cpp" line="+22"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the computation (Esc)</source>
+        <translation>停止计算（Esc）</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::JobRunner</name>
+    <message>
+        <location filename="../widgets/document/job_runner.cpp" line="+17"/>
         <source>about %1 s left</source>
         <translation>剩余约 %1 秒</translation>
     </message>
@@ -2697,14 +2718,9 @@
         <translation>剩余约 %1 分钟</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Stop the computation (Esc)</source>
-        <translation>停止计算（Esc）</translation>
+        <location line="+42"/>
+        <source>unknown error</source>
+        <translation>未知错误</translation>
     </message>
 </context>
 <context>
@@ -2839,12 +2855,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+100"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+89"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+59"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>与已打开的拍摄数据一起规划的拍摄数据文件（必须包含其标记点）</translation>
     </message>
@@ -3024,12 +3040,12 @@
         <translation>同时从每个布局和所有已绑定标记点求解已加载绑定模型的权重，并绘制其 MSE（种子论文的度量，用于语义绑定模型；mocap pfa --rig）</translation>
     </message>
     <message>
-        <location line="+174"/>
+        <location line="+169"/>
         <source>Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its neutral (Face Mesh panel); or switch it off.</source>
         <translation>在绑定模型上评估需要一个混合形状绑定模型（混合形状求解面板）以及绑定到其中性形状的标记点（面部网格面板）；或关闭此选项。</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+88"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
@@ -3046,7 +3062,7 @@
         <translation>未去除头部运动：没有参考标记点</translation>
     </message>
     <message>
-        <location line="-301"/>
+        <location line="-280"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
@@ -3067,12 +3083,11 @@
         <translation>运行</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Cancel</source>
-        <translation>取消</translation>
+        <translation type="vanished">取消</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+16"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -3162,12 +3177,12 @@
         <translation>去除头部运动至少需要三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
         <source>Planning…</source>
         <translation>正在规划…</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>Key poses</source>
         <translation>关键姿势</translation>
     </message>
@@ -3187,12 +3202,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-193"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+237"/>
         <source>Planning failed: %1</source>
         <translation>规划失败：%1</translation>
     </message>

@@ -31,7 +31,7 @@ namespace mocap::cli {
 
 namespace {
 
-/// The options of `mocap pfa`; LayoutPlanOptions and RunControl hold the defaults the usage shows.
+/// The options of `mocap pfa`; LayoutPlanOptions and JobControl hold the defaults the usage shows.
 /// Key-pose frames are numbered as the first take counts them (TAKE:FRAME for another take);
 /// PATTERNS are comma-separated globs (`*`, `?`).
 struct PfaArguments
@@ -45,7 +45,7 @@ struct PfaArguments
   std::optional<std::string> rig, rigShapes, binding, rigOnly;
   LayoutRigErrorOptions rigOptions;
   std::string rigMethod = std::string(blendshapeSolveMethodName(LayoutRigErrorOptions{}.solve.method));
-  int threads = RunControl{}.threads;
+  int threads = JobControl{}.threads();
   bool progress = false;
   bool json = false;
 };
@@ -437,7 +437,7 @@ void printText(const Report& report)
 // The one core planning (layout_planning.h, as the studio's panel runs it); what the request
 // names wrongly (a glob matching nothing, a bad key pose) is a usage error naming the option.
 LayoutResult planRequested(const std::vector<Take>& takes, LayoutRequest& request,
-                           const std::optional<std::string>& keyposes, const RunControl& control)
+                           const std::optional<std::string>& keyposes, const JobControl& control)
 {
   try {
     if (keyposes)
@@ -498,10 +498,8 @@ int runPfa(const PfaArguments& arguments)
   options.method = parseSelectionMethod(arguments.method).value();
   if (const auto& k = arguments.k)
     std::tie(options.pfa.minK, options.pfa.maxK) = parseKRange(*k);
-  RunControl control;
-  control.threads = arguments.threads;
-  if (arguments.progress)
-    control.progress = progressLine("pfa");
+  const JobControl control =
+      JobControl(arguments.progress ? progressLine("pfa") : JobControl::Progress{}).withThreads(arguments.threads);
   std::optional<Eigen::Index> exportSize;
   const auto& exportRequest = arguments.exportSubset;
   if (exportRequest) {
@@ -538,9 +536,8 @@ int runPfa(const PfaArguments& arguments)
     rigOptions.solve.method = parseBlendshapeSolveMethod(arguments.rigMethod).value();
     rigOptions.randomSubsets = options.randomSubsets;
     rigOptions.seed = options.pfa.seed;
-    RunControl rigControl = control;
-    if (arguments.progress)
-      rigControl.progress = progressLine("rig");
+    const JobControl rigControl =
+        arguments.progress ? JobControl(progressLine("rig")).withThreads(arguments.threads) : control;
     rigErrors = planRigErrors(takes, result, rig->rig, rig->binding, rigOptions, rigControl);
   }
   Report report{arguments.takes, result, frames, plan, result.symmetry, result.detection, pairSource};

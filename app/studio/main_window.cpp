@@ -321,14 +321,14 @@ QString MainWindow::loadRig(const QString& rigPath, const QString& shapeFolder, 
   m_blendshapeDock->show();
   m_blendshapeDock->raise();
   QString error = m_blendshapeSolve->loadRig(rigPath, shapeFolder);
-  m_blendshapeSolve->waitForJob();
+  m_blendshapeSolve->finishJob();
   if (error.isEmpty() && !m_session->blendshapes().hasRig())
     error = m_blendshapeSolve->statusText();
   if (error.isEmpty() && !bindingPath.isEmpty())
     error = m_faceMesh->loadBinding(bindingPath);
   if (error.isEmpty() && solve) {
     error = m_blendshapeSolve->solve();
-    m_blendshapeSolve->waitForJob();
+    m_blendshapeSolve->finishJob();
     if (error.isEmpty() && !m_session->blendshapes().hasResult())
       error = m_blendshapeSolve->statusText();
   }

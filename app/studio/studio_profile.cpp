@@ -4,6 +4,7 @@
 #include "ui_stall_meter.h"
 
 #include "actions/labelling_actions.h"
+#include "document/job_runner.h"
 #include "document/take_document.h"
 #include "panels/cleaning_panel.h"
 #include "panels/cleaning_step.h"
@@ -86,13 +87,15 @@ void profilePreviews(MainWindow& window, UiStallMeter& meter)
   ui::CleaningPanel* panel = window.cleaningPanel();
   std::cout << ", \"preview_stall_ms\": {";
   bool first = true;
-  // Serves the event loop until the panel's preview is current (or `seconds` passed).
+  // Serves the event loop until the panel's preview is current (or `seconds` passed), woken by
+  // the end of its job (or every 50 ms: a debounce timer may start the next one).
   auto waitForPreview = [panel](double seconds) {
     QElapsedTimer clock;
     clock.start();
     while (!panel->previewReady() && static_cast<double>(clock.elapsed()) < 1000.0 * seconds) {
       QEventLoop wait;
-      QTimer::singleShot(2, &wait, &QEventLoop::quit);
+      QObject::connect(&panel->jobs(), &ui::JobRunner::finished, &wait, &QEventLoop::quit);
+      QTimer::singleShot(50, &wait, &QEventLoop::quit);
       wait.exec();
     }
   };

@@ -55,6 +55,27 @@ TEST(JobControl, PartMapsProgressIntoItsShareAndThrottles)
   EXPECT_DOUBLE_EQ(reported.back(), 0.5);
 }
 
+// What the layout planning runs on: report() never throws (the run returns what is complete),
+// reportNow() passes the throttle, silent() stops but does not report, threads go with parts.
+TEST(JobControl, ReportsWithoutThrowingAndCarriesThreads)
+{
+  std::vector<double> reported;
+  auto cancel = std::make_shared<std::atomic<bool>>(true);
+  const JobControl job = JobControl([&](double f) { reported.push_back(f); }, cancel).withThreads(3);
+  EXPECT_NO_THROW(job.report(0.25));
+  job.reportNow(0.5);  // within 50 ms of the last: forced
+  ASSERT_EQ(reported.size(), 2u);
+  EXPECT_DOUBLE_EQ(reported.back(), 0.5);
+  EXPECT_EQ(job.cancelFlag(), cancel.get());
+  EXPECT_EQ(job.part(0.0, 0.5).threads(), 3);
+  EXPECT_EQ(JobControl().threads(), 0);
+  EXPECT_EQ(JobControl().cancelFlag(), nullptr);
+  const JobControl quiet = job.silent();
+  quiet.reportNow(1.0);
+  EXPECT_EQ(reported.size(), 2u);
+  EXPECT_THROW(quiet.checkpoint(0.0), JobCancelled);
+}
+
 // Each long core step stops when cancelled instead of running to the end.
 TEST(JobControl, CancelledStepsOnTheSampleThrow)
 {

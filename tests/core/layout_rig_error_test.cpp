@@ -104,7 +104,7 @@ std::vector<std::string> everyNth(const std::vector<std::string>& labels, std::s
 }
 
 LayoutRigErrors judge(const Capture& c, const std::vector<std::vector<std::string>>& layouts,
-                      LayoutRigErrorOptions options = {}, const RunControl& control = {})
+                      LayoutRigErrorOptions options = {}, const JobControl& control = {})
 {
   if (options.stabilizeLabels.empty())
     options.stabilizeLabels = kHeads;
@@ -166,9 +166,7 @@ TEST(LayoutRigError, TheSameOnAnyThreadCount)
     layouts.push_back(everyNth(c.face, step));
   std::vector<double> first;
   for (const int threads : {1, 2, 4}) {
-    RunControl control;
-    control.threads = threads;
-    const LayoutRigErrors r = judge(c, layouts, {}, control);
+    const LayoutRigErrors r = judge(c, layouts, {}, JobControl().withThreads(threads));
     std::vector<double> mse;
     for (const RigLayoutError& e : r.layouts)
       mse.push_back(e.mse);
@@ -209,10 +207,8 @@ TEST(LayoutRigError, PoolsTheTakesAndStopsOnCancel)
   const double onlyA = judge(a, layouts).layouts[0].mse, onlyB = judge(b, layouts).layouts[0].mse;
   EXPECT_NEAR(both.layouts[0].mse, (400.0 * onlyA + 200.0 * onlyB) / 600.0, 1e-9 * onlyA);
 
-  std::atomic<bool> cancel{true};
-  RunControl control;
-  control.cancel = &cancel;
-  const LayoutRigErrors stopped = judge(a, layouts, {}, control);
+  const JobControl cancelled({}, std::make_shared<std::atomic<bool>>(true));
+  const LayoutRigErrors stopped = judge(a, layouts, {}, cancelled);
   EXPECT_TRUE(stopped.cancelled);
   ASSERT_EQ(stopped.layouts.size(), 1U);
   EXPECT_FALSE(stopped.layouts[0].judged());

@@ -300,11 +300,9 @@ TEST(MarkerSelection, SameResultOnAnyThreadCountAndCancellation)
   options.restarts = 60;
   options.minK = 6;
   options.maxK = 9;
-  RunControl one, two;
-  one.threads = 1;
-  two.threads = 2;
   std::vector<double> progress;
-  two.progress = [&](double f) { progress.push_back(f); };
+  const JobControl one = JobControl().withThreads(1);
+  const JobControl two = JobControl([&](double f) { progress.push_back(f); }).withThreads(2);
   const PfaSweep a = sweepPfa(training, MarkerSymmetry(41), options, one);
   const PfaSweep b = sweepPfa(training, MarkerSymmetry(41), options, two);
   ASSERT_EQ(a.selections.size(), 4u);
@@ -317,13 +315,13 @@ TEST(MarkerSelection, SameResultOnAnyThreadCountAndCancellation)
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_DOUBLE_EQ(progress.back(), 1.0);
 
-  std::atomic<bool> cancel{false};
-  RunControl cancelling;
-  cancelling.cancel = &cancel;
-  cancelling.progress = [&](double f) {
-    if (f > 0.0)  // the first report comes after the first restart
-      cancel = true;
-  };
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  const JobControl cancelling(
+      [&](double f) {
+        if (f > 0.0)  // the first report comes after the first restart
+          *cancel = true;
+      },
+      cancel);
   const PfaSweep stopped = sweepPfa(training, MarkerSymmetry(41), options, cancelling);
   EXPECT_TRUE(stopped.cancelled);
   EXPECT_LT(stopped.selections.size(), 4u);

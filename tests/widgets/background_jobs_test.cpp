@@ -2,14 +2,17 @@
 // the UI thread, which keeps serving its event loop; Cancel stops the computation itself; long
 // jobs show progress with a time estimate.
 #include "../core/test_support.h"
+#include "job_waits.h"
 #include "sample_window.h"
 
 #include "actions/labelling_actions.h"
 #include "dialogs/job_dialog.h"
+#include "document/job_runner.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "panels/cleaning_panel.h"
 #include "panels/cleaning_step.h"
+#include "panels/head_stabilization_step.h"
 #include "panels/job_progress_row.h"
 
 #include "mocap/io/c3d_reader.h"
@@ -19,6 +22,7 @@
 #include <QPushButton>
 #include <QTest>
 #include <QTimer>
+#include <QUndoStack>
 
 #include <gtest/gtest.h>
 
@@ -143,6 +147,28 @@ TEST(BackgroundJobs, CancelStopsTheComputationItselfAndProgressShowsTimeLeft)
   EXPECT_TRUE(*step->m_ended);
   EXPECT_LT(clock.elapsed(), 1000) << "Cancel left the computation running";
   EXPECT_FALSE(row->cancelButton()->isEnabled());
+}
+
+// Apply on a stale preview (live preview off, or pressed while it computes) does not block the
+// window: it starts the computation and applies the preview when it arrives.
+TEST(BackgroundJobs, ApplyOnAStalePreviewAppliesItWhenItArrives)
+{
+  auto window = test::openSampleWindow();
+  ASSERT_TRUE(window);
+  ui::CleaningPanel* panel = window->cleaningPanel();
+  auto* step = panel->step<ui::HeadStabilizationStep>();
+  ASSERT_NE(step, nullptr);
+  panel->setCurrentStep(step);
+  panel->refresh();
+  ASSERT_FALSE(panel->previewReady());
+  QUndoStack& edits = *window->document().undoStack();
+  const int before = edits.count();
+  EXPECT_EQ(panel->apply(), 0) << "nothing to apply before the preview exists";
+  EXPECT_EQ(edits.count(), before);
+  EXPECT_TRUE(panel->busy());
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
+  EXPECT_EQ(edits.count(), before + 1) << panel->statusText().toStdString();
+  EXPECT_TRUE(panel->statusText().startsWith(QStringLiteral("Applied"))) << panel->statusText().toStdString();
 }
 
 // While a worker reads the document, the window refuses to close (it would free what is read).

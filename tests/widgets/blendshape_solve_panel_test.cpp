@@ -1,6 +1,7 @@
 // The Blendshape Solve dock under Xvfb: a small OBJ rig on the sample mesh, solved from the
 // sample take off the UI thread; the posed rig in the 3D view, weight curves with click-to-select,
 // undoable weight edits, exports, and clear errors.
+#include "job_waits.h"
 #include "sample_files.h"
 #include "../core/test_support.h"
 
@@ -172,7 +173,7 @@ TEST_F(BlendshapeSolvePanelTest, WeightEditsApplyToTheSelectedShapesOverTheRange
 
   // A new solve replaces the weights: the older edits no longer apply and undo leaves it alone.
   ASSERT_EQ(panel->solve(), QString());
-  panel->waitForJob();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   const Eigen::MatrixXd resolved = model().weights();
   undo.undo();
   EXPECT_EQ(model().weights(), resolved);
@@ -239,7 +240,7 @@ TEST_F(BlendshapeSolvePanelTest, MissingRigBindingOrFolderGiveClearErrors)
   // A shape folder that is not there: an error, and no rig half-loaded.
   QSignalSpy loaded(panel, &ui::BlendshapeSolvePanel::rigLoaded);
   ASSERT_EQ(panel->loadRig(neutral(), QString::fromStdString(dir.file("nowhere").string())), QString());
-  panel->waitForJob();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   ASSERT_EQ(loaded.count(), 1);
   EXPECT_FALSE(loaded.front().front().toString().isEmpty());
   EXPECT_FALSE(model().hasRig());
@@ -270,7 +271,7 @@ TEST_F(BlendshapeSolvePanelTest, LayoutPlanningJudgesLayoutsOnTheLoadedRig)
 
   solveSample();
   ASSERT_EQ(planning->run(), QString()) << planning->statusText().toStdString();
-  planning->waitForRun();
+  ASSERT_TRUE(test::waitForJob(planning->jobs()));
   const ui::LayoutPlanResult* result = planning->result();
   ASSERT_NE(result, nullptr) << planning->statusText().toStdString();
   ASSERT_TRUE(result->rig.has_value()) << result->rigError.toStdString();

@@ -1,5 +1,6 @@
 // The cleaning panel's defaults on the real sample take: the Gaps step leaves long and edge gaps
 // open and lists them; bad-point flags are the document's, on every tab, until detected again.
+#include "job_waits.h"
 #include "../core/test_support.h"
 
 #include "document/take_document.h"
@@ -75,7 +76,7 @@ TEST_F(CleaningDefaults, GapsStepLeavesUnlabeled1sLongGapsOpenAndListsThem)
   ASSERT_NE(frames, nullptr);
   EXPECT_EQ(frames->value(), 50) << "0.5 s at the take's 100 Hz";
   panel->setCurrentStep(step);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   const ui::StepResult& preview = panel->lastResult();
   for (const SamplePatch& patch : preview.patches)
     EXPECT_NE(patch.marker, stray) << "nothing invented for Unlabeled1";
@@ -100,7 +101,7 @@ TEST_F(CleaningDefaults, GapsStepLeavesUnlabeled1sLongGapsOpenAndListsThem)
   for (const Gap& gap : longGaps)
     EXPECT_FALSE(doc.take().valid().col(stray).segment(gap.firstFrame, gap.length).any());
   // After Apply the summary still counts the open gaps, and no filled one is left.
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_TRUE(panel->lastResult().summary.startsWith(QStringLiteral("No gap filled")))
       << panel->lastResult().summary.toStdString();
   EXPECT_TRUE(panel->lastResult().summary.contains(QStringLiteral("%1 left open").arg(open_)));
@@ -124,7 +125,7 @@ TEST_F(CleaningDefaults, SelectedMarkersOnlyCountsAndFillsTheSelection)
   auto* method = step->findChild<QComboBox*>();
   ASSERT_NE(method, nullptr);
   method->setCurrentIndex(method->findData(static_cast<int>(FillMethod::Linear)));
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   const ui::StepResult& preview = panel->lastResult();
   // Selected, the rarely seen marker is filled (between its samples), and only it.
   ASSERT_FALSE(preview.patches.empty()) << preview.summary.toStdString();
@@ -142,14 +143,14 @@ TEST_F(CleaningDefaults, BadPointFlagsStayOnEveryTabAndCtrlPageDownReachesThem)
   TakeDocument& doc = window->document();
   ui::CleaningPanel* panel = window->cleaningPanel();
   panel->setCurrentStep(panel->step<ui::SpikeStep>());
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   const auto flags = doc.flags();
   ASSERT_FALSE(flags.empty());
   const int counted = badPointsInTable();
   EXPECT_EQ(counted, static_cast<int>(flags.size()));
 
   panel->setCurrentStep(panel->step<ui::GapFillStep>());
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_EQ(doc.flags(), flags) << "switching tabs keeps the last detection";
   EXPECT_EQ(badPointsInTable(), counted);
 
@@ -186,11 +187,11 @@ TEST_F(CleaningDefaults, RepairingBadPointsSettlesThem)
   auto* settle = step->findChild<QCheckBox*>(QStringLiteral("settle"));
   ASSERT_NE(settle, nullptr);
   settle->setChecked(true);  // look again until nothing new
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   const std::size_t found = doc.flags().size();
   ASSERT_GT(found, 100u);
   ASSERT_GT(panel->apply(), 0);
-  panel->waitForPreview();  // detects again on the repaired take
+  test::waitForPreview(*panel);  // detects again on the repaired take
   EXPECT_LE(doc.flags().size(), found / 100) << found << " then " << doc.flags().size();
   EXPECT_EQ(badPointsInTable(), static_cast<int>(doc.flags().size()));
 }
@@ -203,10 +204,10 @@ TEST_F(CleaningDefaults, DetectingAgainAfterARepairExplainsTheFlagsBesideIt)
   ui::CleaningPanel* panel = window->cleaningPanel();
   auto* step = panel->step<ui::SpikeStep>();
   panel->setCurrentStep(step);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_FALSE(panel->lastResult().summary.contains(QStringLiteral("beside")));
   ASSERT_GT(panel->apply(), 0);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   ASSERT_FALSE(doc.flags().empty());
   const QString summary = panel->lastResult().summary;
   EXPECT_TRUE(summary.contains(QStringLiteral("beside samples just repaired")) &&
@@ -214,7 +215,7 @@ TEST_F(CleaningDefaults, DetectingAgainAfterARepairExplainsTheFlagsBesideIt)
       << summary.toStdString();
   // Undone, the repair no longer explains anything.
   doc.undoStack()->undo();
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_FALSE(panel->lastResult().summary.contains(QStringLiteral("beside"))) << panel->lastResult().summary.toStdString();
 }
 
@@ -226,7 +227,7 @@ TEST_F(CleaningDefaults, AfterApplyTheStatusSaysWhatWasDone)
   ui::CleaningPanel* panel = window->cleaningPanel();
   auto* gaps = panel->step<ui::GapFillStep>();
   panel->setCurrentStep(gaps);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   int filled = 0, samples = 0;
   for (const SamplePatch& patch : panel->lastResult().patches) {
     ++filled;
@@ -237,7 +238,7 @@ TEST_F(CleaningDefaults, AfterApplyTheStatusSaysWhatWasDone)
   ASSERT_GT(open, 3);
   const QString firstOpen = panel->lastResult().notes.front().text;
   ASSERT_EQ(panel->apply(), samples);
-  panel->waitForPreview();  // the next pass: nothing left to fill
+  test::waitForPreview(*panel);  // the next pass: nothing left to fill
   const QString expected = QStringLiteral("Applied: %1 gaps filled, %2 samples; %3 left open: %4")
                                .arg(filled)
                                .arg(samples)
@@ -247,12 +248,12 @@ TEST_F(CleaningDefaults, AfterApplyTheStatusSaysWhatWasDone)
   EXPECT_FALSE(panel->statusText().contains(QStringLiteral("No gap filled"))) << panel->statusText().toStdString();
   // A changed setting: the preview speaks again.
   gaps->setMaxGapSeconds(0.3);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_FALSE(panel->statusText().startsWith(QStringLiteral("Applied"))) << panel->statusText().toStdString();
 
   // Bad points: samples repaired on markers, from the patches pushed.
   panel->setCurrentStep(panel->step<ui::SpikeStep>());
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   std::vector<Eigen::Index> markers;
   for (const SamplePatch& patch : panel->lastResult().patches)
     markers.push_back(patch.marker);
@@ -260,12 +261,12 @@ TEST_F(CleaningDefaults, AfterApplyTheStatusSaysWhatWasDone)
   markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
   const int repaired = panel->apply();
   ASSERT_GT(repaired, 1);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_TRUE(panel->statusText().startsWith(
       QStringLiteral("Applied: %1 samples repaired on %2 markers").arg(repaired).arg(markers.size())))
       << panel->statusText().toStdString();
   doc.undoStack()->undo();  // the take changed: the preview speaks again
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_FALSE(panel->statusText().startsWith(QStringLiteral("Applied"))) << panel->statusText().toStdString();
 }
 

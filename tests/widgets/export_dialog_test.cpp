@@ -1,5 +1,6 @@
 // Export Animation dialog: a PC2 export holds exactly the source's frames, a BVH export parses with
 // every marker and frame, a cancelled export leaves nothing, and the mesh formats wait for a mesh.
+#include "job_waits.h"
 #include "../core/test_support.h"
 
 #include "dialogs/export_dialog.h"
@@ -90,7 +91,7 @@ TEST(ExportDialog, PointCacheHoldsTheSourceFramesOfTheRange)
   dialog.setFrameRange(104, 113);  // take frame indices 3..12
   QSignalSpy finished(&dialog, &ExportDialog::exportFinished);
   ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
-  dialog.waitForFinished();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
   ASSERT_EQ(finished.count(), 1);
   EXPECT_TRUE(finished.at(0).at(0).toBool()) << dialog.statusText().toStdString();
 
@@ -113,7 +114,7 @@ TEST(ExportDialog, ObjSequenceWritesOneFilePerFrame)
   dialog.setOutputPath(QString::fromStdString(fx.dir.file("frames").string()));
   dialog.setFrameRange(101, 103);
   ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
-  dialog.waitForFinished();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
   EXPECT_EQ(test::entryCount(fx.dir.file("frames")), 3u);
   EXPECT_EQ(readObj(fx.dir.file("frames/tri_0003.obj")).vertices, movedTriangle(2));
 }
@@ -129,7 +130,7 @@ TEST(ExportDialog, BvhOfTheMarkersParsesWithEveryMarkerAndFrame)
   dialog.setOutputPath(QString::fromStdString(bvh.string()));
   dialog.setFrameRange(111, 130);
   ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
-  dialog.waitForFinished();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
 
   std::istringstream in(readFileBytes(bvh));
   std::vector<std::string> joints;
@@ -189,7 +190,7 @@ TEST(ExportDialog, CancellingMidExportLeavesNoPartialCache)
   while (calls < 3)
     QCoreApplication::processEvents();
   dialog.reject();  // Escape or Cancel while running: stops the export, keeps the dialog
-  dialog.waitForFinished();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
   EXPECT_TRUE(dialog.isVisible());
   ASSERT_EQ(finished.count(), 1);
   EXPECT_FALSE(finished.at(0).at(0).toBool());
@@ -236,7 +237,7 @@ TEST(ExportDialog, RemembersTheLastFolderAndFormat)
     dialog.setOutputPath(QString::fromStdString(fx.dir.file("out/anim.pc2").string()));
     dialog.setFrameRange(101, 102);
     ASSERT_TRUE(dialog.startExport());
-    dialog.waitForFinished();
+    ASSERT_TRUE(test::waitForJob(dialog.jobs()));
   }
   ExportDialog again(fx.document);
   EXPECT_EQ(again.format(), AnimationFormat::Bvh);  // no mesh yet: the mesh formats are off

@@ -1,5 +1,6 @@
 // The Face mesh dock under Xvfb: the sample mesh and binding driven by the sample take, binding
 // edits by picking (undoable), RBF vs Laplacian, clear errors, and a render against a baseline.
+#include "job_waits.h"
 #include "sample_files.h"
 #include "../core/test_support.h"
 
@@ -353,7 +354,7 @@ TEST_F(FaceMeshPanelTest, ExportAnimationWritesTheDeformedMeshOfTheLoadedFace)
     dialog->setOutputPath(QString::fromStdString(cache.string()));
     dialog->setFrameRange(first, first + 9);
     exported = dialog->format() == ui::AnimationFormat::ObjPlusPc2 && dialog->startExport();
-    dialog->waitForFinished();
+    EXPECT_TRUE(test::waitForJob(dialog->jobs()));
     dialog->close();
   });
   action->trigger();

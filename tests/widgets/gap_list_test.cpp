@@ -1,4 +1,5 @@
 // The Gaps dock and the timeline's gap marks on the real sample take, through the studio window.
+#include "job_waits.h"
 #include "../core/test_support.h"
 
 #include "commands/apply_patches_command.h"
@@ -172,7 +173,7 @@ TEST_F(GapList, FiltersByLabelAndByOpenState)
 
   // Fill one, which stays listed as filled until "only open gaps" hides it.
   panel->fill(std::vector<int>{rowOf("section4-1", 822)});
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   const int filledRow = rowOf("section4-1", 822);
   EXPECT_EQ(filledRow, -1) << "no open gap there any more";
   EXPECT_EQ(shown->rowCount(), section4);
@@ -218,7 +219,7 @@ TEST_F(GapList, FillingTwoCheckedGapsIsOneUndoStepThatRestoresBitForBit)
   EXPECT_EQ(panel->scopeRows().size(), 2u);
   const int steps = doc().undoStack()->count();
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   ASSERT_EQ(doc().undoStack()->count(), steps + 1) << panel->statusText().toStdString();
   EXPECT_EQ(doc().undoStack()->text(steps), QStringLiteral("Fill 2 gaps: %1").arg(GapTableModel::methodTitle(FillOptions{}.method)));
   const Take& after = doc().take();
@@ -259,7 +260,7 @@ TEST_F(GapList, EachGapIsFilledWithItsOwnMethod)
   EXPECT_EQ(cell(linear, GapTableModel::MethodColumn), GapTableModel::methodTitle(FillMethod::Linear));
   model->setCheckedRows({linear, spline}, true);
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   ASSERT_EQ(doc().undoStack()->count(), 1) << panel->statusText().toStdString();
   for (const auto& [gap, method] : {std::pair{linearGap, FillMethod::Linear}, std::pair{splineGap, FillMethod::Spline}}) {
     FillOptions options;  // a gap the technician picked: no bulk limits (see GapListPanel)
@@ -297,7 +298,7 @@ TEST_F(GapList, AGapThatCannotBeFilledSaysWhy)
   const FillResult core = fillGaps(take, std::vector<Gap>{gap}, options);
   ASSERT_FALSE(core.gaps.front().filled);
   panel->fill(std::vector<int>{row});
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   EXPECT_EQ(doc().undoStack()->count(), 0) << "nothing filled, nothing pushed";
   EXPECT_EQ(model->stateAt(row), GapTableModel::FillState::Unfillable);
   EXPECT_EQ(cell(row, GapTableModel::StateColumn),
@@ -307,7 +308,7 @@ TEST_F(GapList, AGapThatCannotBeFilledSaysWhy)
 
 TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
 {
-  window->cleaningPanel()->waitForPreview();  // its preview of the open take comes first, then ours replaces it
+  test::waitForPreview(*window->cleaningPanel());  // its preview of the open take comes first, then ours replaces it
   ASSERT_TRUE(window->showDock(QStringLiteral("gapListDock")));
   QTest::qWait(50);
   const Take before = doc().take();
@@ -315,7 +316,7 @@ TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
   QTableView* view = panel->view();
   view->selectRow(static_cast<QSortFilterProxyModel*>(view->model())->mapFromSource(model->index(row, 0)).row());
   ASSERT_EQ(panel->scopeRows(), std::vector<int>{row});
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();
   EXPECT_EQ(doc().preview().front().marker, model->gapAt(row).marker);
   EXPECT_EQ(doc().preview().front().size(), 33u);
@@ -324,7 +325,7 @@ TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
   EXPECT_TRUE(sameSamples(doc().take(), before));
   EXPECT_EQ(doc().undoStack()->count(), 0);
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 33 samples"));
   EXPECT_EQ(doc().undoStack()->count(), 1);
   EXPECT_TRUE(doc().preview().empty());
@@ -332,24 +333,24 @@ TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
 
 TEST_F(GapList, AGapOverTheLimitIsPreviewedAndFilledOnlyWhenAllowed)
 {
-  window->cleaningPanel()->waitForPreview();  // its preview of the open take comes first
+  test::waitForPreview(*window->cleaningPanel());  // its preview of the open take comes first
   ASSERT_TRUE(window->showDock(QStringLiteral("gapListDock")));
   QTest::qWait(50);
   const Take before = doc().take();
   const int row = rowOf("section5-1", 1723);  // 66 frames: over the 0.5 s limit
   QTableView* view = panel->view();
   view->selectRow(static_cast<QSortFilterProxyModel*>(view->model())->mapFromSource(model->index(row, 0)).row());
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   EXPECT_NE(model->stateAt(row), GapTableModel::FillState::Previewed) << "nothing invented, not even in a preview";
   EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap left open: over the 0.5 s limit"));
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   EXPECT_EQ(doc().undoStack()->count(), 0);
   EXPECT_TRUE(sameSamples(doc().take(), before));
 
   ASSERT_TRUE(model->setData(model->index(row, GapTableModel::StateColumn), Qt::Checked, Qt::CheckStateRole));
   EXPECT_EQ(cell(row, GapTableModel::StateColumn), QStringLiteral("allowed: over the 0.5 s limit"));
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();
   EXPECT_EQ(doc().preview().front().size(), 66u);
   // Declined, nothing is filled; confirmed, the 66 samples are, as one undoable step.
@@ -359,13 +360,13 @@ TEST_F(GapList, AGapOverTheLimitIsPreviewedAndFilledOnlyWhenAllowed)
     box->button(QMessageBox::No)->click();
   });
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   EXPECT_TRUE(asked.startsWith(QStringLiteral("Invent 66 samples: section5-1 frames 1723–1788?"))) << asked.toStdString();
   EXPECT_EQ(doc().undoStack()->count(), 0);
   EXPECT_TRUE(sameSamples(doc().take(), before));
   test::whenModal<QMessageBox>([](QMessageBox* box) { box->button(QMessageBox::Yes)->click(); });
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   ASSERT_EQ(doc().undoStack()->count(), 1) << panel->statusText().toStdString();
   EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 66 samples"));
   const Eigen::Index marker = *before.markerIndex("section5-1");
@@ -397,7 +398,7 @@ TEST_F(GapList, CheckShownAndFillOnAStrayMarkerFillsNothingWithoutTheOverride)
     EXPECT_EQ(cell(row, GapTableModel::StateColumn), model->refusalText(row));
   }
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   EXPECT_EQ(doc().undoStack()->count(), 0) << panel->statusText().toStdString();
   EXPECT_TRUE(sameSamples(doc().take(), before));
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("left open"))) << panel->statusText().toStdString();
@@ -418,7 +419,7 @@ TEST_F(GapList, CheckShownAndFillOnAStrayMarkerFillsNothingWithoutTheOverride)
     box->button(QMessageBox::Yes)->click();
   });
   panel->fill();
-  panel->waitUntilIdle();
+  test::waitUntilIdle(*panel);
   const QString expected = QStringLiteral("Invent %1 samples: Unlabeled1 frames %2–%3?")
                                .arg(gap.length)
                                .arg(before.firstFrame() + gap.firstFrame)

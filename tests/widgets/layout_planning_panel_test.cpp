@@ -1,5 +1,6 @@
 // The layout planning dock end to end under Xvfb: plan the sample with few restarts, read the
 // plot, click a marker count and check the 3D highlight, cancel, export, and refuse bad input.
+#include "job_waits.h"
 #include "../core/test_support.h"
 
 #include "document/take_document.h"
@@ -64,7 +65,7 @@ protected:
     panel->setParameters(quick());
     ASSERT_EQ(panel->run(), QString());
     EXPECT_TRUE(panel->busy() || panel->result() == nullptr);
-    panel->waitForRun();
+    ASSERT_TRUE(test::waitForJob(panel->jobs()));
     ASSERT_FALSE(panel->busy());
     ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
   }
@@ -164,7 +165,7 @@ TEST_F(LayoutPlanning, CancelStopsTheRunAndLeavesThePanelIdle)
   EXPECT_NE(panel->run(), QString());  // one run at a time
   QTest::qWait(200);
   panel->cancel();
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   EXPECT_FALSE(panel->busy());
   EXPECT_EQ(panel->result(), nullptr);
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("Cancel"))) << panel->statusText().toStdString();
@@ -172,7 +173,7 @@ TEST_F(LayoutPlanning, CancelStopsTheRunAndLeavesThePanelIdle)
   // Idle again: a new run starts.
   panel->setParameters(quick());
   EXPECT_EQ(panel->run(), QString());
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   EXPECT_NE(panel->result(), nullptr);
 }
 
@@ -230,7 +231,7 @@ TEST_F(LayoutPlanning, RefusesBadInputWithAMessage)
   p.extraTakes = {QStringLiteral("/no/such/take.c3d")};
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());  // read on the worker: the failure arrives as the result
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   EXPECT_EQ(panel->result(), nullptr);
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("take.c3d"))) << panel->statusText().toStdString();
 }
@@ -249,7 +250,7 @@ TEST_F(LayoutPlanning, GlobsKeyPosesAndRandomSetsReachThePlan)
   p.keyPoses.clear();
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
   const LayoutResult& result = *panel->result();
   for (const std::string& label : result.frames.labels)
@@ -268,7 +269,7 @@ TEST_F(LayoutPlanning, GlobsKeyPosesAndRandomSetsReachThePlan)
   p.keyPoses = frames.join(QStringLiteral(","));
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
   EXPECT_EQ(panel->result()->plan.basis.keyFrames, rows);
 }
@@ -296,7 +297,7 @@ TEST_F(LayoutPlanning, RemembersItsParameters)
   p.excludePatterns = {QStringLiteral("section14-*")};
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   LayoutPlanningPanel fresh(window->document());
   const ui::LayoutPlanParameters remembered = fresh.parameters();
   EXPECT_EQ(remembered.method, SelectionMethod::Greedy);

@@ -2,6 +2,7 @@
 // head reference markers per take, owned by the document and used by every panel; Export
 // Animation exports the whole take unless told otherwise and asks before replacing files; an
 // operation with nothing to do leaves the take, its history and its modified mark alone.
+#include "job_waits.h"
 #include "../core/test_support.h"
 
 #include "commands/remove_markers_command.h"
@@ -95,7 +96,7 @@ TEST_F(ReferenceMarkers, LayoutPlanningStabilizesWithThemAndLeavesThemOut)
   quick.seed = 7;
   panel->setParameters(quick);
   ASSERT_EQ(panel->run(), QString());
-  panel->waitForRun();
+  ASSERT_TRUE(test::waitForJob(panel->jobs()));
   ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
   const ui::LayoutPlanResult& result = *panel->result();
   EXPECT_TRUE(result.frames.stabilized);
@@ -193,7 +194,7 @@ TEST_F(ReferenceMarkers, HeadStabilizationCoversEveryMarkerAndFrameEvenWithSelec
   auto* step = panel->step<ui::HeadStabilizationStep>();
   ASSERT_NE(step, nullptr);
   panel->setCurrentStep(step);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   const auto& patches = panel->lastResult().patches;
   ASSERT_EQ(static_cast<Eigen::Index>(patches.size()), doc().take().markerCount())
       << panel->lastResult().summary.toStdString();
@@ -244,7 +245,7 @@ TEST_F(ReferenceMarkers, ExportAnimationAsksBeforeReplacingAFile)
   EXPECT_EQ(readFileBytes(bvh), "an older export\n") << "No keeps the file";
   whenModal([](QWidget* modal) { qobject_cast<QMessageBox*>(modal)->button(QMessageBox::Yes)->click(); });
   ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
-  dialog.waitForFinished();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
   EXPECT_NE(readFileBytes(bvh).find("HIERARCHY"), std::string::npos) << "Yes replaces it";
 }
 

@@ -1,4 +1,5 @@
 // The studio end to end under Xvfb: open, select, edit with undo/redo, save, render, errors.
+#include "job_waits.h"
 #include "../core/test_support.h"
 #include "image_difference.h"
 #include "screen_pixels.h"
@@ -212,7 +213,7 @@ TEST_F(StudioWindow, FillingOnlyTheSelectedRangeLeavesTheRestOfTheGap)
   ASSERT_NE(rangeOnly, nullptr);
   rangeOnly->setChecked(true);
   doc.setRange(1100, 1130);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   ASSERT_GT(panel->apply(), 0) << panel->lastResult().summary.toStdString();
   const Take& after = doc.take();
   EXPECT_TRUE(after.valid().col(marker).segment(1105, 26).all());
@@ -224,7 +225,7 @@ TEST_F(StudioWindow, FillingOnlyTheSelectedRangeLeavesTheRestOfTheGap)
       }
     }
   doc.clearRange();
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_TRUE(panel->lastResult().patches.empty()) << "no range selected: nothing to change";
 }
 
@@ -406,7 +407,7 @@ TEST_F(StudioWindow, StabilizeHeadStepMovesTheTakeIntoTheHeadFrameUndoably)
   auto* step = panel->step<ui::HeadStabilizationStep>();
   ASSERT_NE(step, nullptr);
   panel->setCurrentStep(step);
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_EQ(doc.take().position(500, 0), original.position(500, 0)) << "a preview never touches the take";
   ASSERT_GT(panel->apply(), 0) << panel->lastResult().summary.toStdString();
   // The reference markers (guessed from their root-N labels) now hold still.
@@ -422,7 +423,7 @@ TEST_F(StudioWindow, StabilizeHeadStepMovesTheTakeIntoTheHeadFrameUndoably)
   // The take's reference markers are what the step uses: two cannot carry a head pose.
   doc.undoStack()->push(new ui::SetReferenceMarkersCommand(
       doc, {*doc.take().markerIndex("root-1"), *doc.take().markerIndex("root-3")}));
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   EXPECT_TRUE(panel->lastResult().summary.contains(QStringLiteral("three"))) << panel->lastResult().summary.toStdString();
   EXPECT_TRUE(panel->lastResult().patches.empty());
 }
@@ -650,7 +651,7 @@ TEST_F(StudioWindow, SpikePreviewLeavesTheTakeAloneAndApplyIsUndoable)
       QStringLiteral("spike")));
   const Take before = doc.take();
   ui::CleaningPanel* panel = window->cleaningPanel();
-  panel->waitForPreview();
+  test::waitForPreview(*panel);
   const auto& flags = doc.flags();
   EXPECT_NE(std::find(flags.begin(), flags.end(), std::make_pair(marker, Eigen::Index{1500})), flags.end());
   EXPECT_FALSE(doc.preview().empty());
@@ -755,7 +756,7 @@ TEST_F(StudioWindow, AFlaggedBadPointIsDrawnInTheFlagColour)
   doc.undoStack()->push(new ui::ApplyPatchesCommand(
       doc, {makePatch(marker, {1500}, (truth + Eigen::Vector3d(6.0, 0.0, 0.0)).transpose(), SampleOrigin::Edited)},
       QStringLiteral("spike")));
-  window->cleaningPanel()->waitForPreview();
+  test::waitForPreview(*window->cleaningPanel());
   doc.setCurrentFrame(1500);
   QTest::qWait(200);
   const auto where = window->markerView()->screenPosition(marker);

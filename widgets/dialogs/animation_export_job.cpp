@@ -12,17 +12,17 @@ namespace mocap::ui {
 
 namespace {
 
-ExportStatus writeBvhFile(const AnimationExportJob& job, ExportProgress& progress)
+ExportStatus writeBvhFile(const AnimationExportJob& job, const JobControl& control)
 {
   const std::string text = formatBvh(job.markers);
-  if (progress.cancel)
+  if (control.cancelled())
     return ExportStatus::Cancelled;
   writeFileAtomically(job.output, text);
-  progress.done = job.markers.frameCount();
+  control.reportNow(1.0);
   return ExportStatus::Done;
 }
 
-ExportStatus writeMeshFrames(const AnimationExportJob& job, ExportProgress& progress)
+ExportStatus writeMeshFrames(const AnimationExportJob& job, const JobControl& control)
 {
   if (!job.source)
     throw InvalidArgument("no deformed mesh to export: load a face mesh first");
@@ -31,13 +31,14 @@ ExportStatus writeMeshFrames(const AnimationExportJob& job, ExportProgress& prog
   MeshSequenceWriter writer(job.output, job.mesh, format, job.meshName, job.startFrame);
   MeshVertices vertices = job.mesh.vertices;
   for (Eigen::Index f = job.begin; f < job.end; ++f) {
-    if (progress.cancel)
+    if (control.cancelled())
       return ExportStatus::Cancelled;  // the writer removes what it wrote
     job.source(f, vertices);
     writer.add(vertices);
-    ++progress.done;
+    control.report(static_cast<double>(f + 1 - job.begin) / static_cast<double>(job.end - job.begin));
   }
   writer.finish();
+  control.reportNow(1.0);
   return ExportStatus::Done;
 }
 
@@ -72,12 +73,12 @@ std::vector<std::filesystem::path> filesReplacedBy(const AnimationExportJob& job
   return files;
 }
 
-ExportOutcome runAnimationExport(const AnimationExportJob& job, ExportProgress& progress)
+ExportOutcome runAnimationExport(const AnimationExportJob& job, const JobControl& control)
 {
   ExportOutcome outcome;
   try {
     outcome.status =
-        job.format == AnimationFormat::Bvh ? writeBvhFile(job, progress) : writeMeshFrames(job, progress);
+        job.format == AnimationFormat::Bvh ? writeBvhFile(job, control) : writeMeshFrames(job, control);
   } catch (const std::exception& e) {  // nothing may throw across the worker boundary
     outcome.status = ExportStatus::Failed;
     outcome.error = e.what();

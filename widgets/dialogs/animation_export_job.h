@@ -1,9 +1,9 @@
 #pragma once
 
+#include "mocap/base/job_control.h"
 #include "mocap/model/mesh.h"
 #include "mocap/model/take.h"
 
-#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -43,13 +43,6 @@ struct AnimationExportJob
   }
 };
 
-/// Shared with the UI thread: frames done so far, and the request to stop.
-struct ExportProgress
-{
-  std::atomic<long long> done{0};
-  std::atomic<bool> cancel{false};
-};
-
 enum class ExportStatus
 {
   Done,
@@ -68,10 +61,11 @@ struct ExportOutcome
 /// for an OBJ sequence, else O(1).
 [[nodiscard]] std::vector<std::filesystem::path> filesReplacedBy(const AnimationExportJob& job);
 
-/// Runs `job`, checking `progress.cancel` between frames. A cancelled or failed export leaves no
+/// Runs `job`, reporting the frames done to `control` and checking its cancel between frames (a
+/// cancelled export returns Cancelled rather than throwing). A cancelled or failed export leaves no
 /// output behind (MeshSequenceWriter removes what it wrote; the BVH is written atomically at the
 /// end). Never throws: errors come back in the outcome. O(#frames · (source cost + #vertices)) for
 /// the mesh formats, O(#frames · #markers) for BVH.
-[[nodiscard]] ExportOutcome runAnimationExport(const AnimationExportJob& job, ExportProgress& progress);
+[[nodiscard]] ExportOutcome runAnimationExport(const AnimationExportJob& job, const JobControl& control);
 
 } // namespace mocap::ui

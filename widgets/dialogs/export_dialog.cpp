@@ -1,12 +1,12 @@
 #include "dialogs/export_dialog.h"
 
+#include "document/job_runner.h"
 #include "document/take_document.h"
 
 #include "mocap/io/take_io.h"
 #include "mocap/model/take_slice.h"
 
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -21,11 +21,10 @@
 #include <QSpinBox>
 #include <QStandardItemModel>
 #include <QStringList>
-#include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace mocap::ui {
@@ -70,19 +69,16 @@ int clampToInt(qint64 value)
 } // namespace
 
 ExportDialog::ExportDialog(const TakeDocument& document, QWidget* parent)
-    : QDialog(parent), m_document(document), m_progress(std::make_shared<ExportProgress>())
+    : QDialog(parent), m_document(document), m_jobs(new JobRunner(this))
 {
   setWindowTitle(tr("Export Animation"));
   buildLayout();
-  connect(&m_watcher, &QFutureWatcher<ExportOutcome>::finished, this, &ExportDialog::onFinished);
+  connect(m_jobs, &JobRunner::progressed, this, &ExportDialog::showProgress);
+  connect(m_jobs, &JobRunner::cancelled, this, [this] { showStatus(tr("Cancelling…"), false); });
   restoreSettings();
 }
 
-ExportDialog::~ExportDialog()
-{
-  m_progress->cancel = true;
-  m_watcher.waitForFinished();  // the job holds its own copies; the cancel makes it quick
-}
+ExportDialog::~ExportDialog() = default;  // the runner cancels the job (it holds its own copies) and awaits it
 
 void ExportDialog::buildLayout()
 {
@@ -122,6 +118,7 @@ void ExportDialog::buildLayout()
   layout->addLayout(form);
 
   m_progressBar = new QProgressBar(this);
+  m_progressBar->setRange(0, 1000);
   m_progressBar->setValue(0);
   layout->addWidget(m_progressBar);
   m_status = new QLabel(this);
@@ -138,9 +135,6 @@ void ExportDialog::buildLayout()
   buttons->addWidget(m_cancel);
   layout->addLayout(buttons);
 
-  m_poll = new QTimer(this);
-  m_poll->setInterval(50);
-  connect(m_poll, &QTimer::timeout, this, &ExportDialog::updateProgress);
   connect(m_format, qOverload<int>(&QComboBox::currentIndexChanged), this, &ExportDialog::onFormatChanged);
   connect(m_range, qOverload<int>(&QComboBox::currentIndexChanged), this, &ExportDialog::onRangeChoiceChanged);
   connect(m_first, &QSpinBox::valueChanged, this, &ExportDialog::onFramesEdited);
@@ -398,23 +392,18 @@ bool ExportDialog::startExport()
 
   m_total = job.frameCount();
   m_runningOutput = QDir::toNativeSeparators(output.absoluteFilePath());
-  m_progress = std::make_shared<ExportProgress>();
-  m_progressBar->setRange(0, static_cast<int>(std::max<long long>(m_total, 1)));
   m_progressBar->setValue(0);
-  showStatus(tr("Exporting %n frame(s)…", nullptr, static_cast<int>(m_total)), false);
+  m_runningText = tr("Exporting %n frame(s)…", nullptr, static_cast<int>(m_total));
+  showStatus(m_runningText, false);
   setRunning(true);
-  m_watcher.setFuture(QtConcurrent::run([job = std::move(job), progress = m_progress] {
-    return runAnimationExport(job, *progress);
-  }));
+  m_jobs->start([job = std::move(job)](const JobControl& control) { return runAnimationExport(job, control); },
+                [this](const ExportOutcome& outcome) { onFinished(outcome); });
   return true;
 }
 
 void ExportDialog::cancelExport()
 {
-  if (!isRunning())
-    return;
-  m_progress->cancel = true;
-  showStatus(tr("Cancelling…"), false);
+  m_jobs->cancel();  // the export removes what it wrote and ends Cancelled
 }
 
 void ExportDialog::reject()
@@ -427,15 +416,7 @@ void ExportDialog::reject()
 
 bool ExportDialog::isRunning() const
 {
-  return m_watcher.isRunning();
-}
-
-void ExportDialog::waitForFinished()
-{
-  while (m_poll->isActive() || isRunning()) {
-    m_watcher.waitForFinished();
-    QCoreApplication::processEvents();
-  }
+  return m_jobs->running();
 }
 
 QString ExportDialog::statusText() const
@@ -443,16 +424,17 @@ QString ExportDialog::statusText() const
   return m_status->text();
 }
 
-void ExportDialog::updateProgress()
+void ExportDialog::showProgress(double fraction, const QString& timeLeft)
 {
-  m_progressBar->setValue(static_cast<int>(std::min<long long>(m_progress->done, m_total)));
+  if (m_jobs->cancelling())
+    return;  // "Cancelling…" stays
+  m_progressBar->setValue(static_cast<int>(std::lround(1000.0 * fraction)));
+  showStatus(timeLeft.isEmpty() ? m_runningText : m_runningText + QLatin1Char(' ') + timeLeft, false);
 }
 
-void ExportDialog::onFinished()
+void ExportDialog::onFinished(const ExportOutcome& outcome)
 {
-  updateProgress();
   setRunning(false);
-  const ExportOutcome outcome = m_watcher.result();
   switch (outcome.status) {
   case ExportStatus::Done:
   {
@@ -460,6 +442,7 @@ void ExportDialog::onFinished()
     if (format() == AnimationFormat::Bvh)
       if (const std::string leftOut = leftOutOnWriting(m_document.take(), TakeFormat::Bvh); !leftOut.empty())
         done += QLatin1Char(' ') + tr("Note: %1.").arg(QString::fromStdString(leftOut));
+    m_progressBar->setValue(m_progressBar->maximum());
     showStatus(done, false);
     break;
   }
@@ -480,10 +463,6 @@ void ExportDialog::setRunning(bool running)
   for (QWidget* input : std::initializer_list<QWidget*>{m_format, m_path, m_browse, m_range, m_first, m_last, m_export})
     input->setEnabled(!running);
   m_cancel->setText(running ? tr("Cancel") : tr("Close"));
-  if (running)
-    m_poll->start();
-  else
-    m_poll->stop();
 }
 
 void ExportDialog::showStatus(const QString& text, bool error)

@@ -3,9 +3,7 @@
 #include "dialogs/animation_export_job.h"
 
 #include <QDialog>
-#include <QFutureWatcher>
 
-#include <memory>
 
 class QComboBox;
 class QLabel;
@@ -13,10 +11,10 @@ class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
-class QTimer;
 
 namespace mocap::ui {
 
+class JobRunner;
 class TakeDocument;
 
 /// File ▸ Export Animation: the markers as BVH, or the deformed face mesh as an OBJ sequence or an
@@ -65,8 +63,8 @@ public:
   /// Asks a running export to stop; it removes what it wrote (the Cancel button while running).
   void cancelExport();
   [[nodiscard]] bool isRunning() const;
-  /// Processes events until the running export has finished. For tests.
-  void waitForFinished();
+  /// The export's background job (its finished() is what a test waits on).
+  [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
   /// The last message shown under the progress bar (an error, "cancelled", or what was written).
   [[nodiscard]] QString statusText() const;
 
@@ -82,8 +80,8 @@ private:
   void restoreSettings();
   void browse();
   void onFormatChanged();
-  void onFinished();
-  void updateProgress();
+  void onFinished(const ExportOutcome& outcome);
+  void showProgress(double fraction, const QString& timeLeft);
   void setRunning(bool running);
   void onRangeChoiceChanged();
   void onFramesEdited();
@@ -109,11 +107,9 @@ private:
   QLabel* m_status = nullptr;
   QPushButton* m_export = nullptr;
   QPushButton* m_cancel = nullptr;
-  QTimer* m_poll = nullptr;
-
-  std::shared_ptr<ExportProgress> m_progress;
-  QFutureWatcher<ExportOutcome> m_watcher;
+  JobRunner* m_jobs = nullptr;
   long long m_total = 0;
+  QString m_runningText;  // "Exporting 1200 frames…", followed by the time left
   QString m_runningOutput;
 };
 

@@ -1,5 +1,6 @@
 #include "document/autosave.h"
 
+#include "document/job_runner.h"
 #include "document/take_document.h"
 
 #include <QCoreApplication>
@@ -8,7 +9,6 @@
 #include <QFileInfo>
 #include <QSettings>
 #include <QStandardPaths>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include "mocap/io/take_io.h"
 
@@ -40,11 +40,11 @@ bool ownerIsRunning(const QString& fileName)
 } // namespace
 
 Autosave::Autosave(TakeDocument& document, QString folder, QObject* parent)
-    : QObject(parent), m_document(document), m_folder(folder.isEmpty() ? defaultFolder() : std::move(folder))
+    : QObject(parent), m_document(document), m_folder(folder.isEmpty() ? defaultFolder() : std::move(folder)),
+      m_write(new JobRunner(this))
 {
   m_timer.setInterval(kDefaultIntervalMs);
   connect(&m_timer, &QTimer::timeout, this, &Autosave::saveInBackground);
-  connect(&m_write, &QFutureWatcher<QString>::finished, this, &Autosave::onWriteFinished);
   m_timer.start();
   // Saved, or a different take opened: the recovery copy is stale.
   connect(&document, &TakeDocument::modifiedChanged, this, [this](bool modified) {
@@ -104,7 +104,7 @@ QString Autosave::saveNow()
 
 void Autosave::saveInBackground()
 {
-  if (m_write.isRunning() || !m_document.hasTake() || !m_document.isModified())
+  if (m_write->running() || !m_document.hasTake() || !m_document.isModified())
     return;
   if (const QString error = prepare(); !error.isEmpty()) {
     emit failed(error);
@@ -112,25 +112,25 @@ void Autosave::saveInBackground()
   }
   // The copy is the only work on the UI thread (a memory copy of the samples); encoding and the
   // atomic write happen on the worker.
-  m_write.setFuture(QtConcurrent::run([take = m_document.take(), path = recoveryPath()]() -> QString {
-    try {
-      writeTake(take, path.toStdString());
-      return {};
-    } catch (const std::exception& e) {
-      return QString::fromStdString(e.what());
-    }
-  }));
+  m_write->start(
+      [take = m_document.take(), path = recoveryPath()](const JobControl&) -> QString {
+        try {
+          writeTake(take, path.toStdString());
+          return {};
+        } catch (const std::exception& e) {
+          return QString::fromStdString(e.what());
+        }
+      },
+      [this](const QString& error) { onWriteFinished(error); });
 }
 
 void Autosave::waitForWrite()
 {
-  if (m_write.isRunning())
-    m_write.waitForFinished();
+  m_write->wait();
 }
 
-void Autosave::onWriteFinished()
+void Autosave::onWriteFinished(const QString& error)
 {
-  const QString error = m_write.result();
   if (!error.isEmpty())
     emit failed(error);
   else if (m_document.isModified())

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <QDateTime>
-#include <QFutureWatcher>
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -12,6 +11,7 @@
 
 namespace mocap::ui {
 
+class JobRunner;
 class TakeDocument;
 
 /// A take written by Autosave that its session never saved or closed cleanly (a crash, a kill,
@@ -51,7 +51,8 @@ public:
   /// Starts writing the recovery file on a worker thread (what the timer does); the UI thread
   /// only copies the take. A write still running is not started twice. Errors come as failed().
   void saveInBackground();
-  /// Blocks until a background write has finished. For tests and shutdown.
+  /// Blocks until a background write has finished and handles its outcome at once (no event
+  /// loop). Before a write or removal of the recovery file, and at shutdown.
   void waitForWrite();
   /// State besides the take that a recovery must bring back (the face mesh and its binding, the
   /// window layout): asked on the UI thread at every autosave and stored in the description.
@@ -74,13 +75,13 @@ signals:
 private:
   /// Creates the folder and writes the description; returns an error or "".
   QString prepare();
-  void onWriteFinished();
+  void onWriteFinished(const QString& error);
 
   TakeDocument& m_document;
   QString m_folder;
   QTimer m_timer;
   std::function<QVariantMap()> m_session;
-  QFutureWatcher<QString> m_write;
+  JobRunner* m_write = nullptr;  // the background write
 };
 
 } // namespace mocap::ui

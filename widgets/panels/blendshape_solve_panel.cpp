@@ -3,6 +3,7 @@
 #include "actions/weight_edit_actions.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
+#include "document/job_runner.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
@@ -17,7 +18,6 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -30,7 +30,6 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -89,13 +88,11 @@ Eigen::VectorXd peaks(const Eigen::MatrixXd& weights)
 BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
     : QWidget(parent), m_document(session.document()), m_faceMesh(session.faceMesh()), m_model(session.blendshapes()),
       m_scene(new BlendshapeScene(m_model, m_faceMesh, view, this)),
-      m_edits(new WeightEditActions(m_document, m_model, this))
+      m_edits(new WeightEditActions(m_document, m_model, this)), m_jobs(new JobRunner(this))
 {
   TakeDocument& document = m_document;
   buildUi();
   readSettings();
-  connect(&m_loadWatcher, &QFutureWatcher<RigLoad>::finished, this, &BlendshapeSolvePanel::onRigLoaded);
-  connect(&m_solveWatcher, &QFutureWatcher<SolveRun>::finished, this, &BlendshapeSolvePanel::onSolved);
   connect(&m_model, &BlendshapeSolveModel::rigChanged, this, &BlendshapeSolvePanel::showRig);
   connect(&session, &StudioSession::takeContextReset, this, &BlendshapeSolvePanel::onTakeContextReset);
   connect(&m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
@@ -110,12 +107,7 @@ BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d&
   connect(&document, &TakeDocument::markersChanged, this, stale);
 }
 
-BlendshapeSolvePanel::~BlendshapeSolvePanel()
-{
-  m_progress->stopRunning();
-  m_loadWatcher.waitForFinished();
-  m_solveWatcher.waitForFinished();
-}
+BlendshapeSolvePanel::~BlendshapeSolvePanel() = default;  // the runner stops and awaits its job
 
 void BlendshapeSolvePanel::buildUi()
 {
@@ -191,9 +183,8 @@ QWidget* BlendshapeSolvePanel::buildSolveBox()
   m_solve->setToolTip(tr("Solve every frame of the take to the rig's weights (on a worker; Cancel stops it)"));
   connect(m_solve, &QPushButton::clicked, this, [this] { (void)solve(); });
   form->addRow(m_solve);
-  m_progress = new JobProgressRow(box);
-  connect(m_progress, &JobProgressRow::cancelled, this, [this] { showStatus(tr("Cancelling…")); });
-  form->addRow(m_progress);
+  connect(m_jobs, &JobRunner::cancelled, this, [this] { showStatus(tr("Cancelling…")); });
+  form->addRow(new JobProgressRow(*m_jobs, box));
   return box;
 }
 
@@ -348,17 +339,12 @@ BlendshapeSolveOptions BlendshapeSolvePanel::optionsFromUi() const
 
 bool BlendshapeSolvePanel::busy() const
 {
-  return m_loadWatcher.isRunning() || m_solveWatcher.isRunning();
+  return m_jobs->running();
 }
 
-void BlendshapeSolvePanel::waitForJob()
+void BlendshapeSolvePanel::finishJob()
 {
-  while (busy()) {
-    m_loadWatcher.waitForFinished();
-    m_solveWatcher.waitForFinished();
-    QCoreApplication::processEvents();
-  }
-  QCoreApplication::processEvents();  // the finished() slots
+  m_jobs->wait();
 }
 
 QString BlendshapeSolvePanel::loadRig(const QString& path, const QString& shapeFolder)
@@ -368,13 +354,13 @@ QString BlendshapeSolvePanel::loadRig(const QString& path, const QString& shapeF
     return m_status->text();
   }
   showStatus(tr("Reading %1…").arg(QFileInfo(path).fileName()));
-  m_loadWatcher.setFuture(QtConcurrent::run(readRigInBackground, path, shapeFolder));
+  m_jobs->start([path, shapeFolder](const JobControl&) { return readRigInBackground(path, shapeFolder); },
+                [this](const RigLoad& load) { onRigLoaded(load); });
   return {};
 }
 
-void BlendshapeSolvePanel::onRigLoaded()
+void BlendshapeSolvePanel::onRigLoaded(const RigLoad& load)
 {
-  const RigLoad load = m_loadWatcher.result();
   if (!load.error.isEmpty()) {
     showStatus(tr("Cannot read the rig %1: %2").arg(QFileInfo(load.path).fileName(), load.error), true);
     emit rigLoaded(m_status->text());
@@ -431,21 +417,21 @@ QString BlendshapeSolvePanel::solve()
   }
   showStatus(tr("Solving…"));
   m_solve->setEnabled(false);
-  m_solveWatcher.setFuture(QtConcurrent::run(solveInBackground, m_model.rig(), face.binding(), face.rigTake(),
-                                             optionsFromUi(), m_progress->begin()));
+  m_jobs->start(
+      [rig = m_model.rig(), binding = face.binding(), take = face.rigTake(), options = optionsFromUi()](
+          const JobControl& control) { return solveInBackground(rig, binding, take, options, control); },
+      [this](SolveRun run) { onSolved(std::move(run)); });
   return {};
 }
 
 void BlendshapeSolvePanel::cancel()
 {
-  m_progress->cancel();
+  m_jobs->cancel();
 }
 
-void BlendshapeSolvePanel::onSolved()
+void BlendshapeSolvePanel::onSolved(SolveRun run)
 {
-  m_progress->finish();
   m_solve->setEnabled(true);
-  SolveRun run = m_solveWatcher.result();
   if (!run.error.isEmpty()) {
     showStatus(tr("Solve failed: %1").arg(run.error), true);
     emit solveFinished(m_status->text());

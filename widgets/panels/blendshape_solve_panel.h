@@ -3,7 +3,6 @@
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/model/blendshape_rig.h"
 
-#include <QFutureWatcher>
 #include <QString>
 #include <QWidget>
 
@@ -22,7 +21,7 @@ namespace mocap::ui {
 class BlendshapeScene;
 class BlendshapeSolveModel;
 class FaceMeshModel;
-class JobProgressRow;
+class JobRunner;
 class MarkerView3d;
 class StudioSession;
 class TakeDocument;
@@ -77,8 +76,11 @@ public:
   QString solve();
   void cancel();
   [[nodiscard]] bool busy() const;
-  /// Processes events until the running load or solve has delivered (for tests and the command line).
-  void waitForJob();
+  /// Blocks until the running load or solve has ended and delivers it at once, without serving
+  /// the event loop (the command line's --rig, before anything is painted).
+  void finishJob();
+  /// The panel's background job, a load or a solve (its finished() is what a test waits on).
+  [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
 
   [[nodiscard]] BlendshapeSolveOptions optionsFromUi() const;
   /// Each returns "" or the error shown.
@@ -102,12 +104,12 @@ private:
   QWidget* buildDisplayBox();
   void readSettings();
   void writeSettings() const;
-  void onRigLoaded();
+  void onRigLoaded(const RigLoad& load);
   /// The rig line, shape list and status for the model's rig (loaded, kept for a new take, dropped).
   void showRig();
   /// A new take: what of the rig was kept, or back to the first step.
   void onTakeContextReset(bool rigKept);
-  void onSolved();
+  void onSolved(SolveRun run);
   void fillShapeList();
   void applyShapeFilter();
   void onListSelectionChanged();
@@ -125,8 +127,7 @@ private:
   BlendshapeSolveModel& m_model;
   BlendshapeScene* m_scene = nullptr;
   WeightEditActions* m_edits = nullptr;
-  QFutureWatcher<RigLoad> m_loadWatcher;
-  QFutureWatcher<SolveRun> m_solveWatcher;
+  JobRunner* m_jobs = nullptr;  // one job at a time: a rig load or a solve
   bool m_loadingSettings = false;
   bool m_syncingSelection = false;
 
@@ -137,7 +138,6 @@ private:
   QDoubleSpinBox* m_smoothness = nullptr;
   QDoubleSpinBox* m_sparsity = nullptr;
   QPushButton* m_solve = nullptr;
-  JobProgressRow* m_progress = nullptr;
   QLabel* m_status = nullptr;
   QLineEdit* m_filter = nullptr;
   QListWidget* m_shapes = nullptr;

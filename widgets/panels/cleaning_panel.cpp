@@ -2,6 +2,7 @@
 
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
+#include "document/job_runner.h"
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
 
@@ -9,7 +10,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
-#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -17,9 +17,9 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <utility>
 
 namespace mocap::ui {
 
@@ -73,8 +73,8 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   layout->addWidget(m_live);
   layout->addWidget(m_selectedOnly);
   layout->addWidget(m_rangeOnly);
-  m_progress = new JobProgressRow(this);
-  layout->addWidget(m_progress);
+  m_jobs = new JobRunner(this);
+  layout->addWidget(new JobProgressRow(*m_jobs, this));
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   layout->addWidget(m_status);
@@ -89,9 +89,8 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   m_debounce->setSingleShot(true);
   m_debounce->setInterval(200);
   connect(m_debounce, &QTimer::timeout, this, &CleaningPanel::start);
-  connect(&m_watcher, &QFutureWatcher<StepResult>::finished, this, &CleaningPanel::onFinished);
   connect(m_apply, &QPushButton::clicked, this, [this] { apply(); });
-  connect(m_progress, &JobProgressRow::cancelled, this, &CleaningPanel::cancel);
+  connect(m_jobs, &JobRunner::cancelled, this, &CleaningPanel::cancel);
   connect(m_live, &QCheckBox::toggled, this, [this](bool on) {
     if (on)
       schedule();
@@ -114,10 +113,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   });
 }
 
-CleaningPanel::~CleaningPanel()
-{
-  m_watcher.waitForFinished();  // the job holds its own take copy; just let it end
-}
+CleaningPanel::~CleaningPanel() = default;  // the runner stops and awaits its job
 
 void CleaningPanel::addStep(CleaningStep* step)
 {
@@ -165,7 +161,7 @@ QStringList CleaningPanel::loadCleanOptions(const CleanOptions& options)
 
 bool CleaningPanel::busy() const
 {
-  return m_watcher.isRunning();
+  return m_jobs->running();
 }
 
 void CleaningPanel::schedule()
@@ -173,6 +169,7 @@ void CleaningPanel::schedule()
   if (!m_applying)
     m_applied.clear();  // a setting or the take changed: the next pass's preview speaks again
   ++m_generation;  // whatever is running or shown is stale now
+  m_applyWhenReady = false;  // Apply applies what it was pressed for, not a later setting
   if (m_live->isChecked() && isVisible())
     m_debounce->start();
 }
@@ -192,44 +189,42 @@ void CleaningPanel::refresh()
 
 void CleaningPanel::start()
 {
+  m_debounce->stop();
   CleaningStep* step = currentStep();
   if (!step || !m_document.hasTake())
     return;
-  if (m_watcher.isRunning()) {
-    if (m_runningGeneration != m_generation)
-      m_progress->stopRunning();  // superseded: stop it at its next checkpoint
-    m_debounce->start();  // one job at a time; try again when this one ends
-    return;
-  }
+  if (busy() && m_runningGeneration == m_generation)
+    return;  // the newest request runs already
   m_runningGeneration = m_generation;
-  const JobControl control = m_progress->begin();
   if (m_applied.isEmpty())
     m_status->setText(tr("Computing…"));
   step->setScope(scope());
-  m_watcher.setFuture(QtConcurrent::run([job = step->job(), take = m_document.take(), control] {
-    try {
-      return job(take, control);
-    } catch (const JobCancelled&) {
-      return StepResult{};  // dropped: its generation is stale
-    } catch (const std::exception& e) {  // nothing may throw across the event loop
-      StepResult failed;
-      failed.summary = QString::fromStdString(e.what());
-      return failed;
-    }
-  }));
+  // A newer request supersedes the running one: the runner stops it and never delivers it.
+  m_jobs->start(
+      [job = step->job(), take = m_document.take()](const JobControl& control) {
+        try {
+          return job(take, control);
+        } catch (const JobCancelled&) {
+          throw;
+        } catch (const std::exception& e) {  // the step's own error is its summary
+          StepResult failed;
+          failed.summary = QString::fromStdString(e.what());
+          return failed;
+        }
+      },
+      [this, generation = m_generation](StepResult result) { onFinished(generation, std::move(result)); });
 }
 
-void CleaningPanel::onFinished()
+void CleaningPanel::onFinished(unsigned generation, StepResult result)
 {
-  m_progress->finish();
-  if (m_runningGeneration != m_generation) {  // superseded or cancelled
+  if (generation != m_generation) {  // stale: the take or a setting changed while hidden or not live
     if (m_live->isChecked())
       m_debounce->start();
     return;
   }
-  m_result = m_watcher.result();
+  m_result = std::move(result);
   m_result.patches = onlySelected(std::move(m_result.patches));
-  m_resultGeneration = m_runningGeneration;
+  m_resultGeneration = generation;
   int samples = 0;
   for (const SamplePatch& p : m_result.patches)
     samples += static_cast<int>(p.size());
@@ -243,6 +238,8 @@ void CleaningPanel::onFinished()
   if (m_result.detection)  // flags are the last detection's, on every tab, until the next one
     m_document.setFlags(m_result.flags);
   m_document.setPreview(m_result.patches);
+  if (std::exchange(m_applyWhenReady, false))
+    apply();
 }
 
 QString CleaningPanel::statusText() const
@@ -253,21 +250,9 @@ QString CleaningPanel::statusText() const
 void CleaningPanel::cancel()
 {
   ++m_generation;
+  m_applyWhenReady = false;
   m_debounce->stop();
   m_status->setText(tr("Cancelled"));
-}
-
-void CleaningPanel::waitForPreview()
-{
-  m_debounce->stop();
-  if (!m_watcher.isRunning() && m_resultGeneration != m_generation)
-    start();
-  while (m_watcher.isRunning() || m_resultGeneration != m_generation) {
-    m_watcher.waitForFinished();
-    QCoreApplication::processEvents();
-    if (!m_watcher.isRunning() && m_resultGeneration != m_generation)
-      start();
-  }
 }
 
 StepScope CleaningPanel::scope() const
@@ -323,8 +308,11 @@ int CleaningPanel::apply()
   CleaningStep* step = currentStep();
   if (!step || !m_document.hasTake())
     return 0;
-  if (m_resultGeneration != m_generation)
-    waitForPreview();
+  if (m_resultGeneration != m_generation) {  // computed first; onFinished applies it
+    start();
+    m_applyWhenReady = busy();
+    return 0;
+  }
   step->setScope(scope());
   std::vector<SamplePatch> patches = onlySelected(step->patchesToApply(m_document.take(), m_result));
   int samples = 0;

@@ -2,7 +2,6 @@
 
 #include "panels/cleaning_step.h"
 
-#include <QFutureWatcher>
 #include <QStringList>
 #include <QWidget>
 
@@ -16,14 +15,15 @@ class QTimer;
 
 namespace mocap::ui {
 
-class JobProgressRow;
+class JobRunner;
 class TakeDocument;
 
 /// The cleaning dock: one tab per step (bad points, gaps, smoothing). Changing a parameter
 /// recomputes the step on a worker thread, on a copy of the take, and shows the result as a
 /// preview over the views without touching the take; Apply pushes it as one undoable command.
 /// A newer request supersedes a running one, and Cancel stops it: the computation itself stops at
-/// its next checkpoint (JobControl) and its result is dropped.
+/// its next checkpoint (JobRunner) and its result is dropped. Apply on a stale preview computes
+/// it first and applies when it arrives, without blocking.
 /// After Apply the status says what was done (the step's appliedSummary), not what the next pass
 /// would do, until a setting or the take changes again.
 /// A detection's flags (bad points) become the document's flags and stay on every tab until the
@@ -48,11 +48,14 @@ public:
   }
   /// Recomputes the preview of the current step now.
   void refresh();
-  /// Pushes the current step's result (computing it first when the preview is stale).
-  /// Returns the number of patched samples.
+  /// Pushes the current step's result and returns the number of patched samples. On a stale
+  /// preview it starts the computation, returns 0 and applies when the preview arrives (unless a
+  /// setting or the take changes first, or Cancel).
   int apply();
   /// True while a computation runs.
   [[nodiscard]] bool busy() const;
+  /// The panel's background job (its finished() is what a test waits on).
+  [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
   /// True when the shown result is that of the latest request (nothing running or stale).
   [[nodiscard]] bool previewReady() const { return !busy() && m_resultGeneration == m_generation; }
   /// The added steps, in tab order.
@@ -65,8 +68,6 @@ public:
   /// context and are not used. Returns the titles of the steps the preset turns off (left as they
   /// were).
   QStringList loadCleanOptions(const CleanOptions& options);
-  /// Blocks until the running computation (if any) has delivered its preview. For tests.
-  void waitForPreview();
   [[nodiscard]] const StepResult& lastResult() const { return m_result; }
   /// The status line: what the preview would do, or what the last Apply did.
   [[nodiscard]] QString statusText() const;
@@ -77,7 +78,7 @@ protected:
 private:
   void schedule();
   void start();
-  void onFinished();
+  void onFinished(unsigned generation, StepResult result);
   void cancel();
   /// What "Selected markers only" and "Selected frame range only" limit the steps to now.
   [[nodiscard]] StepScope scope() const;
@@ -92,16 +93,16 @@ private:
   QCheckBox* m_selectedOnly = nullptr;
   QCheckBox* m_rangeOnly = nullptr;
   QPushButton* m_apply = nullptr;
-  JobProgressRow* m_progress = nullptr;
+  JobRunner* m_jobs = nullptr;
   QLabel* m_status = nullptr;
   QTimer* m_debounce = nullptr;
-  QFutureWatcher<StepResult> m_watcher;
   StepResult m_result;
   unsigned m_generation = 0;       // bumped by every request and by edits of the take
   unsigned m_runningGeneration = 0;
   unsigned m_resultGeneration = ~0u;
   QString m_applied;        // what the last Apply did, until a setting or the take changes
   bool m_applying = false;  // the Apply's own change of the take keeps m_applied
+  bool m_applyWhenReady = false;  // Apply was pressed on a stale preview
 };
 
 } // namespace mocap::ui

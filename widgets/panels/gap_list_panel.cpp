@@ -2,6 +2,7 @@
 
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
+#include "document/job_runner.h"
 #include "document/take_document.h"
 #include "models/fill_rule_text.h"
 #include "models/gap_table_model.h"
@@ -12,7 +13,6 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -27,7 +27,6 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <utility>
@@ -175,8 +174,8 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   checks->addWidget(m_live);
   layout->addLayout(checks);
 
-  m_progress = new JobProgressRow(this);
-  layout->addWidget(m_progress);
+  m_jobs = new JobRunner(this);
+  layout->addWidget(new JobProgressRow(*m_jobs, this));
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   layout->addWidget(m_status);
@@ -191,7 +190,6 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   m_debounce->setSingleShot(true);
   m_debounce->setInterval(200);
   connect(m_debounce, &QTimer::timeout, this, &GapListPanel::evaluate);
-  connect(&m_watcher, &QFutureWatcher<FillResult>::finished, this, &GapListPanel::onFinished);
 
   connect(m_filter, &QLineEdit::textChanged, this, [proxy](const QString& text) { proxy->setLabelFilter(text); });
   connect(m_onlyOpen, &QCheckBox::toggled, this, [proxy](bool on) {
@@ -213,7 +211,7 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   });
   connect(uncheckAll, &QPushButton::clicked, this, [this] { m_model->setCheckedRows(m_model->checkedRows(), false); });
   connect(m_fill, &QPushButton::clicked, this, [this] { fill(); });
-  connect(m_progress, &JobProgressRow::cancelled, this, &GapListPanel::cancel);
+  connect(m_jobs, &JobRunner::cancelled, this, &GapListPanel::cancel);
   connect(m_view, &QTableView::activated, this, [this](const QModelIndex& index) {
     if (index.column() != GapTableModel::MethodColumn)  // there a double-click chooses the method
       showGap(m_proxy->mapToSource(index).row());
@@ -276,10 +274,7 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   m_status->setText(tr("Check gaps, or select rows, to preview their fill; double-click a gap to go to it."));
 }
 
-GapListPanel::~GapListPanel()
-{
-  m_watcher.waitForFinished();  // the job holds its own take copy; just let it end
-}
+GapListPanel::~GapListPanel() = default;  // the runner stops and awaits its job
 
 std::vector<int> GapListPanel::scopeRows() const
 {
@@ -362,7 +357,7 @@ void GapListPanel::hideEvent(QHideEvent* event)
 
 bool GapListPanel::busy() const
 {
-  return m_computing || m_debounce->isActive() || m_pendingFill.has_value();
+  return m_jobs->running() || m_debounce->isActive() || m_pendingFill.has_value();
 }
 
 bool GapListPanel::resultMatches(const Request& request) const
@@ -370,11 +365,10 @@ bool GapListPanel::resultMatches(const Request& request) const
   return m_resultTake == m_takeGeneration && m_resultRequest == request;
 }
 
-// Decides the next step: push a fill whose result is ready, show a ready preview, or compute.
+// Decides the next step: push a fill whose result is ready, show a ready preview, or compute
+// (superseding a running computation of another request).
 void GapListPanel::evaluate()
 {
-  if (m_computing)
-    return;  // onFinished evaluates again
   if (m_cancelled || !m_document.hasTake()) {
     m_pendingFill.reset();
     return;
@@ -393,7 +387,8 @@ void GapListPanel::evaluate()
     return;
   }
   if (!resultMatches(wanted)) {
-    launch(wanted);
+    if (!m_jobs->running() || !(m_running == wanted) || m_runningTake != m_takeGeneration)
+      launch(wanted);  // else it is on its way: onFinished evaluates again
     return;
   }
   if (filling) {
@@ -408,29 +403,22 @@ void GapListPanel::launch(const Request& request)
 {
   m_running = request;
   m_runningTake = m_takeGeneration;
-  m_computing = true;
-  const JobControl control = m_progress->begin();
   m_status->setText(tr("Computing the fill of %n gap(s)…", nullptr, static_cast<int>(request.gaps.size())));
-  m_watcher.setFuture(
-      QtConcurrent::run([take = m_document.take(), request, rules = m_model->fillRules(), control] {
-        try {
-          return fillEachGap(take, request.gaps, request.methods, request.allowed, rules, control);
-        } catch (const JobCancelled&) {
-          return FillResult{};  // dropped by onFinished (cancelled)
-        }
-      }));
+  m_jobs->start(
+      [take = m_document.take(), request, rules = m_model->fillRules()](const JobControl& control) {
+        return fillEachGap(take, request.gaps, request.methods, request.allowed, rules, control);
+      },
+      [this, request, take = m_takeGeneration](FillResult result) { onFinished(request, take, std::move(result)); });
 }
 
-void GapListPanel::onFinished()
+void GapListPanel::onFinished(const Request& request, unsigned take, FillResult result)
 {
-  m_computing = false;
-  m_progress->finish();
   if (m_cancelled)
     return;
-  if (m_runningTake == m_takeGeneration) {  // a valid result for its request, even if no longer wanted
-    m_result = m_watcher.result();
-    m_resultRequest = m_running;
-    m_resultTake = m_runningTake;
+  if (take == m_takeGeneration) {  // a valid result for its request, even if no longer wanted
+    m_result = std::move(result);
+    m_resultRequest = request;
+    m_resultTake = take;
     m_model->setReports(m_result.gaps);
   }
   evaluate();
@@ -571,21 +559,6 @@ void GapListPanel::setFillRules(const FillOptions& rules)
     return;  // e.g. the method changed: not a rule
   m_model->setFillRules(rules);
   takeChanged();  // results computed under the old rules are stale
-}
-
-void GapListPanel::waitUntilIdle()
-{
-  while (busy()) {
-    if (m_computing)
-      m_watcher.waitForFinished();  // then processEvents delivers finished
-    else if (m_debounce->isActive()) {
-      m_debounce->stop();
-      evaluate();
-    }
-    QCoreApplication::processEvents();
-    if (!m_computing && !m_debounce->isActive() && m_pendingFill)
-      evaluate();
-  }
 }
 
 QString GapListPanel::statusText() const

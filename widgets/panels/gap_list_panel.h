@@ -2,7 +2,6 @@
 
 #include "mocap/cleaning/fill/gap_fill.h"
 
-#include <QFutureWatcher>
 #include <QWidget>
 
 #include <optional>
@@ -19,7 +18,7 @@ class QTimer;
 namespace mocap::ui {
 
 class GapTableModel;
-class JobProgressRow;
+class JobRunner;
 class TakeDocument;
 
 /// The Gaps dock: every gap of the take in a sortable table (marker, first frame, length in frames
@@ -53,8 +52,8 @@ public:
   void fill(std::optional<std::vector<int>> rows = std::nullopt);
   /// True while a computation runs or waits to run.
   [[nodiscard]] bool busy() const;
-  /// Runs the pending work (preview, fill) to its end. For tests.
-  void waitUntilIdle();
+  /// The panel's background job (its finished() is what a test waits on).
+  [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
   /// The rules a gap must pass to be filled without the user's override (the Cleaning panel's
   /// longest gap, extrapolation and least seen). FillOptions' defaults until set.
   void setFillRules(const FillOptions& rules);
@@ -82,7 +81,7 @@ private:
   void schedule();
   void evaluate();
   void launch(const Request& request);
-  void onFinished();
+  void onFinished(const Request& request, unsigned take, FillResult result);
   void cancel();
   void push();
   void showPreview();
@@ -102,19 +101,17 @@ private:
   QCheckBox* m_onlyOpen = nullptr;
   QCheckBox* m_live = nullptr;
   QPushButton* m_fill = nullptr;
-  JobProgressRow* m_progress = nullptr;
+  JobRunner* m_jobs = nullptr;
   QLabel* m_status = nullptr;
   QTimer* m_debounce = nullptr;
 
-  QFutureWatcher<FillResult> m_watcher;
-  Request m_running;
+  Request m_running;  // the newest request computing
   unsigned m_runningTake = 0;
   FillResult m_result;
   Request m_resultRequest;
   unsigned m_resultTake = ~0u;
   unsigned m_takeGeneration = 0;  // bumped by every change of the take
   std::optional<Request> m_pendingFill;
-  bool m_computing = false;  // launched, finished not handled yet
   bool m_cancelled = false;
   bool m_ownsPreview = false;
   bool m_settingPreview = false;

@@ -1,9 +1,9 @@
 #include "job_progress_row.h"
 
-#include <QCoreApplication>
+#include "document/job_runner.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 
@@ -11,17 +11,7 @@
 
 namespace mocap::ui {
 
-QString timeLeftText(double fraction, double elapsedSeconds)
-{
-  if (!(fraction >= 0.02) || fraction >= 1.0 || elapsedSeconds < 0.5)
-    return {};
-  const double left = elapsedSeconds * (1.0 - fraction) / fraction;
-  if (left < 60.0)
-    return JobProgressRow::tr("about %1 s left").arg(std::max(1, static_cast<int>(std::lround(left))));
-  return JobProgressRow::tr("about %1 min left").arg(static_cast<int>(std::lround(left / 60.0)));
-}
-
-JobProgressRow::JobProgressRow(QWidget* parent) : QWidget(parent)
+JobProgressRow::JobProgressRow(JobRunner& runner, QWidget* parent) : QWidget(parent)
 {
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -41,55 +31,32 @@ JobProgressRow::JobProgressRow(QWidget* parent) : QWidget(parent)
   layout->addWidget(m_bar, 1);
   layout->addWidget(m_estimate);
   layout->addWidget(m_cancelButton);
-  connect(m_cancelButton, &QPushButton::clicked, this, &JobProgressRow::cancel);
-  finish();
+  connect(m_cancelButton, &QPushButton::clicked, &runner, &JobRunner::cancel);
+  connect(&runner, &JobRunner::started, this, &JobProgressRow::begin);
+  connect(&runner, &JobRunner::progressed, this, &JobProgressRow::showProgress);
+  connect(&runner, &JobRunner::cancelled, this, &JobProgressRow::finish);
+  connect(&runner, &JobRunner::finished, this, &JobProgressRow::finish);
+  if (runner.running())
+    begin();
+  else
+    finish();
 }
 
-JobControl JobProgressRow::begin()
+void JobProgressRow::begin()
 {
-  if (m_cancel)
-    *m_cancel = true;  // an older job still running stops at its next checkpoint
-  m_cancel = std::make_shared<std::atomic<bool>>(false);
-  const unsigned job = ++m_job;
-  m_clock.start();
   m_bar->setValue(0);
   m_bar->setRange(0, 0);  // busy until the first progress report
   m_estimate->clear();
   m_bar->setVisible(true);
   m_estimate->setVisible(true);
   m_cancelButton->setEnabled(true);
-  QPointer<JobProgressRow> row(this);
-  auto progress = [row, job](double fraction) {  // on the worker: post to the UI thread
-    QMetaObject::invokeMethod(
-        qApp, [row, job, fraction] {
-          if (JobProgressRow* target = row.data())
-            target->showProgress(job, fraction);
-        },
-        Qt::QueuedConnection);
-  };
-  return JobControl(std::move(progress), m_cancel);
 }
 
 void JobProgressRow::finish()
 {
-  m_cancel.reset();
   m_bar->setVisible(false);
   m_estimate->setVisible(false);
   m_cancelButton->setEnabled(false);
-}
-
-void JobProgressRow::cancel()
-{
-  if (m_cancel)
-    *m_cancel = true;
-  finish();
-  emit cancelled();
-}
-
-void JobProgressRow::stopRunning()
-{
-  if (m_cancel)
-    *m_cancel = true;
 }
 
 QString JobProgressRow::estimateText() const
@@ -97,13 +64,13 @@ QString JobProgressRow::estimateText() const
   return m_estimate->text();
 }
 
-void JobProgressRow::showProgress(unsigned job, double fraction)
+void JobProgressRow::showProgress(double fraction, const QString& timeLeft)
 {
-  if (job != m_job || !m_cancel)
-    return;  // an older job's report, or after finish()
+  if (!m_cancelButton->isEnabled())
+    return;  // cancelled: the job is on its way out
   m_bar->setRange(0, 1000);
   m_bar->setValue(static_cast<int>(std::lround(1000.0 * fraction)));
-  m_estimate->setText(timeLeftText(fraction, static_cast<double>(m_clock.elapsed()) * 1e-3));
+  m_estimate->setText(timeLeft);
 }
 
 } // namespace mocap::ui

@@ -1,6 +1,8 @@
 #include "panels/layout_planning_panel.h"
 
+#include "document/job_runner.h"
 #include "document/take_document.h"
+#include "panels/job_progress_row.h"
 #include "panels/reference_markers_row.h"
 #include "views/layout_error_plot.h"
 
@@ -24,16 +26,13 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
-#include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
@@ -65,8 +64,7 @@ QStringList splitLabels(const QString& text)
 // Never throws: a failure is the result's error.
 std::shared_ptr<LayoutPlanResult> planInBackground(Take openTake, const QStringList& extraTakes,
                                                    const LayoutRequest& request, const BoundRig& rig,
-                                                   const std::shared_ptr<std::atomic<bool>>& cancel,
-                                                   const std::shared_ptr<std::atomic<int>>& progress)
+                                                   const JobControl& control)
 {
   auto result = std::make_shared<LayoutPlanResult>();
   try {
@@ -76,22 +74,13 @@ std::shared_ptr<LayoutPlanResult> planInBackground(Take openTake, const QStringL
       takes.push_back(readTake(path.toStdString()));
     // With a rig, planning takes the first 60 % of the bar and judging the layouts the rest.
     const double planShare = rig.rig ? 0.6 : 1.0;
-    const auto part = [cancel, progress](double begin, double end) {
-      RunControl control;
-      control.cancel = cancel.get();
-      control.progress = [progress, begin, end](double fraction) {
-        const double done = begin + (end - begin) * std::clamp(fraction, 0.0, 1.0);
-        progress->store(static_cast<int>(std::lround(1000.0 * done)));
-      };
-      return control;
-    };
-    static_cast<LayoutResult&>(*result) = planLayout(takes, request, part(0.0, planShare));
+    static_cast<LayoutResult&>(*result) = planLayout(takes, request, control.part(0.0, planShare));
     if (rig.rig && !result->plan.cancelled) {
       try {
         LayoutRigErrorOptions options;
         options.randomSubsets = request.plan.randomSubsets;
         options.seed = request.plan.pfa.seed;
-        result->rig = planRigErrors(takes, *result, *rig.rig, rig.binding, options, part(planShare, 1.0));
+        result->rig = planRigErrors(takes, *result, *rig.rig, rig.binding, options, control.part(planShare, 1.0));
       } catch (const std::exception& e) {  // the plan stands without the rig measure
         result->rigError = QString::fromStdString(e.what());
       }
@@ -126,18 +115,10 @@ LayoutRequest layoutRequest(const LayoutPlanParameters& parameters, const std::v
 }
 
 LayoutPlanningPanel::LayoutPlanningPanel(TakeDocument& document, QWidget* parent)
-    : QWidget(parent), m_document(document)
+    : QWidget(parent), m_document(document), m_jobs(new JobRunner(this))
 {
   buildForm();
   readSettings();
-  m_progressTimer = new QTimer(this);
-  m_progressTimer->setInterval(100);
-  connect(m_progressTimer, &QTimer::timeout, this, [this] {
-    if (m_progressValue)
-      m_progress->setValue(m_progressValue->load());
-  });
-  connect(&m_watcher, &QFutureWatcher<std::shared_ptr<LayoutPlanResult>>::finished, this,
-          &LayoutPlanningPanel::onFinished);
   connect(m_plot, &LayoutErrorPlot::sizeSelected, this, &LayoutPlanningPanel::showSelectedSize);
   // The highlight maps labels onto the open take; another take (or other markers) ends it.
   connect(&document, &TakeDocument::takeReset, this, &LayoutPlanningPanel::highlightCleared);
@@ -146,12 +127,7 @@ LayoutPlanningPanel::LayoutPlanningPanel(TakeDocument& document, QWidget* parent
   setIdle(true);
 }
 
-LayoutPlanningPanel::~LayoutPlanningPanel()
-{
-  if (m_cancelFlag)
-    m_cancelFlag->store(true);
-  m_watcher.waitForFinished();
-}
+LayoutPlanningPanel::~LayoutPlanningPanel() = default;  // the runner stops and awaits its job
 
 void LayoutPlanningPanel::buildForm()
 {
@@ -283,16 +259,11 @@ void LayoutPlanningPanel::buildForm()
   auto* runRow = new QHBoxLayout;
   m_run = new QPushButton(tr("Run"), this);
   m_run->setDefault(true);
-  m_cancel = new QPushButton(tr("Cancel"), this);
-  m_progress = new QProgressBar(this);
-  m_progress->setRange(0, 1000);
-  m_progress->setTextVisible(false);
   runRow->addWidget(m_run);
-  runRow->addWidget(m_cancel);
-  runRow->addWidget(m_progress, 1);
+  runRow->addWidget(new JobProgressRow(*m_jobs, this), 1);  // bar, time left, Cancel
   layout->addLayout(runRow);
   connect(m_run, &QPushButton::clicked, this, [this] { run(); });
-  connect(m_cancel, &QPushButton::clicked, this, &LayoutPlanningPanel::cancel);
+  connect(m_jobs, &JobRunner::cancelled, this, [this] { m_status->setText(tr("Cancelling…")); });
 
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
@@ -456,16 +427,16 @@ QString LayoutPlanningPanel::run()
     return problem;
   }
   writeSettings();
-  m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
-  m_progressValue = std::make_shared<std::atomic<int>>(0);
-  m_progress->setValue(0);
   m_status->setStyleSheet({});
   m_status->setToolTip({});
   m_status->setText(tr("Planning…"));
   setIdle(false);
-  m_progressTimer->start();
-  m_watcher.setFuture(QtConcurrent::run(planInBackground, m_document.take(), p.extraTakes, std::move(request),
-                                        std::move(rig), m_cancelFlag, m_progressValue));
+  m_jobs->start(
+      [take = m_document.take(), extraTakes = p.extraTakes, request = std::move(request),
+       rig = std::move(rig)](const JobControl& control) mutable {
+        return planInBackground(std::move(take), extraTakes, request, rig, control);
+      },
+      [this](std::shared_ptr<LayoutPlanResult> result) { onFinished(std::move(result)); });
   return {};
 }
 
@@ -492,32 +463,18 @@ QString LayoutPlanningPanel::checkedRequest(const LayoutPlanParameters& paramete
 
 void LayoutPlanningPanel::cancel()
 {
-  if (!busy())
-    return;
-  m_cancelFlag->store(true);
-  m_cancel->setEnabled(false);
-  m_status->setText(tr("Cancelling…"));
+  m_jobs->cancel();
 }
 
 bool LayoutPlanningPanel::busy() const
 {
-  return m_watcher.isRunning();
-}
-
-void LayoutPlanningPanel::waitForRun()
-{
-  while (busy() || !m_idle) {
-    m_watcher.waitForFinished();
-    QCoreApplication::processEvents();
-  }
+  return m_jobs->running();
 }
 
 void LayoutPlanningPanel::setIdle(bool idle)
 {
   m_idle = idle;
   m_run->setEnabled(idle);
-  m_cancel->setEnabled(!idle);
-  m_progress->setVisible(!idle);
   const bool exportable = idle && !selectedLabels().empty();
   m_exportLabels->setEnabled(exportable);
   m_exportSet->setEnabled(exportable);
@@ -540,10 +497,8 @@ QString LayoutPlanningPanel::statusText() const
   return m_status->text();
 }
 
-void LayoutPlanningPanel::onFinished()
+void LayoutPlanningPanel::onFinished(std::shared_ptr<LayoutPlanResult> result)
 {
-  m_progressTimer->stop();
-  std::shared_ptr<LayoutPlanResult> result = m_watcher.result();
   if (!result->error.isEmpty()) {
     showError(tr("Planning failed: %1").arg(result->error));
   } else if (result->plan.cancelled) {

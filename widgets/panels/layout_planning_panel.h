@@ -5,12 +5,10 @@
 #include "mocap/evaluation/layout_rig_error.h"
 #include "mocap/layout/layout_planning.h"
 
-#include <QFutureWatcher>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 
-#include <atomic>
 #include <functional>
 #include <memory>
 #include <string>
@@ -22,14 +20,13 @@ class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
-class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QTableWidget;
-class QTimer;
 
 namespace mocap::ui {
 
+class JobRunner;
 class LayoutErrorPlot;
 class ReferenceMarkersRow;
 class TakeDocument;
@@ -94,11 +91,11 @@ public:
   /// Starts a run with the current parameters; returns an error message (shown too) when it
   /// cannot start, else an empty string.
   QString run();
-  /// Asks a running plan to stop; the panel goes idle when the worker returns.
+  /// Asks a running plan to stop; the panel goes idle when the worker returns what it has.
   void cancel();
   [[nodiscard]] bool busy() const;
-  /// Blocks (processing events) until the running plan has finished. For tests.
-  void waitForRun();
+  /// The panel's background job (its finished() is what a test waits on).
+  [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
 
   /// The last successful plan, or nullptr.
   [[nodiscard]] const LayoutPlanResult* result() const { return m_result.get(); }
@@ -126,7 +123,7 @@ private:
   void buildForm();
   void readSettings();
   void writeSettings() const;
-  void onFinished();
+  void onFinished(std::shared_ptr<LayoutPlanResult> result);
   void showSelectedSize();
   void setIdle(bool idle);
   void showError(const QString& message);
@@ -159,21 +156,15 @@ private:
   QLineEdit* m_keyPoses = nullptr;
   QSpinBox* m_randomSubsets = nullptr;
   QPushButton* m_run = nullptr;
-  QPushButton* m_cancel = nullptr;
-  QProgressBar* m_progress = nullptr;
+  JobRunner* m_jobs = nullptr;
   QLabel* m_status = nullptr;
   LayoutErrorPlot* m_plot = nullptr;
   QTableWidget* m_markers = nullptr;
   QPushButton* m_exportLabels = nullptr;
   QPushButton* m_exportSet = nullptr;
   QPushButton* m_exportTake = nullptr;
-  QTimer* m_progressTimer = nullptr;
 
-  QFutureWatcher<std::shared_ptr<LayoutPlanResult>> m_watcher;
   std::shared_ptr<LayoutPlanResult> m_result;
-  // Shared with the worker: its cancel flag and progress in ‰ (read by a timer on this thread).
-  std::shared_ptr<std::atomic<bool>> m_cancelFlag;
-  std::shared_ptr<std::atomic<int>> m_progressValue;
   bool m_idle = true;  // false from Run until the result is shown
 };
 

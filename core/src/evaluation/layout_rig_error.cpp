@@ -118,17 +118,11 @@ RigLayoutError judgeLayout(const std::vector<SolvedTake>& takes, const std::vect
   return error;
 }
 
-/// The caller's cancel flag as JobControl wants it, not owned.
-std::shared_ptr<const std::atomic<bool>> sharedCancel(const RunControl& control)
-{
-  return {std::shared_ptr<void>{}, control.cancel};
-}
-
 } // namespace
 
 LayoutRigErrors layoutRigErrors(const std::vector<Take>& takes, const BlendshapeRig& rig, const MeshBinding& binding,
                                 const std::vector<std::vector<std::string>>& layouts,
-                                const LayoutRigErrorOptions& options, const RunControl& control)
+                                const LayoutRigErrorOptions& options, const JobControl& control)
 {
   const Stopwatch clock;
   if (takes.empty())
@@ -137,12 +131,11 @@ LayoutRigErrors layoutRigErrors(const std::vector<Take>& takes, const Blendshape
     throw InvalidArgument("rig layout error: the frame limit must be ≥ 0 (0: every frame)");
   LayoutRigErrors result;
   result.layouts.resize(layouts.size());
-  const JobControl progress(control.progress, sharedCancel(control));
-  const JobControl cancelOnly({}, sharedCancel(control));
+  const JobControl cancelOnly = control.silent();
   // The full-set solves are a share of the work like one layout each.
   const double total = static_cast<double>(takes.size() * (layouts.size() + 1));
   std::vector<SolvedTake> solved;
-  if (!prepareTakes(takes, rig, binding, options, progress.part(0.0, static_cast<double>(takes.size()) / total),
+  if (!prepareTakes(takes, rig, binding, options, control.part(0.0, static_cast<double>(takes.size()) / total),
                     solved)) {
     result.cancelled = true;
     return result;
@@ -157,19 +150,14 @@ LayoutRigErrors layoutRigErrors(const std::vector<Take>& takes, const Blendshape
     done.fetch_add(1, std::memory_order_relaxed);
   };
   // On the calling thread, between layouts; parallelFor itself stops on a cancel.
-  const auto tick = [&] {
-    try {
-      progress.checkpoint(static_cast<double>(takes.size() * (1 + done.load())) / total);
-    } catch (const JobCancelled&) {
-    }
-  };
+  const auto tick = [&] { control.report(static_cast<double>(takes.size() * (1 + done.load())) / total); };
   try {
-    result.cancelled = !parallelFor(layouts.size(), control.threads, body, control.cancel, tick);
+    result.cancelled = !parallelFor(layouts.size(), control.threads(), body, control.cancelFlag(), tick);
   } catch (const JobCancelled&) {
     result.cancelled = true;
   }
-  if (control.progress && !result.cancelled)
-    control.progress(1.0);
+  if (!result.cancelled)
+    control.reportNow(1.0);
   result.seconds = clock.seconds();
   return result;
 }
@@ -184,7 +172,7 @@ const LayoutSizeRigErrors* PlanRigErrors::size(Eigen::Index markerCount) const
 
 PlanRigErrors planRigErrors(const std::vector<Take>& takes, const LayoutResult& result, const BlendshapeRig& rig,
                             const MeshBinding& binding, const LayoutRigErrorOptions& options,
-                            const RunControl& control)
+                            const JobControl& control)
 {
   if (options.randomSubsets < 0)
     throw InvalidArgument("rig layout error: the random layout count must be ≥ 0");

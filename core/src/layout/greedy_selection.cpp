@@ -5,7 +5,6 @@
 #include "mocap/base/error.h"
 #include "mocap/base/parallel_for.h"
 
-#include "run_progress.h"
 #include "selection_units.h"
 
 #include <atomic>
@@ -20,9 +19,7 @@ namespace mocap {
 
 using layout_internal::checkSymmetry;
 using layout_internal::markersOfUnits;
-using layout_internal::ProgressReporter;
 using layout_internal::sizeReachable;
-using layout_internal::threadCount;
 
 namespace {
 
@@ -163,7 +160,7 @@ std::optional<std::vector<Eigen::Index>> selectGreedy(const SubsetErrors& errors
 std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetErrors& errors,
                                                                    const MarkerSymmetry& symmetry,
                                                                    const std::vector<Eigen::Index>& sizes,
-                                                                   const RunControl& control,
+                                                                   const JobControl& control,
                                                                    const std::map<Eigen::Index, std::vector<Eigen::Index>>& starts)
 {
   for (const Eigen::Index size : sizes)
@@ -178,7 +175,6 @@ std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetE
   };
   std::vector<std::optional<std::vector<Eigen::Index>>> result(sizes.size());
   std::atomic<std::size_t> done{0};
-  ProgressReporter reporter(control);
   const auto body = [&](std::size_t i) {
     result[i] = greedyForSize(objective, symmetry, sizes[i]);
     // A given start (another method's set of this size) improved by exchange replaces the greedy
@@ -193,9 +189,9 @@ std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetE
     done.fetch_add(1, std::memory_order_relaxed);
   };
   const auto tick = [&] {
-    reporter.report(static_cast<double>(done.load()) / static_cast<double>(sizes.size()));
+    control.report(static_cast<double>(done.load()) / static_cast<double>(sizes.size()));
   };
-  if (!parallelFor(sizes.size(), threadCount(control), body, control.cancel, tick))
+  if (!parallelFor(sizes.size(), control.threads(), body, control.cancelFlag(), tick))
     return {};
 
   // Sizes searched independently can come out worse than a smaller size plus one unit. In
@@ -231,7 +227,7 @@ std::vector<std::optional<std::vector<Eigen::Index>>> selectGreedy(const SubsetE
     if (best)
       result[index] = markersOfUnits(symmetry, *best);
   }
-  reporter.report(1.0, true);
+  control.reportNow(1.0);
   return result;
 }
 

@@ -8,7 +8,6 @@
 #include "mocap/layout/layout_symmetry.h"
 #include "mocap/model/marker_points.h"
 
-#include "run_progress.h"
 #include "selection_units.h"
 
 #include <algorithm>
@@ -26,9 +25,7 @@ namespace {
 
 using layout_internal::checkSymmetry;
 using layout_internal::checkTraining;
-using layout_internal::ProgressReporter;
 using layout_internal::sizeReachable;
-using layout_internal::threadCount;
 
 // The errors every set is scored by, against the full set: its blendshape basis from the given
 // key poses, or from extreme training frames, and a neutral frame that is no key pose.
@@ -47,17 +44,6 @@ SubsetErrors planErrors(const LayoutFrames& frames, const LayoutPlanOptions& opt
           : options.keyFrames;
   return SubsetErrors(frames.frames, frames.training, frames.test,
                       buildBlendshapeBasis(frames.frames, neutral, keyFrames), options.errors);
-}
-
-// `control` for a stage that covers [from, to] of the plan's progress.
-RunControl stageControl(const RunControl& control, ProgressReporter& reporter, double from, double to)
-{
-  RunControl sub = control;
-  sub.progress = control.progress ? std::function<void(double)>([&reporter, from, to](double f) {
-    reporter.report(from + (to - from) * f);
-  })
-                                  : std::function<void(double)>();
-  return sub;
 }
 
 // PFA's set of each size: several k can give the same size, and the one that explains the
@@ -108,7 +94,7 @@ std::vector<Eigen::Index> addSizes(LayoutPlan& plan, Eigen::Index markers, const
 // The greedy set of each of `otherSizes`, started from PFA's sets too; false when cancelled.
 bool addGreedyLayouts(LayoutPlan& plan, const SubsetErrors& errors, const MarkerSymmetry& symmetry,
                       const std::vector<Eigen::Index>& otherSizes,
-                      const std::map<Eigen::Index, ScoredLayout>& pfaBySize, const RunControl& control)
+                      const std::map<Eigen::Index, ScoredLayout>& pfaBySize, const JobControl& control)
 {
   std::map<Eigen::Index, std::vector<Eigen::Index>> pfaStarts;
   for (const auto& [size, layout] : pfaBySize)
@@ -173,11 +159,10 @@ std::optional<ScoredLayout> scoreJob(const LayoutPlan& plan, const ScoringJob& j
   return layout;
 }
 
-// Scores every set of the plan and the random baseline of each size, in parallel, progress over
-// [from, 1]; false when cancelled.
+// Scores every set of the plan and the random baseline of each size, in parallel; false when
+// cancelled.
 bool scoreLayouts(LayoutPlan& plan, const SubsetErrors& errors, const MarkerSymmetry& symmetry,
-                  const LayoutPlanOptions& options, bool runOthers, const RunControl& control,
-                  ProgressReporter& reporter, double from)
+                  const LayoutPlanOptions& options, bool runOthers, const JobControl& control)
 {
   const std::vector<ScoringJob> jobs = scoringJobs(plan, symmetry, options, runOthers);
   std::vector<std::optional<ScoredLayout>> scored(jobs.size());
@@ -187,10 +172,9 @@ bool scoreLayouts(LayoutPlan& plan, const SubsetErrors& errors, const MarkerSymm
     done.fetch_add(1, std::memory_order_relaxed);
   };
   const auto tick = [&] {
-    reporter.report(from + (1.0 - from) * static_cast<double>(done.load()) /
-                               static_cast<double>(std::max<std::size_t>(jobs.size(), 1)));
+    control.report(static_cast<double>(done.load()) / static_cast<double>(std::max<std::size_t>(jobs.size(), 1)));
   };
-  if (!parallelFor(jobs.size(), threadCount(control), body, control.cancel, tick))
+  if (!parallelFor(jobs.size(), control.threads(), body, control.cancelFlag(), tick))
     return false;
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     LayoutSize& entry = plan.sizes[jobs[j].size];
@@ -252,7 +236,7 @@ const LayoutSize* LayoutPlan::size(Eigen::Index markerCount) const
 }
 
 LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& symmetry,
-                            const LayoutPlanOptions& options, const RunControl& control)
+                            const LayoutPlanOptions& options, const JobControl& control)
 {
   const Eigen::Index markers = frames.markerCount();
   if (markers < 2)
@@ -276,12 +260,11 @@ LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& sy
   // Shares of the progress bar, roughly by cost.
   const double pfaEnd = runPfa ? (runOthers ? 0.55 : 0.9) : 0.0;
   const double greedyEnd = runOthers ? 0.9 : pfaEnd;
-  ProgressReporter reporter(control);
-  reporter.report(0.0, true);
+  control.reportNow(0.0);
 
   std::map<Eigen::Index, ScoredLayout> pfaBySize;
   if (runPfa) {
-    const PfaSweep sweep = sweepPfa(training, symmetry, options.pfa, stageControl(control, reporter, 0.0, pfaEnd));
+    const PfaSweep sweep = sweepPfa(training, symmetry, options.pfa, control.part(0.0, pfaEnd));
     plan.pfaSweep = sweep.selections;
     plan.pcaComponents = sweep.components;
     plan.explainedVariance = sweep.explainedVariance;
@@ -293,14 +276,14 @@ LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& sy
   }
   const std::vector<Eigen::Index> otherSizes = addSizes(plan, markers, symmetry, pfaBySize, runOthers);
   if ((runOthers && !addGreedyLayouts(plan, errors, symmetry, otherSizes, pfaBySize,
-                                      stageControl(control, reporter, pfaEnd, greedyEnd))) ||
-      !scoreLayouts(plan, errors, symmetry, options, runOthers, control, reporter, greedyEnd)) {
+                                      control.part(pfaEnd, greedyEnd))) ||
+      !scoreLayouts(plan, errors, symmetry, options, runOthers, control.part(greedyEnd, 1.0))) {
     plan.cancelled = true;
     plan.sizes.clear();
     return plan;
   }
   recommendSize(plan, markers);
-  reporter.report(1.0, true);
+  control.reportNow(1.0);
   return plan;
 }
 
@@ -416,7 +399,7 @@ std::vector<std::string> labelsMatching(const std::vector<std::string>& labels,
   return ordered;
 }
 
-LayoutResult planLayout(const std::vector<Take>& takes, const LayoutRequest& request, const RunControl& control)
+LayoutResult planLayout(const std::vector<Take>& takes, const LayoutRequest& request, const JobControl& control)
 {
   if (takes.empty())
     throw InvalidArgument("layout planning needs at least one take");

@@ -7,7 +7,6 @@
 #include "mocap/base/random.h"
 #include "mocap/math/pca.h"
 
-#include "run_progress.h"
 #include "selection_units.h"
 
 #include <atomic>
@@ -18,11 +17,9 @@ namespace mocap {
 using layout_internal::checkSymmetry;
 using layout_internal::checkTraining;
 using layout_internal::markersOfUnits;
-using layout_internal::ProgressReporter;
-using layout_internal::threadCount;
 
 PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const MarkerSymmetry& symmetry,
-                  const PfaOptions& options, const RunControl& control)
+                  const PfaOptions& options, const JobControl& control)
 {
   checkTraining(training);
   const Eigen::Index features = training.cols();
@@ -59,8 +56,6 @@ PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const Marke
     totalWork += static_cast<double>(k) * static_cast<double>(restarts);
   double doneBefore = 0.0;
   std::atomic<std::size_t> doneRestarts{0};
-  ProgressReporter reporter(control);
-  const int threads = threadCount(control);
 
   std::vector<std::uint8_t> chosen;  // restarts × units, 1 when the restart selected the unit
   for (Eigen::Index k = lowK; k <= highK; ++k) {
@@ -76,10 +71,10 @@ PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const Marke
       doneRestarts.fetch_add(1, std::memory_order_relaxed);
     };
     const auto tick = [&] {
-      reporter.report((doneBefore + static_cast<double>(k) * static_cast<double>(doneRestarts.load())) /
+      control.report((doneBefore + static_cast<double>(k) * static_cast<double>(doneRestarts.load())) /
                       totalWork);
     };
-    if (!parallelFor(restarts, threads, body, control.cancel, tick)) {
+    if (!parallelFor(restarts, control.threads(), body, control.cancelFlag(), tick)) {
       sweep.cancelled = true;
       break;
     }
@@ -117,7 +112,7 @@ PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training, const Marke
       break;
   }
   if (!sweep.cancelled)
-    reporter.report(1.0, true);
+    control.reportNow(1.0);
   return sweep;
 }
 

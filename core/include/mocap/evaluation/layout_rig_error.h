@@ -70,7 +70,7 @@ struct LayoutRigErrors
 /// on the (subsampled) take and solve it from every bound marker once; then per layout solve it
 /// again from the layout's bound markers only (the solver's `use` mask; labels the binding does
 /// not bind add nothing) and pool the squared weight differences over the takes. Layouts run in
-/// parallel on RunControl::threads; results do not depend on the thread count. Progress and
+/// parallel on JobControl::threads(); results do not depend on the thread count. Progress and
 /// cancellation through `control`; on cancellation the layouts not finished stay unjudged and
 /// cancelled = true.
 /// O(#takes · (#frames · #markers + F · #bound · #shapes) + #layouts · #takes · F · (#bound ·
@@ -81,7 +81,7 @@ struct LayoutRigErrors
                                               const MeshBinding& binding,
                                               const std::vector<std::vector<std::string>>& layouts,
                                               const LayoutRigErrorOptions& options = {},
-                                              const RunControl& control = {});
+                                              const JobControl& control = {});
 
 /// The rig measure of one size of a plan.
 struct LayoutSizeRigErrors
@@ -115,6 +115,6 @@ struct PlanRigErrors
 [[nodiscard]] PlanRigErrors planRigErrors(const std::vector<Take>& takes, const LayoutResult& result,
                                           const BlendshapeRig& rig, const MeshBinding& binding,
                                           const LayoutRigErrorOptions& options = {},
-                                          const RunControl& control = {});
+                                          const JobControl& control = {});
 
 } // namespace mocap

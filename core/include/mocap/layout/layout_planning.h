@@ -81,7 +81,7 @@ struct LayoutPlan
 /// Throws InvalidArgument as sweepPfa and SubsetErrors, and for a key frame out of range.
 [[nodiscard]] LayoutPlan planMarkerLayout(const LayoutFrames& frames, const MarkerSymmetry& symmetry,
                                           const LayoutPlanOptions& options = {},
-                                          const RunControl& control = {});
+                                          const JobControl& control = {});
 
 /// A request that names something its takes do not have: a marker pattern nothing matches, a key
 /// pose outside its take or given twice. The caller's words were wrong, not the data (the CLI
@@ -155,7 +155,7 @@ struct LayoutResult
 /// Throws LayoutRequestError for a pattern that matches no marker or a bad key pose, and as the
 /// functions it calls (InvalidArgument, FormatError, IoError).
 [[nodiscard]] LayoutResult planLayout(const std::vector<Take>& takes, const LayoutRequest& request,
-                                      const RunControl& control = {});
+                                      const JobControl& control = {});
 
 /// The labels among `labels` that match any of the glob `patterns`, in `labels` order.
 /// Throws LayoutRequestError(field) naming a pattern that matches nothing.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mocap/base/job_control.h"
 #include "mocap/layout/blendshape_basis.h"
 #include "mocap/math/kmeans.h"
 #include "mocap/layout/layout_frames.h"
@@ -8,9 +9,7 @@
 
 #include <Eigen/Core>
 
-#include <atomic>
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,16 +31,6 @@ enum class SelectionMethod
 [[nodiscard]] std::string selectionMethodNames();
 /// The method named "pfa" or "greedy"; nullopt otherwise. O(1).
 [[nodiscard]] std::optional<SelectionMethod> parseSelectionMethod(std::string_view name);
-
-/// Threads, progress and cancellation of a long run. The studio calls it from a worker thread.
-struct RunControl
-{
-  int threads = 0;  ///< 0: std::thread::hardware_concurrency()
-  /// Called on the calling thread with the fraction done (0…1), at most every ~50 ms and at the end.
-  std::function<void(double)> progress;
-  /// Polled between k-means restarts; when it becomes true the run stops and returns what is complete.
-  const std::atomic<bool>* cancel = nullptr;
-};
 
 struct PfaOptions
 {
@@ -80,15 +69,16 @@ struct PfaSweep
 /// as coordinates moving together); per k, `restarts` k-means runs (k-means++ seeding) each select
 /// the coordinate nearest every cluster mean; coordinates → markers, closed under `symmetry`; over the
 /// restarts each unit's selection frequency is counted, and the selection with the highest sum of
-/// unit frequencies is kept. Restarts run on RunControl::threads threads sharing one distance
-/// matrix; results do not depend on the thread count.
+/// unit frequencies is kept. Restarts run on JobControl::threads() threads sharing one distance
+/// matrix; results do not depend on the thread count. Progress is reported on the calling thread,
+/// and at the end; a cancel stops between restarts and returns the k completed, cancelled = true.
 /// O(n·d² + d³ + Σ_k restarts · d·k·(1 + q·iterations)) for n training frames, d = 3·#markers,
 /// q kept components.
 /// Throws InvalidArgument for fewer than two markers, a symmetry of another size, fewer frames than
 /// d + 1, a non-finite value, restarts < 1, or k outside 1 … d (or minK > maxK).
 [[nodiscard]] PfaSweep sweepPfa(const Eigen::Ref<const Eigen::MatrixXd>& training,
                                 const MarkerSymmetry& symmetry, const PfaOptions& options = {},
-                                const RunControl& control = {});
+                                const JobControl& control = {});
 
 /// Greedy selection of exactly `size` markers in whole units of `symmetry`, minimising
 /// errors.trainingObjective() (held-out reconstruction error plus a share of the blendshape-weight
@@ -102,7 +92,7 @@ struct PfaSweep
 [[nodiscard]] std::optional<std::vector<Eigen::Index>>
 selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry, Eigen::Index size);
 
-/// selectGreedy for each of `sizes` (entry i for sizes[i]), in parallel on RunControl::threads,
+/// selectGreedy for each of `sizes` (entry i for sizes[i]), in parallel on JobControl::threads(),
 /// sharing the objective values of the forward steps the sizes have in common; then, in ascending
 /// size, a set is replaced by the set one smaller plus a single unit (or two smaller plus a pair)
 /// when that scores better, so no size is worse on the objective than a smaller one allows.
@@ -111,7 +101,7 @@ selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry, Eigen::
 /// objective than a start. Returns an empty vector when cancelled. Throws as selectGreedy.
 [[nodiscard]] std::vector<std::optional<std::vector<Eigen::Index>>>
 selectGreedy(const SubsetErrors& errors, const MarkerSymmetry& symmetry,
-             const std::vector<Eigen::Index>& sizes, const RunControl& control = {},
+             const std::vector<Eigen::Index>& sizes, const JobControl& control = {},
              const std::map<Eigen::Index, std::vector<Eigen::Index>>& starts = {});
 
 /// A uniformly shuffled symmetric set of exactly `size` markers (units added in random order
