@@ -142,7 +142,7 @@ TEST(ReviewScene, IsTheStudiosViewWithTheMeshAndRigLayers)
 }
 
 /// Every marker of the current frame is drawn inside `view`'s viewport.
-void expectEveryMarkerInView(const ui::MarkerView3d& view, const TakeDocument& document, const char* when)
+void expectEveryMarkerInView(const ui::MarkerView3d& view, const ui::TakeDocument& document, const char* when)
 {
   const QRectF inside(QPointF(0, 0), QSizeF(view.viewport()->size()));
   int drawn = 0;
