@@ -1,29 +1,33 @@
-// `mocap-review`: the program behind `mocap review`. It sets up the studio's window, hidden, with
-// the take, face mesh and solved rig the arguments name (the same calls mocap-studio's command line
-// makes), then writes the review video from it as File ▸ Export Review Video… does. Needs a display
+// `mocap-review`: the program behind `mocap review`. It loads a studio session from the files the
+// arguments name (the take, face mesh, binding and blendshape rig, solved to the take) with no
+// studio window or docks, then writes the review video from it as File ▸ Export Review Video…
+// does: the same scene, framed on the reviewed frames. Needs a display for the view's GL context
 // (mocap review starts it under xvfb-run when there is none). Exit codes as mocap's.
 #include "arguments.h"
 #include "cli_error.h"
 #include "frame_range.h"
-#include "main_window.h"
 #include "review_arguments.h"
 #include "usage.h"
 
 #include "dialogs/review_export.h"
+#include "document/session_files.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "mocap/base/json_writer.h"
-#include "views/marker_view_3d.h"
 #include "views/redraw_memory.h"
 #include "views/vtk_viewport.h"
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QFileInfo>
+#include <QStringList>
 #include <QSurfaceFormat>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <utility>
 #include <unistd.h>
 
 namespace {
@@ -31,22 +35,28 @@ namespace {
 using namespace mocap;
 using namespace mocap::cli;
 
-/// Builds the studio's state the arguments describe; returns "" or the error.
-QString setUp(studio::MainWindow& window, const ReviewArguments& a)
+/// The session the arguments describe, loaded from the files they name, with the selection.
+/// Returns "" or the error.
+QString setUp(ui::StudioSession& session, const ReviewArguments& a)
 {
-  QString error = window.openFile(QString::fromStdString(a.take), true);
-  if (error.isEmpty() && a.mesh)
-    error = window.loadFaceMesh(QString::fromStdString(*a.mesh), QString::fromStdString(a.binding.value_or("")));
-  if (error.isEmpty() && a.solve)
-    error = window.loadRig(QString::fromStdString(*a.solve), QString::fromStdString(a.rigShapes.value_or("")),
-                           a.mesh ? QString() : QString::fromStdString(a.binding.value_or("")), true);
-  if (!error.isEmpty())
+  ui::SessionFiles files;
+  files.take = QString::fromStdString(a.take);
+  files.mesh = QString::fromStdString(a.mesh.value_or(""));
+  files.rig = QString::fromStdString(a.solve.value_or(""));
+  files.rigShapes = QString::fromStdString(a.rigShapes.value_or(""));
+  files.binding = QString::fromStdString(a.binding.value_or(""));
+  files.solve = a.solve.has_value();
+  if (const QString error = ui::loadSessionFiles(session, files); !error.isEmpty())
     return error;
-  window.markerView()->setTrailFrames(a.trails);
   if (a.select) {
     const QStringList labels = QString::fromStdString(*a.select).split(QLatin1Char(','), Qt::SkipEmptyParts);
-    if (window.selectLabels(labels) != labels.size())
+    std::vector<Eigen::Index> markers;
+    for (const QString& label : labels)
+      if (const auto marker = session.document().take().markerIndex(label.trimmed().toStdString()))
+        markers.push_back(*marker);
+    if (markers.size() != static_cast<std::size_t>(labels.size()))
       return QStringLiteral("--select: not every label is a marker of the take");
+    session.document().setSelection(std::move(markers));
   }
   return {};
 }
@@ -65,14 +75,16 @@ bool reportProgress(long long done, long long total)
   return true;
 }
 
-void printOutcome(const ui::ReviewOutcome& outcome, const ui::ReviewRequest& request, double rate, bool json)
+void printOutcome(const ui::ReviewOutcome& outcome, const ui::ReviewRequest& request, double rate, bool json,
+                  double firstFrameSeconds)
 {
   const double perSecond = outcome.seconds > 0.0 ? static_cast<double>(outcome.frames) / outcome.seconds : 0.0;
   if (!json) {
     std::cout << "wrote " << outcome.encoding.path.string() << ": " << outcome.frames << " frames, "
               << request.size.width() << " x " << request.size.height() << ", " << rate << " fps, "
               << outcome.encoding.codec << " in " << outcome.encoding.container << " ("
-              << fixedNumber(perSecond, 1) << " frames/s)\n";
+              << fixedNumber(perSecond, 1) << " frames/s, first frame after " << fixedNumber(firstFrameSeconds, 2)
+              << " s)\n";
     return;
   }
   JsonWriter out;
@@ -87,19 +99,21 @@ void printOutcome(const ui::ReviewOutcome& outcome, const ui::ReviewRequest& req
   out.key("reference_video").value(request.video.toStdString());
   out.key("seconds").value(outcome.seconds);
   out.key("frames_per_second").value(perSecond);
+  out.key("first_frame_seconds").value(firstFrameSeconds);
   out.endObject();
   std::cout << out.str() << '\n';
 }
 
-int review(const ReviewArguments& a)
+/// `clock` runs since the program started: the time to the first frame is read on it.
+int review(const ReviewArguments& a, const QElapsedTimer& clock)
 {
   const auto [width, height] = parseReviewSize(a.size);
-  studio::MainWindow window;
-  if (const QString error = setUp(window, a); !error.isEmpty()) {
+  ui::StudioSession session;
+  if (const QString error = setUp(session, a); !error.isEmpty()) {
     std::cerr << "mocap review: " << error.toStdString() << '\n';
     return kExitBadInput;
   }
-  const Take& take = window.document().take();
+  const Take& take = session.document().take();
   const auto [begin, end] = parseFrameRange(a.frames, take);
   ui::ReviewRequest request;
   request.output = a.output;
@@ -109,16 +123,23 @@ int review(const ReviewArguments& a)
   request.video = QString::fromStdString(a.video.value_or(""));
   request.videoOffset = a.offset;
   request.takeName = QFileInfo(QString::fromStdString(a.take)).completeBaseName().toStdString();
-  ui::ReviewSource source = window.reviewSource();
-  source.resetCamera = true;
-  const ui::ReviewOutcome outcome = ui::exportReview(source, request, reportProgress);
+  ui::ReviewSource source;
+  source.session = &session;
+  source.settings.trailFrames = a.trails;
+  source.resetCamera = true;  // framed on the reviewed frames
+  double firstFrameSeconds = 0.0;
+  const ui::ReviewOutcome outcome = ui::exportReview(source, request, [&](long long done, long long total) {
+    if (done == 1)
+      firstFrameSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+    return reportProgress(done, total);
+  });
   if (!outcome.done) {
     std::cerr << "mocap review: " << outcome.error.toStdString() << '\n';
     return kExitBadInput;
   }
   if (outcome.encoding.path != request.output)
     std::cerr << "mocap review: no MP4 encoder here; wrote Motion JPEG AVI instead\n";
-  printOutcome(outcome, request, take.frameRate(), a.json);
+  printOutcome(outcome, request, take.frameRate(), a.json, firstFrameSeconds);
   return kExitOk;
 }
 
@@ -126,6 +147,8 @@ int review(const ReviewArguments& a)
 
 int main(int argc, char** argv)
 {
+  QElapsedTimer clock;
+  clock.start();
   // Parsed as `mocap review`, so the usage and errors read as mocap's own.
   CLI::App mocap("the batch command line of Mocap Studio", "mocap");
   mocap.formatter(std::make_shared<UsageFormatter>());
@@ -148,11 +171,8 @@ int main(int argc, char** argv)
   ui::keepRedrawMemoryMapped();
   QSurfaceFormat::setDefaultFormat(ui::VtkViewport::defaultFormat());  // before QApplication
   QApplication application(argc, argv);
-  // Settings of their own: a review looks the same whatever the studio last remembered.
-  QApplication::setOrganizationName(QStringLiteral("MocapStudio"));
-  QApplication::setApplicationName(QStringLiteral("Mocap Review"));
   try {
-    return review(arguments);
+    return review(arguments, clock);
   } catch (const UsageError& e) {
     std::cerr << "mocap review: " << e.what() << '\n' << usageHint(command) << '\n';
     return kExitBadUsage;

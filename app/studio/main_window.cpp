@@ -39,6 +39,9 @@
 #include "views/model_outputs_note.h"
 #include "views/status_timeout.h"
 #include "views/steady_label.h"
+#include "views/blendshape_scene.h"
+#include "views/face_mesh_scene.h"
+#include "views/mesh_layer.h"
 #include "views/review_scene.h"
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
@@ -369,7 +372,14 @@ void MainWindow::exportAnimation()
 
 ui::ReviewSource MainWindow::reviewSource() const
 {
-  return {m_document, m_view3d, &m_faceMesh->scene(), &m_blendshapeSolve->scene()};
+  ui::ReviewSource source;
+  source.session = m_session;
+  source.settings = ui::viewSettings(*m_view3d);
+  source.settings.meshOpacity = m_faceMesh->scene().layer().opacity();
+  source.settings.meshEdges = m_faceMesh->scene().layer().edgesVisible();
+  source.settings.rigShown = m_blendshapeSolve->scene().shown();
+  source.settings.rigBeside = m_blendshapeSolve->scene().beside();
+  return source;
 }
 
 void MainWindow::exportReviewVideo()

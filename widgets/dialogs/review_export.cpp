@@ -1,5 +1,6 @@
 #include "dialogs/review_export.h"
 
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "mocap/video/review_frame.h"
 #include "mocap/video/video_source.h"
@@ -171,9 +172,9 @@ ReviewOutcome exportReview(const ReviewSource& source, const ReviewRequest& requ
 {
   QElapsedTimer clock;
   clock.start();
-  if (!source.document || !source.document->hasTake())
+  if (!source.session || !source.session->document().hasTake())
     return failed(QCoreApplication::translate("ReviewExport", "There is no take to review."));
-  const Take& take = source.document->take();
+  const Take& take = source.session->document().take();
   const Eigen::Index last = request.last < 0 ? take.frameCount() - 1 : request.last;
   if (request.first < 0 || last >= take.frameCount() || request.first > last)
     return failed(QCoreApplication::translate("ReviewExport", "The frames to review are outside the take."));

@@ -40,8 +40,8 @@ struct ReviewOutcome
 /// serves its events here (progress dialog, Cancel).
 using ReviewProgress = std::function<bool(long long done, long long total)>;
 
-/// Renders `request`'s frames of `source` (a private ReviewScene, so the studio's view and frame
-/// are left alone) and encodes them with the reference video frame beside them and the caption
+/// Renders `request`'s frames of `source` (a private ReviewScene, so the studio's session, view
+/// and frame are left alone) and encodes them with the reference video frame beside them and the caption
 /// burnt in. Rendering runs here, on the UI thread (the view's GL context lives there); reading
 /// the reference video, composing and encoding run on a worker thread a few frames behind, so the
 /// two overlap. A cancelled or failed export leaves no file (ReviewVideoWriter). Never throws.

@@ -1,6 +1,7 @@
 #include "views/marker_view_3d.h"
 
 #include "document/take_document.h"
+#include "views/camera_framing.h"
 #include "views/display_units.h"
 #include "views/sample_colors.h"
 #include "views/selection_palette.h"
@@ -11,6 +12,8 @@
 #include "mocap/model/marker_set.h"
 #include "views/vtk_viewport.h"
 
+#include <QEvent>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QStringList>
 #include <QToolTip>
@@ -24,20 +27,22 @@
 #include <vtkCellArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGlyph3DMapper.h>
+#include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
+#include <vtkPropCollection.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mocap::ui {
 
@@ -60,26 +65,14 @@ unsigned char channel(int value)
   return static_cast<unsigned char>(std::clamp(value, 0, 255));
 }
 
-/// Mean and spread of the marker points' valid samples (model outputs are no positions), for
-/// camera placement and marker size.
-struct Extent
+/// The diagonal of the box holding every marker point's sample at `frame` (else its first valid
+/// one; model outputs are no positions): the take's size, for the marker radius. O(#markers) and
+/// O(#frames) per marker missing at `frame`.
+double diagonalOf(const Take& take, Eigen::Index frame)
 {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();
-  double diagonal = 1.0;
-  Eigen::Vector3d lo = Eigen::Vector3d::Zero();
-  Eigen::Vector3d hi = Eigen::Vector3d::Zero();
-};
-
-Extent extentOf(const Take& take, Eigen::Index frame)
-{
-  Extent extent;
-  Eigen::Index count = 0;
-  extent.lo.setConstant(std::numeric_limits<double>::infinity());
-  extent.hi.setConstant(-std::numeric_limits<double>::infinity());
-  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
   for (const Eigen::Index m : markerPoints(take)) {
-    // Prefer the given frame; fall back to the marker's first valid sample.
     Eigen::Index f = frame;
     if (!take.isValid(f, m)) {
       const auto column = take.valid().col(m);
@@ -92,19 +85,10 @@ Extent extentOf(const Take& take, Eigen::Index frame)
       if (f < 0)
         continue;
     }
-    const Eigen::Vector3d p = take.position(f, m);
-    extent.centre += p;
-    second += p * p.transpose();
-    extent.lo = extent.lo.cwiseMin(p);
-    extent.hi = extent.hi.cwiseMax(p);
-    ++count;
+    lo = lo.cwiseMin(take.position(f, m));
+    hi = hi.cwiseMax(take.position(f, m));
   }
-  if (count == 0)
-    return Extent{};
-  extent.centre /= static_cast<double>(count);
-  extent.covariance = second / static_cast<double>(count) - extent.centre * extent.centre.transpose();
-  extent.diagonal = std::max((extent.hi - extent.lo).norm(), 1e-6);
-  return extent;
+  return lo.x() <= hi.x() ? std::max((hi - lo).norm(), 1e-6) : 1.0;
 }
 
 } // namespace
@@ -118,6 +102,7 @@ MarkerView3d::MarkerView3d(TakeDocument& document, QWidget* parent)
   m_failure->setAlignment(Qt::AlignCenter);
   m_failure->setWordWrap(true);
   m_stack->addWidget(m_viewport);
+  m_viewport->installEventFilter(this);
   m_stack->addWidget(m_failure);
   // Says what the view shows when it is not the plain lab frame; a child of the viewport, so
   // it stays in its corner and out of the rendered image the baseline test compares. The
@@ -256,7 +241,7 @@ MarkerView3d::~MarkerView3d() = default;
 
 double MarkerView3d::takeSize() const
 {
-  return extentOf(m_document.take(), m_document.currentFrame()).diagonal;
+  return diagonalOf(m_document.take(), m_document.currentFrame());
 }
 
 void MarkerView3d::setTrailFrames(int frames)
@@ -286,37 +271,85 @@ void MarkerView3d::setUpAxis(int axis)
 
 void MarkerView3d::resetCamera()
 {
+  frameCamera(m_document.currentFrame(), m_document.currentFrame());
+}
+
+std::vector<Eigen::Vector3d> MarkerView3d::drawnPositions(Eigen::Index first, Eigen::Index last) const
+{
+  const Take& take = m_document.take();
+  std::vector<Eigen::Vector3d> points;
+  const std::vector<Eigen::Index> markers = markerPoints(take);  // model outputs are no positions
+  const Eigen::Index step = std::max<Eigen::Index>(1, (last - first + 1) / 500);
+  for (Eigen::Index f = first; f <= last; f += step)
+    for (const Eigen::Index m : markers)
+      if (take.isValid(f, m) && !m_document.isHidden(m))
+        points.push_back(displayPosition(f, m));
+  if (!points.empty())
+    return points;
+  // Nothing valid in these frames: each marker where it first is.
+  for (const Eigen::Index m : markers) {
+    const auto column = take.valid().col(m);
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+      if (column(f)) {
+        points.push_back(displayPosition(f, m));
+        break;
+      }
+  }
+  return points;
+}
+
+void MarkerView3d::frameCamera(Eigen::Index first, Eigen::Index last)
+{
   const Take& take = m_document.take();
   if (take.empty())
     return;
-  const Extent extent = extentOf(take, m_document.currentFrame());
-  // A face is flattest along its normal: look along the axis of least spread, from the side
-  // the markers protrude to (the nose sticks out more than the cheeks recede).
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(extent.covariance);
-  Eigen::Vector3d normal = solver.eigenvectors().col(0);
-  double front = 0.0, back = 0.0;
-  for (const Eigen::Index m : markerPoints(take)) {
-    if (!take.isValid(m_document.currentFrame(), m))
+  first = std::clamp<Eigen::Index>(first, 0, take.frameCount() - 1);
+  last = std::clamp<Eigen::Index>(last, first, take.frameCount() - 1);
+  std::vector<Eigen::Vector3d> points = drawnPositions(first, last);
+  const ViewDirection direction = facingDirection(points, m_upAxis);  // the markers decide where the face looks
+  // The other actors drawn (face mesh, posed rig beside it) by the corners of their boxes.
+  vtkRenderer* renderer = m_viewport->renderer();
+  vtkPropCollection* props = renderer->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp()) {
+    if (prop == m_actor.Get() || prop == m_trailActor.Get() || prop == m_linkActor.Get() || !prop->GetVisibility() ||
+        !vtkActor::SafeDownCast(prop))
       continue;
-    const double d = normal.dot(take.position(m_document.currentFrame(), m) - extent.centre);
-    front = std::max(front, d);
-    back = std::max(back, -d);
+    const double* bounds = prop->GetBounds();
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+      continue;
+    for (int corner = 0; corner < 8; ++corner)
+      points.emplace_back(bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
   }
-  if (back > front)
-    normal = -normal;
-  Eigen::Vector3d up = Eigen::Vector3d::Unit(m_upAxis);
-  if (std::abs(up.dot(normal)) > 0.95)
-    up = Eigen::Vector3d::Unit(m_upAxis == 2 ? 1 : 2);
-  vtkCamera* camera = m_viewport->renderer()->GetActiveCamera();
-  const Eigen::Vector3d eye = extent.centre + normal * 2.5 * extent.diagonal;
-  camera->SetFocalPoint(extent.centre.data());
-  camera->SetPosition(eye.data());
-  camera->SetViewUp(up.data());
-  camera->OrthogonalizeViewUp();
-  m_viewport->renderer()->ResetCamera();
-  camera->Zoom(1.4);  // ResetCamera leaves room for a bounding sphere; a face is flatter than that
-  m_viewport->renderer()->ResetCameraClippingRange();
+  const QSize size = m_viewport->size();
+  const double aspect = size.isEmpty() ? 1.0 : static_cast<double>(size.width()) / size.height();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  fitCamera(*camera, points, direction, aspect, m_markerScale * m_takeSize);
+  renderer->ResetCameraClippingRange();
+  m_framedCamera = cameraState(*camera, size);
   m_viewport->requestRender();
+}
+
+bool MarkerView3d::eventFilter(QObject* watched, QEvent* event)
+{
+  // R in the view is Reset Camera: this framing, not VTK's own.
+  if (watched == m_viewport && event->type() == QEvent::KeyPress) {
+    const auto* key = static_cast<QKeyEvent*>(event);
+    if (key->key() == Qt::Key_R && key->modifiers() == Qt::NoModifier) {
+      resetCamera();
+      return true;
+    }
+  }
+  // A view resized before anyone moved the camera is framed again for its new shape: the window
+  // comes up at its own size after the take was opened and framed.
+  if (watched == m_viewport && event->type() == QEvent::Resize && m_framedCamera) {
+    vtkCamera* camera = m_viewport->renderer()->GetActiveCamera();
+    const CameraState now = cameraState(*camera, m_framedCamera->viewSize);
+    if (now.position == m_framedCamera->position && now.focalPoint == m_framedCamera->focalPoint &&
+        now.viewUp == m_framedCamera->viewUp && now.viewSize != m_viewport->size())
+      resetCamera();
+  }
+  return QWidget::eventFilter(watched, event);
 }
 
 QString MarkerView3d::setHeadReference(std::vector<Eigen::Index> referenceMarkers)

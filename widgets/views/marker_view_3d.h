@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/cleaning/head_stabilization.h"
+#include "views/scene_settings.h"
 
 #include <QColor>
 #include <QWidget>
@@ -66,7 +67,13 @@ public:
   /// Which lab axis points up on screen: 1 = Y, 2 = Z.
   void setUpAxis(int axis);
   [[nodiscard]] int upAxis() const { return m_upAxis; }
+  /// Frames what is drawn at the current frame: frameCamera(current, current) (View ▸ Reset Camera).
   void resetCamera();
+  /// Faces the markers drawn over frames first…last (their least-spread side, facingDirection) and
+  /// fits the camera so every one of them, and every other actor drawn (face mesh, posed rig), is
+  /// inside the view (fitCamera). A view resized before the camera moved is framed again.
+  /// O(#frames · #markers), at most 500 frames sampled.
+  void frameCamera(Eigen::Index first, Eigen::Index last);
   /// Redraws with the current colorScheme() (sample_colors.h), background included.
   void refreshColors();
   /// Head-stabilized view: draws every marker relative to the head pose estimated from these
@@ -116,7 +123,13 @@ public:
 signals:
   void labelPointClicked(Eigen::Index marker);
 
+protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
+  /// Where the markers (not hidden, not model outputs) are drawn over frames first…last, at most
+  /// 500 frames sampled; each marker's first valid sample when none is valid there.
+  [[nodiscard]] std::vector<Eigen::Vector3d> drawnPositions(Eigen::Index first, Eigen::Index last) const;
   void rebuildScene();
   void updateFrame();
   void updateTrails();
@@ -168,6 +181,7 @@ private:
   bool m_followHead = false;
   std::vector<Eigen::Index> m_followMarkers;
   QLabel* m_status = nullptr;
+  std::optional<CameraState> m_framedCamera;  // as the last framing left it
 };
 
 } // namespace mocap::ui

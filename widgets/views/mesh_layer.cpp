@@ -115,16 +115,19 @@ void MeshLayer::setOpacity(double opacity)
   m_actor->GetProperty()->SetOpacity(opacity);
 }
 
+double MeshLayer::opacity() const
+{
+  return m_actor->GetProperty()->GetOpacity();
+}
+
 void MeshLayer::setEdgesVisible(bool visible)
 {
   m_actor->GetProperty()->SetEdgeVisibility(visible);
 }
 
-void MeshLayer::copyAppearance(const MeshLayer& other)
+bool MeshLayer::edgesVisible() const
 {
-  m_actor->GetProperty()->DeepCopy(other.m_actor->GetProperty());
-  if (hasMesh())
-    setVisible(other.isVisible());
+  return m_actor->GetProperty()->GetEdgeVisibility() != 0;
 }
 
 Eigen::Index MeshLayer::vertexAt(const QPoint& pixel) const

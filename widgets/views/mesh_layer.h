@@ -55,9 +55,9 @@ public:
   [[nodiscard]] bool isVisible() const;
   void setColor(const QColor& color);
   void setOpacity(double opacity);
+  [[nodiscard]] double opacity() const;
   void setEdgesVisible(bool visible);
-  /// Colour, opacity, edges and visibility as `other` draws them (a copy of a studio layer).
-  void copyAppearance(const MeshLayer& other);
+  [[nodiscard]] bool edgesVisible() const;
 
   /// The vertex nearest to where the ray through `pixel` (VTK display coordinates: device
   /// pixels, y up) first hits the surface; −1 when it misses. O(#faces).

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "views/scene_settings.h"
+
 #include <QImage>
 #include <QSize>
 
@@ -12,37 +14,35 @@ class QWidget;
 namespace mocap::ui {
 
 class BlendshapeScene;
-class BlendshapeSolveModel;
-class FaceMeshModel;
 class FaceMeshScene;
 class MarkerView3d;
+class StudioSession;
 class TakeDocument;
 
-/// What the studio shows that a review video draws: the 3D view (its take, selection, hidden
-/// markers, trails, head-stabilized or followed view, camera), and optionally the face mesh scene
-/// and the posed blendshape rig. Only the 3D view is required.
+/// What a review video draws: a session (the take with its selection, hidden markers and
+/// reference markers, the face mesh with its binding, the blendshape rig with its weights) drawn
+/// with `settings` (the 3D view's settings, the mesh look, the camera when the studio's is to be
+/// kept). Built by the studio from its session and views, by `mocap review` from files alone.
 struct ReviewSource
 {
-  const TakeDocument* document = nullptr;
-  const MarkerView3d* view = nullptr;
-  const FaceMeshScene* faceMesh = nullptr;
-  const BlendshapeScene* blendshapes = nullptr;
-  /// Frame the reviewed frames afresh (ReviewScene::frameCamera) instead of keeping the view's
-  /// camera (the command line, whose view was never shown).
+  const StudioSession* session = nullptr;
+  SceneSettings settings;
+  /// Frame the reviewed frames afresh (ReviewScene::frameCamera) instead of the settings' camera.
   bool resetCamera = false;
 };
 
-/// A private copy of the studio's 3D view, rendered off screen frame by frame for a review video:
-/// its own document (a copy of the take with the same selection and hidden markers), 3D view with
-/// the same settings and camera, and, when the source has them, its own face mesh model and rig
-/// with the same mesh, binding, options, rig and weights. Stepping it never moves the studio's
-/// frame, and edits made in the studio meanwhile do not reach it. The view lives in a top-level
-/// widget that is never shown on screen (Qt::WA_DontShowOnScreen), so it needs a GL context but
-/// no visible window: under X11 a display (xvfb-run where there is none). UI thread only.
+/// A session's scene rendered off screen frame by frame for a review video, with no studio window:
+/// a private copy of the session (the take with the same selection, hidden and reference markers,
+/// the face mesh, binding and rig options, the blendshape rig and weights) drawn by its own 3D view
+/// with the face mesh and posed rig layers the studio draws (FaceMeshScene, BlendshapeScene), as
+/// the source's settings say. Stepping it never moves the studio's frame, and edits made in the
+/// studio meanwhile do not reach it. The view lives in a top-level widget that is never shown on
+/// screen (Qt::WA_DontShowOnScreen): it needs a GL context but no visible window, under X11 a
+/// display (xvfb-run where there is none). UI thread only.
 class ReviewScene
 {
 public:
-  /// Copies `source` (which must have a document and a view) to render at `size` (device pixels).
+  /// Copies `source` (which must have a session) to render at `size` (device pixels).
   ReviewScene(const ReviewSource& source, QSize size);
   ~ReviewScene();
   ReviewScene(const ReviewScene&) = delete;
@@ -51,12 +51,11 @@ public:
   /// Whether the view has a GL context; else why not.
   [[nodiscard]] bool usable() const;
   [[nodiscard]] QString failureReason() const;
-  [[nodiscard]] const TakeDocument& document() const { return *m_document; }
+  [[nodiscard]] const TakeDocument& document() const;
   [[nodiscard]] MarkerView3d& view() const { return *m_view; }
 
-  /// Frames the camera on every marker drawn over take frames first…last (in the studio's viewing
-  /// direction), so a moving head stays in the picture. O(#frames · #markers), at most 500 frames
-  /// sampled.
+  /// Frames everything drawn over take frames first…last (MarkerView3d::frameCamera), so a moving
+  /// head stays in the picture. O(#frames · #markers), at most 500 frames sampled.
   void frameCamera(Eigen::Index first, Eigen::Index last);
 
   /// The view at take frame `frame` (0-based), `size` pixels, RGB. Null when the view is not usable.
@@ -64,15 +63,12 @@ public:
   [[nodiscard]] QImage render(Eigen::Index frame);
 
 private:
-  void copyFaceMesh(const FaceMeshScene& source);
-  void copyBlendshapes(const BlendshapeScene& source);
+  void copySession(const StudioSession& source);
 
+  std::unique_ptr<StudioSession> m_session;
   std::unique_ptr<QWidget> m_window;
-  std::unique_ptr<TakeDocument> m_document;
   MarkerView3d* m_view = nullptr;  // owned by m_window
-  std::unique_ptr<FaceMeshModel> m_faceMeshModel;
   std::unique_ptr<FaceMeshScene> m_faceMesh;
-  std::unique_ptr<BlendshapeSolveModel> m_blendshapeModel;
   std::unique_ptr<BlendshapeScene> m_blendshapes;
   QSize m_size;
 };

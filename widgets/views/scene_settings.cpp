@@ -1,0 +1,74 @@
+#include "views/scene_settings.h"
+
+#include "views/marker_view_3d.h"
+#include "views/vtk_viewport.h"
+
+#include <vtkCamera.h>
+#include <vtkMath.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+
+namespace mocap::ui {
+
+CameraState cameraState(vtkCamera& camera, QSize viewSize)
+{
+  CameraState state;
+  camera.GetPosition(state.position.data());
+  camera.GetFocalPoint(state.focalPoint.data());
+  camera.GetViewUp(state.viewUp.data());
+  state.viewAngle = camera.GetViewAngle();
+  state.viewSize = viewSize;
+  return state;
+}
+
+void applyCameraState(const CameraState& state, vtkCamera& camera, QSize viewSize)
+{
+  camera.SetPosition(state.position.data());
+  camera.SetFocalPoint(state.focalPoint.data());
+  camera.SetViewUp(state.viewUp.data());
+  camera.SetViewAngle(state.viewAngle);
+  if (state.viewSize.isEmpty() || viewSize.isEmpty())
+    return;
+  const double stateAspect = static_cast<double>(state.viewSize.width()) / state.viewSize.height();
+  const double aspect = static_cast<double>(viewSize.width()) / viewSize.height();
+  if (aspect >= stateAspect)
+    return;
+  const double halfAngle = vtkMath::RadiansFromDegrees(state.viewAngle / 2.0);
+  camera.SetViewAngle(2.0 * vtkMath::DegreesFromRadians(std::atan(std::tan(halfAngle) * stateAspect / aspect)));
+}
+
+SceneSettings viewSettings(const MarkerView3d& view)
+{
+  SceneSettings settings;
+  settings.upAxis = view.upAxis();
+  settings.trailFrames = view.trailFrames();
+  settings.markerScale = view.markerScale();
+  settings.linksVisible = view.linksVisible();
+  settings.headReference = view.headReference();
+  settings.followHead = view.followHead();
+  settings.layoutKept = view.layoutHighlight();
+  settings.layoutReference = view.layoutReference();
+  settings.camera = cameraState(*view.viewport()->renderer()->GetActiveCamera(), view.viewport()->size());
+  return settings;
+}
+
+void applyViewSettings(const SceneSettings& settings, MarkerView3d& view)
+{
+  view.setUpAxis(settings.upAxis);
+  view.setTrailFrames(settings.trailFrames);
+  view.setMarkerScale(settings.markerScale);
+  view.setLinksVisible(settings.linksVisible);
+  if (!settings.headReference.empty())
+    (void)view.setHeadReference(settings.headReference);
+  view.setFollowHead(settings.followHead);
+  if (!settings.layoutKept.empty())
+    view.setLayoutHighlight(settings.layoutKept, settings.layoutReference);
+  if (settings.camera) {
+    vtkRenderer* renderer = view.viewport()->renderer();
+    applyCameraState(*settings.camera, *renderer->GetActiveCamera(), view.viewport()->size());
+    renderer->ResetCameraClippingRange();
+  }
+}
+
+} // namespace mocap::ui
