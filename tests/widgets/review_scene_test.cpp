@@ -37,7 +37,7 @@ namespace {
 const QString kSample = QString::fromUtf8(checkout::sampleDir());
 const QString kRig = kSample + QStringLiteral("/ict_face_rig.glb");
 const QString kRigBinding = kSample + QStringLiteral("/Facial-Sing.ict_face_rig.binding.json");
-const QSize kSize(640, 360);
+const QSize kReviewSize(640, 360);
 
 /// Pixels in the posed rig's warm skin tone (BlendshapeScene: 236, 196, 160, however lit): neither
 /// the background, the grey face mesh, nor any marker state colour (the filled orange is redder).
@@ -74,7 +74,7 @@ TEST(ReviewScene, DrawsTheSolvedRigOfASessionLoadedFromFiles)
   ui::ReviewSource source;
   source.session = &session;
   source.resetCamera = true;
-  ui::ReviewScene scene(source, kSize);
+  ui::ReviewScene scene(source, kReviewSize);
   ASSERT_TRUE(scene.usable()) << scene.failureReason().toStdString();
   scene.frameCamera(1000, 1000);
   const QImage withRig = scene.render(1000);
@@ -82,7 +82,7 @@ TEST(ReviewScene, DrawsTheSolvedRigOfASessionLoadedFromFiles)
   EXPECT_EQ(session.document().currentFrame(), 0) << "the session's own frame stays";
 
   source.settings.rigShown = false;
-  ui::ReviewScene markersAndMesh(source, kSize);
+  ui::ReviewScene markersAndMesh(source, kReviewSize);
   markersAndMesh.frameCamera(1000, 1000);
   const QImage withoutRig = markersAndMesh.render(1000);
   const qsizetype total = qsizetype(withRig.width()) * withRig.height();
@@ -129,13 +129,13 @@ TEST(ReviewScene, IsTheStudiosViewWithTheMeshAndRigLayers)
   ASSERT_NE(window, nullptr);
   ASSERT_EQ(window->loadRig(kRig, {}, kRigBinding, true), QString());
   ui::VtkViewport* viewport = window->markerView()->viewport();
-  viewport->setFixedSize(kSize);
+  viewport->setFixedSize(kReviewSize);
   window->document().setCurrentFrame(1000);
   window->markerView()->resetCamera();
   QTest::qWait(300);
   const QImage studio = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB888);
-  ASSERT_GT(rigColoured(studio), qsizetype(kSize.width()) * kSize.height() / 50) << "the studio draws the rig";
-  ui::ReviewScene scene(window->reviewSource(), kSize);
+  ASSERT_GT(rigColoured(studio), qsizetype(kReviewSize.width()) * kReviewSize.height() / 50) << "the studio draws the rig";
+  ui::ReviewScene scene(window->reviewSource(), kReviewSize);
   const QImage review = scene.render(1000);
   EXPECT_TRUE(test::matchesImage(review, studio, QStringLiteral("ReviewSceneWithRig")));
   EXPECT_EQ(window->document().currentFrame(), 1000);
