@@ -1,14 +1,14 @@
 """Opens Mocap Studio's FBX exports with Blender's own FBX importer and checks what Blender sees.
 
     blender -b --factory-startup --python-exit-code 1 --python check_fbx.py -- \
-        --markers TAKE.fbx TAKE.csv UP UNIT_MM \
+        --markers TAKE.fbx TAKE.csv UP \
         --rig RIG.fbx WEIGHTS.csv
 
 --markers: TAKE.fbx is `mocap convert` of a take, TAKE.csv the same take as `mocap convert` writes
-CSV (Frame,Time,<label>:X,<label>:Y,<label>:Z,… with empty cells in gaps), UP the axis the FBX
-declares (y or z) and UNIT_MM the millimetres per unit of its coordinates. Blender must make one
-empty per marker, and each empty must sit at the marker's CSV position (in mm, after Blender's unit
-scale and axis conversion) within 0.01 mm at every frame where the marker is valid.
+CSV in mm (Frame,Time,<label>:X,<label>:Y,<label>:Z,… with empty cells in gaps) and UP the axis
+the FBX declares (y or z). Blender must make one empty per marker, and each empty must sit at the
+marker's CSV position within 0.01 mm at every frame where the marker is valid, after Blender has
+applied the file's unit scale (whatever unit the FBX is in) and turned its axes into Blender's.
 --rig: RIG.fbx is `mocap solve -o RIG.fbx`, WEIGHTS.csv the same solve's weight curves. Blender
 must make one shape key per CSV column (the rig's shapes) besides the basis, and each key's value
 must equal the CSV weight within 1e-4 at every frame.
@@ -51,13 +51,13 @@ def blender_frame(sample):
     return 1 + sample
 
 
-def to_blender_mm(xyz, up, unit_mm):
-    """A position of the file in Blender's world, in mm: Y-up files turn (x, y, z) into (x, −z, y)."""
-    x, y, z = (unit_mm * v for v in xyz)
+def to_blender_axes(xyz, up):
+    """A position of the file in Blender's Z-up world: Y-up files turn (x, y, z) into (x, −z, y)."""
+    x, y, z = xyz
     return Vector((x, -z, y)) if up == "y" else Vector((x, y, z))
 
 
-def check_markers(fbx_path, csv_path, up, unit_mm):
+def check_markers(fbx_path, csv_path, up):
     reset()
     import_fbx(fbx_path)
     header, rows = read_csv(csv_path)
@@ -77,7 +77,7 @@ def check_markers(fbx_path, csv_path, up, unit_mm):
                 continue  # a gap: the FBX holds the marker there, nothing to compare
             require(label in empties, "no empty named %r" % label)
             seen = empties[label].matrix_world.translation * metres_to_mm
-            error = (seen - to_blender_mm([float(c) for c in cells], up, unit_mm)).length
+            error = (seen - to_blender_axes([float(c) for c in cells], up)).length
             checked += 1
             if error > worst[0]:
                 worst = (error, label, sample)
@@ -131,9 +131,9 @@ def main(argv):
         while args:
             option = args.pop(0)
             if option == "--markers":
-                fbx_path, csv_path, up, unit_mm = args[:4]
-                del args[:4]
-                check_markers(fbx_path, csv_path, up, float(unit_mm))
+                fbx_path, csv_path, up = args[:3]
+                del args[:3]
+                check_markers(fbx_path, csv_path, up)
             elif option == "--rig":
                 fbx_path, csv_path = args[:2]
                 del args[:2]

@@ -41,9 +41,8 @@ else
   echo "NOTE: assimp not found (Debian package 'assimp-utils'): the second reader is not run"
 fi
 
-# The CSV is in mm; cm coordinates are 10 mm a unit.
 "$blender" -b --factory-startup --python-exit-code 1 --python "$here/check_fbx.py" -- \
-  --markers "$out/take_y_cm.fbx" "$out/take.csv" y 10 \
-  --markers "$out/take_z_mm.fbx" "$out/take.csv" z 1 \
+  --markers "$out/take_y_cm.fbx" "$out/take.csv" y \
+  --markers "$out/take_z_mm.fbx" "$out/take.csv" z \
   --rig "$out/rig.fbx" "$out/weights.csv" || status=$?
 exit "$status"

@@ -203,7 +203,11 @@ FbxDocument::FbxDocument(const FbxSceneSettings& settings) : m_settings(settings
     addTimeProperty(p, name, 0);
   for (const char* name : {"LocalStop", "ReferenceStop"})
     addTimeProperty(p, name, stop);
-  m_layer = addObject("AnimationLayer", "BaseLayer", "AnimLayer", "").id;
+  // A layer with a (here empty) property table: readers such as assimp need every object to have
+  // a scope of children.
+  const Object layer = addObject("AnimationLayer", "BaseLayer", "AnimLayer", "");
+  layer.node->child("Properties70");
+  m_layer = layer.id;
   connect(m_layer, stack.id);
 }
 
