@@ -228,9 +228,11 @@ TEST(FbxWriter, HoldsAMarkerThroughItsGapsAndHidesIt)
 
   const FbxTestNode& never = modelNamed(scene, "never");
   EXPECT_TRUE(scene.children(idOf(never), "OP", "Lcl Translation").empty()) << "no data, no keys";
-  for (const FbxTestNode& p : never.at("Properties70").children)
-    if (p.properties.at(0).text == "Visibility")
+  for (const FbxTestNode& p : never.at("Properties70").children) {
+    if (p.properties.at(0).text == "Visibility") {
       EXPECT_EQ(p.properties.at(4).number, 0.0);
+    }
+  }
 }
 
 TEST(FbxWriter, DeclaresUnitsAxesRateAndTimeSpan)
