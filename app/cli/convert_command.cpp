@@ -1,8 +1,10 @@
 #include "take_input.h"
 #include "take_output.h"
+#include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 
+#include "mocap/io/fbx_writer.h"
 #include "mocap/io/take_io.h"
 
 #include <filesystem>
@@ -17,14 +19,16 @@ namespace {
 struct ConvertArguments
 {
   std::string input, output;
-  std::optional<std::string> units;
+  std::optional<std::string> units, up;
 };
 
 int runConvert(const ConvertArguments& arguments)
 {
   const std::string& input = arguments.input;
   const std::string& output = arguments.output;
-  (void)formatFromPath(output);  // reject an unknown output type before the read
+  const TakeFormat format = formatFromPath(output);  // reject an unknown output type before the read
+  if (arguments.up && format != TakeFormat::Fbx)
+    throw UsageError("--up applies to .fbx output only");
   std::error_code ec;
   if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
     throw UsageError("IN and OUT are the same file; write to a new file");
@@ -34,7 +38,12 @@ int runConvert(const ConvertArguments& arguments)
   Take take = readInputTake(input);
   if (units)
     take.convertUnits(*units);
-  writeOutputTake(take, output);
+  if (arguments.up) {
+    writeMarkersFbx(output, take, parseFbxUpAxis(*arguments.up).value());
+    noteLeftOut(take, output);
+  } else {
+    writeOutputTake(take, output);
+  }
   return kExitOk;
 }
 
@@ -43,7 +52,7 @@ int runConvert(const ConvertArguments& arguments)
 Command addConvert(CLI::App& mocap)
 {
   CLI::App* command =
-      mocap.add_subcommand("convert", "convert between .c3d .trc (read/write) and .csv .bvh (write)");
+      mocap.add_subcommand("convert", "convert between .c3d .trc (read/write) and .csv .bvh .fbx (write)");
   const auto arguments = std::make_shared<ConvertArguments>();
   command->add_option("IN", arguments->input, "the take to read")->required();
   command->add_option("OUT", arguments->output, "the file to write; its extension names the format")->required();
@@ -55,6 +64,8 @@ Command addConvert(CLI::App& mocap)
             return parseLengthUnit(text) ? "" : "'" + text + "' is not mm, cm or m";
           },
           "", "length unit"));
+  oneOf(command->add_option("--up", arguments->up, "FBX: the take's up axis, declared in the file (default z)"),
+        std::string("y|z"));
   return {command, [arguments] { return runConvert(*arguments); }};
 }
 

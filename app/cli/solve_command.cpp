@@ -1,5 +1,6 @@
 // `mocap solve`: solves a take to the weights of a blendshape rig through a marker binding and
-// writes weight curves (CSV) or the solved mesh as a PC2 point cache.
+// writes weight curves (CSV), the rig with its animated weights (GLB, FBX) or the solved mesh as a
+// PC2 point cache.
 #include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
@@ -13,6 +14,7 @@
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
+#include "mocap/io/fbx_writer.h"
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
 #include "mocap/io/weights_csv_writer.h"
@@ -34,7 +36,7 @@ struct SolveArguments
   BlendshapeSolveOptions settings;
   std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
   std::string format = "plain";
-  std::optional<std::string> stabilize, only;
+  std::optional<std::string> stabilize, only, up, units;
   LeaveOutOptions leaveOut;
   bool json = false;
 };
@@ -64,8 +66,20 @@ ResidualSummary summarize(const Eigen::VectorXd& residual)
   return s;
 }
 
-/// Weight curves for .csv, the rig with its animated weights for .glb, else (checkOutput allowed
-/// only .pc2) the solved mesh as a point cache.
+/// The rig's axes and units an FBX declares: --up and --units, else Y-up centimetres (OBJ meshes
+/// such as ICT FaceKit's and MediaPipe's).
+FbxRigOptions fbxOptions(const SolveArguments& arguments)
+{
+  FbxRigOptions options;
+  if (arguments.up)
+    options.up = parseFbxUpAxis(*arguments.up).value();
+  if (arguments.units)
+    options.unit = parseLengthUnit(*arguments.units).value();
+  return options;
+}
+
+/// Weight curves for .csv, the rig with its animated weights for .glb and .fbx, else (checkOutput
+/// allowed only .pc2) the solved mesh as a point cache.
 void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
                  const Take& take, const BlendshapeSolveResult& result)
 {
@@ -77,6 +91,10 @@ void writeOutput(const std::filesystem::path& out, const SolveArguments& argumen
   }
   if (extension == "glb") {
     writeRigGlb(out, rig, result.weights, take.frameRate());
+    return;
+  }
+  if (extension == "fbx") {
+    writeRigFbx(out, rig, result.weights, take.frameRate(), fbxOptions(arguments));
     return;
   }
   MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
@@ -91,12 +109,15 @@ void writeOutput(const std::filesystem::path& out, const SolveArguments& argumen
 }
 
 /// Checked before any work, so a wrong name does not cost a solve.
-void checkOutput(const std::filesystem::path& out)
+void checkOutput(const SolveArguments& arguments)
 {
+  const std::filesystem::path out = arguments.out;
   const std::string extension = lowerExtension(out);
-  if (extension != "csv" && extension != "glb" && extension != "pc2")
-    throw UsageError("-o must be a .csv (weight curves), .glb (rig with animated weights) or .pc2 (solved mesh) file, not '" +
-                     out.string() + "'");
+  if (extension != "csv" && extension != "glb" && extension != "fbx" && extension != "pc2")
+    throw UsageError("-o must be a .csv (weight curves), .glb or .fbx (rig with animated weights) or .pc2 (solved mesh) "
+                     "file, not '" + out.string() + "'");
+  if ((arguments.up || arguments.units) && extension != "fbx")
+    throw UsageError("--up and --units apply to .fbx output only");
 }
 
 void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
@@ -154,7 +175,7 @@ void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const 
 
 int runSolve(const SolveArguments& arguments)
 {
-  checkOutput(arguments.out);
+  checkOutput(arguments);
   BlendshapeSolveOptions settings = arguments.settings;
   settings.method = parseBlendshapeSolveMethod(arguments.method).value();
   const Stopwatch load;
@@ -196,7 +217,7 @@ int runSolve(const SolveArguments& arguments)
 Command addSolve(CLI::App& mocap)
 {
   CLI::App* command = mocap.add_subcommand(
-      "solve", "solve the take to a blendshape rig's weights; weight curves (CSV), animated rig (GLB) or mesh (PC2)");
+      "solve", "solve the take to a blendshape rig's weights; weight curves (CSV), animated rig (GLB, FBX) or mesh (PC2)");
   const auto a = std::make_shared<SolveArguments>();
   BlendshapeSolveOptions& settings = a->settings;
   command->add_option("--mesh", a->meshPath, "the rig: its neutral (.obj, .ply) with --shapes, or a glTF rig (.glb, .gltf)")
@@ -228,9 +249,14 @@ Command addSolve(CLI::App& mocap)
   oneOf(command->add_option("--format", a->format, "CSV layout"), std::string("plain|livelink"))->capture_default_str();
   addLeaveOutOptions(*command, a->leaveOut);
   command->add_option("-o", a->out,
-                      "weight curves (.csv), the rig with animated weights (.glb) or the solved mesh (.pc2, plus OUT.obj)")
+                      "weight curves (.csv), the rig with animated weights (.glb, .fbx) or the solved mesh (.pc2, plus "
+                      "OUT.obj)")
       ->required()
-      ->type_name("OUT.csv|OUT.glb|OUT.pc2");
+      ->type_name("OUT.csv|OUT.glb|OUT.fbx|OUT.pc2");
+  oneOf(command->add_option("--up", a->up, "FBX: the rig's up axis, declared in the file (default y)"),
+        std::string("y|z"));
+  oneOf(command->add_option("--units", a->units, "FBX: the rig's length unit, declared in the file (default cm)"),
+        std::string("cm|mm"));
   command->add_flag("--json", a->json, "print JSON: λ, timing, marker residual, leave-out error, active shapes");
   return {command, [a] { return runSolve(*a); }};
 }

@@ -1,4 +1,5 @@
 // The `mocap` executable end to end: exit codes, one-line errors, JSON output, no partial files.
+#include "../core/fbx_test_reader.h"
 #include "../core/test_support.h"
 #include "foreign_takes.h"
 
@@ -423,7 +424,7 @@ TEST(Cli, OptionValuesReadAsBefore)
 TEST(Cli, ConvertWritesEveryFormatAndTrcReadsBack)
 {
   test::TempDir dir;
-  for (const char* name : {"take.trc", "take.csv", "take.bvh", "take.c3d"}) {
+  for (const char* name : {"take.trc", "take.csv", "take.bvh", "take.c3d", "take.fbx"}) {
     const CommandResult run = runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file(name)), dir);
     ASSERT_EQ(run.exitCode, 0) << name << ": " << run.err;
     EXPECT_GT(std::filesystem::file_size(dir.file(name)), 1000u) << name;
@@ -433,6 +434,35 @@ TEST(Cli, ConvertWritesEveryFormatAndTrcReadsBack)
   EXPECT_NE(info.out.find("\"frames\": 3000"), std::string::npos);
   EXPECT_NE(info.out.find("\"first_frame\": 887,\n      \"length\": 33"), std::string::npos);
   EXPECT_EQ(readFileBytes(dir.file("take.csv")).rfind("Frame,Time,root-1:X,root-1:Y,root-1:Z,", 0), 0u);
+}
+
+TEST(Cli, ConvertWritesTheMarkersAsFbxWithTheAxesAndUnitsAsked)
+{
+  test::TempDir dir;
+  const CommandResult run = runMocap(
+      "convert " + q(test::sampleTake()) + " " + q(dir.file("take.fbx")) + " --up y --units cm", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const std::vector<test::FbxTestNode> top = test::readFbxForTest(readFileBytes(dir.file("take.fbx")));
+  std::map<std::string, double> global;
+  for (const test::FbxTestNode& p : test::fbxNode(top, "GlobalSettings").at("Properties70").children)
+    global[p.properties.at(0).text] =
+        p.properties.at(4).type == 'D' ? p.properties.at(4).number : static_cast<double>(p.properties.at(4).integer);
+  EXPECT_EQ(global["UpAxis"], 1.0);
+  EXPECT_EQ(global["UnitScaleFactor"], 1.0);
+  EXPECT_EQ(global["CustomFrameRate"], 100.0);
+  const Take take = readTake(test::sampleTake());
+  std::size_t nulls = 0;
+  for (const test::FbxTestNode& object : test::fbxNode(top, "Objects").children)
+    nulls += object.name == "Model" && object.properties.at(2).text == "Null";
+  EXPECT_EQ(nulls, markerPoints(take).size() + 1) << "a root and a null per marker";
+
+  // --up is for FBX only; an unwritable output is a clear error.
+  EXPECT_EQ(runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("x.trc")) + " --up y", dir).exitCode, 2);
+  EXPECT_EQ(runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("x.fbx")) + " --up x", dir).exitCode, 2);
+  const CommandResult unwritable =
+      runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("take.fbx") / "x.fbx"), dir);
+  EXPECT_EQ(unwritable.exitCode, 1);
+  EXPECT_NE(unwritable.err.find("x.fbx"), std::string::npos) << unwritable.err;
 }
 
 TEST(Cli, ConvertRescalesUnitsOnRequest)

@@ -1,5 +1,6 @@
 // `mocap bind`, `mocap deform`, `mocap rig` and `mocap solve` end to end on the bundled take, the
 // MediaPipe face and the bundled ICT FaceKit rig.
+#include "../core/fbx_test_reader.h"
 #include "../core/test_support.h"
 
 #include "mocap/base/file_io.h"
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -498,6 +500,59 @@ TEST(RigCli, TheBundledIctRigLoadsAndSolvesTheBundledTake)
   EXPECT_LT(leaveOut, 2.2);
   EXPECT_LT(leaveOut, json.find("leave_out", "solve")->find("rest_error_mm", "leave_out")->number("rest"));
   EXPECT_EQ(csvLines(readFileBytes(dir.file("w.csv"))).size(), 3001u);
+}
+
+TEST(SolveCli, WritesTheRigWithItsAnimatedWeightsAsFbx)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string fbx = dir.file("solved.fbx").string(), csv = dir.file("solved.csv").string();
+  const Outcome run = mocap(solveArguments(dir) + " --leave-out 0 --up z --units mm -o '" + fbx + "'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  ASSERT_EQ(mocap(solveArguments(dir) + " --leave-out 0 -o '" + csv + "'", dir).exitCode, 0);
+  const std::vector<test::FbxTestNode> top = test::readFbxForTest(readFileBytes(fbx));
+  std::map<std::int64_t, const test::FbxTestNode*> objects;
+  std::vector<std::string> channels;
+  for (const test::FbxTestNode& object : test::fbxNode(top, "Objects").children) {
+    objects[object.properties.at(0).integer] = &object;
+    if (object.properties.at(2).text == "BlendShapeChannel")
+      channels.push_back(object.properties.at(1).text.substr(0, object.properties.at(1).text.find('\0')));
+  }
+  const std::string header = readFileBytes(csv).substr(0, readFileBytes(csv).find('\n'));
+  EXPECT_EQ("Frame,Time," + channels.at(0) + "," + channels.at(1) + "," + channels.at(2), header)
+      << "the channels are the rig's shapes, named and ordered as the weight CSV's columns";
+  // Each DeformPercent curve, in channel order, against the CSV's columns.
+  std::vector<std::vector<double>> curves;
+  for (const test::FbxTestNode& c : test::fbxNode(top, "Connections").children)
+    if (c.properties.size() == 4 && c.properties[3].text == "d|DeformPercent")
+      curves.push_back(objects.at(c.properties[1].integer)->at("KeyValueFloat").properties.at(0).numbers);
+  const std::vector<double> weights = csvWeights(readFileBytes(csv));
+  ASSERT_EQ(curves.size(), 3u);
+  ASSERT_EQ(weights.size(), 3000u * 3u);
+  double largest = 0.0;
+  for (std::size_t s = 0; s < 3; ++s) {
+    ASSERT_EQ(curves[s].size(), 3000u);
+    for (std::size_t f = 0; f < 3000; ++f)
+      largest = std::max(largest, std::abs(curves[s][f] / 100.0 - weights[3 * f + s]));
+  }
+  EXPECT_LT(largest, 1e-4);
+  for (const test::FbxTestNode& p : test::fbxNode(top, "GlobalSettings").at("Properties70").children) {
+    if (p.properties.at(0).text == "UpAxis") {
+      EXPECT_EQ(p.properties.at(4).integer, 2);
+    }
+    if (p.properties.at(0).text == "UnitScaleFactor") {
+      EXPECT_EQ(p.properties.at(4).number, 0.1);
+    }
+  }
+
+  // --up and --units belong to FBX output; an unwritable FBX is a clear error.
+  Outcome bad = mocap(solveArguments(dir) + " --up z -o '" + csv + "'", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find(".fbx output only"), std::string::npos) << bad.err;
+  EXPECT_EQ(mocap(solveArguments(dir) + " --units m -o '" + fbx + "'", dir).exitCode, 2);
+  bad = mocap(solveArguments(dir) + " --leave-out 0 -o '" + fbx + "/x.fbx'", dir);
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("x.fbx"), std::string::npos) << bad.err;
 }
 
 } // namespace

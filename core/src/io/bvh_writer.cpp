@@ -4,6 +4,7 @@
 #include "mocap/base/number_text.h"
 #include "mocap/base/file_io.h"
 #include "mocap/model/marker_points.h"
+#include "mocap/model/nearest_usable_frame.h"
 
 #include <charconv>
 #include <cmath>
@@ -43,35 +44,6 @@ std::vector<std::string> jointNames(const std::vector<std::string>& labels)
   makeLabelsUnique(names);
   names.erase(names.begin());
   return names;
-}
-
-// A sample BVH can carry: valid and finite. O(1).
-bool usable(const Take& take, Eigen::Index frame, Eigen::Index marker)
-{
-  return take.isValid(frame, marker) && take.position(frame, marker).allFinite();
-}
-
-// For each frame, the nearest frame in which `marker` is usable (earlier on a tie), or −1 when it
-// never is. O(#frames).
-std::vector<Eigen::Index> nearestUsable(const Take& take, Eigen::Index marker)
-{
-  const Eigen::Index frames = take.frameCount();
-  std::vector<Eigen::Index> nearest(static_cast<std::size_t>(frames), -1);
-  Eigen::Index last = -1;
-  for (Eigen::Index f = 0; f < frames; ++f) {
-    if (usable(take, f, marker))
-      last = f;
-    nearest[static_cast<std::size_t>(f)] = last;
-  }
-  Eigen::Index next = -1;
-  for (Eigen::Index f = frames - 1; f >= 0; --f) {
-    if (usable(take, f, marker))
-      next = f;
-    Eigen::Index& best = nearest[static_cast<std::size_t>(f)];
-    if (next >= 0 && (best < 0 || next - f < f - best))
-      best = next;
-  }
-  return nearest;
 }
 
 } // namespace
@@ -121,7 +93,7 @@ std::string formatBvh(const Take& take, const BvhOptions& options)
   Eigen::MatrixXd local = Eigen::MatrixXd::Zero(frames, 3 * markers);
   Eigen::MatrixXd offsets = Eigen::MatrixXd::Zero(markers, 3);
   for (Eigen::Index m = 0; m < markers; ++m) {
-    const std::vector<Eigen::Index> nearest = nearestUsable(take, m);
+    const std::vector<Eigen::Index> nearest = nearestUsableFrames(take, m);
     if (frames == 0 || nearest.front() < 0)
       continue;
     for (Eigen::Index f = 0; f < frames; ++f) {

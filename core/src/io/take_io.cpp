@@ -5,6 +5,7 @@
 #include "mocap/io/c3d_reader.h"
 #include "mocap/io/c3d_writer.h"
 #include "mocap/io/csv_writer.h"
+#include "mocap/io/fbx_writer.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/text.h"
@@ -17,11 +18,12 @@ namespace mocap {
 namespace {
 
 // The name of a format is its file extension.
-constexpr EnumTable<TakeFormat, 4> kFormats{{{
+constexpr EnumTable<TakeFormat, 5> kFormats{{{
     {TakeFormat::C3d, "c3d"},
     {TakeFormat::Trc, "trc"},
     {TakeFormat::Csv, "csv"},
     {TakeFormat::Bvh, "bvh"},
+    {TakeFormat::Fbx, "fbx"},
 }}};
 
 } // namespace
@@ -31,7 +33,7 @@ TakeFormat formatFromPath(const std::filesystem::path& path)
   const std::string ext = lowerExtension(path);
   if (const auto format = kFormats.parse(ext))
     return *format;
-  throw InvalidArgument(path.string() + ": unknown file type '" + ext + "' (expected .c3d, .trc, .csv or .bvh)");
+  throw InvalidArgument(path.string() + ": unknown file type '" + ext + "' (expected .c3d, .trc, .csv, .bvh or .fbx)");
 }
 
 std::string_view formatName(TakeFormat format)
@@ -80,7 +82,8 @@ Take readTake(const std::filesystem::path& path, std::vector<std::string>* warni
     return take;
   }
   case TakeFormat::Csv:
-  case TakeFormat::Bvh: break;
+  case TakeFormat::Bvh:
+  case TakeFormat::Fbx: break;
   }
   throw InvalidArgument(path.string() + ": reading ." + lowerExtension(path) +
                         " files is not supported (read .c3d or .trc)");
@@ -93,12 +96,13 @@ void writeTake(const Take& take, const std::filesystem::path& path)
   case TakeFormat::Trc: writeTrc(take, path); writeSidecar(take, path); return;
   case TakeFormat::Csv: writeCsv(take, path); writeSidecar(take, path); return;
   case TakeFormat::Bvh: writeBvh(take, path); return;
+  case TakeFormat::Fbx: writeMarkersFbx(path, take, FbxUpAxis::Z); return;
   }
 }
 
 std::string leftOutOnWriting(const Take& take, TakeFormat format)
 {
-  const bool markersOnly = format == TakeFormat::Trc || format == TakeFormat::Bvh;
+  const bool markersOnly = format == TakeFormat::Trc || format == TakeFormat::Bvh || format == TakeFormat::Fbx;
   const std::string outputs = describeModelOutputs(take);
   if (!markersOnly || outputs.empty())
     return {};

@@ -16,6 +16,7 @@ enum class TakeFormat
   Trc,  ///< read and write
   Csv,  ///< write only
   Bvh,  ///< write only
+  Fbx,  ///< write only: the markers as animated nulls (fbx_writer), Z-up unless writeMarkersFbx is told otherwise
 };
 
 /// The format named by `path`'s extension (case-insensitive). Throws InvalidArgument for an
@@ -37,7 +38,7 @@ void writeTake(const Take& take, const std::filesystem::path& path);
 
 /// What writeTake(take, path in `format`) leaves out, in words to show the user: "" when the file
 /// holds everything, else e.g. "the TRC file holds marker positions only: 34 model outputs (…) are
-/// not written". TRC and BVH leave model outputs out; C3D and CSV keep them. O(#points).
+/// not written". TRC, BVH and FBX leave model outputs out; C3D and CSV keep them. O(#points).
 [[nodiscard]] std::string leftOutOnWriting(const Take& take, TakeFormat format);
 
 } // namespace mocap
