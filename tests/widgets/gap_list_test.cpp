@@ -320,6 +320,7 @@ TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
   ASSERT_EQ(doc().preview().size(), 1u) << panel->statusText().toStdString();
   EXPECT_EQ(doc().preview().front().marker, model->gapAt(row).marker);
   EXPECT_EQ(doc().preview().front().size(), 33u);
+  const SamplePatch previewed = doc().preview().front();
   EXPECT_EQ(model->stateAt(row), GapTableModel::FillState::Previewed);
   EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap previewed, 33 samples"));
   EXPECT_TRUE(sameSamples(doc().take(), before));
@@ -328,7 +329,10 @@ TEST_F(GapList, SelectingAGapPreviewsItsFillWithoutTouchingTheTake)
   test::waitUntilIdle(*panel);
   EXPECT_EQ(panel->statusText(), QStringLiteral("1 gap filled, 33 samples"));
   EXPECT_EQ(doc().undoStack()->count(), 1);
-  EXPECT_TRUE(doc().preview().empty());
+  // The gap's preview is gone with the fill (the Cleaning dock, when shown, may preview its own
+  // pass over the changed take meanwhile: none of its patches is this gap's).
+  for (const SamplePatch& patch : doc().preview())
+    EXPECT_FALSE(patch.marker == previewed.marker && patch.frames == previewed.frames) << "the filled gap's preview stays";
 }
 
 TEST_F(GapList, AGapOverTheLimitIsPreviewedAndFilledOnlyWhenAllowed)
