@@ -935,8 +935,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</source>
-        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</translation>
+        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX-Marker (*.fbx)</translation>
     </message>
     <message>
         <location line="+5"/>

@@ -924,8 +924,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</source>
-        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)</translation>
+        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX 标记点 (*.fbx)</translation>
     </message>
     <message>
         <location line="+5"/>

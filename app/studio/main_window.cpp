@@ -942,7 +942,7 @@ void MainWindow::loadCleaningPresetDialog()
 void MainWindow::exportDialog()
 {
   const QString path = QFileDialog::getSaveFileName(this, tr("Export"), QFileInfo(m_document->filePath()).absolutePath(),
-                                                    tr("C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh)"));
+                                                    tr("C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)"));
   if (path.isEmpty())
     return;
   const QString error = m_document->save(path, false);

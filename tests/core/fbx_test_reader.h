@@ -119,7 +119,7 @@ private:
     case 'Y': p.integer = take<std::int16_t>(); break;
     case 'I': p.integer = take<std::int32_t>(); break;
     case 'L': p.integer = take<std::int64_t>(); break;
-    case 'F': p.number = take<float>(); break;
+    case 'F': p.number = static_cast<double>(take<float>()); break;
     case 'D': p.number = take<double>(); break;
     case 'S':
     case 'R': p.text = takeBytes(take<std::uint32_t>()); break;
