@@ -18,12 +18,14 @@
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
 #include "mocap/io/weights_csv_writer.h"
+#include "mocap/math/key_reduction.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <vector>
 
 namespace mocap::cli {
 
@@ -37,6 +39,7 @@ struct SolveArguments
   std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
   std::string format = "plain";
   std::optional<std::string> stabilize, only, up, units;
+  std::optional<double> reduce;  // glTF: key tolerance in weight units
   LeaveOutOptions leaveOut;
   bool json = false;
 };
@@ -80,8 +83,21 @@ FbxRigOptions fbxOptions(const SolveArguments& arguments)
 
 /// Weight curves for .csv, the rig with its animated weights for .glb and .fbx, else (checkOutput
 /// allowed only .pc2) the solved mesh as a point cache.
+/// The key frames --reduce keeps of the solved weights (all frames share them, as glTF's weights
+/// sampler requires), or none without it.
+std::optional<KeyReduction> reducedKeys(const SolveArguments& arguments, const Take& take,
+                                        const BlendshapeSolveResult& result)
+{
+  if (!arguments.reduce || result.weights.rows() == 0)
+    return std::nullopt;
+  const Eigen::VectorXd times = Eigen::VectorXd::LinSpaced(result.weights.rows(), 0.0,
+                                                           static_cast<double>(result.weights.rows() - 1)) /
+                                take.frameRate();
+  return reduceKeys(times, result.weights, *arguments.reduce);
+}
+
 void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
-                 const Take& take, const BlendshapeSolveResult& result)
+                 const Take& take, const BlendshapeSolveResult& result, const std::optional<KeyReduction>& keys)
 {
   const std::string extension = lowerExtension(out);
   if (extension == "csv") {
@@ -90,7 +106,7 @@ void writeOutput(const std::filesystem::path& out, const SolveArguments& argumen
     return;
   }
   if (extension == "glb") {
-    writeRigGlb(out, rig, result.weights, take.frameRate());
+    writeRigGlb(out, rig, result.weights, take.frameRate(), keys ? keys->keys : std::vector<Eigen::Index>{});
     return;
   }
   if (extension == "fbx") {
@@ -118,11 +134,13 @@ void checkOutput(const SolveArguments& arguments)
                      "file, not '" + out.string() + "'");
   if ((arguments.up || arguments.units) && extension != "fbx")
     throw UsageError("--up and --units apply to .fbx output only");
+  if (arguments.reduce && extension != "glb")
+    throw UsageError("--reduce applies to .glb output (the FBX writer keys every frame for now)");
 }
 
 void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
                const Take& take, const BlendshapeSolveResult& result, double loadSeconds,
-               const std::optional<LeaveOutResult>& quality)
+               const std::optional<LeaveOutResult>& quality, const std::optional<KeyReduction>& keys)
 {
   const ResidualSummary residual = summarize(result.residual);
   const auto frames = static_cast<double>(result.weights.rows());
@@ -168,6 +186,14 @@ void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const 
     json.endObject();
   }
   json.endArray();
+  if (keys) {
+    json.key("key_reduction").beginObject();
+    json.key("tolerance").value(*arguments.reduce);
+    json.key("keys_before").value(static_cast<std::int64_t>(result.weights.rows()));
+    json.key("keys_after").value(static_cast<std::int64_t>(keys->keys.size()));
+    json.key("max_error").value(keys->maxError);
+    json.endObject();
+  }
   json.key("output").value(arguments.out);
   json.endObject();
   std::cout << json.str() << '\n';
@@ -186,13 +212,14 @@ int runSolve(const SolveArguments& arguments)
     (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
   const BlendshapeSolver solver(rig, readBinding(arguments.bindingPath, rig.neutral.vertexCount()), take, settings);
   const BlendshapeSolveResult result = solver.solve(take);
-  writeOutput(arguments.out, arguments, rig, take, result);
+  const std::optional<KeyReduction> keys = reducedKeys(arguments, take, result);
+  writeOutput(arguments.out, arguments, rig, take, result, keys);
   std::optional<LeaveOutResult> quality;
   if (arguments.leaveOut.fraction > 0.0)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
 
   if (arguments.json) {
-    printJson(arguments, rig, solver, take, result, loadSeconds, quality);
+    printJson(arguments, rig, solver, take, result, loadSeconds, quality, keys);
     return kExitOk;
   }
   const ResidualSummary residual = summarize(result.residual);
@@ -208,6 +235,9 @@ int runSolve(const SolveArguments& arguments)
   if (quality)
     std::cout << "leave-" << quality->hidden.size() << "-markers-out error " << fixedNumber(quality->meanError, 2)
               << " mm mean (face at rest: " << fixedNumber(quality->restError, 2) << " mm)\n";
+  if (keys)
+    std::cout << "kept " << keys->keys.size() << " of " << result.weights.rows() << " key frames, largest error "
+              << fixedNumber(keys->maxError, 4) << " (tolerance " << *arguments.reduce << ")\n";
   std::cout << "wrote " << arguments.out << '\n';
   return kExitOk;
 }
@@ -257,6 +287,11 @@ Command addSolve(CLI::App& mocap)
         std::string("y|z"));
   oneOf(command->add_option("--units", a->units, "FBX: the rig's length unit, declared in the file (default cm)"),
         std::string("cm|mm"));
+  numberIn(command->add_option("--reduce", a->reduce,
+                               "glTF: keep the fewest key frames whose linear interpolation stays within this many "
+                               "weight units of every solved frame")
+               ->type_name("TOLERANCE"),
+           0.0, 1.0);
   command->add_flag("--json", a->json, "print JSON: λ, timing, marker residual, leave-out error, active shapes");
   return {command, [a] { return runSolve(*a); }};
 }

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <algorithm>
 #include <map>
 #include <cmath>
@@ -255,6 +257,30 @@ TEST(SolveCli, WritesTheRigWithItsAnimatedWeightsAsGlb)
   // The GLB holds the same 3000 × 3 weights the CSV does (as float32): 36 000 bytes of animation
   // output plus the 3000 key times, beside the mesh.
   EXPECT_GT(bytes.size(), 3000u * 4u * 4u);
+}
+
+TEST(SolveCli, ReduceKeepsFewerKeyFramesWithinTheTolerance)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string glb = dir.file("reduced.glb").string();
+  const Outcome run = mocap(solveArguments(dir) + " --leave-out 0 --reduce 0.01 --json -o '" + glb + "'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue json = parseJson(run.out, "solve --json");
+  ASSERT_NE(json.find("key_reduction", "solve"), nullptr) << run.out;
+  const JsonValue& reduction = *json.find("key_reduction", "solve");
+  const double before = reduction.find("keys_before", "k")->number("keys_before");
+  const double after = reduction.find("keys_after", "k")->number("keys_after");
+  EXPECT_EQ(before, 3000.0);
+  EXPECT_LT(after, before);
+  EXPECT_GE(after, 2.0);
+  EXPECT_LE(reduction.find("max_error", "k")->number("max_error"), 0.01);
+  std::cout << "[ keys ] the sample solved to the small rig, tolerance 0.01: " << after << " of " << before
+            << " key frames\n";
+  const Outcome fbx = mocap(solveArguments(dir) + " --reduce 0.01 -o '" + dir.file("r.fbx").string() + "'", dir);
+  EXPECT_EQ(fbx.exitCode, 2) << "not for FBX yet, and said so";
+  EXPECT_NE(fbx.err.find("--reduce applies to .glb"), std::string::npos) << fbx.err;
+  EXPECT_EQ(mocap(solveArguments(dir) + " --reduce -1 -o '" + glb + "'", dir).exitCode, 2);
 }
 
 TEST(SolveCli, BadRigsAndOutputsGiveClearErrors)
