@@ -144,6 +144,8 @@ void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge
   constexpr Eigen::Index kBlock = 512;
   Eigen::Index blockStart = 0, blockEnd = 0;
   Eigen::MatrixXd atbBlock;
+  Eigen::VectorXd atb;
+  BoundedLeastSquares::Workspace workspace;
   for (Eigen::Index f = 0; f < frames; ++f) {
     const Mask& present = o.present[static_cast<std::size_t>(f)];
     if (o.solvable[static_cast<std::size_t>(f)]) {
@@ -157,9 +159,9 @@ void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge
         blockEnd = std::min(frames, f + kBlock);
         atbBlock.noalias() = a.transpose() * o.b.middleRows(blockStart, blockEnd - blockStart).transpose();
       }
-      Eigen::VectorXd atb = atbBlock.col(f - blockStart);
+      atb = atbBlock.col(f - blockStart);
       atb.array() -= sparsity;
-      previous = solver->solveNormal(atb, &previous);
+      solver->solveNormal(atb, previous, true, workspace);
     }
     weights.row(f) = previous.transpose();
     if (f % 256 == 0)

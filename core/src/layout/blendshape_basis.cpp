@@ -140,12 +140,14 @@ Eigen::MatrixXd solveBlendshapeWeights(const BlendshapeBasis& basis,
   const Eigen::MatrixXd at = a.transpose();
   const Eigen::RowVectorXd neutral = basis.neutral(coordinates);
   Eigen::MatrixXd weights(static_cast<Eigen::Index>(used.size()), k);
-  Eigen::VectorXd previous;
+  Eigen::VectorXd previous, b, atb;
+  BoundedLeastSquares::Workspace workspace;
   for (std::size_t i = 0; i < used.size(); ++i) {
-    const Eigen::VectorXd b = (frames(used[i], coordinates) - neutral).transpose();
+    b = (frames(used[i], coordinates) - neutral).transpose();
     if (!b.allFinite())
       throw InvalidArgument("blendshape weights: frame " + std::to_string(used[i]) + " is not finite");
-    previous = solver.solveNormal(at * b, i == 0 ? nullptr : &previous);
+    atb.noalias() = at * b;
+    solver.solveNormal(atb, previous, i > 0, workspace);
     weights.row(static_cast<Eigen::Index>(i)) = previous.transpose();
   }
   return weights;

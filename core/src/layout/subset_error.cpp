@@ -30,6 +30,42 @@ Eigen::MatrixXd gatherRows(const Eigen::Ref<const Eigen::MatrixXd>& frames,
   return result;
 }
 
+// Memory for the blocks one subset's evaluation gathers, kept per thread: a layout search scores
+// thousands of subsets, and a fresh matrix per block made allocation the larger cost (the greater
+// by far under AddressSanitizer, whose quarantine turns each allocation into fresh pages).
+class BlockScratch
+{
+public:
+  /// Slot `slot` as a rows × cols matrix; slots never overlap. Contents are left as they were.
+  Eigen::Map<Eigen::MatrixXd> block(std::size_t slot, Eigen::Index rows, Eigen::Index cols)
+  {
+    const auto size = static_cast<std::size_t>(rows * cols);
+    if (m_slots.size() <= slot)
+      m_slots.resize(slot + 1);
+    if (m_slots[slot].size() < size)
+      m_slots[slot].resize(size);
+    return {m_slots[slot].data(), rows, cols};
+  }
+
+private:
+  std::vector<std::vector<double>> m_slots;
+};
+
+BlockScratch& threadScratch()
+{
+  thread_local BlockScratch scratch;
+  return scratch;
+}
+
+// out = g(rows, cols), without IndexedView's temporary.
+void gather(const Eigen::MatrixXd& g, const std::vector<Eigen::Index>& rows, const std::vector<Eigen::Index>& cols,
+            Eigen::Map<Eigen::MatrixXd>& out)
+{
+  for (std::size_t j = 0; j < cols.size(); ++j)
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = g(rows[i], cols[j]);
+}
+
 } // namespace
 
 SubsetErrors::SubsetErrors(const Eigen::Ref<const Eigen::MatrixXd>& frames,
@@ -65,6 +101,8 @@ SubsetErrors::SubsetErrors(const Eigen::Ref<const Eigen::MatrixXd>& frames,
   for (Eigen::Index i = 0; i < used; ++i)
     m_objectiveFrames.row(i) = trainingRows.row(i * count / used);
   m_objectiveWeights = solveBlendshapeWeights(m_basis, m_objectiveFrames);
+  m_testOffsets = (m_testFrames.rowwise() - m_basis.neutral).transpose();
+  m_objectiveOffsets = (m_objectiveFrames.rowwise() - m_basis.neutral).transpose();
 
   // The selection objective scores the model on training frames it was not fitted on: 20
   // consecutive chunks of the training rows, every fourth held apart, so a selection is not
@@ -119,18 +157,9 @@ std::vector<Eigen::Index> SubsetErrors::complement(const std::vector<Eigen::Inde
   return rest;
 }
 
-// B = (G_SS + λI)⁻¹ G_SU : the ridge-regression map from the centred subset coordinates S to the
-// others U.
-Eigen::MatrixXd SubsetErrors::regression(const Eigen::MatrixXd& gram, const std::vector<Eigen::Index>& c,
-                                         const std::vector<Eigen::Index>& rest) const
-{
-  Eigen::MatrixXd block = gram(c, c);
-  block.diagonal().array() += m_ridge;
-  return block.ldlt().solve(gram(c, rest));
-}
-
-// ‖T_U − T_S·B‖² from the Gram matrix E of the evaluated frames:
-// tr(E_UU) − 2·Σ B∘E_SU + Σ B∘(E_SS·B).
+// ‖T_U − T_S·B‖² from the Gram matrix E of the evaluated frames, with B = (F_SS + λI)⁻¹ F_SU the
+// ridge-regression map, fitted on the Gram matrix F, from the centred subset coordinates S to the
+// others U: tr(E_UU) − 2·Σ B∘E_SU + Σ B∘(E_SS·B). Works in the thread's scratch memory.
 double SubsetErrors::heldOutError(const Eigen::MatrixXd& fitGram, const Eigen::MatrixXd& evaluatedGram,
                                   const std::vector<Eigen::Index>& c) const
 {
@@ -139,10 +168,26 @@ double SubsetErrors::heldOutError(const Eigen::MatrixXd& fitGram, const Eigen::M
   const std::vector<Eigen::Index> rest = complement(c);
   if (rest.empty())
     return 0.0;
-  const Eigen::MatrixXd b = regression(fitGram, c, rest);
-  const Eigen::MatrixXd inner = evaluatedGram(c, c) * b;
-  const double sse = evaluatedGram(rest, rest).trace() - 2.0 * (b.array() * evaluatedGram(c, rest).array()).sum() +
-                     (b.array() * inner.array()).sum();
+  const auto s = static_cast<Eigen::Index>(c.size()), u = static_cast<Eigen::Index>(rest.size());
+  BlockScratch& scratch = threadScratch();
+  auto fitSS = scratch.block(0, s, s);
+  auto b = scratch.block(1, s, u);
+  auto evaluatedSS = scratch.block(2, s, s);
+  auto evaluatedSU = scratch.block(3, s, u);
+  auto inner = scratch.block(4, s, u);
+  gather(fitGram, c, c, fitSS);
+  fitSS.diagonal().array() += m_ridge;
+  gather(fitGram, c, rest, b);
+  const Eigen::LDLT<Eigen::Ref<Eigen::MatrixXd>> factor(fitSS);  // factorises in place
+  factor.solveInPlace(b);
+  gather(evaluatedGram, c, c, evaluatedSS);
+  gather(evaluatedGram, c, rest, evaluatedSU);
+  inner.noalias() = evaluatedSS * b;
+  double restTrace = 0.0;
+  for (const Eigen::Index i : rest)
+    restTrace += evaluatedGram(i, i);
+  const double sse =
+      restTrace - 2.0 * (b.array() * evaluatedSU.array()).sum() + (b.array() * inner.array()).sum();
   return std::max(0.0, sse);
 }
 
@@ -157,7 +202,7 @@ double SubsetErrors::reconstructionRmse(const std::vector<Eigen::Index>& markers
   return std::sqrt(sse / static_cast<double>(m_testCount * markerCount()));
 }
 
-double SubsetErrors::weightError(const std::vector<Eigen::Index>& c, const Eigen::MatrixXd& frames,
+double SubsetErrors::weightError(const std::vector<Eigen::Index>& c, const Eigen::MatrixXd& offsets,
                                  const Eigen::MatrixXd& fullWeights) const
 {
   if (c.empty())
@@ -166,12 +211,18 @@ double SubsetErrors::weightError(const std::vector<Eigen::Index>& c, const Eigen
   const Eigen::MatrixXd a = m_basis.deltas(c, Eigen::all);
   const BoundedLeastSquares solver(a, Eigen::VectorXd::Zero(k), Eigen::VectorXd::Ones(k));
   // Aᵀ(x_S − n_S) for every frame at once.
-  const Eigen::MatrixXd rhs =
-      a.transpose() * (frames(Eigen::all, c).rowwise() - m_basis.neutral(c)).transpose();
+  BlockScratch& scratch = threadScratch();
+  auto subsetOffsets = scratch.block(5, static_cast<Eigen::Index>(c.size()), offsets.cols());
+  for (Eigen::Index f = 0; f < offsets.cols(); ++f)
+    for (std::size_t i = 0; i < c.size(); ++i)
+      subsetOffsets(static_cast<Eigen::Index>(i), f) = offsets(c[i], f);
+  auto rhs = scratch.block(6, k, offsets.cols());
+  rhs.noalias() = a.transpose() * subsetOffsets;
   double sum = 0.0;
   Eigen::VectorXd previous;
-  for (Eigen::Index f = 0; f < frames.rows(); ++f) {
-    previous = solver.solveNormal(rhs.col(f), f == 0 ? nullptr : &previous);
+  BoundedLeastSquares::Workspace workspace;
+  for (Eigen::Index f = 0; f < offsets.cols(); ++f) {
+    solver.solveNormal(rhs.col(f), previous, f > 0, workspace);
     sum += (previous.transpose() - fullWeights.row(f)).squaredNorm();
   }
   return sum / static_cast<double>(fullWeights.size());
@@ -179,7 +230,7 @@ double SubsetErrors::weightError(const std::vector<Eigen::Index>& c, const Eigen
 
 double SubsetErrors::blendshapeError(const std::vector<Eigen::Index>& markers) const
 {
-  return weightError(coordinates(markers), m_testFrames, m_fullWeights);
+  return weightError(coordinates(markers), m_testOffsets, m_fullWeights);
 }
 
 double SubsetErrors::trainingObjective(const std::vector<Eigen::Index>& markers) const
@@ -187,7 +238,7 @@ double SubsetErrors::trainingObjective(const std::vector<Eigen::Index>& markers)
   const std::vector<Eigen::Index> c = coordinates(markers);
   const double residual = heldOutError(m_fitGram, m_validationGram, c) / std::max(m_emptyResidual, 1e-300);
   const double weights =
-      weightError(c, m_objectiveFrames, m_objectiveWeights) / std::max(m_emptyWeightError, 1e-300);
+      weightError(c, m_objectiveOffsets, m_objectiveWeights) / std::max(m_emptyWeightError, 1e-300);
   return residual + m_blendshapeWeight * weights;
 }
 

@@ -28,8 +28,12 @@ enum class Bound : std::uint8_t
 class FreeFactor
 {
 public:
-  explicit FreeFactor(const Eigen::MatrixXd& h) : m_h(h), m_r(h.rows(), h.rows())
+  /// Starts with no free weight, in the caller's memory `r` and `order` (reused across solves).
+  FreeFactor(const Eigen::MatrixXd& h, Eigen::MatrixXd& r, std::vector<Eigen::Index>& order)
+      : m_h(h), m_r(r), m_order(order)
   {
+    m_r.resize(h.rows(), h.rows());  // no reallocation when the size is unchanged
+    m_order.clear();
     m_order.reserve(static_cast<std::size_t>(h.rows()));
   }
 
@@ -79,8 +83,8 @@ public:
 
 private:
   const Eigen::MatrixXd& m_h;
-  Eigen::MatrixXd m_r;  // the top-left #free² upper triangle is R
-  std::vector<Eigen::Index> m_order;
+  Eigen::MatrixXd& m_r;  // the top-left #free² upper triangle is R
+  std::vector<Eigen::Index>& m_order;
 };
 
 } // namespace
@@ -124,34 +128,52 @@ Eigen::VectorXd BoundedLeastSquares::solve(const Eigen::Ref<const Eigen::VectorX
 Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb,
                                                  const Eigen::VectorXd* start) const
 {
+  if (start && start->size() != weightCount())
+    throw InvalidArgument("bounded least squares: the start has the wrong size");
+  Workspace workspace;
+  Eigen::VectorXd w = start ? *start : Eigen::VectorXd();
+  solveNormal(atb, w, start != nullptr, workspace);
+  return w;
+}
+
+void BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb, Eigen::VectorXd& w,
+                                      bool warmStart, Workspace& workspace) const
+{
   const Eigen::Index k = weightCount();
   if (atb.size() != k || !atb.allFinite())
     throw InvalidArgument("bounded least squares: Aᵀb must hold " + std::to_string(k) + " finite values");
-  if (start && start->size() != k)
+  if (warmStart && w.size() != k)
     throw InvalidArgument("bounded least squares: the start has the wrong size");
 
-  // Minimise ½wᵀHw − gᵀw over the box; every iterate is feasible. Buffers are sized once per
-  // call: with a handful of weights, allocation would otherwise cost more than the arithmetic.
+  // Minimise ½wᵀHw − gᵀw over the box; every iterate is feasible.
   const Eigen::MatrixXd& h = m_gram;
-  std::vector<Bound> state(static_cast<std::size_t>(k), Bound::Lower);
-  Eigen::VectorXd w = m_lower;
-  if (start) {
-    w = start->cwiseMax(m_lower).cwiseMin(m_upper);
+  std::vector<std::uint8_t>& state = workspace.state;
+  const auto stateOf = [&](Eigen::Index i) -> Bound { return static_cast<Bound>(state[static_cast<std::size_t>(i)]); };
+  const auto setState = [&](Eigen::Index i, Bound b) { state[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(b); };
+  state.assign(static_cast<std::size_t>(k), static_cast<std::uint8_t>(Bound::Lower));
+  if (warmStart) {
+    w = w.cwiseMax(m_lower).cwiseMin(m_upper);
     for (Eigen::Index i = 0; i < k; ++i)
-      state[static_cast<std::size_t>(i)] =
-          w(i) <= m_lower(i) ? Bound::Lower : (w(i) >= m_upper(i) ? Bound::Upper : Bound::Free);
+      setState(i, w(i) <= m_lower(i) ? Bound::Lower : (w(i) >= m_upper(i) ? Bound::Upper : Bound::Free));
+  } else {
+    w = m_lower;
   }
   const double boundScale = std::max(m_lower.cwiseAbs().maxCoeff(), m_upper.cwiseAbs().maxCoeff());
   const double tolerance = 1e-11 * std::max({atb.cwiseAbs().maxCoeff(),
                                              h.cwiseAbs().maxCoeff() * std::max(boundScale, 1.0), 1e-300});
   const int maxSteps = 10 * static_cast<int>(k) + 20;
 
-  FreeFactor factor(h);  // the factorisation is kept up to date, not redone each step
+  FreeFactor factor(h, workspace.factor, workspace.order);  // kept up to date, not redone each step
   for (Eigen::Index i = 0; i < k; ++i)
-    if (state[static_cast<std::size_t>(i)] == Bound::Free)
+    if (stateOf(i) == Bound::Free)
       factor.add(i);
-  Eigen::VectorXd z(k), fixed(k), gradient(k);
-  std::vector<std::size_t> bound;  // positions in the free set that reached a bound in a step
+  Eigen::VectorXd& z = workspace.z;
+  Eigen::VectorXd& fixed = workspace.fixed;
+  Eigen::VectorXd& gradient = workspace.gradient;
+  z.resize(k);
+  fixed.resize(k);
+  gradient.resize(k);
+  std::vector<std::size_t>& bound = workspace.bound;
   bound.reserve(static_cast<std::size_t>(k));
   for (int step = 0; step < maxSteps; ++step) {
     // Make the free weights optimal with the bound ones held, stepping back to the box when the
@@ -162,7 +184,7 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
         break;
       const auto nf = static_cast<Eigen::Index>(freeSet.size());
       for (Eigen::Index i = 0; i < k; ++i)
-        fixed(i) = state[static_cast<std::size_t>(i)] == Bound::Free ? 0.0 : w(i);
+        fixed(i) = stateOf(i) == Bound::Free ? 0.0 : w(i);
       for (Eigen::Index a = 0; a < nf; ++a)
         z(a) = atb(freeSet[static_cast<std::size_t>(a)]) - h.col(freeSet[static_cast<std::size_t>(a)]).dot(fixed);  // H symmetric: a contiguous column
       factor.solve(z.head(nf));
@@ -197,18 +219,18 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
         const bool hitUpper = z(j) > m_upper(i) && (j == blocking || w(i) >= m_upper(i) - span);
         if (hitLower) {
           w(i) = m_lower(i);
-          state[static_cast<std::size_t>(i)] = Bound::Lower;
+          setState(i, Bound::Lower);
           bound.push_back(static_cast<std::size_t>(j));
         } else if (hitUpper) {
           w(i) = m_upper(i);
-          state[static_cast<std::size_t>(i)] = Bound::Upper;
+          setState(i, Bound::Upper);
           bound.push_back(static_cast<std::size_t>(j));
         }
       }
       for (auto position = bound.rbegin(); position != bound.rend(); ++position)
         factor.remove(*position);  // from the back, so the earlier positions stay valid
       if (++step >= maxSteps)
-        return w;
+        return;
     }
     // KKT: every bound weight whose gradient points into the box is freed at once (freeing one
     // per step, as Lawson & Hanson do, costs a factorisation per weight that enters). The
@@ -217,20 +239,19 @@ Eigen::VectorXd BoundedLeastSquares::solveNormal(const Eigen::Ref<const Eigen::V
     gradient -= atb;
     bool freed = false;
     for (Eigen::Index i = 0; i < k; ++i) {
-      const Bound s = state[static_cast<std::size_t>(i)];
+      const Bound s = stateOf(i);
       if (s == Bound::Free || m_lower(i) == m_upper(i))
         continue;
       const double violation = s == Bound::Lower ? -gradient(i) : gradient(i);
       if (violation > tolerance) {
-        state[static_cast<std::size_t>(i)] = Bound::Free;
+        setState(i, Bound::Free);
         factor.add(i);
         freed = true;
       }
     }
     if (!freed)
-      return w;
+      return;
   }
-  return w;
 }
 
 Eigen::VectorXd solveBoundedLeastSquares(const Eigen::Ref<const Eigen::MatrixXd>& a,

@@ -72,12 +72,11 @@ public:
 private:
   [[nodiscard]] std::vector<Eigen::Index> coordinates(const std::vector<Eigen::Index>& markers) const;
   [[nodiscard]] std::vector<Eigen::Index> complement(const std::vector<Eigen::Index>& coordinates) const;
-  [[nodiscard]] Eigen::MatrixXd regression(const Eigen::MatrixXd& gram, const std::vector<Eigen::Index>& coordinates,
-                                           const std::vector<Eigen::Index>& rest) const;
   [[nodiscard]] double heldOutError(const Eigen::MatrixXd& fitGram, const Eigen::MatrixXd& evaluatedGram,
                                     const std::vector<Eigen::Index>& coordinates) const;
+  /// `offsets`: frames minus the neutral, one frame per column (#coordinates × #frames).
   [[nodiscard]] double weightError(const std::vector<Eigen::Index>& coordinates,
-                                   const Eigen::MatrixXd& frames, const Eigen::MatrixXd& fullWeights) const;
+                                   const Eigen::MatrixXd& offsets, const Eigen::MatrixXd& fullWeights) const;
 
   Eigen::MatrixXd m_trainingGram;    // centred training Gram matrix XᵀX
   Eigen::MatrixXd m_testGram;        // test frames centred on the training mean
@@ -91,6 +90,8 @@ private:
   Eigen::MatrixXd m_fullWeights;
   Eigen::MatrixXd m_objectiveFrames;   // training rows the objective solves weights for
   Eigen::MatrixXd m_objectiveWeights;  // their full-set weights
+  Eigen::MatrixXd m_testOffsets;       // test frames minus the neutral, transposed
+  Eigen::MatrixXd m_objectiveOffsets;  // objective frames minus the neutral, transposed
   double m_emptyResidual = 0.0;
   double m_emptyWeightError = 0.0;
 };

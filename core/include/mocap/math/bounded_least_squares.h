@@ -2,6 +2,9 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
+#include <vector>
+
 namespace mocap {
 
 /// min ‖A·w − b‖² subject to lower ≤ w ≤ upper, for many right-hand sides b with the same A
@@ -39,6 +42,24 @@ public:
   /// The same from Aᵀb directly, when the caller has it. O(#weights³ + steps · #weights²).
   [[nodiscard]] Eigen::VectorXd solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb,
                                             const Eigen::VectorXd* start = nullptr) const;
+
+  /// The memory a solve works in. With a handful of weights, allocating it costs more than the
+  /// arithmetic (and far more under AddressSanitizer), so a loop over frames keeps one and passes
+  /// it to every solve. One per thread; its contents between calls mean nothing.
+  class Workspace
+  {
+    friend class BoundedLeastSquares;
+    Eigen::MatrixXd factor;              // upper-triangular factor of the free weights' block
+    std::vector<Eigen::Index> order;     // the free weights, in the order they entered
+    std::vector<std::uint8_t> state;     // per weight: free, at the lower or at the upper bound
+    Eigen::VectorXd z, fixed, gradient;  // step, bound weights' values, gradient
+    std::vector<std::size_t> bound;      // free positions that reached a bound in a step
+  };
+  /// solveNormal() in `workspace`, allocating nothing once the workspace has served a problem of
+  /// this size. `w` is the start when `warmStart` (clamped into the box; e.g. the previous
+  /// frame's solution), else it is set to the lower bounds first; it receives the minimiser.
+  void solveNormal(const Eigen::Ref<const Eigen::VectorXd>& atb, Eigen::VectorXd& w, bool warmStart,
+                   Workspace& workspace) const;
 
 private:
   Eigen::MatrixXd m_a;
