@@ -82,36 +82,39 @@ FbxRigOptions fbxOptions(const SolveArguments& arguments)
 }
 
 /// Weight curves for .csv, the rig with its animated weights for .glb and .fbx, else (checkOutput
-/// allowed only .pc2) the solved mesh as a point cache.
-/// The key frames --reduce keeps of the solved weights (all frames share them, as glTF's weights
-/// sampler requires), or none without it.
-std::optional<KeyReduction> reducedKeys(const SolveArguments& arguments, const Take& take,
-                                        const BlendshapeSolveResult& result)
-{
-  if (!arguments.reduce || result.weights.rows() == 0)
-    return std::nullopt;
-  const Eigen::VectorXd times = Eigen::VectorXd::LinSpaced(result.weights.rows(), 0.0,
-                                                           static_cast<double>(result.weights.rows() - 1)) /
-                                take.frameRate();
-  return reduceKeys(times, result.weights, *arguments.reduce);
-}
-
-void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
-                 const Take& take, const BlendshapeSolveResult& result, const std::optional<KeyReduction>& keys)
+/// allowed only .pc2) the solved mesh as a point cache. With --reduce, returns the keys kept: for
+/// .glb the key frames every shape shares (glTF's weights sampler has one time list), for .fbx the
+/// keys of each shape's DeformPercent curve on its own.
+std::optional<KeyCount> writeOutput(const std::filesystem::path& out, const SolveArguments& arguments,
+                                    const BlendshapeRig& rig, const Take& take, const BlendshapeSolveResult& result)
 {
   const std::string extension = lowerExtension(out);
+  const bool reduce = arguments.reduce && result.weights.rows() > 0;
   if (extension == "csv") {
     writeWeightsCsv(out, rig.shapeNames(), result.weights, take.firstFrame(), take.frameRate(),
                     arguments.format == "livelink" ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
-    return;
+    return std::nullopt;
   }
   if (extension == "glb") {
-    writeRigGlb(out, rig, result.weights, take.frameRate(), keys ? keys->keys : std::vector<Eigen::Index>{});
-    return;
+    if (!reduce) {
+      writeRigGlb(out, rig, result.weights, take.frameRate(), {});
+      return std::nullopt;
+    }
+    const Eigen::Index frames = result.weights.rows();
+    const KeyReduction shared = reduceKeys(
+        Eigen::VectorXd::LinSpaced(frames, 0.0, static_cast<double>(frames - 1)), result.weights, *arguments.reduce);
+    writeRigGlb(out, rig, result.weights, take.frameRate(), shared.keys);
+    KeyCount count;
+    count.add(frames, static_cast<Eigen::Index>(shared.keys.size()), shared.maxError);
+    return count;
   }
   if (extension == "fbx") {
-    writeRigFbx(out, rig, result.weights, take.frameRate(), fbxOptions(arguments));
-    return;
+    KeyCount count;
+    FbxRigOptions options = fbxOptions(arguments);
+    if (reduce)
+      options.keys = {arguments.reduce, &count};
+    writeRigFbx(out, rig, result.weights, take.frameRate(), options);
+    return reduce ? std::optional<KeyCount>(count) : std::nullopt;
   }
   MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
                           std::filesystem::path(arguments.meshPath).stem().string(),
@@ -122,6 +125,7 @@ void writeOutput(const std::filesystem::path& out, const SolveArguments& argumen
     sink.add(posed);
   }
   sink.finish();
+  return std::nullopt;
 }
 
 /// Checked before any work, so a wrong name does not cost a solve.
@@ -134,13 +138,13 @@ void checkOutput(const SolveArguments& arguments)
                      "file, not '" + out.string() + "'");
   if ((arguments.up || arguments.units) && extension != "fbx")
     throw UsageError("--up and --units apply to .fbx output only");
-  if (arguments.reduce && extension != "glb")
-    throw UsageError("--reduce applies to .glb output (the FBX writer keys every frame for now)");
+  if (arguments.reduce && extension != "glb" && extension != "fbx")
+    throw UsageError("--reduce applies to .glb and .fbx output (curves with keys)");
 }
 
 void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
                const Take& take, const BlendshapeSolveResult& result, double loadSeconds,
-               const std::optional<LeaveOutResult>& quality, const std::optional<KeyReduction>& keys)
+               const std::optional<LeaveOutResult>& quality, const std::optional<KeyCount>& keys)
 {
   const ResidualSummary residual = summarize(result.residual);
   const auto frames = static_cast<double>(result.weights.rows());
@@ -189,8 +193,9 @@ void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const 
   if (keys) {
     json.key("key_reduction").beginObject();
     json.key("tolerance").value(*arguments.reduce);
-    json.key("keys_before").value(static_cast<std::int64_t>(result.weights.rows()));
-    json.key("keys_after").value(static_cast<std::int64_t>(keys->keys.size()));
+    json.key("keyed").value(lowerExtension(arguments.out) == "glb" ? "frames shared by every shape" : "each curve");
+    json.key("keys_before").value(static_cast<std::int64_t>(keys->before));
+    json.key("keys_after").value(static_cast<std::int64_t>(keys->after));
     json.key("max_error").value(keys->maxError);
     json.endObject();
   }
@@ -212,8 +217,7 @@ int runSolve(const SolveArguments& arguments)
     (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
   const BlendshapeSolver solver(rig, readBinding(arguments.bindingPath, rig.neutral.vertexCount()), take, settings);
   const BlendshapeSolveResult result = solver.solve(take);
-  const std::optional<KeyReduction> keys = reducedKeys(arguments, take, result);
-  writeOutput(arguments.out, arguments, rig, take, result, keys);
+  const std::optional<KeyCount> keys = writeOutput(arguments.out, arguments, rig, take, result);
   std::optional<LeaveOutResult> quality;
   if (arguments.leaveOut.fraction > 0.0)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
@@ -236,7 +240,7 @@ int runSolve(const SolveArguments& arguments)
     std::cout << "leave-" << quality->hidden.size() << "-markers-out error " << fixedNumber(quality->meanError, 2)
               << " mm mean (face at rest: " << fixedNumber(quality->restError, 2) << " mm)\n";
   if (keys)
-    std::cout << "kept " << keys->keys.size() << " of " << result.weights.rows() << " key frames, largest error "
+    std::cout << "kept " << keys->after << " of " << keys->before << " keys, largest error "
               << fixedNumber(keys->maxError, 4) << " (tolerance " << *arguments.reduce << ")\n";
   std::cout << "wrote " << arguments.out << '\n';
   return kExitOk;
@@ -288,8 +292,9 @@ Command addSolve(CLI::App& mocap)
   oneOf(command->add_option("--units", a->units, "FBX: the rig's length unit, declared in the file (default cm)"),
         std::string("cm|mm"));
   numberIn(command->add_option("--reduce", a->reduce,
-                               "glTF: keep the fewest key frames whose linear interpolation stays within this many "
-                               "weight units of every solved frame")
+                               "glTF, FBX: keep the fewest keys whose linear interpolation stays within this many "
+                               "weight units of every solved frame (glTF: key frames shared by every shape; FBX: "
+                               "each shape's curve on its own)")
                ->type_name("TOLERANCE"),
            0.0, 1.0);
   command->add_flag("--json", a->json, "print JSON: λ, timing, marker residual, leave-out error, active shapes");

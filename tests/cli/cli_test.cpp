@@ -463,6 +463,24 @@ TEST(Cli, ConvertWritesTheMarkersAsFbxWithTheAxesAndUnitsAsked)
       runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("take.fbx") / "x.fbx"), dir);
   EXPECT_EQ(unwritable.exitCode, 1);
   EXPECT_NE(unwritable.err.find("x.fbx"), std::string::npos) << unwritable.err;
+
+  // --reduce MM keys each curve within the tolerance, in mm whatever the take's units, and says so.
+  std::size_t everyFrame = 0;
+  for (const test::FbxTestNode& object : test::fbxNode(top, "Objects").children)
+    if (object.name == "AnimationCurve")
+      everyFrame += object.at("KeyTime").properties.at(0).integers.size();
+  const CommandResult reduced = runMocap(
+      "convert " + q(test::sampleTake()) + " " + q(dir.file("reduced.fbx")) + " --units cm --reduce 0.1", dir);
+  ASSERT_EQ(reduced.exitCode, 0) << reduced.err;
+  std::size_t kept = 0;
+  for (const test::FbxTestNode& object :
+       test::fbxNode(test::readFbxForTest(readFileBytes(dir.file("reduced.fbx"))), "Objects").children)
+    if (object.name == "AnimationCurve")
+      kept += object.at("KeyTime").properties.at(0).integers.size();
+  EXPECT_LT(kept, everyFrame);
+  EXPECT_NE(reduced.out.find("tolerance 0.1 mm"), std::string::npos) << reduced.out;
+  std::cout << "[ keys ] the sample's markers at 0.1 mm: " << kept << " of " << everyFrame << " keys (with Visibility)\n";
+  EXPECT_EQ(runMocap("convert " + q(test::sampleTake()) + " " + q(dir.file("x.trc")) + " --reduce 1", dir).exitCode, 2);
 }
 
 TEST(Cli, ConvertRescalesUnitsOnRequest)

@@ -277,9 +277,28 @@ TEST(SolveCli, ReduceKeepsFewerKeyFramesWithinTheTolerance)
   EXPECT_LE(reduction.find("max_error", "k")->number("max_error"), 0.01);
   std::cout << "[ keys ] the sample solved to the small rig, tolerance 0.01: " << after << " of " << before
             << " key frames\n";
-  const Outcome fbx = mocap(solveArguments(dir) + " --reduce 0.01 -o '" + dir.file("r.fbx").string() + "'", dir);
-  EXPECT_EQ(fbx.exitCode, 2) << "not for FBX yet, and said so";
-  EXPECT_NE(fbx.err.find("--reduce applies to .glb"), std::string::npos) << fbx.err;
+
+  // FBX keys each shape's curve on its own: never more keys than the shared key frames give it.
+  const std::string fbx = dir.file("r.fbx").string();
+  const Outcome perCurve = mocap(solveArguments(dir) + " --leave-out 0 --reduce 0.01 --json -o '" + fbx + "'", dir);
+  ASSERT_EQ(perCurve.exitCode, 0) << perCurve.err;
+  const JsonValue fbxJson = parseJson(perCurve.out, "solve --json");
+  const JsonValue& curves = *fbxJson.find("key_reduction", "solve");
+  const double shapes = 3.0;
+  EXPECT_EQ(curves.find("keys_before", "k")->number("keys_before"), 3000.0 * shapes);
+  const double fbxAfter = curves.find("keys_after", "k")->number("keys_after");
+  EXPECT_LE(fbxAfter, after * shapes);
+  EXPECT_LE(curves.find("max_error", "k")->number("max_error"), 0.01);
+  double written = 0.0;
+  for (const test::FbxTestNode& object : test::fbxNode(test::readFbxForTest(readFileBytes(fbx)), "Objects").children)
+    if (object.name == "AnimationCurve")
+      written += static_cast<double>(object.at("KeyTime").properties.at(0).integers.size());
+  EXPECT_EQ(written, fbxAfter) << "the file holds the keys the report counts";
+  std::cout << "[ keys ] per curve in FBX: " << fbxAfter << " of " << 3000.0 * shapes << " keys\n";
+
+  const Outcome csv = mocap(solveArguments(dir) + " --reduce 0.01 -o '" + dir.file("w.csv").string() + "'", dir);
+  EXPECT_EQ(csv.exitCode, 2) << "weight CSV has no keys to reduce";
+  EXPECT_NE(csv.err.find("--reduce applies to .glb and .fbx"), std::string::npos) << csv.err;
   EXPECT_EQ(mocap(solveArguments(dir) + " --reduce -1 -o '" + glb + "'", dir).exitCode, 2);
 }
 

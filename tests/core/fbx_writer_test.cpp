@@ -354,7 +354,7 @@ TEST(FbxWriter, WritesTheRigAsASkinnedMeshWithSparseShapes)
 TEST(FbxWriter, AnimatesEachChannelsDeformPercentWithTheWeightTimes100)
 {
   const Eigen::MatrixXd weights = smallWeights();
-  const FbxScene scene(rigFbx(smallRig(), weights, 60.0, {FbxUpAxis::Z, LengthUnit::Millimetre}));
+  const FbxScene scene(rigFbx(smallRig(), weights, 60.0, {FbxUpAxis::Z, LengthUnit::Millimetre, {}}));
   const FbxTestNode& blendShape = *scene.ofKind("Deformer", "BlendShape").at(0);
   const std::vector<const FbxTestNode*> channels = scene.children(idOf(blendShape));
   ASSERT_EQ(channels.size(), 2u);
@@ -392,6 +392,97 @@ TEST(FbxWriter, RejectsBadRigInputAndKeepsThePreviousFile)
   EXPECT_EQ(readFileBytes(dir.file("rig.fbx")), "previous");
   writeFileAtomically(dir.file("file"), "x");
   EXPECT_THROW(writeRigFbx(dir.file("file") / "rig.fbx", rig, smallWeights(), 60.0, {}), IoError);
+}
+
+// ---- key reduction
+
+/// A curve's linear interpolation at `time` (KeyTime ticks), from its keys.
+double interpolateKeys(const FbxTestNode& curve, std::int64_t time)
+{
+  const std::vector<std::int64_t> times = curve.at("KeyTime").properties.at(0).integers;
+  const std::vector<double> values = curve.at("KeyValueFloat").properties.at(0).numbers;
+  std::size_t k = 0;
+  while (k + 2 < times.size() && times[k + 1] <= time)
+    ++k;
+  if (times.size() == 1 || time <= times[k])
+    return values[k];
+  const double t = static_cast<double>(time - times[k]) / static_cast<double>(times[k + 1] - times[k]);
+  return values[k] + std::min(t, 1.0) * (values[k + 1] - values[k]);
+}
+
+Eigen::MatrixXd smoothWeights(Eigen::Index frames)
+{
+  Eigen::MatrixXd weights(frames, 2);
+  for (Eigen::Index f = 0; f < frames; ++f) {
+    const double t = static_cast<double>(f) / 60.0;
+    weights(f, 0) = 0.5 + 0.5 * std::sin(3.0 * t);
+    weights(f, 1) = f < frames / 2 ? 0.0 : 0.25;  // a hold, a step, a hold
+  }
+  return weights;
+}
+
+TEST(FbxWriter, ReducesEachDeformPercentCurveWithinTheToleranceAndCountsTheKeys)
+{
+  const Eigen::MatrixXd weights = smoothWeights(300);
+  KeyCount counted;
+  FbxRigOptions options;
+  options.keys = {0.01, &counted};
+  const FbxScene scene(rigFbx(smallRig(), weights, 60.0, options));
+  const std::vector<const FbxTestNode*> channels =
+      scene.children(idOf(*scene.ofKind("Deformer", "BlendShape").at(0)));
+  std::size_t keys = 0;
+  for (std::size_t s = 0; s < 2; ++s) {
+    const FbxTestNode& curve = scene.driver(idOf(scene.driver(idOf(*channels[s]), "DeformPercent")), "d|DeformPercent");
+    keys += curve.at("KeyTime").properties.at(0).integers.size();
+    for (Eigen::Index f = 0; f < weights.rows(); ++f)
+      EXPECT_NEAR(interpolateKeys(curve, f * kFbxTicksPerSecond / 60), 100.0 * weights(f, static_cast<Eigen::Index>(s)),
+                  1.0 + 1e-4)
+          << "shape " << s << " frame " << f << ": within 0.01 weight units (1 percent)";
+  }
+  EXPECT_EQ(counted.before, 600);
+  EXPECT_EQ(counted.after, static_cast<Eigen::Index>(keys));
+  EXPECT_LT(keys, 60u) << "a smooth curve and a step keep few keys";
+  EXPECT_GE(keys, 6u) << "the step's hold keeps both ends of each run";
+  EXPECT_LE(counted.maxError, 0.01);
+  EXPECT_GT(counted.maxError, 0.0);
+
+  KeyCount exact;
+  options.keys = {0.0, &exact};
+  const FbxScene zero(rigFbx(smallRig(), weights, 60.0, options));
+  const std::vector<const FbxTestNode*> zeroChannels =
+      zero.children(idOf(*zero.ofKind("Deformer", "BlendShape").at(0)));
+  const FbxTestNode& sine = zero.driver(idOf(zero.driver(idOf(*zeroChannels[0]), "DeformPercent")), "d|DeformPercent");
+  for (Eigen::Index f = 0; f < weights.rows(); ++f)
+    EXPECT_NEAR(interpolateKeys(sine, f * kFbxTicksPerSecond / 60), 100.0 * weights(f, 0), 1e-4)
+        << "zero tolerance keeps every distinct value";
+  EXPECT_LE(exact.maxError, 1e-12);
+
+  options.keys = {-1.0, nullptr};
+  EXPECT_THROW((void)rigFbx(smallRig(), weights, 60.0, options), InvalidArgument);
+}
+
+TEST(FbxWriter, ReducesMarkerCurvesOneByOneAndKeysVisibilityOnlyWhereItChanges)
+{
+  KeyCount counted;
+  const FbxScene scene(markersFbx(gappedTake(), FbxUpAxis::Z, {0.5, &counted}));
+  const FbxTestNode& a = modelNamed(scene, "a");
+  const FbxTestNode& translation = scene.driver(idOf(a), "Lcl Translation");
+  for (const char* axis : {"d|X", "d|Y", "d|Z"})
+    EXPECT_EQ(scene.driver(idOf(translation), axis).at("KeyTime").properties.at(0).integers,
+              (std::vector<std::int64_t>{0, 4 * kFbxTicksPerSecond / 100}))
+        << axis << ": a straight line keeps its ends";
+  const FbxTestNode& b = modelNamed(scene, "b");
+  const FbxTestNode& bx = scene.driver(idOf(scene.driver(idOf(b), "Lcl Translation")), "d|X");
+  EXPECT_EQ(bx.at("KeyValueFloat").properties.at(0).numbers, (std::vector<double>{0.0, 0.0, 3.0, 3.0, 4.0}))
+      << "each held run keeps its first and last frame";
+  const FbxTestNode& visibility = scene.driver(idOf(scene.driver(idOf(b), "Visibility")), "d|Visibility");
+  EXPECT_EQ(visibility.at("KeyValueFloat").properties.at(0).numbers, (std::vector<double>{1, 0, 1, 1}));
+  EXPECT_EQ(visibility.at("KeyTime").properties.at(0).integers,
+            (std::vector<std::int64_t>{0, kFbxTicksPerSecond / 100, 3 * kFbxTicksPerSecond / 100,
+                                       4 * kFbxTicksPerSecond / 100}));
+  EXPECT_EQ(counted.before, 2 * 3 * 5) << "translation curves of a and b";
+  EXPECT_EQ(counted.after, 3 * 2 + 3 * 5);
+  EXPECT_LE(counted.maxError, 1e-9);
 }
 
 } // namespace

@@ -235,11 +235,36 @@ void FbxDocument::connectProperty(std::int64_t child, std::int64_t parent, std::
   m_connections.child("C").addString("OP").addInt64(child).addInt64(parent).addString(property);
 }
 
+namespace {
+
+/// The keys of one curve: every frame's time and value, or only those of `frames`.
+void keysOf(const std::vector<std::int64_t>& frameTimes, const std::vector<float>& frameValues,
+            const std::vector<Eigen::Index>* frames, std::vector<std::int64_t>& times, std::vector<float>& values)
+{
+  if (!frames) {
+    times = frameTimes;
+    values = frameValues;
+    return;
+  }
+  times.clear();
+  values.clear();
+  Eigen::Index previous = -1;
+  for (const Eigen::Index f : *frames) {
+    if (f <= previous || f >= static_cast<Eigen::Index>(frameTimes.size()))
+      throw InvalidArgument("FBX: key frame " + std::to_string(f) + " out of order or past the last frame");
+    times.push_back(frameTimes[static_cast<std::size_t>(f)]);
+    values.push_back(frameValues[static_cast<std::size_t>(f)]);
+    previous = f;
+  }
+}
+
+} // namespace
+
 void FbxDocument::animate(std::int64_t target, std::string_view property, std::string_view nodeName,
                           const std::vector<std::string>& channels, const std::vector<std::vector<float>>& values,
-                          FbxInterpolation interpolation)
+                          FbxInterpolation interpolation, const std::vector<std::vector<Eigen::Index>>* keyFrames)
 {
-  if (channels.size() != values.size())
+  if (channels.size() != values.size() || (keyFrames && keyFrames->size() != channels.size()))
     throw InvalidArgument("FBX: " + std::to_string(values.size()) + " curves for " + std::to_string(channels.size()) +
                           " channels");
   const Object curveNode = addObject("AnimationCurveNode", nodeName, "AnimCurveNode", "");
@@ -253,7 +278,10 @@ void FbxDocument::animate(std::int64_t target, std::string_view property, std::s
     addFbxProperty(p, channels[c], "Number", "", "A")
         .addDouble(values[c].empty() ? 0.0 : static_cast<double>(values[c].front()));
     const Object curve = addObject("AnimationCurve", "", "AnimCurve", "");
-    addCurve(*curve.node, m_keyTimes, values[c], interpolation);
+    std::vector<std::int64_t> times;
+    std::vector<float> keyValues;
+    keysOf(m_keyTimes, values[c], keyFrames ? &(*keyFrames)[c] : nullptr, times, keyValues);
+    addCurve(*curve.node, times, keyValues, interpolation);
     connectProperty(curve.id, curveNode.id, channels[c]);
   }
 }

@@ -37,11 +37,71 @@ ModelObject addModel(FbxDocument& fbx, std::string_view name, std::string_view s
   return {model.id, &properties};
 }
 
+// ---- keys
+
+/// A curve's frames as reduceKeys' times: uniform steps, so the frame index serves.
+Eigen::VectorXd frameIndices(std::size_t frames)
+{
+  const auto n = static_cast<Eigen::Index>(frames);
+  return Eigen::VectorXd::LinSpaced(n, 0.0, static_cast<double>(n - 1));
+}
+
+Eigen::VectorXd asDoubles(const std::vector<float>& curve)
+{
+  return Eigen::Map<const Eigen::VectorXf>(curve.data(), static_cast<Eigen::Index>(curve.size())).cast<double>();
+}
+
+/// The keys of each linear curve within `tolerance` of it (reduceKeys, each curve alone).
+std::vector<KeyReduction> reduceEachCurve(const std::vector<std::vector<float>>& curves, double tolerance)
+{
+  std::vector<KeyReduction> reductions;
+  for (const std::vector<float>& curve : curves)
+    reductions.push_back(reduceKeys(frameIndices(curve.size()), asDoubles(curve), tolerance));
+  return reductions;
+}
+
+std::vector<std::vector<Eigen::Index>> keyFramesOf(const std::vector<KeyReduction>& reductions)
+{
+  std::vector<std::vector<Eigen::Index>> frames;
+  for (const KeyReduction& r : reductions)
+    frames.push_back(r.keys);
+  return frames;
+}
+
+/// The largest 3-D distance of a marker's keyed X, Y and Z curves from its frames.
+double largestDistance(const std::vector<std::vector<float>>& xyz, const std::vector<KeyReduction>& reductions)
+{
+  const std::size_t frames = xyz.front().size();
+  Eigen::MatrixXd offset(static_cast<Eigen::Index>(frames), 3);
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Eigen::VectorXd values = asDoubles(xyz[c]);
+    offset.col(static_cast<Eigen::Index>(c)) =
+        interpolateKeys(frameIndices(frames), values, reductions[c].keys) - values;
+  }
+  return frames == 0 ? 0.0 : offset.rowwise().norm().maxCoeff();
+}
+
+/// A constant curve's keys: its first frame, each change and its last frame.
+std::vector<Eigen::Index> changeFrames(const std::vector<float>& curve)
+{
+  std::vector<Eigen::Index> frames;
+  for (std::size_t f = 0; f < curve.size(); ++f)
+    if (f == 0 || f + 1 == curve.size() || curve[f] != curve[f - 1])
+      frames.push_back(static_cast<Eigen::Index>(f));
+  return frames;
+}
+
+void checkTolerance(const FbxCurveKeys& keys)
+{
+  if (keys.tolerance && (!(*keys.tolerance >= 0.0) || !std::isfinite(*keys.tolerance)))
+    throw InvalidArgument("FBX: the key tolerance must be finite and ≥ 0");
+}
+
 // ---- markers
 
 /// One marker's null: translation keys every frame (held through gaps) and, when it has gaps, a
 /// visibility curve. O(#frames).
-void addMarker(FbxDocument& fbx, const Take& take, Eigen::Index marker, std::int64_t root)
+void addMarker(FbxDocument& fbx, const Take& take, Eigen::Index marker, std::int64_t root, const FbxCurveKeys& keys)
 {
   const ModelObject model = addModel(fbx, take.label(marker), "Null");
   fbx.connect(model.id, root);
@@ -66,9 +126,25 @@ void addMarker(FbxDocument& fbx, const Take& take, Eigen::Index marker, std::int
       .addDouble(first.x())
       .addDouble(first.y())
       .addDouble(first.z());
-  fbx.animate(model.id, "Lcl Translation", "T", {"d|X", "d|Y", "d|Z"}, xyz, FbxInterpolation::Linear);
-  if (gaps)
-    fbx.animate(model.id, "Visibility", "Visibility", {"d|Visibility"}, {visible}, FbxInterpolation::Constant);
+  if (keys.tolerance) {
+    // Each axis within tolerance / √3 keeps the marker within the tolerance in 3-D.
+    const std::vector<KeyReduction> reductions = reduceEachCurve(xyz, *keys.tolerance / std::sqrt(3.0));
+    const std::vector<std::vector<Eigen::Index>> frames = keyFramesOf(reductions);
+    fbx.animate(model.id, "Lcl Translation", "T", {"d|X", "d|Y", "d|Z"}, xyz, FbxInterpolation::Linear, &frames);
+    if (keys.counted) {
+      Eigen::Index kept = 0;
+      for (const KeyReduction& r : reductions)
+        kept += static_cast<Eigen::Index>(r.keys.size());
+      keys.counted->add(3 * static_cast<Eigen::Index>(nearest.size()), kept, largestDistance(xyz, reductions));
+    }
+  } else {
+    fbx.animate(model.id, "Lcl Translation", "T", {"d|X", "d|Y", "d|Z"}, xyz, FbxInterpolation::Linear);
+  }
+  if (!gaps)
+    return;
+  const std::vector<std::vector<Eigen::Index>> visibleKeys{changeFrames(visible)};
+  fbx.animate(model.id, "Visibility", "Visibility", {"d|Visibility"}, {visible}, FbxInterpolation::Constant,
+              keys.tolerance ? &visibleKeys : nullptr);
 }
 
 // ---- rig
@@ -173,21 +249,22 @@ std::vector<float> percentCurve(const Eigen::Ref<const Eigen::MatrixXd>& weights
 
 } // namespace
 
-std::string markersFbx(const Take& take, FbxUpAxis up)
+std::string markersFbx(const Take& take, FbxUpAxis up, const FbxCurveKeys& keys)
 {
+  checkTolerance(keys);
   if (const std::optional<Take> markers = withoutModelOutputs(take, "an FBX file"))
-    return markersFbx(*markers, up);
+    return markersFbx(*markers, up, keys);
   FbxDocument fbx({up, take.units(), take.frameRate(), take.frameCount()});
   const ModelObject root = addModel(fbx, "Markers", "Null");
   fbx.connect(root.id, 0);
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
-    addMarker(fbx, take, m, root.id);
+    addMarker(fbx, take, m, root.id, keys);
   return fbx.bytes();
 }
 
-void writeMarkersFbx(const std::filesystem::path& path, const Take& take, FbxUpAxis up)
+void writeMarkersFbx(const std::filesystem::path& path, const Take& take, FbxUpAxis up, const FbxCurveKeys& keys)
 {
-  writeFileAtomically(path, markersFbx(take, up));
+  writeFileAtomically(path, markersFbx(take, up, keys));
 }
 
 std::string rigFbx(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
@@ -195,6 +272,7 @@ std::string rigFbx(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
 {
   checkRig(rig);
   checkWeights(rig, weights);
+  checkTolerance(options.keys);
   FbxDocument fbx({options.up, options.unit, frameRate, weights.rows()});
   const ModelObject mesh = addModel(fbx, "Face", "Mesh");
   const ModelObject bone = addModel(fbx, "root", "LimbNode");
@@ -209,9 +287,20 @@ std::string rigFbx(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
   fbx.connect(blendShape.id, geometry.id);
   for (Eigen::Index s = 0; s < rig.shapeCount(); ++s) {
     const std::int64_t channel = addShape(fbx, rig.shapes[static_cast<std::size_t>(s)], blendShape.id);
-    if (weights.rows() > 0)
-      fbx.animate(channel, "DeformPercent", "DeformPercent", {"d|DeformPercent"}, {percentCurve(weights, s)},
-                  FbxInterpolation::Linear);
+    if (weights.rows() == 0)
+      continue;
+    const std::vector<std::vector<float>> percent{percentCurve(weights, s)};
+    if (!options.keys.tolerance) {
+      fbx.animate(channel, "DeformPercent", "DeformPercent", {"d|DeformPercent"}, percent, FbxInterpolation::Linear);
+      continue;
+    }
+    const std::vector<KeyReduction> reduced = reduceEachCurve(percent, 100.0 * *options.keys.tolerance);  // × 100
+    const std::vector<std::vector<Eigen::Index>> frames = keyFramesOf(reduced);
+    fbx.animate(channel, "DeformPercent", "DeformPercent", {"d|DeformPercent"}, percent, FbxInterpolation::Linear,
+                &frames);
+    if (options.keys.counted)
+      options.keys.counted->add(weights.rows(), static_cast<Eigen::Index>(frames.front().size()),
+                                reduced.front().maxError / 100.0);
   }
   return fbx.bytes();
 }

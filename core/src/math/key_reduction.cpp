@@ -116,26 +116,39 @@ KeyReduction reduceKeys(const Eigen::Ref<const Eigen::VectorXd>& times, const Ei
   return result;
 }
 
-double keyInterpolationError(const Eigen::Ref<const Eigen::VectorXd>& times,
-                             const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<Eigen::Index>& keys)
+void KeyCount::add(Eigen::Index samples, Eigen::Index keys, double error)
+{
+  before += samples;
+  after += keys;
+  maxError = std::max(maxError, error);
+}
+
+Eigen::MatrixXd interpolateKeys(const Eigen::Ref<const Eigen::VectorXd>& times,
+                                const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<Eigen::Index>& keys)
 {
   checkCurve(times, values);
   if (values.rows() == 0)
-    return 0.0;
+    return values;
   if (keys.empty() || keys.front() != 0 || keys.back() != values.rows() - 1 ||
       !std::is_sorted(keys.begin(), keys.end()))
     throw InvalidArgument("key reduction: keys must ascend from the first sample to the last");
-  double worst = 0.0;
+  Eigen::MatrixXd line = values;
   for (std::size_t s = 0; s + 1 < keys.size(); ++s) {
     const Eigen::Index a = keys[s], b = keys[s + 1];
     const double span = times(b) - times(a);
     for (Eigen::Index k = a + 1; k < b; ++k) {
       const double t = (times(k) - times(a)) / span;
-      for (Eigen::Index c = 0; c < values.cols(); ++c)
-        worst = std::max(worst, std::abs((1.0 - t) * values(a, c) + t * values(b, c) - values(k, c)));
+      line.row(k) = (1.0 - t) * values.row(a) + t * values.row(b);
     }
   }
-  return worst;
+  return line;
+}
+
+double keyInterpolationError(const Eigen::Ref<const Eigen::VectorXd>& times,
+                             const Eigen::Ref<const Eigen::MatrixXd>& values, const std::vector<Eigen::Index>& keys)
+{
+  const Eigen::MatrixXd line = interpolateKeys(times, values, keys);
+  return values.size() == 0 ? 0.0 : (line - values).cwiseAbs().maxCoeff();
 }
 
 } // namespace mocap

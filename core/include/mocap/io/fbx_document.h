@@ -69,11 +69,13 @@ public:
   void connectProperty(std::int64_t child, std::int64_t parent, std::string_view property);
 
   /// Animates property `property` of object `target`: an AnimationCurveNode called `nodeName`
-  /// with one AnimationCurve per channel ("d|X"…), `values[c]` holding one key per frame.
-  /// Throws InvalidArgument when a channel's key count is not frameCount.
+  /// with one AnimationCurve per channel ("d|X"…), `values[c]` holding one value per frame. Each
+  /// frame is a key, or when `keyFrames` is given only the frames `keyFrames[c]` lists (ascending,
+  /// e.g. reduceKeys' choice for that channel). Throws InvalidArgument when a channel's value
+  /// count is not frameCount, or for key frames out of order, out of range or of another count.
   void animate(std::int64_t target, std::string_view property, std::string_view nodeName,
                const std::vector<std::string>& channels, const std::vector<std::vector<float>>& values,
-               FbxInterpolation interpolation);
+               FbxInterpolation interpolation, const std::vector<std::vector<Eigen::Index>>* keyFrames = nullptr);
 
   /// The finished file. O(file size).
   [[nodiscard]] std::string bytes() const;

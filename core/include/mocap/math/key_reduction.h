@@ -13,6 +13,18 @@ struct KeyReduction
   double maxError = 0.0;           // largest |interpolated − sample| over every channel and sample
 };
 
+/// Keys over many curves reduced one by one: the samples they had, the keys kept, the largest
+/// error of any of them.
+struct KeyCount
+{
+  Eigen::Index before = 0;
+  Eigen::Index after = 0;
+  double maxError = 0.0;
+
+  /// Counts one curve of `samples` samples reduced to `keys` keys straying up to `error`.
+  void add(Eigen::Index samples, Eigen::Index keys, double error);
+};
+
 /// The fewest keys, taken from the samples with their values unchanged, whose linear
 /// interpolation stays within `tolerance` of every sample of every channel. `values` holds one
 /// column per channel and one row per sample at `times` (strictly increasing); all channels share
@@ -31,6 +43,13 @@ struct KeyReduction
 /// non-finite tolerance, non-finite values, times that do not increase or a size mismatch.
 [[nodiscard]] KeyReduction reduceKeys(const Eigen::Ref<const Eigen::VectorXd>& times,
                                       const Eigen::Ref<const Eigen::MatrixXd>& values, double tolerance);
+
+/// The linear interpolation of `keys` (ascending sample indices from the first sample to the
+/// last) at every sample: `values` where a key is, the line between the keys around it elsewhere.
+/// Throws InvalidArgument as keyInterpolationError. O(n · c).
+[[nodiscard]] Eigen::MatrixXd interpolateKeys(const Eigen::Ref<const Eigen::VectorXd>& times,
+                                              const Eigen::Ref<const Eigen::MatrixXd>& values,
+                                              const std::vector<Eigen::Index>& keys);
 
 /// The largest |linear interpolation of `keys` − sample| over every channel and sample.
 /// O(n · c).
