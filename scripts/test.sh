@@ -44,7 +44,7 @@ else
   configure_quietly "$root/build-asan" -DCMAKE_BUILD_TYPE=Debug \
     -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_C_FLAGS_DEBUG="-g -O1" -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
-    -DMOCAP_SANITIZE=ON -DMOCAP_BUILD_FUZZ=ON -DMOCAP_BUILD_BENCH=OFF -DMOCAP_BUILD_GUI=OFF -DMOCAP_WERROR=ON
+    -DMOCAP_SANITIZE=ON -DMOCAP_BUILD_FUZZ=ON -DMOCAP_BUILD_BENCH=OFF -DMOCAP_BUILD_GUI=OFF -DMOCAP_BUILD_PYTHON=OFF -DMOCAP_WERROR=ON
   reset_ccache_log "$root/build-asan"
   cmake --build "$root/build-asan" -j "$jobs"
   phase_end "sanitizer build"

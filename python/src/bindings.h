@@ -1,0 +1,16 @@
+#pragma once
+// The parts of the `mocap` Python module, one per concept; mocap_module.cpp calls each once.
+
+#include <pybind11/pybind11.h>
+
+namespace mocap::python {
+
+/// mocap.Error and its subclasses FormatError, IoError, InvalidArgument and Cancelled, raised
+/// with the core's own messages.
+void bindErrors(pybind11::module_& m);
+/// mocap.Take: labels, rate, units, positions as NumPy arrays, sample states, gaps, history.
+void bindTake(pybind11::module_& m);
+/// mocap.read and Take.write: every format the core reads and writes.
+void bindTakeFiles(pybind11::module_& m);
+
+} // namespace mocap::python

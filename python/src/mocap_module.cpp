@@ -1,0 +1,11 @@
+// The `mocap` Python module: the Qt-free core bound with pybind11 (README, "Python").
+
+#include "bindings.h"
+
+PYBIND11_MODULE(mocap, m)
+{
+  m.doc() = "Mocap Studio's core: read, clean, plan and solve facial motion capture takes.";
+  mocap::python::bindErrors(m);
+  mocap::python::bindTake(m);
+  mocap::python::bindTakeFiles(m);
+}
