@@ -12,5 +12,7 @@ void bindErrors(pybind11::module_& m);
 void bindTake(pybind11::module_& m);
 /// mocap.read and Take.write: every format the core reads and writes.
 void bindTakeFiles(pybind11::module_& m);
+/// mocap.clean: `mocap clean`'s pipeline with a preset's options.
+void bindCleaning(pybind11::module_& m);
 
 } // namespace mocap::python

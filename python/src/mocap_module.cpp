@@ -8,4 +8,5 @@ PYBIND11_MODULE(mocap, m)
   mocap::python::bindErrors(m);
   mocap::python::bindTake(m);
   mocap::python::bindTakeFiles(m);
+  mocap::python::bindCleaning(m);
 }

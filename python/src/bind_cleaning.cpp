@@ -1,0 +1,73 @@
+// mocap.clean: the `mocap clean` pipeline on a Take in place, its options given as a cleaning
+// preset (a file or a dict) and/or keyword arguments of the same shape, so the names, defaults
+// and checks are the preset reader's (batch/clean_preset.h), not a second copy of them.
+
+#include "bindings.h"
+
+#include "mocap/base/file_io.h"
+#include "mocap/batch/clean_preset.h"
+#include "mocap/batch/clean_report_json.h"
+#include "mocap/batch/clean_run.h"
+#include "mocap/model/take.h"
+
+#include <pybind11/stl.h>
+
+#include <string>
+
+namespace py = pybind11;
+
+namespace mocap::python {
+
+namespace {
+
+/// The preset's JSON text: `preset` (a path, a dict or None) with `options` laid over it, each
+/// step either a dict of its options or "off".
+std::string presetText(const py::object& preset, const py::kwargs& options)
+{
+  const py::module_ json = py::module_::import("json");
+  py::dict merged;
+  if (py::isinstance<py::dict>(preset)) {
+    merged = py::dict(preset);
+  } else if (!preset.is_none()) {
+    const std::string path = py::str(py::module_::import("os").attr("fspath")(preset));
+    merged = json.attr("loads")(readFileBytes(path));  // IoError as the CLI gives it
+  }
+  for (const auto& [key, value] : options) {
+    if (py::isinstance<py::str>(value) && value.cast<std::string>() == "off")
+      merged[key] = py::dict(py::arg("method") = "off");
+    else
+      merged[key] = value;
+  }
+  return json.attr("dumps")(merged).cast<std::string>();
+}
+
+} // namespace
+
+void bindCleaning(py::module_& m)
+{
+  m.def(
+      "clean",
+      [](Take& take, const py::object& preset, const py::kwargs& options) {
+        const std::string source = preset.is_none() || py::isinstance<py::dict>(preset)
+                                       ? std::string("mocap.clean options")
+                                       : py::str(preset).cast<std::string>();
+        const CleanOptions parsed = parseCleanPreset(presetText(preset, options), source);
+        std::string report;
+        {
+          const py::gil_scoped_release release;
+          const CleanReport done = cleanAndRecord(take, parsed, "mocap python");
+          report = cleanReportJson("", "", take, parsed, done);
+        }
+        return py::module_::import("json").attr("loads")(report);
+      },
+      py::arg("take"), py::arg("preset") = py::none(),
+      "Cleans the take in place as `mocap clean` does (stabilize → spikes → fill → smooth) and "
+      "returns the report `mocap clean --report` writes, as a dict. Options are a cleaning preset "
+      "(a JSON file's path or a dict, `mocap batch --preset`'s format) and/or keyword arguments of "
+      "the same shape, which win: spikes={\"method\": \"robust\", \"factor\": 1.5}, "
+      "fill={\"max_gap_seconds\": 1.0}, smooth=\"off\", stabilize={\"markers\": [\"head1\", …]}. "
+      "Left out: `mocap clean`'s defaults. Raises InvalidArgument naming the key for an unknown "
+      "key or a value out of range.");
+}
+
+} // namespace mocap::python
