@@ -14,5 +14,7 @@ void bindTake(pybind11::module_& m);
 void bindTakeFiles(pybind11::module_& m);
 /// mocap.clean: `mocap clean`'s pipeline with a preset's options.
 void bindCleaning(pybind11::module_& m);
+/// mocap.Rig, mocap.load_rig, mocap.Binding, mocap.read_binding and mocap.solve.
+void bindSolve(pybind11::module_& m);
 
 } // namespace mocap::python

@@ -9,4 +9,5 @@ PYBIND11_MODULE(mocap, m)
   mocap::python::bindTake(m);
   mocap::python::bindTakeFiles(m);
   mocap::python::bindCleaning(m);
+  mocap::python::bindSolve(m);
 }
