@@ -16,5 +16,7 @@ void bindTakeFiles(pybind11::module_& m);
 void bindCleaning(pybind11::module_& m);
 /// mocap.Rig, mocap.load_rig, mocap.Binding, mocap.read_binding and mocap.solve.
 void bindSolve(pybind11::module_& m);
+/// mocap.write_rig_glb, write_rig_fbx, write_markers_fbx, write_pc2.
+void bindWriters(pybind11::module_& m);
 
 } // namespace mocap::python

@@ -10,4 +10,5 @@ PYBIND11_MODULE(mocap, m)
   mocap::python::bindTakeFiles(m);
   mocap::python::bindCleaning(m);
   mocap::python::bindSolve(m);
+  mocap::python::bindWriters(m);
 }
