@@ -290,7 +290,8 @@ TEST(SolveCli, ReduceKeepsFewerKeyFramesWithinTheTolerance)
   EXPECT_LE(fbxAfter, after * shapes);
   EXPECT_LE(curves.find("max_error", "k")->number("max_error"), 0.01);
   double written = 0.0;
-  for (const test::FbxTestNode& object : test::fbxNode(test::readFbxForTest(readFileBytes(fbx)), "Objects").children)
+  const std::vector<test::FbxTestNode> fbxTop = test::readFbxForTest(readFileBytes(fbx));
+  for (const test::FbxTestNode& object : test::fbxNode(fbxTop, "Objects").children)
     if (object.name == "AnimationCurve")
       written += static_cast<double>(object.at("KeyTime").properties.at(0).integers.size());
   EXPECT_EQ(written, fbxAfter) << "the file holds the keys the report counts";
