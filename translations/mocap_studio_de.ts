@@ -214,7 +214,7 @@
 <context>
     <name>ReviewExport</name>
     <message>
-        <location filename="../widgets/dialogs/review_export.cpp" line="+141"/>
+        <location filename="../widgets/dialogs/review_export.cpp" line="+142"/>
         <source>No video at this frame</source>
         <translation>Kein Video bei diesem Frame</translation>
     </message>
@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+118"/>
+        <location filename="../app/studio/main_window.cpp" line="+121"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -377,7 +377,7 @@
         <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>Rendering the review video…</source>
         <translation>Das Prüfvideo wird gerendert…</translation>
     </message>
@@ -999,7 +999,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-917"/>
+        <location line="-924"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1394,7 +1394,7 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+67"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+68"/>
         <source>Live preview</source>
         <translation>Live-Vorschau</translation>
     </message>
@@ -1419,7 +1419,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+122"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -2163,7 +2163,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+126"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+128"/>
         <source>Filter markers…</source>
         <translation>Marker filtern…</translation>
     </message>
@@ -2173,7 +2173,7 @@
         <translation>Nur offene Lücken</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>Check Shown</source>
         <translation>Angezeigte abhaken</translation>
     </message>
@@ -2199,7 +2199,7 @@
     </message>
     <message>
         <location line="+13"/>
-        <location line="+141"/>
+        <location line="+144"/>
         <source>Fill</source>
         <translation>Füllen</translation>
     </message>
@@ -2485,7 +2485,7 @@
         <translation>offen</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+42"/>
         <source>Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples</source>
         <translation>Von den Füllregeln offen gelassen (%1). Abhaken, um sie trotzdem zu füllen: Füllen fragt, bevor es Abtastwerte erfindet</translation>
     </message>
@@ -3415,14 +3415,14 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+150"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+135"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+193"/>
+        <location line="+241"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
@@ -3438,17 +3438,27 @@
 <context>
     <name>mocap::ui::ModelOutputsNote</name>
     <message>
-        <location filename="../widgets/views/model_outputs_note.cpp" line="+24"/>
+        <location filename="../widgets/views/model_outputs_note.cpp" line="+28"/>
+        <source>%1 shown</source>
+        <translation>%1 angezeigt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 hidden</source>
+        <translation>%1 ausgeblendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 shown; never cleaned</source>
         <translation>%1 angezeigt; nie bereinigt</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>%1 hidden; View ▸ Show Model Outputs</source>
         <translation>%1 ausgeblendet; Ansicht ▸ Modellausgaben anzeigen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Model outputs are joint angles, forces, moments and powers the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
         <translation>Modellausgaben sind Gelenkwinkel, Kräfte, Momente und Leistungen, die die Aufnahmesoftware als Punkte gespeichert hat. Sie bleiben erhalten und werden gespeichert, aber nicht bereinigt, in der Lückenliste gezeigt oder in Statistiken gezählt.</translation>
     </message>

@@ -207,7 +207,7 @@
 <context>
     <name>ReviewExport</name>
     <message>
-        <location filename="../widgets/dialogs/review_export.cpp" line="+141"/>
+        <location filename="../widgets/dialogs/review_export.cpp" line="+142"/>
         <source>No video at this frame</source>
         <translation>此帧没有视频</translation>
     </message>
@@ -293,7 +293,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+118"/>
+        <location filename="../app/studio/main_window.cpp" line="+121"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -368,7 +368,7 @@
         <translation>无法导出面部网格：%1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>Rendering the review video…</source>
         <translation>正在渲染审阅视频…</translation>
     </message>
@@ -988,7 +988,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-917"/>
+        <location line="-924"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1381,7 +1381,7 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+67"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+68"/>
         <source>Live preview</source>
         <translation>实时预览</translation>
     </message>
@@ -1406,7 +1406,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+122"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -2141,7 +2141,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+126"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+128"/>
         <source>Filter markers…</source>
         <translation>筛选标记点…</translation>
     </message>
@@ -2151,7 +2151,7 @@
         <translation>仅未填补的缺口</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>Check Shown</source>
         <translation>勾选显示项</translation>
     </message>
@@ -2177,7 +2177,7 @@
     </message>
     <message>
         <location line="+13"/>
-        <location line="+141"/>
+        <location line="+144"/>
         <source>Fill</source>
         <translation>填补</translation>
     </message>
@@ -2462,7 +2462,7 @@
         <translation>未填补</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+42"/>
         <source>Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples</source>
         <translation>被填补规则保留为未填补（%1）。勾选以仍然填补：填补前会先询问是否编造这些采样点</translation>
     </message>
@@ -3389,14 +3389,14 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+150"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+135"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+193"/>
+        <location line="+241"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>已基于 %n 个标记点进行头部稳定 — 按 Ctrl+B 返回实验室坐标系</numerusform>
@@ -3411,17 +3411,27 @@
 <context>
     <name>mocap::ui::ModelOutputsNote</name>
     <message>
-        <location filename="../widgets/views/model_outputs_note.cpp" line="+24"/>
+        <location filename="../widgets/views/model_outputs_note.cpp" line="+28"/>
+        <source>%1 shown</source>
+        <translation>%1 已显示</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 hidden</source>
+        <translation>%1 已隐藏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>%1 shown; never cleaned</source>
         <translation>%1 已显示；从不清理</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>%1 hidden; View ▸ Show Model Outputs</source>
         <translation>%1 已隐藏；视图 ▸ 显示模型输出</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Model outputs are joint angles, forces, moments and powers the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
         <translation>模型输出是采集软件以点存储的关节角度、力、力矩和功率。它们会被保留和保存，但不会被清理、列入缺口列表或计入统计。</translation>
     </message>

@@ -375,6 +375,8 @@ QVariant GapTableModel::data(const QModelIndex& index, int role) const
   const bool overridable = !row.filled && row.refusal != UnfilledCause::None;
   if (role == Qt::CheckStateRole && index.column() == StateColumn && overridable)
     return row.allowed ? Qt::Checked : Qt::Unchecked;
+  if (role == Qt::ToolTipRole && index.column() == MarkerColumn)  // the column elides long labels
+    return data(index, Qt::DisplayRole);
   if (role == Qt::ToolTipRole && index.column() == StateColumn && overridable)
     return tr("Left open by the fill rules (%1). Check to fill it anyway: Fill asks before inventing its samples")
         .arg(row.refusalText);

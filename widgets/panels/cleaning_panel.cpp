@@ -63,6 +63,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
 {
   auto* layout = new QVBoxLayout(this);
   m_tabs = new QTabWidget(this);
+  m_tabs->setUsesScrollButtons(true);  // four step titles are wider than the dock
   layout->addWidget(m_tabs, 1);
   m_live = new QCheckBox(tr("Live preview"), this);
   m_live->setChecked(true);
@@ -117,6 +118,10 @@ CleaningPanel::~CleaningPanel() = default;  // the runner stops and awaits its j
 
 void CleaningPanel::addStep(CleaningStep* step)
 {
+  // A field wider than the dock goes under its label rather than pushing Apply out of view
+  // sideways (the dock is about 310 px wide when the studio first opens on a 1280×800 screen).
+  for (QFormLayout* form : step->findChildren<QFormLayout*>())
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
   m_tabs->addTab(step, step->title());
   connect(step, &CleaningStep::changed, this, &CleaningPanel::schedule);
 }

@@ -21,7 +21,9 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QShortcut>
 #include <QSortFilterProxyModel>
+#include <QStyle>
 #include <QStyledItemDelegate>
 #include <QTableView>
 #include <QTimer>
@@ -151,9 +153,14 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   // and method titles ("Distance-weighted neighbours (Lin–Ouhyoung)") are long: fixed widths, elided,
   // the whole text in the tooltip, so marker, frames, state and override fit the dock as the studio
   // first opens on a 1280×800 screen.
+  // Labels from other systems run long ("Skeleton_LShoulder2"): the marker column holds a check box
+  // and a label as long as "section14-3" and elides longer ones (the whole label in the tooltip).
   const int digits = m_view->fontMetrics().horizontalAdvance(QStringLiteral("000000"));
+  const int labelWidth = m_view->style()->pixelMetric(QStyle::PM_IndicatorWidth) +
+                     m_view->fontMetrics().horizontalAdvance(QStringLiteral("section14-30"));
   for (const auto& [column, width] :
-       {std::pair{GapTableModel::FirstFrameColumn, digits}, std::pair{GapTableModel::LengthColumn, digits},
+       {std::pair{GapTableModel::MarkerColumn, labelWidth}, std::pair{GapTableModel::FirstFrameColumn, digits},
+        std::pair{GapTableModel::LengthColumn, digits},
         std::pair{GapTableModel::StateColumn, 100}, std::pair{GapTableModel::MethodColumn, 110}}) {
     header->setSectionResizeMode(column, QHeaderView::Interactive);
     header->resizeSection(column, width);
@@ -181,7 +188,10 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   layout->addWidget(m_status);
   auto* buttons = new QHBoxLayout;
   m_fill = new QPushButton(tr("Fill"), this);
-  m_fill->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
+  // Not the button's own shortcut: setText (the button names what it fills) sets a button's
+  // shortcut to its text's mnemonic, so Ctrl+Return was gone once a gap was checked.
+  auto* fillKey = new QShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return), this);
+  connect(fillKey, &QShortcut::activated, m_fill, &QPushButton::animateClick);
   buttons->addStretch();
   buttons->addWidget(m_fill);
   layout->addLayout(buttons);

@@ -21,9 +21,14 @@ void ModelOutputsNote::refresh()
   setVisible(!outputs.isEmpty());
   if (outputs.isEmpty())
     return;
-  setText(m_document.showsModelOutputs() ? tr("%1 shown; never cleaned").arg(outputs)
-                                         : tr("%1 hidden; View ▸ Show Model Outputs").arg(outputs));
-  setToolTip(tr("Model outputs are joint angles, forces, moments and powers the capture software stored as points. "
+  // Short, as the status bar's messages ("Saved …") share its width with the permanent widgets
+  // (they were cut to "Saved /tmp/walk/pig_c" at the first-run size); the kinds are in the tooltip.
+  const QString head = outputs.section(QStringLiteral(" ("), 0, 0);  // "34 model outputs"
+  const bool shown = m_document.showsModelOutputs();
+  setText(shown ? tr("%1 shown").arg(head) : tr("%1 hidden").arg(head));
+  setToolTip((shown ? tr("%1 shown; never cleaned") : tr("%1 hidden; View ▸ Show Model Outputs")).arg(outputs) +
+             QStringLiteral("\n") +
+             tr("Model outputs are joint angles, forces, moments and powers the capture software stored as points. "
                 "They are kept and saved, but not cleaned, gap-listed or counted in statistics."));
 }
 

@@ -7,8 +7,8 @@ namespace mocap::ui {
 class TakeDocument;
 
 /// The status-bar note on the open take's model outputs (marker_points.h: angles, forces...
-/// a C3D file stores as points): "34 model outputs (12 angles, 8 forces…) hidden; View ▸ Show
-/// Model Outputs", or "… shown; never cleaned" while they are shown. Hidden when the take has none.
+/// a C3D file stores as points): "34 model outputs hidden" or "… shown", the kinds and View ▸ Show
+/// Model Outputs in its tooltip. Hidden when the take has none.
 /// Follows the document (a new take, markers added or removed, the filter toggled).
 class ModelOutputsNote final : public QLabel
 {

@@ -1,0 +1,151 @@
+// What a technician's walkthrough on other labs' takes found (issue 30): panels that hide their
+// buttons or decisions sideways on the window's first-run size, with long foreign labels.
+#include "foreign_takes.h"
+#include "job_waits.h"
+#include "../core/test_support.h"
+
+#include "document/take_document.h"
+#include "main_window.h"
+#include "models/gap_table_model.h"
+#include "panels/gap_list_panel.h"
+#include "sample_window.h"
+
+#include "mocap/io/take_io.h"
+
+#include <QDockWidget>
+#include <QHeaderView>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStatusBar>
+#include <QTableView>
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace mocap {
+namespace {
+
+// The studio first opens at 85 % of a 1280×800 screen.
+constexpr int kWalkWidth = 1088;
+constexpr int kWalkHeight = 680;
+
+/// The widest widgets inside `panel`, for a failure message: what keeps it wide.
+QString widestChildren(const QWidget& panel, int limit)
+{
+  QString names;
+  for (const QWidget* child : panel.findChildren<QWidget*>())
+    if (child->minimumSizeHint().width() > limit)
+      names += QStringLiteral("\n  %1 '%2' needs %3 px in %4")
+                   .arg(QString::fromLatin1(child->metaObject()->className()), child->objectName())
+                   .arg(child->minimumSizeHint().width()).arg(QString::fromLatin1(child->parentWidget()->metaObject()->className()));
+  return names;
+}
+
+TEST(ForeignTakeWalkthrough, CleaningPanelsDoNotScrollSidewaysAtTheFirstRunSize)
+{
+  // Cleaning's Apply sat 70 px right of the dock's edge: a technician had to scroll sideways to
+  // find it, and the tab of head stabilization was cut. (Face Mesh, Blendshape Solve and
+  // Reference Video still need 336, 389 and 487 px: not part of cleaning a take, left for now.)
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  QString wide;
+  for (const char* name : {"cleaningDock", "gapListDock", "layoutPlanningDock", "historyDock"}) {
+    auto* dock = window->findChild<QDockWidget*>(QString::fromLatin1(name));
+    ASSERT_NE(dock, nullptr) << name;
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    if (!scroll)
+      continue;  // a dock without a scroll area is as wide as its panel needs
+    dock->show();
+    dock->raise();
+    QTest::qWait(20);
+    const int viewport = scroll->viewport()->width();
+    if (scroll->widget()->width() > viewport)
+      wide += QStringLiteral("\n%1: panel %2 px in a viewport of %3 px")
+                  .arg(dock->objectName())
+                  .arg(scroll->widget()->width())
+                  .arg(viewport) +
+              widestChildren(*scroll->widget(), viewport);
+  }
+  EXPECT_TRUE(wide.isEmpty()) << wide.toStdString();
+}
+
+TEST(ForeignTakeWalkthrough, GapStatesStayInViewWithLongMarkerLabels)
+{
+  // A NaturalPoint skeleton's labels ("Skeleton_LShoulder2") pushed the Gaps dock's state column,
+  // which says why a gap stays open, out of view.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ui::TakeDocument& document = window->document();
+  for (Eigen::Index marker = 0; marker < document.take().markerCount(); ++marker)
+    (void)document.renameMarker(marker, "Skeleton_LShoulder" + std::to_string(marker));
+  auto* dock = window->findChild<QDockWidget*>(QStringLiteral("gapListDock"));
+  ASSERT_NE(dock, nullptr);
+  dock->show();
+  dock->raise();
+  QTest::qWait(50);
+  QTableView* view = window->gapListPanel()->view();
+  ASSERT_GT(view->model()->rowCount(), 0);
+  const int visible = view->viewport()->width();
+  const int state = ui::GapTableModel::StateColumn;
+  EXPECT_LE(view->columnViewportPosition(state) + view->columnWidth(state), visible)
+      << "marker column " << view->columnWidth(ui::GapTableModel::MarkerColumn) << " px";
+  // The elided label stays readable in full.
+  const QString label = view->model()->index(0, ui::GapTableModel::MarkerColumn).data().toString();
+  EXPECT_EQ(view->model()->index(0, ui::GapTableModel::MarkerColumn).data(Qt::ToolTipRole).toString(), label);
+}
+
+TEST(ForeignTakeWalkthrough, SavedMessageIsNotCutByTheModelOutputsNote)
+{
+  // On a Nexus take the note "34 model outputs (12 angles, …) hidden; View ▸ Show Model Outputs"
+  // took the status bar's width: "Saved /tmp/walk/pig_clean.c3d" showed as "Saved /tmp/walk/pig_c".
+  test::TempDir dir;
+  writeTake(test::nexusCleaningTake(), dir.file("nexus.c3d"));
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ASSERT_EQ(window->openFile(QString::fromStdString(dir.file("nexus.c3d").string()), true), QString());
+  QTest::qWait(20);
+  int permanentLeft = window->statusBar()->width();
+  for (const QWidget* child : window->statusBar()->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
+    if (child->isVisible() && child->x() > 0)
+      permanentLeft = std::min(permanentLeft, child->x());
+  const QString saved = QStringLiteral("Saved /home/technician/takes/pig_clean_v2.c3d");
+  EXPECT_GE(permanentLeft, window->statusBar()->fontMetrics().horizontalAdvance(saved) + 10)
+      << "room left for messages: " << permanentLeft << " px";
+}
+
+TEST(ForeignTakeWalkthrough, CtrlReturnFillsWithTheGapTableFocused)
+{
+  // After checking a gap in the table (the table has the focus), Ctrl+Return filled nothing.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  auto* dock = window->findChild<QDockWidget*>(QStringLiteral("gapListDock"));
+  ASSERT_NE(dock, nullptr);
+  dock->show();
+  dock->raise();
+  ui::GapListPanel& panel = *window->gapListPanel();
+  ui::GapTableModel& model = *panel.model();
+  ASSERT_GT(model.rowCount(), 0);
+  int row = 0;
+  while (row < model.rowCount() && model.stateAt(row) != ui::GapTableModel::FillState::Open)
+    ++row;
+  ASSERT_LT(row, model.rowCount());
+  model.setData(model.index(row, ui::GapTableModel::MarkerColumn), Qt::Checked, Qt::CheckStateRole);
+  test::waitUntilIdle(panel);
+  QTableView* view = panel.view();
+  view->setFocus();
+  QTest::qWait(20);
+  const int steps = window->document().undoStack()->count();
+  QTest::keyClick(view, Qt::Key_Return, Qt::ControlModifier);
+  QTest::qWait(300);  // a button's shortcut clicks it after a short animation
+  test::waitUntilIdle(panel);
+  EXPECT_EQ(window->document().undoStack()->count(), steps + 1) << panel.statusText().toStdString();
+  view->setFocus();
+  QTest::keyClick(view, Qt::Key_Z, Qt::ControlModifier);
+  EXPECT_EQ(window->document().undoStack()->index(), steps) << "Ctrl+Z undoes with the table focused";
+}
+
+} // namespace
+} // namespace mocap
