@@ -90,8 +90,8 @@ std::optional<SmoothOptions> smoothOptions(const CleanArguments& arguments)
   return options;
 }
 
-std::string reportJson(const std::string& input, const std::string& output, const Take& take,
-                       const CleanOptions& options, const CleanReport& report)
+std::string cleanReportJson(const std::string& input, const std::string& output, const Take& take,
+                            const CleanOptions& options, const CleanReport& report)
 {
   JsonWriter json;
   json.beginObject();
@@ -299,7 +299,7 @@ int runClean(const CleanArguments& arguments)
   writeCleanedTake(take, report, options, output);
   noteLeftOut(take, output);
   if (arguments.report)
-    writeFileAtomically(*arguments.report, reportJson(input, output, take, options, report));
+    writeFileAtomically(*arguments.report, cleanReportJson(input, output, take, options, report));
   return qualityExit(arguments, input, markerValidFraction(take));
 }
 
