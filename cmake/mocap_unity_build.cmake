@@ -2,7 +2,8 @@
 # Eigen, gtest, CLI11 and the standard library (or loads their precompiled header, an mmap of
 # 110-280 MB whose page faults cost about a second of system time each) once per batch instead of
 # once per source file. Without the cache: core_tests' 61 files 151 s → 73 s of wall time on 2 cores;
-# the core library with g++ (RelWithDebInfo, its precompiled header) 532 s → 382 s of CPU time.
+# the core library with g++ (RelWithDebInfo, its precompiled header) 532 s → 382 s of CPU time; in
+# the sanitizer build (clang, no precompiled header) two batches' 16 files 118 s → 85 s.
 #
 #   MOCAP_UNITY_BUILD  compile the core library's and the `mocap` command's sources in batches
 #                      (default ON)
