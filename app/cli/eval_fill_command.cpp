@@ -72,7 +72,7 @@ std::vector<Eigen::Index> parseMarkers(const Take& take, const std::string& text
 }
 
 
-void writeText(const std::string& file, const FillEvaluation& evaluation)
+void writeFillEvaluationText(const std::string& file, const FillEvaluation& evaluation)
 {
   std::cout << file << ": " << evaluation.copies << " corrupted copies per gap length, seed "
             << evaluation.seed << "; errors in mm, border velocity jump in mm/s (truth in brackets)\n";
@@ -97,7 +97,7 @@ void writeText(const std::string& file, const FillEvaluation& evaluation)
   }
 }
 
-void writeJson(const std::string& file, const FillEvaluation& evaluation)
+void writeFillEvaluationJson(const std::string& file, const FillEvaluation& evaluation)
 {
   JsonWriter json;
   json.beginObject();
@@ -155,9 +155,9 @@ int runEvalFill(const EvalFillArguments& arguments)
                        " frames does not fit in the take's " + std::to_string(take.frameCount()) + " frames");
   const FillEvaluation evaluation = evaluateFill(take, options);
   if (arguments.json)
-    writeJson(file, evaluation);
+    writeFillEvaluationJson(file, evaluation);
   else
-    writeText(file, evaluation);
+    writeFillEvaluationText(file, evaluation);
   return kExitOk;
 }
 

@@ -15,7 +15,7 @@ namespace mocap::cli {
 
 namespace {
 
-void writeJson(const std::string& file, const SmoothingEvaluation& evaluation)
+void writeSmoothingEvaluationJson(const std::string& file, const SmoothingEvaluation& evaluation)
 {
   JsonWriter json;
   json.beginObject();
@@ -43,7 +43,7 @@ void writeJson(const std::string& file, const SmoothingEvaluation& evaluation)
   std::cout << json.str() << '\n';
 }
 
-void writeText(const std::string& file, const SmoothingEvaluation& evaluation)
+void writeSmoothingEvaluationText(const std::string& file, const SmoothingEvaluation& evaluation)
 {
   char line[200];
   std::cout << "take: " << file << "  noise: " << evaluation.noiseMm
@@ -77,9 +77,9 @@ int runEvalSmooth(const EvalSmoothArguments& arguments)
   const Take take = readTake(file);
   const SmoothingEvaluation evaluation = evaluateSmoothing(take, arguments.options);
   if (arguments.json)
-    writeJson(file, evaluation);
+    writeSmoothingEvaluationJson(file, evaluation);
   else
-    writeText(file, evaluation);
+    writeSmoothingEvaluationText(file, evaluation);
   return kExitOk;
 }
 

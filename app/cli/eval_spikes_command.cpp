@@ -16,8 +16,8 @@ namespace mocap::cli {
 
 namespace {
 
-void writeJson(const std::string& file, const SpikeEvaluationOptions& options,
-               const std::vector<SpikeEvaluation>& results)
+void writeSpikeEvaluationJson(const std::string& file, const SpikeEvaluationOptions& options,
+                              const std::vector<SpikeEvaluation>& results)
 {
   JsonWriter json;
   json.beginObject();
@@ -45,8 +45,8 @@ void writeJson(const std::string& file, const SpikeEvaluationOptions& options,
   std::cout << json.str() << '\n';
 }
 
-void writeText(const std::string& file, const SpikeEvaluationOptions& options,
-               const std::vector<SpikeEvaluation>& results)
+void writeSpikeEvaluationText(const std::string& file, const SpikeEvaluationOptions& options,
+                              const std::vector<SpikeEvaluation>& results)
 {
   std::cout << file << ": " << options.count << " spikes of " << options.amplitude << " mm, seed "
             << options.seed;
@@ -82,9 +82,9 @@ int runEvalSpikes(const EvalSpikesArguments& arguments)
   const Take take = readInputTake(file);
   const std::vector<SpikeEvaluation> results = evaluateSpikes(take, options);
   if (arguments.json)
-    writeJson(file, options, results);
+    writeSpikeEvaluationJson(file, options, results);
   else
-    writeText(file, options, results);
+    writeSpikeEvaluationText(file, options, results);
   return kExitOk;
 }
 

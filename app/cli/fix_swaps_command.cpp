@@ -20,8 +20,8 @@ namespace mocap::cli {
 
 namespace {
 
-std::string reportJson(const std::string& input, const std::string& output, const Take& take,
-                       const std::vector<LabelSwap>& swaps)
+std::string swapReportJson(const std::string& input, const std::string& output, const Take& take,
+                           const std::vector<LabelSwap>& swaps)
 {
   JsonWriter json;
   json.beginObject();
@@ -60,7 +60,7 @@ int runFixSwaps(const FixSwapsArguments& arguments)
   Take take = readInputTake(input);
   const std::vector<LabelSwap> swaps = repairSwaps(take, options);
   writeOutputTake(take, output);
-  const std::string report = reportJson(input, output, take, swaps);
+  const std::string report = swapReportJson(input, output, take, swaps);
   if (arguments.report)
     writeFileAtomically(*arguments.report, report);
   if (arguments.json) {

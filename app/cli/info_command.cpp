@@ -51,9 +51,9 @@ void writePointTypesJson(JsonWriter& json, const Take& take)
   json.endObject();
 }
 
-void writeJson(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
-               const std::vector<std::string>& warnings, const std::vector<std::string>& dataLoss,
-               const std::optional<C3dLayoutReport>& layout)
+void writeInfoJson(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
+                   const std::vector<std::string>& warnings, const std::vector<std::string>& dataLoss,
+                   const std::optional<C3dLayoutReport>& layout)
 {
   JsonWriter json;
   json.beginObject();
@@ -148,8 +148,8 @@ void writeProvenanceText(const Take& take)
   }
 }
 
-void writeText(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
-               const std::vector<std::string>& warnings)
+void writeInfoText(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
+                   const std::vector<std::string>& warnings)
 {
   for (const auto& w : warnings)
     std::cerr << file << ": warning: " << w << '\n';
@@ -192,9 +192,9 @@ int runInfo(const InfoArguments& arguments)
                                               : readTake(file, &warnings, &dataLoss);
   const std::vector<Gap> gaps = findGaps(take);
   if (arguments.json)
-    writeJson(file, format, take, gaps, warnings, dataLoss, layout);
+    writeInfoJson(file, format, take, gaps, warnings, dataLoss, layout);
   else
-    writeText(file, format, take, gaps, warnings);
+    writeInfoText(file, format, take, gaps, warnings);
   return kExitOk;
 }
 

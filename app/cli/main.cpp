@@ -10,9 +10,10 @@
 #include <iostream>
 #include <memory>
 
+// Its helpers live in the command line's namespace, not at file scope with a using-directive that
+// would carry on into the files compiled after it in the same batch (cmake/mocap_unity_build.cmake).
+namespace mocap::cli {
 namespace {
-
-using namespace mocap::cli;
 
 /// A usage error: one line saying what is wrong, one with the command's synopsis and where to
 /// read more.
@@ -51,9 +52,11 @@ std::string unknownCommand(const CLI::App& mocap, int argc, char** argv)
 }
 
 } // namespace
+} // namespace mocap::cli
 
 int main(int argc, char** argv)
 {
+  using namespace mocap::cli;
   CLI::App mocap("the batch command line of Mocap Studio", "mocap");
   mocap.formatter(std::make_shared<UsageFormatter>());
   mocap.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // a repeated option: the last wins

@@ -35,7 +35,8 @@ Eigen::Index movedVertices(const BlendshapeRig& rig)
   return total;
 }
 
-void printJson(const RigArguments& arguments, const BlendshapeRig& rig, std::size_t bytes, double readSeconds)
+void printRigJson(const RigArguments& arguments, const BlendshapeRig& rig, std::size_t bytes,
+                  double readSeconds)
 {
   JsonWriter json;
   json.beginObject();
@@ -70,7 +71,7 @@ int runRig(const RigArguments& arguments)
   const std::string glb = rigGlb(rig, Eigen::MatrixXd(), 1.0);
   writeFileAtomically(arguments.out, glb);
   if (arguments.json) {
-    printJson(arguments, rig, glb.size(), readSeconds);
+    printRigJson(arguments, rig, glb.size(), readSeconds);
     return kExitOk;
   }
   std::cout << "wrote " << arguments.out << ": " << rig.neutral.vertexCount() << " vertices, "

@@ -17,7 +17,8 @@ namespace mocap::cli {
 
 namespace {
 
-void writeJson(const std::string& file, const Take& take, const SmoothnessTable& table, double knotSpacing)
+void writeSmoothnessTableJson(const std::string& file, const Take& take, const SmoothnessTable& table,
+                              double knotSpacing)
 {
   JsonWriter json;
   json.beginObject();
@@ -49,7 +50,7 @@ void writeJson(const std::string& file, const Take& take, const SmoothnessTable&
   std::cout << json.str() << '\n';
 }
 
-void writeText(const std::string& file, const SmoothnessTable& table, double knotSpacing)
+void writeSmoothnessTableText(const std::string& file, const SmoothnessTable& table, double knotSpacing)
 {
   char line[160];
   std::cout << "take: " << file << "  markers: " << table.markers.size() << "  knot spacing: " << knotSpacing
@@ -93,9 +94,9 @@ int runSmoothTable(const SmoothTableArguments& arguments)
   }
   const SmoothnessTable table = smoothnessTable(take, options);
   if (arguments.json)
-    writeJson(file, take, table, options.knotSpacing);
+    writeSmoothnessTableJson(file, take, table, options.knotSpacing);
   else
-    writeText(file, table, options.knotSpacing);
+    writeSmoothnessTableText(file, table, options.knotSpacing);
   return kExitOk;
 }
 

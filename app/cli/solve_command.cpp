@@ -142,9 +142,9 @@ void checkOutput(const SolveArguments& arguments)
     throw UsageError("--reduce applies to .glb and .fbx output (curves with keys)");
 }
 
-void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
-               const Take& take, const BlendshapeSolveResult& result, double loadSeconds,
-               const std::optional<LeaveOutResult>& quality, const std::optional<KeyCount>& keys)
+void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
+                    const Take& take, const BlendshapeSolveResult& result, double loadSeconds,
+                    const std::optional<LeaveOutResult>& quality, const std::optional<KeyCount>& keys)
 {
   const ResidualSummary residual = summarize(result.residual);
   const auto frames = static_cast<double>(result.weights.rows());
@@ -223,7 +223,7 @@ int runSolve(const SolveArguments& arguments)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
 
   if (arguments.json) {
-    printJson(arguments, rig, solver, take, result, loadSeconds, quality, keys);
+    printSolveJson(arguments, rig, solver, take, result, loadSeconds, quality, keys);
     return kExitOk;
   }
   const ResidualSummary residual = summarize(result.residual);

@@ -30,8 +30,8 @@ MarkerSet loadTemplate(const std::string& path)
   return markerSetFromTake(readTake(path, &warnings));
 }
 
-std::string reportJson(const std::string& input, const std::string& output, const Take& result,
-                       const TrackReport& report)
+std::string trackReportJson(const std::string& input, const std::string& output, const Take& result,
+                            const TrackReport& report)
 {
   JsonWriter json;
   json.beginObject();
@@ -92,7 +92,7 @@ int runTrack(const TrackArguments& arguments)
   if (arguments.saveMarkerSet)
     writeMarkerSet(markerSetFromTake(result), *arguments.saveMarkerSet);
   if (arguments.json) {
-    std::cout << reportJson(input, output, result, report);
+    std::cout << trackReportJson(input, output, result, report);
   } else {
     std::cout << output << ": " << report.labelledFragments << " of " << report.fragments
               << " fragments labelled (" << report.labelledSamples << " samples), " << report.unlabelledFragments

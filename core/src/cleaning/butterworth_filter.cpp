@@ -1,6 +1,7 @@
 #include "mocap/cleaning/butterworth_filter.h"
 
 #include "mocap/base/error.h"
+#include "mocap/math/pi.h"
 
 #include <Eigen/Cholesky>
 
@@ -13,7 +14,6 @@ namespace mocap {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr Eigen::Index kMinCurvatureWindow = 16;
 
 void checkRates(double frameRate, double cutoffHz)

@@ -3,6 +3,7 @@
 #include "mocap/base/enum_table.h"
 #include "mocap/math/banded_cholesky.h"
 #include "mocap/base/error.h"
+#include "mocap/math/pi.h"
 
 #include <array>
 #include <cmath>
@@ -13,7 +14,6 @@ namespace mocap {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Search range of the equivalent cutoff, as fractions of the frame rate.
 constexpr double kLowestCutoff = 0.005;
 constexpr double kHighestCutoff = 0.45;

@@ -26,7 +26,7 @@ constexpr EnumTable<BlendshapeSolveMethod, 3> kSolveMethods{{{
 
 using Mask = std::vector<bool>;
 
-void checkOptions(const BlendshapeSolveOptions& options)
+void checkSolveOptions(const BlendshapeSolveOptions& options)
 {
   const auto nonNegative = [](double v) { return v >= 0.0 && std::isfinite(v); };
   if (options.lambda && !nonNegative(*options.lambda))
@@ -324,7 +324,7 @@ BlendshapeSolver::BlendshapeSolver(const BlendshapeRig& rig, const MeshBinding& 
     : m_options(options)
 {
   const Stopwatch setup;
-  checkOptions(options);
+  checkSolveOptions(options);
   checkRig(rig);
   m_bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
   m_a = sampleShapes(rig, m_bound.points);

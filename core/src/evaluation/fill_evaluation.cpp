@@ -12,7 +12,7 @@ namespace mocap {
 
 namespace {
 
-void checkOptions(const Take& take, const FillEvaluationOptions& options)
+void checkFillEvaluationOptions(const Take& take, const FillEvaluationOptions& options)
 {
   if (take.empty())
     throw InvalidArgument("fill evaluation: the take is empty");
@@ -201,7 +201,7 @@ std::vector<Gap> hiddenGaps(const Take& take, Eigen::Index length, int copy,
 std::vector<Gap> evaluationGaps(const Take& take, Eigen::Index length, int copy,
                                 const FillEvaluationOptions& options)
 {
-  checkOptions(take, options);
+  checkFillEvaluationOptions(take, options);
   if (length < 1 || length > take.frameCount() - 2)
     throw InvalidArgument("fill evaluation: a gap of " + std::to_string(length) +
                           " frames does not fit inside " + std::to_string(take.frameCount()) +
@@ -214,7 +214,7 @@ std::vector<Gap> evaluationGaps(const Take& take, Eigen::Index length, int copy,
 
 FillEvaluation evaluateFill(const Take& take, const FillEvaluationOptions& options)
 {
-  checkOptions(take, options);
+  checkFillEvaluationOptions(take, options);
   const double toMm = millimetresPer(take.units());
   const std::vector<double> limits = options.skipJumps ? jumpLimits(take) : std::vector<double>{};
   FillEvaluation evaluation;

@@ -3,6 +3,7 @@
 #include "mocap/base/error.h"
 #include "mocap/base/length_unit.h"
 #include "mocap/base/random.h"
+#include "mocap/math/pi.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,6 @@ namespace mocap {
 namespace {
 
 constexpr Eigen::Index kSpacing = 5;  // frames kept free around each spike and cut gap
-constexpr double kPi = 3.14159265358979323846;
 
 // Uniform on the unit sphere (Archimedes: z uniform in [-1, 1], longitude uniform).
 Eigen::RowVector3d randomDirection(Random& random)

@@ -17,7 +17,7 @@ constexpr int kAttemptsPerSwap = 200;
 constexpr Eigen::Index kSwapNeighbours = 3;
 constexpr Eigen::Index kSwapMargin = 3;  // valid frames either side of a swap, so it is observable
 
-void checkOptions(const Take& take, const TrackingEvaluationOptions& options)
+void checkTrackingEvaluationOptions(const Take& take, const TrackingEvaluationOptions& options)
 {
   if (take.empty())
     throw InvalidArgument("tracking evaluation: the take is empty");
@@ -71,7 +71,7 @@ bool validThrough(const Take& take, Eigen::Index m, Eigen::Index first, Eigen::I
 
 UnlabelledCopy makeUnlabelledCopy(const Take& take, const TrackingEvaluationOptions& options)
 {
-  checkOptions(take, options);
+  checkTrackingEvaluationOptions(take, options);
   Random random(mixSeed(options.seed, 0x7261636bULL, 1));
   UnlabelledCopy copy;
   copy.kept = SampleMask::Constant(take.frameCount(), take.markerCount(), false);
@@ -98,7 +98,7 @@ UnlabelledCopy makeUnlabelledCopy(const Take& take, const TrackingEvaluationOpti
 
 Take makeSwappedCopy(const Take& take, const TrackingEvaluationOptions& options, std::vector<InjectedSwap>& swaps)
 {
-  checkOptions(take, options);
+  checkTrackingEvaluationOptions(take, options);
   swaps.clear();
   Take copy = take;
   const std::vector<Eigen::Index> markers = labelledMarkers(take);
@@ -175,7 +175,7 @@ double labelAgreement(const Take& truth, const Take& result, const SampleMask& s
 
 TrackingEvaluation evaluateTracking(const Take& take, const TrackingEvaluationOptions& options)
 {
-  checkOptions(take, options);
+  checkTrackingEvaluationOptions(take, options);
   if (labelledMarkers(take).size() < 4)
     throw InvalidArgument("tracking evaluation needs at least four labelled markers");
   TrackingEvaluation evaluation;

@@ -12,7 +12,7 @@ namespace {
 
 constexpr double kJumpQuantile = 0.95;
 
-void checkOptions(const SwapOptions& options)
+void checkSwapOptions(const SwapOptions& options)
 {
   if (!(options.jumpFactor >= 2.0 && options.jumpFactor <= 1000.0))
     throw InvalidArgument("swap detection: the jump factor must be in [2, 1000]");
@@ -37,7 +37,7 @@ Eigen::Vector3d prediction(const Take& take, Eigen::Index frame, Eigen::Index ma
 
 Eigen::VectorXd jumpThresholds(const Take& take, const SwapOptions& options)
 {
-  checkOptions(options);
+  checkSwapOptions(options);
   const double floor = options.minJump > 0.0 ? options.minJump : 1.0 / millimetresPer(take.units());
   Eigen::VectorXd threshold = Eigen::VectorXd::Constant(take.markerCount(), floor);
   std::vector<double> errors;
@@ -103,7 +103,7 @@ std::vector<LabelSwap> swapsAt(const Take& take, Eigen::Index frame, const std::
 
 std::vector<LabelSwap> repairSwaps(Take& take, const SwapOptions& options, const JobControl& job)
 {
-  checkOptions(options);
+  checkSwapOptions(options);
   std::vector<LabelSwap> swaps;
   if (take.empty())
     return swaps;

@@ -53,8 +53,8 @@ IcpOptions templateIcp()
   return options;
 }
 
-void checkOptions(const Take& take, const std::vector<Fragment>& fragments, const MarkerSet& set,
-                  const LabellingOptions& options)
+void checkLabellingInputs(const Take& take, const std::vector<Fragment>& fragments, const MarkerSet& set,
+                          const LabellingOptions& options)
 {
   validateMarkerSet(set);
   if (take.markerCount() < set.size())
@@ -371,7 +371,7 @@ Similarity alignTemplate(const Eigen::Ref<const PointSet>& templ, const Eigen::R
 LabellingResult labelFragments(Take& take, const std::vector<Fragment>& fragments, const MarkerSet& set,
                                const LabellingOptions& options)
 {
-  checkOptions(take, fragments, set, options);
+  checkLabellingInputs(take, fragments, set, options);
   return Labeller(take, fragments, set, options).run();
 }
 

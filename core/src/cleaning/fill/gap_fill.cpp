@@ -43,7 +43,7 @@ constexpr EnumTable<UnfilledCause, 7> kCauses{{{
     {UnfilledCause::ModelOutput, "model_output"},
 }}};
 
-void checkOptions(const FillOptions& options)
+void checkFillOptions(const FillOptions& options)
 {
   if (!parseFillMethod(fillMethodName(options.method)))
     throw InvalidArgument("unknown gap-filling method");
@@ -217,13 +217,13 @@ std::string_view fillMethodName(FillMethod method)
 
 FillResult fillGaps(const Take& take, const FillOptions& options, const JobControl& job)
 {
-  checkOptions(options);
+  checkFillOptions(options);
   return fillGaps(take, findGaps(take), options, job);
 }
 
 std::vector<GapFillReport> checkFillRules(const Take& take, const std::vector<Gap>& gaps, const FillOptions& options)
 {
-  checkOptions(options);
+  checkFillOptions(options);
   for (const Gap& gap : gaps)
     checkGap(take, gap);
   for (Eigen::Index m : options.fillAnyway)

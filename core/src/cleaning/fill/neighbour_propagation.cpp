@@ -1,5 +1,7 @@
 #include "mocap/cleaning/fill/neighbour_propagation.h"
 
+#include "mocap/math/pi.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -8,8 +10,6 @@
 namespace mocap {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 const char* ruleName(PropagationRule rule)
 {

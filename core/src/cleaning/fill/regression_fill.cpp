@@ -20,7 +20,7 @@ constexpr double kJumpFactor = 10.0;
 // Frames used to rank the candidate predictors.
 constexpr std::size_t kRankingFrames = 60;
 
-void checkOptions(const RegressionFillOptions& options)
+void checkRegressionFillOptions(const RegressionFillOptions& options)
 {
   if (options.neighbours < 1 || options.neighbours > 1000)
     throw InvalidArgument("regression fill: neighbours must be in 1..1000");
@@ -194,7 +194,7 @@ RegressionSystem buildRegression(const FillContext& context, Eigen::Index marker
                                  Eigen::Index to, const RegressionFillOptions& options,
                                  const std::vector<FrameRange>& heldOut)
 {
-  checkOptions(options);
+  checkRegressionFillOptions(options);
   const Take& take = context.take();
   RegressionSystem system;
   const auto candidates = markersValidThrough(take, marker, from, to);
@@ -283,7 +283,7 @@ RegressionSystem buildRegression(const FillContext& context, Eigen::Index marker
 GapPrediction predictRegression(const GapQuery& gap, const RegressionFillOptions& options,
                                 const FillContext* context)
 {
-  checkOptions(options);
+  checkRegressionFillOptions(options);
   if (context != nullptr && &context->take() != &gap.take)
     throw InvalidArgument("regression fill: the context belongs to another take");
   const Eigen::Index before = gap.before();
