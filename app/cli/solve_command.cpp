@@ -7,17 +7,17 @@
 #include "commands.h"
 #include "leave_out_cli.h"
 #include "rig_input.h"
+#include "weight_output.h"
 
 #include "mocap/base/stopwatch.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
+#include "mocap/cleaning/head_angles.h"
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
 #include "mocap/io/fbx_writer.h"
-#include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
-#include "mocap/io/weights_csv_writer.h"
 #include "mocap/math/key_reduction.h"
 
 #include <algorithm>
@@ -38,7 +38,7 @@ struct SolveArguments
   BlendshapeSolveOptions settings;
   std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
   std::string format = "plain";
-  std::optional<std::string> stabilize, only, up, units;
+  std::optional<std::string> stabilize, only, up, units, map;
   std::optional<double> reduce;  // glTF: key tolerance in weight units
   LeaveOutOptions leaveOut;
   bool json = false;
@@ -96,21 +96,28 @@ std::optional<KeyReduction> reducedKeys(const SolveArguments& arguments, const T
   return reduceKeys(times, result.weights, *arguments.reduce);
 }
 
-void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
-                 const Take& take, const BlendshapeSolveResult& result, const std::optional<KeyReduction>& keys)
+/// The head's yaw, pitch and roll per frame in the rig's axes for the Live Link CSV, from the
+/// head motion --stabilize removed; empty (zeros in the file) without it.
+Eigen::MatrixXd headRotation(const std::optional<HeadMotion>& motion, const BlendshapeSolver& solver)
 {
-  const std::string extension = lowerExtension(out);
-  if (extension == "csv") {
-    writeWeightsCsv(out, rig.shapeNames(), result.weights, take.firstFrame(), take.frameRate(),
-                    arguments.format == "livelink" ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
-    return;
-  }
-  if (extension == "glb") {
-    writeRigGlb(out, rig, result.weights, take.frameRate(), keys ? keys->keys : std::vector<Eigen::Index>{});
-    return;
-  }
-  if (extension == "fbx") {
-    writeRigFbx(out, rig, result.weights, take.frameRate(), fbxOptions(arguments));
+  return motion ? headYawPitchRoll(*motion, solver.retarget().rotation) : Eigen::MatrixXd();
+}
+
+void writeOutput(const std::filesystem::path& out, const SolveArguments& arguments, const BlendshapeRig& rig,
+                 const Take& take, const BlendshapeSolveResult& result, const std::optional<KeyReduction>& keys,
+                 const Eigen::MatrixXd& head)
+{
+  if (lowerExtension(out) != "pc2") {
+    WeightOutput options;
+    options.map = arguments.map;
+    options.liveLink = arguments.format == "livelink";
+    options.firstFrame = take.firstFrame();
+    options.frameRate = take.frameRate();
+    options.fbx = fbxOptions(arguments);
+    if (keys)
+      options.keys = keys->keys;
+    options.headRotation = head;
+    writeWeightOutput(out, rig, result.weights, options);
     return;
   }
   MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
@@ -136,6 +143,11 @@ void checkOutput(const SolveArguments& arguments)
     throw UsageError("--up and --units apply to .fbx output only");
   if (arguments.reduce && extension != "glb")
     throw UsageError("--reduce applies to .glb output (the FBX writer keys every frame for now)");
+  if (arguments.format == "livelink" && extension != "csv")
+    throw UsageError("--format livelink applies to .csv output only");
+  if (arguments.map && extension == "pc2")
+    throw UsageError("--map applies to weight curves and rigs (.csv, .glb, .fbx), not to a point cache");
+  checkMapArgument(arguments.map);
 }
 
 void printJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
@@ -207,13 +219,22 @@ int runSolve(const SolveArguments& arguments)
   const Stopwatch load;
   const BlendshapeRig rig = readInputRig(arguments.meshPath, arguments.shapesPath, arguments.only);
   const double loadSeconds = load.seconds();
+  if (lowerExtension(arguments.out) != "pc2") {
+    WeightOutput mapping;
+    mapping.map = arguments.map;
+    mapping.liveLink = arguments.format == "livelink";
+    checkWeightOutput(rig, mapping);
+  }
   Take take = readInputTake(arguments.takePath);
-  if (arguments.stabilize)
-    (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
+  std::optional<HeadMotion> motion;  // kept for the Live Link CSV's head rotation
+  if (arguments.stabilize) {
+    motion = estimateHeadMotion(take, markerIndices(take, splitList(*arguments.stabilize, "--stabilize")));
+    removeHeadMotion(take, *motion);
+  }
   const BlendshapeSolver solver(rig, readBinding(arguments.bindingPath, rig.neutral.vertexCount()), take, settings);
   const BlendshapeSolveResult result = solver.solve(take);
   const std::optional<KeyReduction> keys = reducedKeys(arguments, take, result);
-  writeOutput(arguments.out, arguments, rig, take, result, keys);
+  writeOutput(arguments.out, arguments, rig, take, result, keys, headRotation(motion, solver));
   std::optional<LeaveOutResult> quality;
   if (arguments.leaveOut.fraction > 0.0)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
@@ -276,7 +297,15 @@ Command addSolve(CLI::App& mocap)
            0.0, 1e3)
       ->capture_default_str();
   command->add_option("--only", a->only, "solve only these shapes")->type_name("NAME,...");
-  oneOf(command->add_option("--format", a->format, "CSV layout"), std::string("plain|livelink"))->capture_default_str();
+  oneOf(command->add_option("--format", a->format,
+                            "CSV layout: Frame,Time,<shape>,… or Live Link Face's (52 ARKit curves in the app's "
+                            "order, head and eye rotations, timecode)"),
+        std::string("plain|livelink"))
+      ->capture_default_str();
+  command->add_option("--map", a->map,
+                      "retarget the weights onto a target rig's channels: a shipped map (ict_to_arkit, arkit_to_ict, "
+                      "ict_identity) or a map file; Live Link output defaults to ict_to_arkit for ICT names")
+      ->type_name("NAME|MAP.json");
   addLeaveOutOptions(*command, a->leaveOut);
   command->add_option("-o", a->out,
                       "weight curves (.csv), the rig with animated weights (.glb, .fbx) or the solved mesh (.pc2, plus "
