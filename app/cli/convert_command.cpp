@@ -3,8 +3,14 @@
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
+#include "rig_input.h"
+#include "weight_output.h"
 
+#include "mocap/base/file_io.h"
 #include "mocap/io/fbx_writer.h"
+#include "mocap/io/live_link_face_csv.h"
+#include "mocap/io/live_link_face_map.h"
+#include "mocap/io/shipped_retarget_maps.h"
 #include "mocap/io/take_io.h"
 #include "mocap/math/key_reduction.h"
 
@@ -20,7 +26,7 @@ namespace {
 struct ConvertArguments
 {
   std::string input, output;
-  std::optional<std::string> units, up;
+  std::optional<std::string> units, up, rig, shapes, map;
   std::optional<double> reduce;  // FBX: key tolerance in mm
 };
 
@@ -39,8 +45,50 @@ void writeFbx(const ConvertArguments& arguments, const Take& take)
               << counted.maxError * millimetresPer(take.units()) << " mm (tolerance " << *arguments.reduce << " mm)\n";
 }
 
+/// A Live Link Face recording (IN.csv) as weight curves on --rig: its 52 curves through --map (by
+/// default rigMapFromLiveLinkFace) onto the rig's shapes, one row per frame at the recording's rate.
+int convertRecording(const ConvertArguments& arguments)
+{
+  const std::string extension = lowerExtension(arguments.output);
+  if (extension != "glb" && extension != "fbx")
+    throw UsageError("a Live Link Face recording converts to the rig with animated weights (.glb, .fbx), not '" +
+                     arguments.output + "'");
+  if (arguments.units || arguments.reduce)
+    throw UsageError("--units and --reduce (mm) apply to a take's markers; a recording holds weights");
+  if (arguments.up && extension != "fbx")
+    throw UsageError("--up applies to .fbx output only");
+  std::optional<RetargetMap> map;
+  if (arguments.map)
+    map = readRetargetMapByNameOrPath(*arguments.map);
+  const BlendshapeRig rig = readInputRig(*arguments.rig, arguments.shapes.value_or(""), std::nullopt);
+  const LiveLinkFaceRecording recording = readLiveLinkFaceCsv(arguments.input);
+  const double rate = liveLinkFaceRate(recording);
+  if (!(rate > 0.0))
+    throw UsageError(arguments.input + ": a recording needs two rows or more with increasing timecodes");
+  if (!map)
+    map = rigMapFromLiveLinkFace(rig.shapeNames());
+  checkLiveLinkFaceSources(*map);
+  const MappedWeights mapped = applyRetargetMap(*map, liveLinkFaceShapeNames(), recording.weights);
+  WeightOutput options;
+  options.frameRate = rate;
+  if (arguments.up)
+    options.fbx.up = parseFbxUpAxis(*arguments.up).value();
+  options.fbx.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
+  writeWeightOutput(arguments.output, rig, mappedWeightsOnRig(*map, mapped, rig.shapeNames()), options);
+  std::cout << "wrote " << recording.timecodes.size() << " frames at " << rate << " Hz from "
+            << recording.timecodes.front() << " onto " << rig.shapeCount() << " shapes: " << arguments.output << '\n';
+  return kExitOk;
+}
+
 int runConvert(const ConvertArguments& arguments)
 {
+  if (lowerExtension(arguments.input) == "csv") {
+    if (!arguments.rig)
+      throw UsageError("a .csv IN is read as a Live Link Face recording: give the rig it animates with --rig RIG");
+    return convertRecording(arguments);
+  }
+  if (arguments.rig || arguments.shapes || arguments.map)
+    throw UsageError("--rig, --shapes and --map apply to a Live Link Face recording (IN.csv)");
   const std::string& input = arguments.input;
   const std::string& output = arguments.output;
   const TakeFormat format = formatFromPath(output);  // reject an unknown output type before the read
@@ -67,7 +115,8 @@ int runConvert(const ConvertArguments& arguments)
 Command addConvert(CLI::App& mocap)
 {
   CLI::App* command =
-      mocap.add_subcommand("convert", "convert between .c3d .trc (read/write) and .csv .bvh .fbx (write)");
+      mocap.add_subcommand("convert", "convert between .c3d .trc (read/write) and .csv .bvh .fbx (write); a Live Link "
+                                      "Face recording (.csv) to a rig's animated weights (.glb, .fbx)");
   const auto arguments = std::make_shared<ConvertArguments>();
   command->add_option("IN", arguments->input, "the take to read")->required();
   command->add_option("OUT", arguments->output, "the file to write; its extension names the format")->required();
@@ -86,6 +135,14 @@ Command addConvert(CLI::App& mocap)
                                "many mm of every frame")
                ->type_name("MM"),
            0.0, 1000.0);
+  command->add_option("--rig", arguments->rig,
+                      "IN.csv: the rig the recording animates, a glTF rig or an OBJ/PLY neutral with --shapes")
+      ->type_name("RIG.glb|NEUTRAL.obj");
+  command->add_option("--shapes", arguments->shapes, "IN.csv: folder with one OBJ per shape of --rig")->type_name("DIR");
+  command->add_option("--map", arguments->map,
+                      "IN.csv: the recording's curves onto the rig's shapes: a shipped map (arkit_to_ict, …) or a "
+                      "map file (default: by name, arkit_to_ict for ICT names)")
+      ->type_name("NAME|MAP.json");
   return {command, [arguments] { return runConvert(*arguments); }};
 }
 

@@ -7,17 +7,17 @@
 #include "commands.h"
 #include "leave_out_cli.h"
 #include "rig_input.h"
+#include "weight_output.h"
 
 #include "mocap/base/stopwatch.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
+#include "mocap/cleaning/head_angles.h"
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
 #include "mocap/io/fbx_writer.h"
-#include "mocap/io/gltf_writer.h"
 #include "mocap/io/mesh_sequence_writer.h"
-#include "mocap/io/weights_csv_writer.h"
 #include "mocap/math/key_reduction.h"
 
 #include <algorithm>
@@ -38,7 +38,7 @@ struct SolveArguments
   BlendshapeSolveOptions settings;
   std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
   std::string format = "plain";
-  std::optional<std::string> stabilize, only, up, units;
+  std::optional<std::string> stabilize, only, up, units, map;
   std::optional<double> reduce;  // glTF: key tolerance in weight units
   LeaveOutOptions leaveOut;
   bool json = false;
@@ -81,40 +81,31 @@ FbxRigOptions fbxOptions(const SolveArguments& arguments)
   return options;
 }
 
+/// The head's yaw, pitch and roll per frame in the rig's axes for the Live Link CSV, from the
+/// head motion --stabilize removed; empty (zeros in the file) without it.
+Eigen::MatrixXd headRotation(const std::optional<HeadMotion>& motion, const BlendshapeSolver& solver)
+{
+  return motion ? headYawPitchRoll(*motion, solver.retarget().rotation) : Eigen::MatrixXd();
+}
+
 /// Weight curves for .csv, the rig with its animated weights for .glb and .fbx, else (checkOutput
 /// allowed only .pc2) the solved mesh as a point cache. With --reduce, returns the keys kept: for
-/// .glb the key frames every shape shares (glTF's weights sampler has one time list), for .fbx the
-/// keys of each shape's DeformPercent curve on its own.
+/// .glb the key frames every curve shares (glTF's weights sampler has one time list), for .fbx the
+/// keys of each DeformPercent curve on its own.
 std::optional<KeyCount> writeOutput(const std::filesystem::path& out, const SolveArguments& arguments,
-                                    const BlendshapeRig& rig, const Take& take, const BlendshapeSolveResult& result)
+                                    const BlendshapeRig& rig, const Take& take, const BlendshapeSolveResult& result,
+                                    const Eigen::MatrixXd& head)
 {
-  const std::string extension = lowerExtension(out);
-  const bool reduce = arguments.reduce && result.weights.rows() > 0;
-  if (extension == "csv") {
-    writeWeightsCsv(out, rig.shapeNames(), result.weights, take.firstFrame(), take.frameRate(),
-                    arguments.format == "livelink" ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
-    return std::nullopt;
-  }
-  if (extension == "glb") {
-    if (!reduce) {
-      writeRigGlb(out, rig, result.weights, take.frameRate(), {});
-      return std::nullopt;
-    }
-    const Eigen::Index frames = result.weights.rows();
-    const KeyReduction shared = reduceKeys(
-        Eigen::VectorXd::LinSpaced(frames, 0.0, static_cast<double>(frames - 1)), result.weights, *arguments.reduce);
-    writeRigGlb(out, rig, result.weights, take.frameRate(), shared.keys);
-    KeyCount count;
-    count.add(frames, static_cast<Eigen::Index>(shared.keys.size()), shared.maxError);
-    return count;
-  }
-  if (extension == "fbx") {
-    KeyCount count;
-    FbxRigOptions options = fbxOptions(arguments);
-    if (reduce)
-      options.keys = {arguments.reduce, &count};
-    writeRigFbx(out, rig, result.weights, take.frameRate(), options);
-    return reduce ? std::optional<KeyCount>(count) : std::nullopt;
+  if (lowerExtension(out) != "pc2") {
+    WeightOutput options;
+    options.map = arguments.map;
+    options.liveLink = arguments.format == "livelink";
+    options.firstFrame = take.firstFrame();
+    options.frameRate = take.frameRate();
+    options.fbx = fbxOptions(arguments);
+    options.reduce = arguments.reduce;
+    options.headRotation = head;
+    return writeWeightOutput(out, rig, result.weights, options);
   }
   MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
                           std::filesystem::path(arguments.meshPath).stem().string(),
@@ -140,6 +131,11 @@ void checkOutput(const SolveArguments& arguments)
     throw UsageError("--up and --units apply to .fbx output only");
   if (arguments.reduce && extension != "glb" && extension != "fbx")
     throw UsageError("--reduce applies to .glb and .fbx output (curves with keys)");
+  if (arguments.format == "livelink" && extension != "csv")
+    throw UsageError("--format livelink applies to .csv output only");
+  if (arguments.map && extension == "pc2")
+    throw UsageError("--map applies to weight curves and rigs (.csv, .glb, .fbx), not to a point cache");
+  checkMapArgument(arguments.map);
 }
 
 void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
@@ -212,12 +208,22 @@ int runSolve(const SolveArguments& arguments)
   const Stopwatch load;
   const BlendshapeRig rig = readInputRig(arguments.meshPath, arguments.shapesPath, arguments.only);
   const double loadSeconds = load.seconds();
+  if (lowerExtension(arguments.out) != "pc2") {
+    WeightOutput mapping;
+    mapping.map = arguments.map;
+    mapping.liveLink = arguments.format == "livelink";
+    checkWeightOutput(rig, mapping);
+  }
   Take take = readInputTake(arguments.takePath);
-  if (arguments.stabilize)
-    (void)stabilizeTake(take, splitList(*arguments.stabilize, "--stabilize"));
+  std::optional<HeadMotion> motion;  // kept for the Live Link CSV's head rotation
+  if (arguments.stabilize) {
+    motion = estimateHeadMotion(take, markerIndices(take, splitList(*arguments.stabilize, "--stabilize")));
+    removeHeadMotion(take, *motion);
+  }
   const BlendshapeSolver solver(rig, readBinding(arguments.bindingPath, rig.neutral.vertexCount()), take, settings);
   const BlendshapeSolveResult result = solver.solve(take);
-  const std::optional<KeyCount> keys = writeOutput(arguments.out, arguments, rig, take, result);
+  const std::optional<KeyCount> keys =
+      writeOutput(arguments.out, arguments, rig, take, result, headRotation(motion, solver));
   std::optional<LeaveOutResult> quality;
   if (arguments.leaveOut.fraction > 0.0)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
@@ -280,7 +286,15 @@ Command addSolve(CLI::App& mocap)
            0.0, 1e3)
       ->capture_default_str();
   command->add_option("--only", a->only, "solve only these shapes")->type_name("NAME,...");
-  oneOf(command->add_option("--format", a->format, "CSV layout"), std::string("plain|livelink"))->capture_default_str();
+  oneOf(command->add_option("--format", a->format,
+                            "CSV layout: Frame,Time,<shape>,… or Live Link Face's (52 ARKit curves in the app's "
+                            "order, head and eye rotations, timecode)"),
+        std::string("plain|livelink"))
+      ->capture_default_str();
+  command->add_option("--map", a->map,
+                      "retarget the weights onto a target rig's channels: a shipped map (ict_to_arkit, arkit_to_ict, "
+                      "ict_identity) or a map file; Live Link output defaults to ict_to_arkit for ICT names")
+      ->type_name("NAME|MAP.json");
   addLeaveOutOptions(*command, a->leaveOut);
   command->add_option("-o", a->out,
                       "weight curves (.csv), the rig with animated weights (.glb, .fbx) or the solved mesh (.pc2, plus "

@@ -221,14 +221,48 @@ TEST(SolveCli, WritesWeightCurvesInBothLayoutsAndTheIssueJsonKeys)
       }
   }
 
+  // Live Link Face's own layout: the header of a real recording (52 ARKit curves in the app's
+  // order, then head and eyes), 61 values a row, timecodes at the app's 60 frames a second.
   const std::string live = dir.file("live.csv").string();
-  const Outcome liveRun = mocap(solveArguments(dir) + " --method bvls --format livelink --leave-out 0 -o '" + live + "'", dir);
+  const Outcome liveRun = mocap(solveArguments(dir) + " --format livelink --leave-out 0 -o '" + live + "'", dir);
   ASSERT_EQ(liveRun.exitCode, 0) << liveRun.err;
   const std::vector<std::string> liveLines = csvLines(readFileBytes(live));
   ASSERT_EQ(liveLines.size(), 3001u);
-  EXPECT_EQ(liveLines[0], "Timecode,BlendShapeCount,browInnerUp,jawOpen,mouthSmile_L");
-  EXPECT_EQ(liveLines[1].substr(0, 18), "00:00:00:00.000,3,");
-  EXPECT_EQ(liveLines[2].substr(0, 18), "00:00:00:01.000,3,");
+  const std::string recording = readFileBytes(test::dataFile("livelink_face/alex_rom_4_first200.csv"));
+  EXPECT_EQ(liveLines[0], recording.substr(0, recording.find('\n')));
+  EXPECT_EQ(liveLines[1].substr(0, 19), "00:00:00:00.000,61,");
+  EXPECT_EQ(liveLines[2].substr(0, 19), "00:00:00:00.600,61,") << "the take's 100 Hz in the app's 60";
+  EXPECT_EQ(liveLines[101].substr(0, 19), "00:00:01:00.000,61,");
+  // Each of the rig's shapes in its curve (Apple's names: browInnerUp is BrowInnerUp), the head's
+  // turn from the stabilization's markers, the eyes at rest.
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> fields;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');)
+      fields.push_back(cell);
+    return fields;
+  };
+  const std::vector<std::string> header = cells(liveLines[0]);
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  double largestDifference = 0.0, largestHeadTurn = 0.0;
+  for (std::size_t i = 1; i < liveLines.size(); ++i) {
+    const std::vector<std::string> row = cells(liveLines[i]), plainRow = cells(plain[i]);
+    ASSERT_EQ(row.size(), 63u) << i;
+    const std::pair<const char*, std::size_t> pairs[] = {{"BrowInnerUp", 2}, {"JawOpen", 3}, {"MouthSmileLeft", 4}};
+    for (const auto& [name, plainColumn] : pairs)
+      largestDifference = std::max(largestDifference, std::abs(std::stod(row[column(name)]) - std::stod(plainRow[plainColumn])));
+    EXPECT_EQ(std::stod(row[column("MouthSmileRight")]), 0.0);
+    for (const char* eye : {"LeftEyeYaw", "RightEyePitch", "RightEyeRoll"})
+      EXPECT_EQ(std::stod(row[column(eye)]), 0.0);
+    for (const char* head : {"HeadYaw", "HeadPitch", "HeadRoll"})
+      largestHeadTurn = std::max(largestHeadTurn, std::abs(std::stod(row[column(head)])));
+  }
+  EXPECT_LT(largestDifference, 1e-9) << "the values printed with 10 decimals";
+  EXPECT_GT(largestHeadTurn, 0.01) << "the singer's head turns by more than half a degree";
+  EXPECT_LT(largestHeadTurn, 1.0) << "and by less than a radian";
+  std::cout << "[ head ] largest head angle in the sample: " << largestHeadTurn << " rad\n";
 }
 
 TEST(SolveCli, WritesTheSolvedMeshAsAPointCache)
@@ -599,6 +633,65 @@ TEST(SolveCli, WritesTheRigWithItsAnimatedWeightsAsFbx)
   bad = mocap(solveArguments(dir) + " --leave-out 0 -o '" + fbx + "/x.fbx'", dir);
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.err.find("x.fbx"), std::string::npos) << bad.err;
+}
+
+TEST(SolveCli, MapsTheWeightsByAShippedNameOrAFileForEveryWriter)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  const std::string quick = solveArguments(dir) + " --method ridge --leave-out 0";
+  const std::string plain = dir.file("plain.csv").string(), mapped = dir.file("mapped.csv").string();
+  writeFileAtomically(dir.file("map.json"), R"({"format": "mocap retarget map", "version": 1,
+  "channels": [
+    {"name": "Smile", "sources": [{"shape": "mouthSmile_L", "gain": 2.0}], "max": 1.0},
+    {"name": "Jaw", "sources": [{"shape": "jawOpen"}]}
+  ]}
+)");
+  const std::string map = " --map '" + dir.file("map.json").string() + "'";
+  ASSERT_EQ(mocap(quick + " -o '" + plain + "'", dir).exitCode, 0);
+  const Outcome run = mocap(quick + map + " -o '" + mapped + "'", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  EXPECT_EQ(csvLines(readFileBytes(mapped)).at(0), "Frame,Time,Smile,Jaw");
+  const std::vector<double> before = csvWeights(readFileBytes(plain)), after = csvWeights(readFileBytes(mapped));
+  ASSERT_EQ(after.size(), 3000u * 2u);
+  double largest = 0.0, smile = 0.0;
+  for (std::size_t f = 0; f < 3000; ++f) {
+    largest = std::max(largest, std::abs(after[2 * f] - std::min(1.0, 2.0 * before[3 * f + 2])));
+    largest = std::max(largest, std::abs(after[2 * f + 1] - before[3 * f + 1]));
+    smile = std::max(smile, after[2 * f]);
+  }
+  EXPECT_LT(largest, 1e-12);
+  EXPECT_GT(smile, 0.1);
+  // The rig files carry the map's channels as their shapes.
+  const std::string glb = dir.file("mapped.glb").string(), fbx = dir.file("mapped.fbx").string();
+  ASSERT_EQ(mocap(quick + map + " -o '" + glb + "'", dir).exitCode, 0);
+  EXPECT_EQ(readGltfRig(glb).shapeNames(), (std::vector<std::string>{"Smile", "Jaw"}));
+  ASSERT_EQ(mocap(quick + map + " -o '" + fbx + "'", dir).exitCode, 0);
+  std::vector<std::string> channels;
+  const std::vector<test::FbxTestNode> top = test::readFbxForTest(readFileBytes(fbx));
+  for (const test::FbxTestNode& object : test::fbxNode(top, "Objects").children)
+    if (object.properties.at(2).text == "BlendShapeChannel")
+      channels.push_back(object.properties.at(1).text.substr(0, object.properties.at(1).text.find('\0')));
+  EXPECT_EQ(channels, (std::vector<std::string>{"Smile", "Jaw"}));
+
+  // Errors name the map's line and write nothing: a channel Live Link Face does not have, a shipped
+  // map taking shapes this rig lacks, a map that is not shipped, a map for a point cache.
+  const std::string live = dir.file("live.csv").string();
+  Outcome bad = mocap(quick + map + " --format livelink -o '" + live + "'", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("channel 'Smile' (line 3) is not one of Live Link Face's 52 curves"), std::string::npos) << bad.err;
+  bad = mocap(quick + " --map ict_to_arkit -o '" + live + "'", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("channel 'EyeBlinkLeft' (line 5) takes 'eyeBlink_L', a shape the rig does not have"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(live));
+  bad = mocap(quick + " --map ict_to_unreal -o '" + live + "'", dir);
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("neither a shipped map (ict_to_arkit, arkit_to_ict, ict_identity)"), std::string::npos) << bad.err;
+  EXPECT_EQ(mocap(quick + map + " -o '" + dir.file("x.pc2").string() + "'", dir).exitCode, 2);
+  EXPECT_EQ(mocap(quick + " --format livelink -o '" + glb + "'", dir).exitCode, 2) << "--format is the CSV's";
+  EXPECT_FALSE(std::filesystem::exists(live));
 }
 
 } // namespace

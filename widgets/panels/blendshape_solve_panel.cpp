@@ -12,7 +12,10 @@
 #include "views/blendshape_scene.h"
 #include "views/status_timeout.h"
 
+#include "mocap/cleaning/head_angles.h"
 #include "mocap/io/gltf_writer.h"
+#include "mocap/io/live_link_face_csv.h"
+#include "mocap/io/live_link_face_map.h"
 #include "mocap/io/rig_io.h"
 #include "mocap/io/weights_csv_writer.h"
 
@@ -544,14 +547,35 @@ void BlendshapeSolvePanel::showEditResult(const QString& why)
   emit message(why, kStatusMessageMs);
 }
 
+Eigen::MatrixXd BlendshapeSolvePanel::headRotation() const
+{
+  const std::vector<std::string>& labels = m_faceMesh.stabilization();
+  if (labels.empty())
+    return {};
+  const std::shared_ptr<const HeadMotion> motion = m_document.headMotion(markerIndices(m_document.take(), labels));
+  const std::optional<Eigen::Affine3d> meshToLab = motion ? m_faceMesh.meshToLab(motion->referenceFrame) : std::nullopt;
+  if (!meshToLab)
+    return {};
+  // The mesh's axes in the lab at the reference frame, where the head has not turned yet.
+  return headYawPitchRoll(*motion, meshToLab->rotation().transpose());
+}
+
 QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
 {
   if (!m_model.hasResult())
     return tr("Solve the take first.");
   try {
     const Take& take = m_document.take();
-    writeWeightsCsv(path.toStdString(), m_model.rig()->shapeNames(), m_model.weights(), take.firstFrame(),
-                    take.frameRate(), liveLink ? WeightsCsvLayout::LiveLink : WeightsCsvLayout::Plain);
+    const std::vector<std::string> names = m_model.rig()->shapeNames();
+    if (liveLink) {
+      // Live Link Face's own layout: the rig's shapes onto its 52 ARKit curves (ICT FaceKit names by
+      // the shipped map), the head's turn when the take is stabilized, timecode at the take's rate.
+      const MappedWeights mapped = applyRetargetMap(liveLinkFaceMapForRig(names), names, m_model.weights());
+      writeLiveLinkFaceCsv(path.toStdString(),
+                           liveLinkFaceRecording(mapped.names, mapped.weights, take.frameRate(), headRotation()));
+    } else {
+      writeWeightsCsv(path.toStdString(), names, m_model.weights(), take.firstFrame(), take.frameRate());
+    }
   } catch (const std::exception& e) {
     showStatus(tr("Cannot write the weights: %1").arg(QString::fromStdString(e.what())), true);
     return m_status->text();

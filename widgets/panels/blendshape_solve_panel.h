@@ -83,7 +83,8 @@ public:
   [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
 
   [[nodiscard]] BlendshapeSolveOptions optionsFromUi() const;
-  /// Each returns "" or the error shown.
+  /// Each returns "" or the error shown. exportCsv writes Frame,Time,<shape>,…, or with `liveLink`
+  /// Live Link Face's own layout (live_link_face_csv.h, through liveLinkFaceMapForRig).
   QString exportCsv(const QString& path, bool liveLink);
   QString exportGlb(const QString& path);
 
@@ -120,6 +121,9 @@ private:
   void loadGltfDialog();
   void loadObjDialog();
   void exportCsvDialog();
+  /// The head's yaw, pitch and roll per frame in the mesh's axes when the take is stabilized (the
+  /// Live Link CSV's head columns), else empty (zeros).
+  [[nodiscard]] Eigen::MatrixXd headRotation() const;
   void exportGlbDialog();
 
   TakeDocument& m_document;

@@ -87,7 +87,7 @@ void addTimeProperty(FbxNode& properties, std::string_view name, std::int64_t ti
 
 // Up, front and side axes with their signs, right-handed: Y-up faces +Z with +X to the side (as
 // Maya writes it), Z-up faces −Y with +X to the side (as Blender and 3ds Max do).
-FbxNode globalSettings(const FbxSceneSettings& settings, std::int64_t stopTicks)
+FbxNode globalSettings(const FbxSceneSettings& settings, std::int64_t startTicks, std::int64_t stopTicks)
 {
   FbxNode global("GlobalSettings");
   global.child("Version").addInt32(1000);
@@ -107,7 +107,7 @@ FbxNode globalSettings(const FbxSceneSettings& settings, std::int64_t stopTicks)
   addFbxProperty(p, "TimeMode", "enum", "", "").addInt32(timeMode(settings.frameRate));
   addFbxProperty(p, "TimeProtocol", "enum", "", "").addInt32(2);
   addFbxProperty(p, "SnapOnFrameMode", "enum", "", "").addInt32(0);
-  addTimeProperty(p, "TimeSpanStart", 0);
+  addTimeProperty(p, "TimeSpanStart", startTicks);
   addTimeProperty(p, "TimeSpanStop", stopTicks);
   addFbxProperty(p, "CustomFrameRate", "double", "Number", "").addDouble(settings.frameRate);
   return global;
@@ -140,15 +140,15 @@ FbxNode definitions(const std::map<std::string, int, std::less<>>& counts)
   return defs;
 }
 
-FbxNode takes(std::int64_t stopTicks)
+FbxNode takes(std::int64_t startTicks, std::int64_t stopTicks)
 {
   FbxNode all("Takes");
   all.child("Current").addString(kTakeName);
   FbxNode& take = all.child("Take");
   take.addString(kTakeName);
   take.child("FileName").addString("Take_001.tak");
-  take.child("LocalTime").addInt64(0).addInt64(stopTicks);
-  take.child("ReferenceTime").addInt64(0).addInt64(stopTicks);
+  take.child("LocalTime").addInt64(startTicks).addInt64(stopTicks);
+  take.child("ReferenceTime").addInt64(startTicks).addInt64(stopTicks);
   return all;
 }
 
@@ -191,16 +191,19 @@ FbxDocument::FbxDocument(const FbxSceneSettings& settings) : m_settings(settings
     throw InvalidArgument("FBX: the frame rate must be positive");
   if (settings.frameCount < 0)
     throw InvalidArgument("FBX: a negative frame count");
+  if (!(settings.startSeconds >= 0.0) || !(settings.startSeconds < 1e6))
+    throw InvalidArgument("FBX: the start time must be within 0 … 10⁶ s");
   const double ticksPerFrame = static_cast<double>(kFbxTicksPerSecond) / settings.frameRate;
+  m_startTicks = std::llround(settings.startSeconds * static_cast<double>(kFbxTicksPerSecond));
   m_keyTimes.reserve(static_cast<std::size_t>(settings.frameCount));
   for (Eigen::Index f = 0; f < settings.frameCount; ++f)
-    m_keyTimes.push_back(std::llround(static_cast<double>(f) * ticksPerFrame));
+    m_keyTimes.push_back(m_startTicks + std::llround(static_cast<double>(f) * ticksPerFrame));
 
   const Object stack = addObject("AnimationStack", kTakeName, "AnimStack", "");
   FbxNode& p = stack.node->child("Properties70");
-  const std::int64_t stop = m_keyTimes.empty() ? 0 : m_keyTimes.back();
+  const std::int64_t stop = m_keyTimes.empty() ? m_startTicks : m_keyTimes.back();
   for (const char* name : {"LocalStart", "ReferenceStart"})
-    addTimeProperty(p, name, 0);
+    addTimeProperty(p, name, m_startTicks);
   for (const char* name : {"LocalStop", "ReferenceStop"})
     addTimeProperty(p, name, stop);
   // A layer with a (here empty) property table: readers such as assimp need every object to have
@@ -288,7 +291,7 @@ void FbxDocument::animate(std::int64_t target, std::string_view property, std::s
 
 std::string FbxDocument::bytes() const
 {
-  const std::int64_t stop = m_keyTimes.empty() ? 0 : m_keyTimes.back();
+  const std::int64_t stop = m_keyTimes.empty() ? m_startTicks : m_keyTimes.back();
   const FbxNode header = headerExtension();
   FbxNode fileId("FileId");
   fileId.addRaw(std::string_view(reinterpret_cast<const char*>(kFileId), sizeof(kFileId)));
@@ -296,11 +299,11 @@ std::string FbxDocument::bytes() const
   creationTime.addString(kCreationTime);
   FbxNode creator("Creator");
   creator.addString(kCreator);
-  const FbxNode global = globalSettings(m_settings, stop);
+  const FbxNode global = globalSettings(m_settings, m_startTicks, stop);
   const FbxNode docs = documents();
   const FbxNode references("References");
   const FbxNode defs = definitions(m_counts);
-  const FbxNode takeList = takes(stop);
+  const FbxNode takeList = takes(m_startTicks, stop);
   const std::vector<const FbxNode*> top{&header, &fileId,      &creationTime, &creator,       &global,   &docs,
                                         &references, &defs, &m_objects,    &m_connections, &takeList};
   return fbxBinary(top);

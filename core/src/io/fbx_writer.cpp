@@ -254,7 +254,7 @@ std::string markersFbx(const Take& take, FbxUpAxis up, const FbxCurveKeys& keys)
   checkTolerance(keys);
   if (const std::optional<Take> markers = withoutModelOutputs(take, "an FBX file"))
     return markersFbx(*markers, up, keys);
-  FbxDocument fbx({up, take.units(), take.frameRate(), take.frameCount()});
+  FbxDocument fbx({up, take.units(), take.frameRate(), take.frameCount(), 0.0});
   const ModelObject root = addModel(fbx, "Markers", "Null");
   fbx.connect(root.id, 0);
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
@@ -273,7 +273,7 @@ std::string rigFbx(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
   checkRig(rig);
   checkWeights(rig, weights);
   checkTolerance(options.keys);
-  FbxDocument fbx({options.up, options.unit, frameRate, weights.rows()});
+  FbxDocument fbx({options.up, options.unit, frameRate, weights.rows(), options.startSeconds});
   const ModelObject mesh = addModel(fbx, "Face", "Mesh");
   const ModelObject bone = addModel(fbx, "root", "LimbNode");
   fbx.connect(mesh.id, 0);

@@ -11,28 +11,22 @@
 namespace mocap {
 
 std::string weightsCsvText(const std::vector<std::string>& names, const Eigen::Ref<const Eigen::MatrixXd>& weights,
-                           long long firstFrame, double frameRate, WeightsCsvLayout layout)
+                           long long firstFrame, double frameRate)
 {
   if (static_cast<Eigen::Index>(names.size()) != weights.cols())
     throw InvalidArgument("weights CSV: " + std::to_string(names.size()) + " names for " +
                           std::to_string(weights.cols()) + " columns");
   if (!(frameRate > 0.0) || !std::isfinite(frameRate))
     throw InvalidArgument("weights CSV: the frame rate must be positive");
-  std::string out = layout == WeightsCsvLayout::LiveLink ? "Timecode,BlendShapeCount" : "Frame,Time";
+  std::string out = "Frame,Time";
   for (const std::string& name : names) {
     out += ',';
     appendCsvField(out, name);
   }
   out += '\n';
   for (Eigen::Index f = 0; f < weights.rows(); ++f) {
-    const double seconds = static_cast<double>(f) / frameRate;
-    if (layout == WeightsCsvLayout::LiveLink) {
-      out += timecodeText(seconds, frameRate);
-      out += ',' + std::to_string(weights.cols());
-    } else {
-      out += std::to_string(firstFrame + f) + ',';
-      appendNumber(out, seconds);
-    }
+    out += std::to_string(firstFrame + f) + ',';
+    appendNumber(out, static_cast<double>(f) / frameRate);
     for (Eigen::Index s = 0; s < weights.cols(); ++s) {
       out += ',';
       appendNumber(out, weights(f, s));
@@ -43,10 +37,9 @@ std::string weightsCsvText(const std::vector<std::string>& names, const Eigen::R
 }
 
 void writeWeightsCsv(const std::filesystem::path& path, const std::vector<std::string>& names,
-                     const Eigen::Ref<const Eigen::MatrixXd>& weights, long long firstFrame, double frameRate,
-                     WeightsCsvLayout layout)
+                     const Eigen::Ref<const Eigen::MatrixXd>& weights, long long firstFrame, double frameRate)
 {
-  writeFileAtomically(path, weightsCsvText(names, weights, firstFrame, frameRate, layout));
+  writeFileAtomically(path, weightsCsvText(names, weights, firstFrame, frameRate));
 }
 
 } // namespace mocap

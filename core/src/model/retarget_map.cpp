@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -16,6 +17,17 @@ std::string describeChannel(const RetargetChannel& channel)
     text += " (line " + std::to_string(channel.line) + ")";
   return text;
 }
+
+namespace {
+
+/// "retarget map: channel 'X' (line N) takes 'S', a shape the rig does not have".
+InvalidArgument missingSource(const RetargetChannel& channel, const RetargetSource& source)
+{
+  return InvalidArgument("retarget map: " + describeChannel(channel) + " takes '" + source.shape +
+                         "', a shape the rig does not have");
+}
+
+} // namespace
 
 void checkRetargetMap(const RetargetMap& map)
 {
@@ -60,14 +72,60 @@ MappedWeights applyRetargetMap(const RetargetMap& map, const std::vector<std::st
     for (const RetargetSource& source : channel.sources) {
       const auto found = column.find(source.shape);
       if (found == column.end())
-        throw InvalidArgument("retarget map: " + describeChannel(channel) + " takes '" + source.shape +
-                              "', a shape the rig does not have");
+        throw missingSource(channel, source);
       out += source.gain * weights.col(found->second);
     }
     out = out.cwiseMax(channel.min).cwiseMin(channel.max);
     mapped.names.push_back(channel.name);
   }
   return mapped;
+}
+
+Eigen::MatrixXd mappedWeightsOnRig(const RetargetMap& map, const MappedWeights& mapped,
+                                   const std::vector<std::string>& rigShapes)
+{
+  Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(mapped.weights.rows(), static_cast<Eigen::Index>(rigShapes.size()));
+  for (std::size_t c = 0; c < mapped.names.size(); ++c) {
+    const auto found = std::find(rigShapes.begin(), rigShapes.end(), mapped.names[c]);
+    if (found == rigShapes.end()) {
+      const RetargetChannel* channel = c < map.channels.size() ? &map.channels[c] : nullptr;
+      throw InvalidArgument("retarget map: " +
+                            (channel ? describeChannel(*channel) : "channel '" + mapped.names[c] + "'") +
+                            " is not a shape of the rig");
+    }
+    weights.col(found - rigShapes.begin()) = mapped.weights.col(static_cast<Eigen::Index>(c));
+  }
+  return weights;
+}
+
+BlendshapeRig retargetedRig(const RetargetMap& map, const BlendshapeRig& rig)
+{
+  checkRetargetMap(map);
+  BlendshapeRig out;
+  out.neutral = rig.neutral;
+  for (const RetargetChannel& channel : map.channels) {
+    std::map<Eigen::Index, Eigen::Vector3d> delta;  // ascending vertices, as SparseShape keeps them
+    for (const RetargetSource& source : channel.sources) {
+      const std::optional<Eigen::Index> index = rig.shapeIndex(source.shape);
+      if (!index)
+        throw missingSource(channel, source);
+      const SparseShape& shape = rig.shapes[static_cast<std::size_t>(*index)];
+      for (Eigen::Index i = 0; i < shape.size(); ++i) {
+        auto [entry, added] = delta.try_emplace(shape.vertices[static_cast<std::size_t>(i)], Eigen::Vector3d::Zero());
+        (void)added;
+        entry->second += source.gain * shape.deltas.row(i).transpose();
+      }
+    }
+    SparseShape shape;
+    shape.name = channel.name;
+    shape.deltas.resize(static_cast<Eigen::Index>(delta.size()), 3);
+    for (const auto& [vertex, d] : delta) {
+      shape.deltas.row(shape.size()) = d.transpose();
+      shape.vertices.push_back(vertex);
+    }
+    out.shapes.push_back(std::move(shape));
+  }
+  return out;
 }
 
 RetargetMap identityRetargetMap(const std::vector<std::string>& shapeNames)

@@ -27,14 +27,15 @@ enum class FbxUpAxis
 [[nodiscard]] std::string_view fbxUpAxisName(FbxUpAxis axis);
 [[nodiscard]] std::optional<FbxUpAxis> parseFbxUpAxis(std::string_view text);
 
-/// What GlobalSettings declares and the animation spans: frames 0…frameCount−1 at frame i ·
-/// ticks-per-second / frameRate (the take's first frame is time 0).
+/// What GlobalSettings declares and the animation spans: frames 0…frameCount−1 at startSeconds +
+/// i / frameRate (the take's first frame is time 0; a recording keeps its timecode's start).
 struct FbxSceneSettings
 {
   FbxUpAxis up = FbxUpAxis::Y;
   LengthUnit unit = LengthUnit::Centimetre;
   double frameRate = 0.0;
   Eigen::Index frameCount = 0;
+  double startSeconds = 0.0;
 };
 
 /// How an animation curve moves between keys.
@@ -85,6 +86,7 @@ public:
 private:
   FbxSceneSettings m_settings;
   std::vector<std::int64_t> m_keyTimes;
+  std::int64_t m_startTicks = 0;  // the first key's time
   FbxNode m_objects{"Objects"};
   FbxNode m_connections{"Connections"};
   std::map<std::string, int, std::less<>> m_counts;

@@ -48,6 +48,7 @@ struct FbxRigOptions
   FbxUpAxis up = FbxUpAxis::Y;
   LengthUnit unit = LengthUnit::Centimetre;
   FbxCurveKeys keys;  ///< every frame, or reduced DeformPercent curves (tolerance in weight units)
+  double startSeconds = 0.0;  ///< the first frame's time (a Live Link recording's timecode), 0 for a solve
 };
 
 /// The rig as a binary FBX 7.4 skeletal mesh with morph curves, the layout Unreal, Blender, Maya
@@ -56,7 +57,8 @@ struct FbxRigOptions
 /// identity), a BlendShape deformer with one BlendShapeChannel and one Shape per rig shape, both
 /// named exactly as the shape, the Shape sparse as in the rig (Indexes and their deltas), and when
 /// `weights` has rows one DeformPercent curve per channel: weight × 100, one linear key per frame
-/// (frame i at i / frameRate seconds) or reduced as options.keys says. Throws InvalidArgument for an invalid rig (checkRig),
+/// (frame i at startSeconds + i / frameRate seconds) or reduced as options.keys says. Throws
+/// InvalidArgument for an invalid rig (checkRig),
 /// weights with another column count or not finite, or a non-positive rate.
 /// O(#vertices + #corners + Σ #moved + #frames · #shapes).
 [[nodiscard]] std::string rigFbx(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "mocap/model/blendshape_rig.h"
+
 #include <Eigen/Core>
 
 #include <limits>
@@ -55,6 +57,19 @@ void checkRetargetMap(const RetargetMap& map);
 /// Each shape to a channel of its own name with gain 1, no offset and no clamp: the template a
 /// user edits into their rig's map.
 [[nodiscard]] RetargetMap identityRetargetMap(const std::vector<std::string>& shapeNames);
+
+/// Mapped weights as a rig's columns (#frames × #rig shapes, in the rig's order): a channel must
+/// name one of the rig's shapes (else InvalidArgument naming the channel and its line); a shape no
+/// channel names stays 0. O(#frames · #shapes + #channels · #shapes).
+[[nodiscard]] Eigen::MatrixXd mappedWeightsOnRig(const RetargetMap& map, const MappedWeights& mapped,
+                                                 const std::vector<std::string>& rigShapes);
+
+/// The rig re-expressed under the map's channels, for files that carry geometry with the curves
+/// (glTF, FBX): one shape per channel, named as it, whose delta is Σ gain · the source's delta
+/// (a channel without sources moves nothing). With the mapped weights it poses as the rig does
+/// where no offset or clamp applies. Throws as applyRetargetMap for a source the rig lacks.
+/// O(Σ over channels of the sources' moved vertices · log).
+[[nodiscard]] BlendshapeRig retargetedRig(const RetargetMap& map, const BlendshapeRig& rig);
 
 /// "channel 'Name' (line 12)", or without the line when the channel was not read from a file.
 [[nodiscard]] std::string describeChannel(const RetargetChannel& channel);

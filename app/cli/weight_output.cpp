@@ -1,0 +1,102 @@
+#include "weight_output.h"
+
+#include "cli_error.h"
+
+#include "mocap/base/file_io.h"
+#include "mocap/io/gltf_writer.h"
+#include "mocap/io/live_link_face_csv.h"
+#include "mocap/io/live_link_face_map.h"
+#include "mocap/io/shipped_retarget_maps.h"
+#include "mocap/io/weights_csv_writer.h"
+
+namespace mocap::cli {
+
+namespace {
+
+/// The map onto Live Link Face's curves: --map's, else the default for the rig's names; checked.
+RetargetMap liveLinkMap(const BlendshapeRig& rig, const WeightOutput& options)
+{
+  RetargetMap map = options.map ? readRetargetMapByNameOrPath(*options.map) : liveLinkFaceMapForRig(rig.shapeNames());
+  checkLiveLinkFaceChannels(map);
+  return map;
+}
+
+void writeLiveLink(const std::filesystem::path& out, const BlendshapeRig& rig,
+                   const Eigen::Ref<const Eigen::MatrixXd>& weights, const WeightOutput& options)
+{
+  const RetargetMap map = liveLinkMap(rig, options);
+  const MappedWeights mapped = applyRetargetMap(map, rig.shapeNames(), weights);
+  writeLiveLinkFaceCsv(out, liveLinkFaceRecording(mapped.names, mapped.weights, options.frameRate,
+                                                  options.headRotation));
+}
+
+/// The key frames every curve of `weights` shares within `tolerance` (glTF's one weights sampler).
+KeyReduction sharedKeyFrames(const Eigen::Ref<const Eigen::MatrixXd>& weights, double tolerance)
+{
+  const Eigen::Index frames = weights.rows();
+  return reduceKeys(Eigen::VectorXd::LinSpaced(frames, 0.0, static_cast<double>(frames - 1)), weights, tolerance);
+}
+
+std::optional<KeyCount> writeMapped(const std::filesystem::path& out, const std::string& extension,
+                                    const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                    const WeightOutput& options)
+{
+  const bool reduce = options.reduce && weights.rows() > 0;
+  KeyCount count;
+  if (extension == "csv") {
+    writeWeightsCsv(out, rig.shapeNames(), weights, options.firstFrame, options.frameRate);
+    return std::nullopt;
+  }
+  if (extension == "glb") {
+    std::vector<Eigen::Index> keys;  // empty: every frame
+    if (reduce) {
+      KeyReduction shared = sharedKeyFrames(weights, *options.reduce);
+      count.add(weights.rows(), static_cast<Eigen::Index>(shared.keys.size()), shared.maxError);
+      keys = std::move(shared.keys);
+    }
+    writeRigGlb(out, rig, weights, options.frameRate, keys);
+  } else if (extension == "fbx") {
+    FbxRigOptions fbx = options.fbx;
+    if (reduce)
+      fbx.keys = {options.reduce, &count};
+    writeRigFbx(out, rig, weights, options.frameRate, fbx);
+  } else {
+    throw UsageError("weights are written to .csv, .glb or .fbx, not '" + out.string() + "'");
+  }
+  return reduce ? std::optional<KeyCount>(count) : std::nullopt;
+}
+
+} // namespace
+
+std::optional<KeyCount> writeWeightOutput(const std::filesystem::path& out, const BlendshapeRig& rig,
+                                          const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                          const WeightOutput& options)
+{
+  const std::string extension = lowerExtension(out);
+  if (extension == "csv" && options.liveLink) {
+    writeLiveLink(out, rig, weights, options);
+    return std::nullopt;
+  }
+  if (!options.map)
+    return writeMapped(out, extension, rig, weights, options);
+  const RetargetMap map = readRetargetMapByNameOrPath(*options.map);
+  const MappedWeights mapped = applyRetargetMap(map, rig.shapeNames(), weights);
+  return writeMapped(out, extension, retargetedRig(map, rig), mapped.weights, options);
+}
+
+void checkWeightOutput(const BlendshapeRig& rig, const WeightOutput& options)
+{
+  const Eigen::MatrixXd noFrames(0, rig.shapeCount());
+  if (options.liveLink)
+    (void)applyRetargetMap(liveLinkMap(rig, options), rig.shapeNames(), noFrames);
+  else if (options.map)
+    (void)applyRetargetMap(readRetargetMapByNameOrPath(*options.map), rig.shapeNames(), noFrames);
+}
+
+void checkMapArgument(const std::optional<std::string>& map)
+{
+  if (map)
+    (void)readRetargetMapByNameOrPath(*map);
+}
+
+} // namespace mocap::cli

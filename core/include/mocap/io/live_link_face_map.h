@@ -1,0 +1,34 @@
+#pragma once
+
+#include "mocap/model/retarget_map.h"
+
+#include <string>
+#include <vector>
+
+namespace mocap {
+
+/// The map a rig's weights take to Live Link Face's 52 curves when none is given. A rig already
+/// named as the app names its curves (JawOpen, MouthSmileLeft) maps by identity. Otherwise the
+/// shipped ict_to_arkit map fitted to the rig: a source the rig lacks counts 0 (the rig has no
+/// such shape to solve), and a curve left without a source takes the rig's shape named as the
+/// curve with a lowercase initial (Apple's own ARKit names: browInnerUp, cheekPuff, tongueOut,
+/// which ICT FaceKit splits or leaves out). Throws InvalidArgument naming the rig's shapes that no
+/// curve takes (a rig named otherwise needs a map of its own). O(#shapes + the map's size).
+[[nodiscard]] RetargetMap liveLinkFaceMapForRig(const std::vector<std::string>& rigShapes);
+
+/// The way back, a recording's curves onto a rig when no map is given: identity for a rig named as
+/// the app names its curves, else the shipped arkit_to_ict map's channels the rig has, and for a
+/// rig shape without one, the curve named as the shape with an uppercase initial (browInnerUp ←
+/// BrowInnerUp). Throws InvalidArgument naming the rig's shapes no curve feeds. O(#shapes + the
+/// map's size).
+[[nodiscard]] RetargetMap rigMapFromLiveLinkFace(const std::vector<std::string>& rigShapes);
+
+/// Throws InvalidArgument naming the first channel (and its map line) that is not one of Live Link
+/// Face's 52 curve names: a map written for its CSV must target those. O(#channels).
+void checkLiveLinkFaceChannels(const RetargetMap& map);
+
+/// Throws InvalidArgument naming the first channel (and its line) with a source that is not one of
+/// Live Link Face's 52 curves: a map reading a recording takes only those. O(Σ #sources).
+void checkLiveLinkFaceSources(const RetargetMap& map);
+
+} // namespace mocap
