@@ -214,7 +214,7 @@
 <context>
     <name>ReviewExport</name>
     <message>
-        <location filename="../widgets/dialogs/review_export.cpp" line="+141"/>
+        <location filename="../widgets/dialogs/review_export.cpp" line="+142"/>
         <source>No video at this frame</source>
         <translation>Kein Video bei diesem Frame</translation>
     </message>
@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+118"/>
+        <location filename="../app/studio/main_window.cpp" line="+123"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -347,7 +347,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+24"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
@@ -357,12 +357,12 @@
         <translation>Blendshape-Solve</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>Reference Video</source>
         <translation>Referenzvideo</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
@@ -377,7 +377,7 @@
         <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+28"/>
         <source>Rendering the review video…</source>
         <translation>Das Prüfvideo wird gerendert…</translation>
     </message>
@@ -999,7 +999,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-917"/>
+        <location line="-903"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -2880,12 +2880,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+89"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+92"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>Aufnahmedateien, die zusammen mit der geöffneten Aufnahme geplant werden (sie müssen deren Marker enthalten)</translation>
     </message>
@@ -3070,7 +3070,7 @@
         <translation>Die Beurteilung am Rig braucht ein Blendshape-Rig (Blendshape-Solve-Panel) und an seine Neutralform gebundene Marker (Face-Mesh-Panel); oder schalten Sie sie aus.</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
@@ -3088,7 +3088,7 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-279"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -3243,7 +3243,7 @@
         <translation>Abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
@@ -3258,24 +3258,24 @@
         <translation>Die Beurteilung am Rig wurde abgebrochen.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+14"/>
         <source>PFA %1 · greedy %2 · random %3</source>
         <translation>PFA %1 · Greedy %2 · Zufall %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4</source>
         <translation>Rig-Gewichts-MSE bei %1 Markern (%2 davon gebunden; alle %3 gebundenen Marker: 0): %4</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+10"/>
         <location line="+16"/>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>
         <translation>Es gibt kein Layout zum Exportieren: Führen Sie die Planung aus und wählen Sie eine Markeranzahl.</translation>
     </message>
@@ -3415,14 +3415,14 @@
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+150"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+135"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+193"/>
+        <location line="+241"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
@@ -3709,7 +3709,7 @@
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+61"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>Die Referenzvideos der Aufnahme: Das hier gewählte wird angezeigt</translation>
     </message>
@@ -3829,7 +3829,7 @@
         <translation>Den Versatz so setzen, dass beim Ereignis der erste Videoframe erscheint, oder der angehaltene</translation>
     </message>
     <message>
-        <location line="+431"/>
+        <location line="+281"/>
         <source>Locate %1</source>
         <translation>%1 suchen</translation>
     </message>
@@ -3838,7 +3838,7 @@
         <translation type="vanished">Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-315"/>
         <source>+1 frame</source>
         <translation>+1 Frame</translation>
     </message>
@@ -3847,14 +3847,11 @@
         <translation type="vanished">Das Video um eines seiner Frames später setzen (Alt+.)</translation>
     </message>
     <message>
-        <location line="+151"/>
-        <location line="+37"/>
-        <location line="+179"/>
         <source>Cannot show %1: %2</source>
-        <translation>%1 kann nicht gezeigt werden: %2</translation>
+        <translation type="vanished">%1 kann nicht gezeigt werden: %2</translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="+152"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>Halten Sie das Video zuerst an einem Moment an: Frame eingeben oder schrittweise ändern, dann die Aufnahme auf denselben Moment stellen</translation>
     </message>
@@ -3874,7 +3871,7 @@
         <translation>Videoframe %1 erscheint jetzt beim Ereignis „%2“ (Aufnahme-Frame %3; Versatz %4 s)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>%1 (missing)</source>
         <translation>%1 (fehlt)</translation>
     </message>
@@ -3910,17 +3907,15 @@
         <translation>Die Aufnahme hat keine Ereignisse</translation>
     </message>
     <message>
-        <location line="+18"/>
         <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
-        <translation>Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
+        <translation type="vanished">Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
     </message>
     <message>
-        <location line="+11"/>
         <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
-        <translation>%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
+        <translation type="vanished">%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+10"/>
         <source>%n of the take&apos;s reference videos cannot be found where the take remembers them. Pick one and press Locate… to find it; they stay remembered meanwhile.</source>
         <translation>
             <numerusform>%n Referenzvideo der Aufnahme ist nicht dort, wo die Aufnahme es erwartet. Wählen Sie es und drücken Sie „Suchen…“; es bleibt so lange gemerkt.</numerusform>
@@ -3928,20 +3923,44 @@
         </translation>
     </message>
     <message>
-        <location line="+57"/>
         <source>Cannot remember the videos beside the take: %1</source>
-        <translation>Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
+        <translation type="vanished">Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Add reference video</source>
         <translation>Referenzvideo hinzufügen</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceVideos</name>
+    <message>
+        <location filename="../widgets/document/reference_videos.cpp" line="+125"/>
+        <location line="+27"/>
+        <location line="+18"/>
+        <source>Cannot show %1: %2</source>
+        <translation>%1 kann nicht gezeigt werden: %2</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
+        <translation>%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
+        <translation>Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>Cannot remember the videos beside the take: %1</source>
+        <translation>Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
     </message>
 </context>
 <context>

@@ -29,7 +29,9 @@
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/reference_video_panel.h"
+#include "document/layout_plan_model.h"
 #include "document/reference_video.h"
+#include "document/reference_videos.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
@@ -221,7 +223,7 @@ void MainWindow::createDocks()
   QDockWidget* cleaningDock = addDock(tr("Cleaning"), QStringLiteral("cleaningDock"), m_cleaning, Qt::RightDockWidgetArea);
 
   // Marker layout planning (issue 7): its selected layout is highlighted in the 3D view.
-  m_layoutPlanning = new ui::LayoutPlanningPanel(*m_document, this);
+  m_layoutPlanning = new ui::LayoutPlanningPanel(*m_session, this);
   QDockWidget* layoutDock =
       addDock(tr("Layout planning"), QStringLiteral("layoutPlanningDock"), m_layoutPlanning, Qt::RightDockWidgetArea,
               DockContent::Fixed);  // scrolls its form itself, under a fixed Run row
@@ -237,39 +239,18 @@ void MainWindow::createDocks()
   cleaningDock->raise();
   // The highlight shows only while the dock is on screen: leaving the panel (another tab raised,
   // the dock closed) gives the 3D view its sample-state colours back, returning shows it again.
-  auto showLayout = [this, layoutDock](const std::vector<bool>& kept) {
-    if (!layoutDock->isVisible() || kept.empty()) {
-      m_view3d->clearLayoutHighlight();
-      return;
-    }
-    std::vector<bool> reference(kept.size(), false);
-    if (const ui::LayoutPlanResult* result = m_layoutPlanning->result())
-      for (const std::string& label : result->stabilizeLabels)
-        if (const auto m = m_document->take().markerIndex(label); m && static_cast<std::size_t>(*m) < kept.size())
-          reference[static_cast<std::size_t>(*m)] = true;
-    m_view3d->setLayoutHighlight(kept, std::move(reference));
+  auto showLayout = [this, layoutDock] {
+    ui::LayoutHighlight shown = layoutDock->isVisible() ? m_session->layoutPlan().highlight() : ui::LayoutHighlight{};
+    m_view3d->setLayoutHighlight(std::move(shown.kept), std::move(shown.reference));
   };
-  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, this, showLayout);
+  connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::changed, this, showLayout);
+  connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::highlightChanged, this, showLayout);
+  connect(layoutDock, &QDockWidget::visibilityChanged, this, showLayout);
   // Every panel shows the take's reference markers and sends the user to the one editor.
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, this,
           &MainWindow::editReferenceMarkers);
   connect(m_cleaning->step<ui::HeadStabilizationStep>(), &ui::HeadStabilizationStep::editReferenceMarkersRequested,
           this, &MainWindow::editReferenceMarkers);
-  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
-          &ui::MarkerView3d::clearLayoutHighlight);
-  connect(layoutDock, &QDockWidget::visibilityChanged, this, [this, showLayout](bool visible) {
-    std::vector<bool> kept;
-    if (visible) {
-      const Take& take = m_document->take();
-      const std::vector<std::string> labels = m_layoutPlanning->selectedLabels();
-      if (!labels.empty())
-        kept.assign(static_cast<std::size_t>(take.markerCount()), false);
-      for (const std::string& label : labels)
-        if (const auto m = take.markerIndex(label))
-          kept[static_cast<std::size_t>(*m)] = true;
-    }
-    showLayout(kept);
-  });
   m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
   m_faceMeshDock = addDock(tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
@@ -283,16 +264,15 @@ void MainWindow::createDocks()
   tabifyDockWidget(cleaningDock, m_blendshapeDock);
   m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
 
-  // Layout planning judges layouts on the session's rig through the binding on its neutral.
-  m_layoutPlanning->setRigSource([this] { return m_session->boundRig(); });
-
-  m_referenceVideo = new ui::ReferenceVideoPanel(*m_document, this);
+  m_referenceVideo = new ui::ReferenceVideoPanel(*m_session, this);
   QDockWidget* videoDock =
       addDock(tr("Reference Video"), QStringLiteral("referenceVideoDock"), m_referenceVideo, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, videoDock);
   videoDock->hide();  // View ▸ Reference Video shows it, and opening a take that remembers videos
-  connect(m_referenceVideo, &ui::ReferenceVideoPanel::videosRestored, this,
-          [this] { (void)showDock(QStringLiteral("referenceVideoDock")); });
+  connect(&m_session->referenceVideos(), &ui::ReferenceVideos::restored, this, [this](int count) {
+    if (count > 0)
+      (void)showDock(QStringLiteral("referenceVideoDock"));
+  });
 
   m_weights = new ui::WeightCurveView(*m_document, m_session->blendshapes(), this);
   m_weightsDock =
@@ -314,7 +294,7 @@ QString MainWindow::openReferenceVideo(const QString& path, std::optional<double
 {
   const QString error = m_referenceVideo->openVideo(path);
   if (error.isEmpty() && offset)
-    m_referenceVideo->video().setOffset(*offset);
+    m_session->referenceVideos().current()->setOffset(*offset);
   (void)showDock(QStringLiteral("referenceVideoDock"));
   return error;
 }
@@ -386,8 +366,9 @@ void MainWindow::exportReviewVideo()
 {
   if (!m_document->hasTake())
     return;
-  const ui::ReferenceVideo& video = m_referenceVideo->video();
-  ui::ReviewExportDialog dialog(*m_document, video.isOpen() ? video.path() : QString(), video.offset(), this);
+  const ui::ReferenceVideo* video = m_session->referenceVideos().current();
+  const bool shown = video && video->isOpen();
+  ui::ReviewExportDialog dialog(*m_document, shown ? video->path() : QString(), video ? video->offset() : 0.0, this);
   if (dialog.exec() != QDialog::Accepted)
     return;
   const ui::ReviewRequest request = dialog.request();
