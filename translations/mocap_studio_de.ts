@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+123"/>
+        <location filename="../app/studio/main_window.cpp" line="+120"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -367,7 +367,7 @@
         <translation>Gewichte</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+61"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -574,13 +574,13 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+97"/>
+        <location line="+90"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-97"/>
-        <location line="+97"/>
+        <location line="-90"/>
+        <location line="+90"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
@@ -605,27 +605,23 @@
         <translation>Über Mocap Studio</translation>
     </message>
     <message>
-        <location line="+64"/>
         <source>3D view in the lab frame</source>
-        <translation>3D-Ansicht im Laborkoordinatensystem</translation>
+        <translation type="vanished">3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
     <message>
-        <location line="+8"/>
         <source>Head-Stabilized View</source>
-        <translation>Kopfstabilisierte Ansicht</translation>
+        <translation type="vanished">Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="-108"/>
         <source>&amp;Head-Stabilized View</source>
-        <translation>&amp;Kopfstabilisierte Ansicht</translation>
+        <translation type="vanished">&amp;Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
-        <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
+        <translation type="vanished">Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;</translation>
     </message>
@@ -635,22 +631,19 @@
         <translation>&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Ausreißer, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht, F Kamera folgt dem Kopf, Strg+Umschalt+S Speichern unter.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+65"/>
         <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
-        <translation>Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
+        <translation type="vanished">Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
-        <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+        <translation type="vanished">3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
     </message>
     <message>
-        <location line="+14"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
-        <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
+        <translation type="vanished">3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+66"/>
         <source>Head markers set; Edit ▸ Undo takes them back</source>
         <translation>Kopfmarker gesetzt; Bearbeiten ▸ Rückgängig nimmt sie zurück</translation>
     </message>
@@ -888,17 +881,17 @@
         <translation>Die Vorgabe wurde nicht geladen: %1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+107"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-293"/>
+        <location line="-282"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -999,7 +992,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-903"/>
+        <location line="-856"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1712,7 +1705,7 @@
 <context>
     <name>mocap::ui::FaceMeshModel</name>
     <message numerus="yes">
-        <location filename="../widgets/document/face_mesh_model.cpp" line="+111"/>
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+118"/>
         <source>%n marker(s) bound</source>
         <translation>
             <numerusform>%n Marker gebunden</numerusform>
@@ -2646,6 +2639,44 @@
         <location line="+14"/>
         <source>Stabilize head</source>
         <translation>Kopf stabilisieren</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::HeadStabilizedViewAction</name>
+    <message>
+        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+17"/>
+        <source>&amp;Head-Stabilized View</source>
+        <translation>&amp;Kopfstabilisierte Ansicht</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
+        <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>3D view in the lab frame</source>
+        <translation>3D-Ansicht im Laborkoordinatensystem</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
+        <translation>Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Head-Stabilized View</source>
+        <translation>Kopfstabilisierte Ansicht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
+        <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
+        <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
 </context>
 <context>

@@ -293,7 +293,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+123"/>
+        <location filename="../app/studio/main_window.cpp" line="+120"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -358,7 +358,7 @@
         <translation>权重</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+61"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -565,13 +565,13 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+97"/>
+        <location line="+90"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-97"/>
-        <location line="+97"/>
+        <location line="-90"/>
+        <location line="+90"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
@@ -596,27 +596,23 @@
         <translation>关于 Mocap Studio</translation>
     </message>
     <message>
-        <location line="+64"/>
         <source>3D view in the lab frame</source>
-        <translation>三维视图使用实验室坐标系</translation>
+        <translation type="vanished">三维视图使用实验室坐标系</translation>
     </message>
     <message>
-        <location line="+8"/>
         <source>Head-Stabilized View</source>
-        <translation>头部稳定视图</translation>
+        <translation type="vanished">头部稳定视图</translation>
     </message>
     <message>
-        <location line="-108"/>
         <source>&amp;Head-Stabilized View</source>
-        <translation>头部稳定视图(&amp;H)</translation>
+        <translation type="vanished">头部稳定视图(&amp;H)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
-        <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
+        <translation type="vanished">在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;</translation>
     </message>
@@ -626,22 +622,19 @@
         <translation>&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图，F 相机跟随头部，Ctrl+Shift+S 另存为。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+65"/>
         <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
-        <translation>请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
+        <translation type="vanished">请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
-        <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+        <translation type="vanished">三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
     </message>
     <message>
-        <location line="+14"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
-        <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
+        <translation type="vanished">三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+66"/>
         <source>Head markers set; Edit ▸ Undo takes them back</source>
         <translation>已设置头部标记点；编辑 ▸ 撤销可取消</translation>
     </message>
@@ -877,17 +870,17 @@
         <translation>预设未加载：%1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+107"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-293"/>
+        <location line="-282"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -988,7 +981,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-903"/>
+        <location line="-856"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1694,7 +1687,7 @@
 <context>
     <name>mocap::ui::FaceMeshModel</name>
     <message numerus="yes">
-        <location filename="../widgets/document/face_mesh_model.cpp" line="+111"/>
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+118"/>
         <source>%n marker(s) bound</source>
         <translation>
             <numerusform>已绑定 %n 个标记点</numerusform>
@@ -2623,6 +2616,44 @@
         <location line="+14"/>
         <source>Stabilize head</source>
         <translation>稳定头部</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::HeadStabilizedViewAction</name>
+    <message>
+        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+17"/>
+        <source>&amp;Head-Stabilized View</source>
+        <translation>头部稳定视图(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
+        <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>3D view in the lab frame</source>
+        <translation>三维视图使用实验室坐标系</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
+        <translation>请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Head-Stabilized View</source>
+        <translation>头部稳定视图</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
+        <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
+        <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
 </context>
 <context>

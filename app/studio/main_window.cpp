@@ -3,6 +3,7 @@
 #include "language.h"
 
 #include "actions/labelling_actions.h"
+#include "actions/head_stabilized_view_action.h"
 #include "actions/marker_edit_actions.h"
 
 #include "commands/record_step_command.h"
@@ -54,7 +55,6 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QCloseEvent>
-#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -73,7 +73,6 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QSettings>
-#include <QTemporaryFile>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
 #include <QTabBar>
@@ -86,11 +85,9 @@
 #include <memory>
 #include <utility>
 
-#include "mocap/deform/face_rig.h"
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/base/length_unit.h"
 #include "mocap/model/marker_set.h"
-#include "mocap/deform/mesh_binding.h"
 #include "mocap/io/take_io.h"
 #include "mocap/base/file_io.h"
 #include "mocap/batch/clean_preset.h"
@@ -171,7 +168,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_document, &ui::TakeDocument::selectionChanged, this, updateStatusLine);
   m_autosave = new ui::Autosave(*m_document, {}, this);
   connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
-    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 10000);
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 2 * ui::kStatusMessageMs);
   });
   m_autosave->setSessionProvider([this] { return recoverySession(); });
   readSettings();
@@ -334,14 +331,8 @@ void MainWindow::exportAnimation()
   ui::ExportDialog dialog(*m_document, this);
   const ui::FaceMeshModel& mesh = m_session->faceMesh();
   if (mesh.rig()) {
-    // The export runs on a worker thread: it gets its own rig and copy of the take, since the
-    // panel's rig follows every edit and option change.
-    try {
-      auto take = std::make_shared<const Take>(mesh.rigTake());
-      auto rig = std::make_shared<FaceRig>(mesh.mesh(), mesh.binding(), *take, mesh.options());
-      dialog.setMeshSource(
-          mesh.mesh(), [take, rig](Eigen::Index frame, MeshVertices& out) { (void)rig->deform(*take, frame, out); },
-          QStringLiteral("face"));
+    try {  // the export runs on a worker thread: with a rig of its own
+      dialog.setMeshSource(mesh.mesh(), mesh.detachedDeformer(), QStringLiteral("face"));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export Animation"),
                            tr("The face mesh cannot be exported: %1").arg(QString::fromStdString(e.what())));
@@ -512,17 +503,10 @@ void MainWindow::createActions()
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
-  m_headStabilizedView = m_viewMenu->addAction(tr("&Head-Stabilized View"));
-  m_headStabilizedView->setObjectName(QStringLiteral("headStabilizedViewAction"));
-  m_headStabilizedView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-  m_headStabilizedView->setCheckable(true);
-  m_headStabilizedView->setToolTip(tr("Show the markers in the head frame of the reference markers (a view "
-                                      "setting; the take is not changed)"));
-  connect(m_headStabilizedView, &QAction::triggered, this, &MainWindow::setHeadStabilizedView);
-  // The view drops its head pose when markers shift or a take is set: follow the document's set.
-  connect(m_document, &ui::TakeDocument::markersChanged, this, &MainWindow::followReferenceMarkers);
-  connect(m_document, &ui::TakeDocument::referenceMarkersChanged, this, &MainWindow::followReferenceMarkers);
-  connect(m_document, &ui::TakeDocument::takeReset, this, &MainWindow::followReferenceMarkers);
+  m_headStabilizedView = new ui::HeadStabilizedViewAction(*m_document, *m_view3d, *this, this);
+  connect(m_headStabilizedView, &ui::HeadStabilizedViewAction::message, this,
+          [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); });
+  m_viewMenu->addAction(m_headStabilizedView->action());
 
   // Transport keys work wherever the focus is (window shortcuts).
   auto addShortcut = [this](const QKeySequence& keys, auto slot) {
@@ -605,40 +589,6 @@ void MainWindow::editPreferences()
     QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
   chosen.save();
   applyPreferences(chosen);
-}
-
-void MainWindow::setHeadStabilizedView(bool on)
-{
-  if (!on) {
-    m_view3d->setHeadReference({});
-    m_headStabilizedView->setChecked(false);
-    statusBar()->showMessage(tr("3D view in the lab frame"), ui::kStatusMessageMs);
-    return;
-  }
-  const QString error = m_document->referenceMarkers().size() < 3
-                            ? tr("Choose at least three reference markers first (Marker ▸ Reference Markers…).")
-                            : m_view3d->setHeadReference(m_document->referenceMarkers());
-  m_headStabilizedView->setChecked(error.isEmpty());
-  if (!error.isEmpty())
-    QMessageBox::warning(this, tr("Head-Stabilized View"), error);
-  else
-    statusBar()->showMessage(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"),
-                             ui::kStatusMessageMs);
-}
-
-void MainWindow::followReferenceMarkers()
-{
-  if (!m_headStabilizedView->isChecked())
-    return;
-  // Runs after the view's own handlers (connected later), which dropped the old indices.
-  const bool usable = m_document->referenceMarkers().size() >= 3 &&
-                      m_view3d->setHeadReference(m_document->referenceMarkers()).isEmpty();
-  if (!usable) {
-    m_view3d->setHeadReference({});
-    m_headStabilizedView->setChecked(false);
-    statusBar()->showMessage(tr("3D view back in the lab frame: the reference markers cannot carry a head pose"),
-                             10000);
-  }
 }
 
 QWidget* MainWindow::centralArea()
@@ -905,7 +855,7 @@ QString MainWindow::loadCleaningPreset(const QString& path)
   if (!options.stabilizeLabels.empty())
     message += tr("; its head markers (%1) are not this take's: the take keeps its own")
                    .arg(joinLabels(options.stabilizeLabels));
-  statusBar()->showMessage(message, 10000);
+  statusBar()->showMessage(message, 2 * ui::kStatusMessageMs);
   return {};
 }
 
@@ -1003,7 +953,7 @@ bool MainWindow::offerRecovery()
     // Our own recovery copy first, then the old one goes: the edits are never only in memory.
     if (m_autosave->saveNow().isEmpty())
       ui::Autosave::remove(file);
-    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 10000);
+    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 2 * ui::kStatusMessageMs);
     return true;
   }
   return false;
@@ -1011,32 +961,21 @@ bool MainWindow::offerRecovery()
 
 QVariantMap MainWindow::recoverySession() const
 {
-  QVariantMap session;
+  QVariantMap session = m_session->recoveryState();
   session.insert(QStringLiteral("windowState"), saveState());
-  const ui::FaceMeshModel& mesh = m_session->faceMesh();
-  if (mesh.hasMesh()) {
-    session.insert(QStringLiteral("mesh"), mesh.meshPath());
-    session.insert(QStringLiteral("binding"), QString::fromStdString(bindingJson(mesh.binding())));
-  }
   return session;
 }
 
 void MainWindow::restoreSession(const QVariantMap& session)
 {
   restoreState(session.value(QStringLiteral("windowState")).toByteArray());
-  const QString mesh = session.value(QStringLiteral("mesh")).toString();
-  if (mesh.isEmpty())
+  if (session.value(QStringLiteral("mesh")).toString().isEmpty())
     return;
-  QString error = m_faceMesh->loadMesh(mesh);
-  QTemporaryFile binding(QDir::tempPath() + QStringLiteral("/mocap-binding-XXXXXX.json"));
-  if (error.isEmpty() && binding.open()) {
-    binding.write(session.value(QStringLiteral("binding")).toString().toUtf8());
-    binding.close();
-    error = m_faceMesh->loadBinding(binding.fileName());
-  }
+  const QString error = m_session->restoreRecoveryState(session);
   m_faceMeshDock->show();
   if (!error.isEmpty())
-    statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error), 10000);
+    statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error),
+                             2 * ui::kStatusMessageMs);
 }
 
 bool MainWindow::showDock(const QString& name)

@@ -3,12 +3,15 @@
 // no dock): what the Reference Video and Layout planning docks only show.
 #include "../core/coded_video.h"
 #include "../core/test_support.h"
+#include "sample_files.h"
 
 #include "commands/remove_markers_command.h"
+#include "document/face_mesh_model.h"
 #include "document/layout_plan_model.h"
 #include "document/reference_video.h"
 #include "document/reference_videos.h"
 #include "document/studio_session.h"
+#include "document/session_files.h"
 #include "document/take_document.h"
 
 #include "mocap/io/take_io.h"
@@ -118,6 +121,32 @@ TEST(SessionLayoutPlan, HighlightsThePickedLayoutOnTheOpenTakeByLabel)
   session.undoStack()->push(new ui::RemoveMarkersCommand(session.document(), {2}));
   EXPECT_GE(remap.count(), 1);
   EXPECT_EQ(plan.highlight().kept, (std::vector<bool>{true, false, true, false}));
+}
+
+TEST(SessionRecovery, RestoresTheFaceMeshAndItsBindingStraightFromTheState)
+{
+  ui::SessionFiles files;
+  files.take = QString::fromStdString(test::sampleTake().string());
+  files.mesh = test::sampleMesh();
+  files.binding = test::sampleBinding();
+  ui::StudioSession crashed;
+  ASSERT_EQ(ui::loadSessionFiles(crashed, files), QString());
+  const ui::FaceMeshModel& before = crashed.faceMesh();
+  ASSERT_NE(before.rig(), nullptr);
+  const QVariantMap state = crashed.recoveryState();
+
+  ui::StudioSession recovered;
+  recovered.document().setTake(crashed.document().take());
+  EXPECT_TRUE(recovered.recoveryState().isEmpty()) << "no face mesh, nothing to keep";
+  ASSERT_EQ(recovered.restoreRecoveryState(state), QString());
+  const ui::FaceMeshModel& after = recovered.faceMesh();
+  EXPECT_EQ(after.meshPath(), before.meshPath());
+  ASSERT_EQ(after.binding().markers.size(), before.binding().markers.size());
+  EXPECT_EQ(after.binding().markers.front().label, before.binding().markers.front().label);
+  EXPECT_NE(after.rig(), nullptr);
+  QVariantMap broken = state;
+  broken.insert(QStringLiteral("binding"), QStringLiteral("{"));
+  EXPECT_FALSE(recovered.restoreRecoveryState(broken).isEmpty()) << "a damaged binding is said, not a crash";
 }
 
 } // namespace

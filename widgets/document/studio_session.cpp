@@ -6,6 +6,9 @@
 #include "document/reference_videos.h"
 #include "document/take_document.h"
 
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/io/mesh_io.h"
+
 #include <QUndoStack>
 
 #include <string>
@@ -52,6 +55,37 @@ BoundRig StudioSession::boundRig() const
   if (!rig || m_faceMesh->mesh().vertexCount() != rig->neutral.vertexCount())
     return {};
   return {rig, m_faceMesh->binding()};
+}
+
+namespace {
+const QString kMeshKey = QStringLiteral("mesh");
+const QString kBindingKey = QStringLiteral("binding");
+} // namespace
+
+QVariantMap StudioSession::recoveryState() const
+{
+  QVariantMap state;
+  if (m_faceMesh->hasMesh()) {
+    state.insert(kMeshKey, m_faceMesh->meshPath());
+    state.insert(kBindingKey, QString::fromStdString(bindingJson(m_faceMesh->binding())));
+  }
+  return state;
+}
+
+QString StudioSession::restoreRecoveryState(const QVariantMap& state)
+{
+  const QString meshPath = state.value(kMeshKey).toString();
+  if (meshPath.isEmpty())
+    return {};
+  try {
+    Mesh mesh = readMesh(meshPath.toStdString());
+    const Eigen::Index vertices = mesh.vertexCount();
+    m_faceMesh->setMesh(std::move(mesh), meshPath);
+    m_faceMesh->setBinding(parseBinding(state.value(kBindingKey).toString().toStdString(), "recovered binding", vertices));
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return m_faceMesh->error();
 }
 
 void StudioSession::dropPreviousTake()

@@ -3,6 +3,8 @@
 #include "document/bound_rig.h"
 
 #include <QObject>
+#include <QString>
+#include <QVariantMap>
 
 #include <memory>
 
@@ -51,6 +53,12 @@ public:
   /// take starts without them).
   void setKeepRig(bool keep) { m_keepRig = keep; }
   [[nodiscard]] bool keepRig() const { return m_keepRig; }
+
+  /// What a recovery file keeps beside the take: the face mesh's file and its binding (JSON).
+  [[nodiscard]] QVariantMap recoveryState() const;
+  /// Restores recoveryState()'s face mesh and binding (read from the mesh file again); returns ""
+  /// or why they could not be restored.
+  QString restoreRecoveryState(const QVariantMap& state);
 
   /// The blendshape rig with the binding made on its neutral (the face mesh is the rig's
   /// neutral); empty otherwise.
