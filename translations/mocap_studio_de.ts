@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+121"/>
+        <location filename="../app/studio/main_window.cpp" line="+120"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -347,7 +347,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+24"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
@@ -357,17 +357,17 @@
         <translation>Blendshape-Solve</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>Reference Video</source>
         <translation>Referenzvideo</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+61"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -377,7 +377,7 @@
         <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Rendering the review video…</source>
         <translation>Das Prüfvideo wird gerendert…</translation>
     </message>
@@ -574,13 +574,13 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+97"/>
+        <location line="+90"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
     <message>
-        <location line="-97"/>
-        <location line="+97"/>
+        <location line="-90"/>
+        <location line="+90"/>
         <source>The new language is used from the next start.</source>
         <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
@@ -605,27 +605,23 @@
         <translation>Über Mocap Studio</translation>
     </message>
     <message>
-        <location line="+64"/>
         <source>3D view in the lab frame</source>
-        <translation>3D-Ansicht im Laborkoordinatensystem</translation>
+        <translation type="vanished">3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
     <message>
-        <location line="+8"/>
         <source>Head-Stabilized View</source>
-        <translation>Kopfstabilisierte Ansicht</translation>
+        <translation type="vanished">Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="-108"/>
         <source>&amp;Head-Stabilized View</source>
-        <translation>&amp;Kopfstabilisierte Ansicht</translation>
+        <translation type="vanished">&amp;Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
-        <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
+        <translation type="vanished">Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Bereinigung und Nutzung optischer Gesichts-Motion-Capture-Daten.&lt;/p&gt;</translation>
     </message>
@@ -635,22 +631,19 @@
         <translation>&lt;p&gt;Tasten: Leertaste Wiedergabe/Pause, ←/→ Einzelbild (Umschalt: 10), Pos1/Ende, Bild↑/Bild↓ vorherige/nächste Lücke, Strg+Bild↑/Bild↓ vorheriger/nächster Ausreißer, Strg+R Kamera zurücksetzen, L Markerverbindungen, H ausblenden, Umschalt+H alle einblenden, Strg+Ziehen Rahmenauswahl, Strg+B kopfstabilisierte Ansicht, F Kamera folgt dem Kopf, Strg+Umschalt+S Speichern unter.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+65"/>
         <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
-        <translation>Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
+        <translation type="vanished">Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
-        <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+        <translation type="vanished">3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
     </message>
     <message>
-        <location line="+14"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
-        <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
+        <translation type="vanished">3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+66"/>
         <source>Head markers set; Edit ▸ Undo takes them back</source>
         <translation>Kopfmarker gesetzt; Bearbeiten ▸ Rückgängig nimmt sie zurück</translation>
     </message>
@@ -888,17 +881,17 @@
         <translation>Die Vorgabe wurde nicht geladen: %1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+107"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-293"/>
+        <location line="-282"/>
         <source>Open take</source>
         <translation>Take öffnen</translation>
     </message>
@@ -999,7 +992,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-924"/>
+        <location line="-856"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1015,7 +1008,7 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+104"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
@@ -1319,8 +1312,8 @@
         <translation>  (Spitze %1)</translation>
     </message>
     <message>
-        <location line="+64"/>
-        <location line="+16"/>
+        <location line="+77"/>
+        <location line="+24"/>
         <source>Solve the take first.</source>
         <translation>Lösen Sie zuerst die Aufnahme.</translation>
     </message>
@@ -1712,7 +1705,7 @@
 <context>
     <name>mocap::ui::FaceMeshModel</name>
     <message numerus="yes">
-        <location filename="../widgets/document/face_mesh_model.cpp" line="+111"/>
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+118"/>
         <source>%n marker(s) bound</source>
         <translation>
             <numerusform>%n Marker gebunden</numerusform>
@@ -2649,6 +2642,44 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::HeadStabilizedViewAction</name>
+    <message>
+        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+17"/>
+        <source>&amp;Head-Stabilized View</source>
+        <translation>&amp;Kopfstabilisierte Ansicht</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
+        <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>3D view in the lab frame</source>
+        <translation>3D-Ansicht im Laborkoordinatensystem</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
+        <translation>Wählen Sie zuerst mindestens drei Referenzmarker (Marker ▸ Referenzmarker…).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Head-Stabilized View</source>
+        <translation>Kopfstabilisierte Ansicht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
+        <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
+        <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::HistoryPanel</name>
     <message>
         <location filename="../widgets/panels/history_panel.cpp" line="+19"/>
@@ -2880,12 +2911,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+89"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+92"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>Aufnahmedateien, die zusammen mit der geöffneten Aufnahme geplant werden (sie müssen deren Marker enthalten)</translation>
     </message>
@@ -3070,7 +3101,7 @@
         <translation>Die Beurteilung am Rig braucht ein Blendshape-Rig (Blendshape-Solve-Panel) und an seine Neutralform gebundene Marker (Face-Mesh-Panel); oder schalten Sie sie aus.</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
@@ -3088,7 +3119,7 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-279"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -3243,7 +3274,7 @@
         <translation>Abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
@@ -3258,24 +3289,24 @@
         <translation>Die Beurteilung am Rig wurde abgebrochen.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+14"/>
         <source>PFA %1 · greedy %2 · random %3</source>
         <translation>PFA %1 · Greedy %2 · Zufall %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4</source>
         <translation>Rig-Gewichts-MSE bei %1 Markern (%2 davon gebunden; alle %3 gebundenen Marker: 0): %4</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+10"/>
         <location line="+16"/>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>
         <translation>Es gibt kein Layout zum Exportieren: Führen Sie die Planung aus und wählen Sie eine Markeranzahl.</translation>
     </message>
@@ -3719,7 +3750,7 @@
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+61"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>Die Referenzvideos der Aufnahme: Das hier gewählte wird angezeigt</translation>
     </message>
@@ -3839,7 +3870,7 @@
         <translation>Den Versatz so setzen, dass beim Ereignis der erste Videoframe erscheint, oder der angehaltene</translation>
     </message>
     <message>
-        <location line="+431"/>
+        <location line="+281"/>
         <source>Locate %1</source>
         <translation>%1 suchen</translation>
     </message>
@@ -3848,7 +3879,7 @@
         <translation type="vanished">Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-315"/>
         <source>+1 frame</source>
         <translation>+1 Frame</translation>
     </message>
@@ -3857,14 +3888,11 @@
         <translation type="vanished">Das Video um eines seiner Frames später setzen (Alt+.)</translation>
     </message>
     <message>
-        <location line="+151"/>
-        <location line="+37"/>
-        <location line="+179"/>
         <source>Cannot show %1: %2</source>
-        <translation>%1 kann nicht gezeigt werden: %2</translation>
+        <translation type="vanished">%1 kann nicht gezeigt werden: %2</translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="+152"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>Halten Sie das Video zuerst an einem Moment an: Frame eingeben oder schrittweise ändern, dann die Aufnahme auf denselben Moment stellen</translation>
     </message>
@@ -3884,7 +3912,7 @@
         <translation>Videoframe %1 erscheint jetzt beim Ereignis „%2“ (Aufnahme-Frame %3; Versatz %4 s)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>%1 (missing)</source>
         <translation>%1 (fehlt)</translation>
     </message>
@@ -3920,17 +3948,15 @@
         <translation>Die Aufnahme hat keine Ereignisse</translation>
     </message>
     <message>
-        <location line="+18"/>
         <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
-        <translation>Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
+        <translation type="vanished">Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
     </message>
     <message>
-        <location line="+11"/>
         <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
-        <translation>%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
+        <translation type="vanished">%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+10"/>
         <source>%n of the take&apos;s reference videos cannot be found where the take remembers them. Pick one and press Locate… to find it; they stay remembered meanwhile.</source>
         <translation>
             <numerusform>%n Referenzvideo der Aufnahme ist nicht dort, wo die Aufnahme es erwartet. Wählen Sie es und drücken Sie „Suchen…“; es bleibt so lange gemerkt.</numerusform>
@@ -3938,20 +3964,44 @@
         </translation>
     </message>
     <message>
-        <location line="+57"/>
         <source>Cannot remember the videos beside the take: %1</source>
-        <translation>Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
+        <translation type="vanished">Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Add reference video</source>
         <translation>Referenzvideo hinzufügen</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceVideos</name>
+    <message>
+        <location filename="../widgets/document/reference_videos.cpp" line="+125"/>
+        <location line="+27"/>
+        <location line="+18"/>
+        <source>Cannot show %1: %2</source>
+        <translation>%1 kann nicht gezeigt werden: %2</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
+        <translation>%1 fehlt: Die Aufnahme erwartet es unter %2. „Suchen…“ findet es; bis dahin bleibt es mit der Aufnahme verknüpft.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
+        <translation>Die für diese Aufnahme gemerkten Videos können nicht gelesen werden (%1); die Datei bleibt unverändert, und Änderungen hier werden nicht gemerkt.</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>Cannot remember the videos beside the take: %1</source>
+        <translation>Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
     </message>
 </context>
 <context>

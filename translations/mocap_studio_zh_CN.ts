@@ -293,7 +293,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+121"/>
+        <location filename="../app/studio/main_window.cpp" line="+120"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -338,7 +338,7 @@
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+24"/>
         <source>Face Mesh</source>
         <translation>面部网格</translation>
     </message>
@@ -348,17 +348,17 @@
         <translation>混合形状求解</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
         <source>Reference Video</source>
         <translation>参考视频</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Weights</source>
         <translation>权重</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+61"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -368,7 +368,7 @@
         <translation>无法导出面部网格：%1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Rendering the review video…</source>
         <translation>正在渲染审阅视频…</translation>
     </message>
@@ -565,13 +565,13 @@
     </message>
     <message>
         <location line="+10"/>
-        <location line="+97"/>
+        <location line="+90"/>
         <source>Language</source>
         <translation>语言</translation>
     </message>
     <message>
-        <location line="-97"/>
-        <location line="+97"/>
+        <location line="-90"/>
+        <location line="+90"/>
         <source>The new language is used from the next start.</source>
         <translation>新语言将在下次启动时生效。</translation>
     </message>
@@ -596,27 +596,23 @@
         <translation>关于 Mocap Studio</translation>
     </message>
     <message>
-        <location line="+64"/>
         <source>3D view in the lab frame</source>
-        <translation>三维视图使用实验室坐标系</translation>
+        <translation type="vanished">三维视图使用实验室坐标系</translation>
     </message>
     <message>
-        <location line="+8"/>
         <source>Head-Stabilized View</source>
-        <translation>头部稳定视图</translation>
+        <translation type="vanished">头部稳定视图</translation>
     </message>
     <message>
-        <location line="-108"/>
         <source>&amp;Head-Stabilized View</source>
-        <translation>头部稳定视图(&amp;H)</translation>
+        <translation type="vanished">头部稳定视图(&amp;H)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
-        <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
+        <translation type="vanished">在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+1"/>
         <source>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;Cleaning and using facial optical motion capture.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Mocap Studio %1&lt;/b&gt;&lt;p&gt;清理和使用面部光学动作捕捉数据。&lt;/p&gt;</translation>
     </message>
@@ -626,22 +622,19 @@
         <translation>&lt;p&gt;按键：空格 播放/暂停，←/→ 单帧（Shift：10 帧），Home/End，PgUp/PgDn 上一个/下一个缺口，Ctrl+PgUp/PgDn 上一个/下一个坏点，Ctrl+R 重置相机，L 标记点连线，H 隐藏，Shift+H 全部显示，Ctrl+拖动 框选，Ctrl+B 头部稳定视图，F 相机跟随头部，Ctrl+Shift+S 另存为。&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+65"/>
         <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
-        <translation>请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
+        <translation type="vanished">请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
-        <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+        <translation type="vanished">三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
     </message>
     <message>
-        <location line="+14"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
-        <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
+        <translation type="vanished">三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+66"/>
         <source>Head markers set; Edit ▸ Undo takes them back</source>
         <translation>已设置头部标记点；编辑 ▸ 撤销可取消</translation>
     </message>
@@ -877,17 +870,17 @@
         <translation>预设未加载：%1</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+107"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-293"/>
+        <location line="-282"/>
         <source>Open take</source>
         <translation>打开动捕片段</translation>
     </message>
@@ -988,7 +981,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-924"/>
+        <location line="-856"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1004,7 +997,7 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+104"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
@@ -1306,8 +1299,8 @@
         <translation>  （峰值 %1）</translation>
     </message>
     <message>
-        <location line="+64"/>
-        <location line="+16"/>
+        <location line="+77"/>
+        <location line="+24"/>
         <source>Solve the take first.</source>
         <translation>请先求解拍摄。</translation>
     </message>
@@ -1694,7 +1687,7 @@
 <context>
     <name>mocap::ui::FaceMeshModel</name>
     <message numerus="yes">
-        <location filename="../widgets/document/face_mesh_model.cpp" line="+111"/>
+        <location filename="../widgets/document/face_mesh_model.cpp" line="+118"/>
         <source>%n marker(s) bound</source>
         <translation>
             <numerusform>已绑定 %n 个标记点</numerusform>
@@ -2626,6 +2619,44 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::HeadStabilizedViewAction</name>
+    <message>
+        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+17"/>
+        <source>&amp;Head-Stabilized View</source>
+        <translation>头部稳定视图(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the markers in the head frame of the reference markers (a view setting; the take is not changed)</source>
+        <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>3D view in the lab frame</source>
+        <translation>三维视图使用实验室坐标系</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Choose at least three reference markers first (Marker ▸ Reference Markers…).</source>
+        <translation>请先选择至少三个参考标记点（标记点 ▸ 参考标记点…）。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Head-Stabilized View</source>
+        <translation>头部稳定视图</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
+        <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
+        <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::HistoryPanel</name>
     <message>
         <location filename="../widgets/panels/history_panel.cpp" line="+19"/>
@@ -2855,12 +2886,12 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+89"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+92"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+60"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>与已打开的拍摄数据一起规划的拍摄数据文件（必须包含其标记点）</translation>
     </message>
@@ -3045,7 +3076,7 @@
         <translation>在绑定模型上评估需要一个混合形状绑定模型（混合形状求解面板）以及绑定到其中性形状的标记点（面部网格面板）；或关闭此选项。</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
@@ -3062,7 +3093,7 @@
         <translation>未去除头部运动：没有参考标记点</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-279"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
@@ -3217,7 +3248,7 @@
         <translation>已取消，保留先前的结果。</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
     </message>
@@ -3232,24 +3263,24 @@
         <translation>在绑定模型上的评估已取消。</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+14"/>
         <source>PFA %1 · greedy %2 · random %3</source>
         <translation>PFA %1 · 贪心 %2 · 随机 %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4</source>
         <translation>%1 个标记点时的绑定模型权重 MSE（其中 %2 个已绑定；全部 %3 个已绑定标记点：0）：%4</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+10"/>
         <location line="+16"/>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>There is no layout to export: run the plan and pick a marker count.</source>
         <translation>没有可导出的布局：请运行规划并选择标记点数量。</translation>
     </message>
@@ -3690,7 +3721,7 @@
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+61"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>录制的参考视频：显示此处选中的视频</translation>
     </message>
@@ -3810,7 +3841,7 @@
         <translation>设置偏移，使事件处显示视频的第一帧或停住的帧</translation>
     </message>
     <message>
-        <location line="+431"/>
+        <location line="+281"/>
         <source>Locate %1</source>
         <translation>定位 %1</translation>
     </message>
@@ -3819,7 +3850,7 @@
         <translation type="vanished">将视频提前一帧（Alt+,）</translation>
     </message>
     <message>
-        <location line="-465"/>
+        <location line="-315"/>
         <source>+1 frame</source>
         <translation>+1 帧</translation>
     </message>
@@ -3828,14 +3859,11 @@
         <translation type="vanished">将视频推后一帧（Alt+.）</translation>
     </message>
     <message>
-        <location line="+151"/>
-        <location line="+37"/>
-        <location line="+179"/>
         <source>Cannot show %1: %2</source>
-        <translation>无法显示 %1：%2</translation>
+        <translation type="vanished">无法显示 %1：%2</translation>
     </message>
     <message>
-        <location line="-155"/>
+        <location line="+152"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>请先将视频停在某一时刻：输入或步进其帧，然后将录制步进到同一时刻</translation>
     </message>
@@ -3855,7 +3883,7 @@
         <translation>视频第 %1 帧现在显示在事件“%2”处（录制第 %3 帧；偏移 %4 秒）</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>%1 (missing)</source>
         <translation>%1（缺失）</translation>
     </message>
@@ -3891,37 +3919,59 @@
         <translation>录制没有事件</translation>
     </message>
     <message>
-        <location line="+18"/>
         <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
-        <translation>无法读取为此录制记住的视频（%1）；该文件保持不变，此处的更改不会被记住。</translation>
+        <translation type="vanished">无法读取为此录制记住的视频（%1）；该文件保持不变，此处的更改不会被记住。</translation>
     </message>
     <message>
-        <location line="+11"/>
         <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
-        <translation>%1 缺失：录制记住它位于 %2。“定位…”可找到它；在此之前它仍与录制关联。</translation>
+        <translation type="vanished">%1 缺失：录制记住它位于 %2。“定位…”可找到它；在此之前它仍与录制关联。</translation>
     </message>
     <message numerus="yes">
-        <location line="+20"/>
+        <location line="+10"/>
         <source>%n of the take&apos;s reference videos cannot be found where the take remembers them. Pick one and press Locate… to find it; they stay remembered meanwhile.</source>
         <translation>
             <numerusform>录制的 %n 个参考视频不在所记的位置。选择一个并按“定位…”查找；在此期间它们仍被记住。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+57"/>
         <source>Cannot remember the videos beside the take: %1</source>
-        <translation>无法在录制旁记住视频：%1</translation>
+        <translation type="vanished">无法在录制旁记住视频：%1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Add reference video</source>
         <translation>添加参考视频</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>视频 (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceVideos</name>
+    <message>
+        <location filename="../widgets/document/reference_videos.cpp" line="+125"/>
+        <location line="+27"/>
+        <location line="+18"/>
+        <source>Cannot show %1: %2</source>
+        <translation>无法显示 %1：%2</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>%1 is missing: the take remembers it at %2. Locate… finds it; until then it stays linked to the take.</source>
+        <translation>%1 缺失：录制记住它位于 %2。“定位…”可找到它；在此之前它仍与录制关联。</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The videos remembered for this take cannot be read (%1); that file is left as it is and changes here are not remembered.</source>
+        <translation>无法读取为此录制记住的视频（%1）；该文件保持不变，此处的更改不会被记住。</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>Cannot remember the videos beside the take: %1</source>
+        <translation>无法在录制旁记住视频：%1</translation>
     </message>
 </context>
 <context>

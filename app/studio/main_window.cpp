@@ -3,6 +3,7 @@
 #include "language.h"
 
 #include "actions/labelling_actions.h"
+#include "actions/head_stabilized_view_action.h"
 #include "actions/marker_edit_actions.h"
 
 #include "commands/record_step_command.h"
@@ -29,7 +30,9 @@
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/reference_video_panel.h"
+#include "document/layout_plan_model.h"
 #include "document/reference_video.h"
+#include "document/reference_videos.h"
 #include "panels/smoothing_step.h"
 #include "panels/spike_step.h"
 #include "views/curve_view.h"
@@ -52,7 +55,6 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QCloseEvent>
-#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -71,7 +73,6 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <QSettings>
-#include <QTemporaryFile>
 #include <QSortFilterProxyModel>
 #include <QStatusBar>
 #include <QTabBar>
@@ -84,11 +85,9 @@
 #include <memory>
 #include <utility>
 
-#include "mocap/deform/face_rig.h"
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/base/length_unit.h"
 #include "mocap/model/marker_set.h"
-#include "mocap/deform/mesh_binding.h"
 #include "mocap/io/take_io.h"
 #include "mocap/base/file_io.h"
 #include "mocap/batch/clean_preset.h"
@@ -169,7 +168,7 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_document, &ui::TakeDocument::selectionChanged, this, updateStatusLine);
   m_autosave = new ui::Autosave(*m_document, {}, this);
   connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
-    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 10000);
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 2 * ui::kStatusMessageMs);
   });
   m_autosave->setSessionProvider([this] { return recoverySession(); });
   readSettings();
@@ -221,7 +220,7 @@ void MainWindow::createDocks()
   QDockWidget* cleaningDock = addDock(tr("Cleaning"), QStringLiteral("cleaningDock"), m_cleaning, Qt::RightDockWidgetArea);
 
   // Marker layout planning (issue 7): its selected layout is highlighted in the 3D view.
-  m_layoutPlanning = new ui::LayoutPlanningPanel(*m_document, this);
+  m_layoutPlanning = new ui::LayoutPlanningPanel(*m_session, this);
   QDockWidget* layoutDock =
       addDock(tr("Layout planning"), QStringLiteral("layoutPlanningDock"), m_layoutPlanning, Qt::RightDockWidgetArea,
               DockContent::Fixed);  // scrolls its form itself, under a fixed Run row
@@ -237,39 +236,18 @@ void MainWindow::createDocks()
   cleaningDock->raise();
   // The highlight shows only while the dock is on screen: leaving the panel (another tab raised,
   // the dock closed) gives the 3D view its sample-state colours back, returning shows it again.
-  auto showLayout = [this, layoutDock](const std::vector<bool>& kept) {
-    if (!layoutDock->isVisible() || kept.empty()) {
-      m_view3d->clearLayoutHighlight();
-      return;
-    }
-    std::vector<bool> reference(kept.size(), false);
-    if (const ui::LayoutPlanResult* result = m_layoutPlanning->result())
-      for (const std::string& label : result->stabilizeLabels)
-        if (const auto m = m_document->take().markerIndex(label); m && static_cast<std::size_t>(*m) < kept.size())
-          reference[static_cast<std::size_t>(*m)] = true;
-    m_view3d->setLayoutHighlight(kept, std::move(reference));
+  auto showLayout = [this, layoutDock] {
+    ui::LayoutHighlight shown = layoutDock->isVisible() ? m_session->layoutPlan().highlight() : ui::LayoutHighlight{};
+    m_view3d->setLayoutHighlight(std::move(shown.kept), std::move(shown.reference));
   };
-  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightChanged, this, showLayout);
+  connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::changed, this, showLayout);
+  connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::highlightChanged, this, showLayout);
+  connect(layoutDock, &QDockWidget::visibilityChanged, this, showLayout);
   // Every panel shows the take's reference markers and sends the user to the one editor.
   connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, this,
           &MainWindow::editReferenceMarkers);
   connect(m_cleaning->step<ui::HeadStabilizationStep>(), &ui::HeadStabilizationStep::editReferenceMarkersRequested,
           this, &MainWindow::editReferenceMarkers);
-  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::highlightCleared, m_view3d,
-          &ui::MarkerView3d::clearLayoutHighlight);
-  connect(layoutDock, &QDockWidget::visibilityChanged, this, [this, showLayout](bool visible) {
-    std::vector<bool> kept;
-    if (visible) {
-      const Take& take = m_document->take();
-      const std::vector<std::string> labels = m_layoutPlanning->selectedLabels();
-      if (!labels.empty())
-        kept.assign(static_cast<std::size_t>(take.markerCount()), false);
-      for (const std::string& label : labels)
-        if (const auto m = take.markerIndex(label))
-          kept[static_cast<std::size_t>(*m)] = true;
-    }
-    showLayout(kept);
-  });
   m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
   m_faceMeshDock = addDock(tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
@@ -283,16 +261,15 @@ void MainWindow::createDocks()
   tabifyDockWidget(cleaningDock, m_blendshapeDock);
   m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
 
-  // Layout planning judges layouts on the session's rig through the binding on its neutral.
-  m_layoutPlanning->setRigSource([this] { return m_session->boundRig(); });
-
-  m_referenceVideo = new ui::ReferenceVideoPanel(*m_document, this);
+  m_referenceVideo = new ui::ReferenceVideoPanel(*m_session, this);
   QDockWidget* videoDock =
       addDock(tr("Reference Video"), QStringLiteral("referenceVideoDock"), m_referenceVideo, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, videoDock);
   videoDock->hide();  // View ▸ Reference Video shows it, and opening a take that remembers videos
-  connect(m_referenceVideo, &ui::ReferenceVideoPanel::videosRestored, this,
-          [this] { (void)showDock(QStringLiteral("referenceVideoDock")); });
+  connect(&m_session->referenceVideos(), &ui::ReferenceVideos::restored, this, [this](int count) {
+    if (count > 0)
+      (void)showDock(QStringLiteral("referenceVideoDock"));
+  });
 
   m_weights = new ui::WeightCurveView(*m_document, m_session->blendshapes(), this);
   m_weightsDock =
@@ -314,7 +291,7 @@ QString MainWindow::openReferenceVideo(const QString& path, std::optional<double
 {
   const QString error = m_referenceVideo->openVideo(path);
   if (error.isEmpty() && offset)
-    m_referenceVideo->video().setOffset(*offset);
+    m_session->referenceVideos().current()->setOffset(*offset);
   (void)showDock(QStringLiteral("referenceVideoDock"));
   return error;
 }
@@ -354,14 +331,8 @@ void MainWindow::exportAnimation()
   ui::ExportDialog dialog(*m_document, this);
   const ui::FaceMeshModel& mesh = m_session->faceMesh();
   if (mesh.rig()) {
-    // The export runs on a worker thread: it gets its own rig and copy of the take, since the
-    // panel's rig follows every edit and option change.
-    try {
-      auto take = std::make_shared<const Take>(mesh.rigTake());
-      auto rig = std::make_shared<FaceRig>(mesh.mesh(), mesh.binding(), *take, mesh.options());
-      dialog.setMeshSource(
-          mesh.mesh(), [take, rig](Eigen::Index frame, MeshVertices& out) { (void)rig->deform(*take, frame, out); },
-          QStringLiteral("face"));
+    try {  // the export runs on a worker thread: with a rig of its own
+      dialog.setMeshSource(mesh.mesh(), mesh.detachedDeformer(), QStringLiteral("face"));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export Animation"),
                            tr("The face mesh cannot be exported: %1").arg(QString::fromStdString(e.what())));
@@ -386,8 +357,9 @@ void MainWindow::exportReviewVideo()
 {
   if (!m_document->hasTake())
     return;
-  const ui::ReferenceVideo& video = m_referenceVideo->video();
-  ui::ReviewExportDialog dialog(*m_document, video.isOpen() ? video.path() : QString(), video.offset(), this);
+  const ui::ReferenceVideo* video = m_session->referenceVideos().current();
+  const bool shown = video && video->isOpen();
+  ui::ReviewExportDialog dialog(*m_document, shown ? video->path() : QString(), video ? video->offset() : 0.0, this);
   if (dialog.exec() != QDialog::Accepted)
     return;
   const ui::ReviewRequest request = dialog.request();
@@ -531,17 +503,10 @@ void MainWindow::createActions()
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
-  m_headStabilizedView = m_viewMenu->addAction(tr("&Head-Stabilized View"));
-  m_headStabilizedView->setObjectName(QStringLiteral("headStabilizedViewAction"));
-  m_headStabilizedView->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
-  m_headStabilizedView->setCheckable(true);
-  m_headStabilizedView->setToolTip(tr("Show the markers in the head frame of the reference markers (a view "
-                                      "setting; the take is not changed)"));
-  connect(m_headStabilizedView, &QAction::triggered, this, &MainWindow::setHeadStabilizedView);
-  // The view drops its head pose when markers shift or a take is set: follow the document's set.
-  connect(m_document, &ui::TakeDocument::markersChanged, this, &MainWindow::followReferenceMarkers);
-  connect(m_document, &ui::TakeDocument::referenceMarkersChanged, this, &MainWindow::followReferenceMarkers);
-  connect(m_document, &ui::TakeDocument::takeReset, this, &MainWindow::followReferenceMarkers);
+  m_headStabilizedView = new ui::HeadStabilizedViewAction(*m_document, *m_view3d, *this, this);
+  connect(m_headStabilizedView, &ui::HeadStabilizedViewAction::message, this,
+          [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); });
+  m_viewMenu->addAction(m_headStabilizedView->action());
 
   // Transport keys work wherever the focus is (window shortcuts).
   auto addShortcut = [this](const QKeySequence& keys, auto slot) {
@@ -624,40 +589,6 @@ void MainWindow::editPreferences()
     QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
   chosen.save();
   applyPreferences(chosen);
-}
-
-void MainWindow::setHeadStabilizedView(bool on)
-{
-  if (!on) {
-    m_view3d->setHeadReference({});
-    m_headStabilizedView->setChecked(false);
-    statusBar()->showMessage(tr("3D view in the lab frame"), ui::kStatusMessageMs);
-    return;
-  }
-  const QString error = m_document->referenceMarkers().size() < 3
-                            ? tr("Choose at least three reference markers first (Marker ▸ Reference Markers…).")
-                            : m_view3d->setHeadReference(m_document->referenceMarkers());
-  m_headStabilizedView->setChecked(error.isEmpty());
-  if (!error.isEmpty())
-    QMessageBox::warning(this, tr("Head-Stabilized View"), error);
-  else
-    statusBar()->showMessage(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"),
-                             ui::kStatusMessageMs);
-}
-
-void MainWindow::followReferenceMarkers()
-{
-  if (!m_headStabilizedView->isChecked())
-    return;
-  // Runs after the view's own handlers (connected later), which dropped the old indices.
-  const bool usable = m_document->referenceMarkers().size() >= 3 &&
-                      m_view3d->setHeadReference(m_document->referenceMarkers()).isEmpty();
-  if (!usable) {
-    m_view3d->setHeadReference({});
-    m_headStabilizedView->setChecked(false);
-    statusBar()->showMessage(tr("3D view back in the lab frame: the reference markers cannot carry a head pose"),
-                             10000);
-  }
 }
 
 QWidget* MainWindow::centralArea()
@@ -924,7 +855,7 @@ QString MainWindow::loadCleaningPreset(const QString& path)
   if (!options.stabilizeLabels.empty())
     message += tr("; its head markers (%1) are not this take's: the take keeps its own")
                    .arg(joinLabels(options.stabilizeLabels));
-  statusBar()->showMessage(message, 10000);
+  statusBar()->showMessage(message, 2 * ui::kStatusMessageMs);
   return {};
 }
 
@@ -1022,7 +953,7 @@ bool MainWindow::offerRecovery()
     // Our own recovery copy first, then the old one goes: the edits are never only in memory.
     if (m_autosave->saveNow().isEmpty())
       ui::Autosave::remove(file);
-    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 10000);
+    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 2 * ui::kStatusMessageMs);
     return true;
   }
   return false;
@@ -1030,32 +961,21 @@ bool MainWindow::offerRecovery()
 
 QVariantMap MainWindow::recoverySession() const
 {
-  QVariantMap session;
+  QVariantMap session = m_session->recoveryState();
   session.insert(QStringLiteral("windowState"), saveState());
-  const ui::FaceMeshModel& mesh = m_session->faceMesh();
-  if (mesh.hasMesh()) {
-    session.insert(QStringLiteral("mesh"), mesh.meshPath());
-    session.insert(QStringLiteral("binding"), QString::fromStdString(bindingJson(mesh.binding())));
-  }
   return session;
 }
 
 void MainWindow::restoreSession(const QVariantMap& session)
 {
   restoreState(session.value(QStringLiteral("windowState")).toByteArray());
-  const QString mesh = session.value(QStringLiteral("mesh")).toString();
-  if (mesh.isEmpty())
+  if (session.value(QStringLiteral("mesh")).toString().isEmpty())
     return;
-  QString error = m_faceMesh->loadMesh(mesh);
-  QTemporaryFile binding(QDir::tempPath() + QStringLiteral("/mocap-binding-XXXXXX.json"));
-  if (error.isEmpty() && binding.open()) {
-    binding.write(session.value(QStringLiteral("binding")).toString().toUtf8());
-    binding.close();
-    error = m_faceMesh->loadBinding(binding.fileName());
-  }
+  const QString error = m_session->restoreRecoveryState(session);
   m_faceMeshDock->show();
   if (!error.isEmpty())
-    statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error), 10000);
+    statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error),
+                             2 * ui::kStatusMessageMs);
 }
 
 bool MainWindow::showDock(const QString& name)

@@ -22,6 +22,7 @@ class QToolButton;
 
 namespace mocap::ui {
 class Autosave;
+class HeadStabilizedViewAction;
 class LabellingActions;
 class MarkerEditActions;
 struct Preferences;
@@ -178,9 +179,6 @@ private:
   /// The face mesh, its binding and the window layout, kept with every autosave.
   [[nodiscard]] QVariantMap recoverySession() const;
   void restoreSession(const QVariantMap& session);
-  /// View ▸ Head-Stabilized View: the 3D view in the head frame of the take's reference markers.
-  void setHeadStabilizedView(bool on);
-  void followReferenceMarkers();
   void setSelectedAsReferenceMarkers();
   bool confirmDiscard();
   void updateTitle();
@@ -218,7 +216,7 @@ private:
   QAction* m_yUp = nullptr;
   QAction* m_zUp = nullptr;
   QAction* m_trails = nullptr;
-  QAction* m_headStabilizedView = nullptr;
+  ui::HeadStabilizedViewAction* m_headStabilizedView = nullptr;
   QLabel* m_status = nullptr;
   std::pair<Eigen::Index, Eigen::Index> m_statusFitsTake{-1, -1};  // frames, markers m_status is sized for
   QToolButton* m_warningsButton = nullptr;

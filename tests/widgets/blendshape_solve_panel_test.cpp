@@ -10,6 +10,8 @@
 
 #include "actions/weight_edit_actions.h"
 #include "commands/apply_patches_command.h"
+#include "document/layout_plan_model.h"
+#include "document/studio_session.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/take_document.h"
@@ -276,7 +278,7 @@ TEST_F(BlendshapeSolvePanelTest, LayoutPlanningJudgesLayoutsOnTheLoadedRig)
   solveSample();
   ASSERT_EQ(planning->run(), QString()) << planning->statusText().toStdString();
   ASSERT_TRUE(test::waitForJob(planning->jobs()));
-  const ui::LayoutPlanResult* result = planning->result();
+  const ui::LayoutPlanResult* result = window->session().layoutPlan().result();
   ASSERT_NE(result, nullptr) << planning->statusText().toStdString();
   ASSERT_TRUE(result->rig.has_value()) << result->rigError.toStdString();
   EXPECT_EQ(result->rig->boundMarkers, 31);

@@ -318,7 +318,7 @@ TEST_F(StudioViews, LayoutHighlightUsesNoSampleStateColourAndEndsWhenThePanelIsL
   const Eigen::Index keptMarker = *take.markerIndex("section3-1");
   const Eigen::Index droppedMarker = *take.markerIndex("section4-2");
   kept[static_cast<std::size_t>(keptMarker)] = true;
-  emit window->layoutPlanningPanel()->highlightChanged(kept);
+  window->markerView()->setLayoutHighlight(kept, {});
   ASSERT_EQ(window->markerView()->layoutHighlight().size(), kept.size());
   ui::MarkerView3d* view = window->markerView();
   std::vector<bool> reference(kept.size(), false);

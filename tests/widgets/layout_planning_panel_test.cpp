@@ -3,6 +3,8 @@
 #include "job_waits.h"
 #include "../core/test_support.h"
 
+#include "document/layout_plan_model.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "sample_window.h"
@@ -64,10 +66,10 @@ protected:
   {
     panel->setParameters(quick());
     ASSERT_EQ(panel->run(), QString());
-    EXPECT_TRUE(panel->busy() || panel->result() == nullptr);
+    EXPECT_TRUE(panel->busy() || layoutPlan().result() == nullptr);
     ASSERT_TRUE(test::waitForJob(panel->jobs()));
     ASSERT_FALSE(panel->busy());
-    ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
+    ASSERT_NE(layoutPlan().result(), nullptr) << panel->statusText().toStdString();
   }
 
   /// The take's labels the 3D view draws as kept.
@@ -82,6 +84,9 @@ protected:
     return labels;
   }
 
+  /// The session's layout plan, which the dock fills.
+  [[nodiscard]] ui::LayoutPlanModel& layoutPlan() const { return window->session().layoutPlan(); }
+
   static std::vector<std::string> sorted(std::vector<std::string> labels)
   {
     std::sort(labels.begin(), labels.end());
@@ -95,9 +100,9 @@ protected:
 TEST_F(LayoutPlanning, PlansTheSampleAndHighlightsTheClickedSize)
 {
   ASSERT_NO_FATAL_FAILURE(runQuickPlan());
-  const LayoutPlan& plan = panel->result()->plan;
+  const LayoutPlan& plan = layoutPlan().result()->plan;
   // Neither the reference markers nor the unlabelled point (Unlabeled1) are planned.
-  EXPECT_EQ(panel->result()->frames.markerCount(), 31);
+  EXPECT_EQ(layoutPlan().result()->frames.markerCount(), 31);
   LayoutErrorPlot* plot = panel->plot();
   for (const auto measure : {LayoutErrorPlot::Measure::ReconstructionRmse, LayoutErrorPlot::Measure::BlendshapeMse}) {
     EXPECT_GE(plot->points(measure, LayoutErrorPlot::Curve::Pfa).size(), 3u);
@@ -114,8 +119,8 @@ TEST_F(LayoutPlanning, PlansTheSampleAndHighlightsTheClickedSize)
   EXPECT_LT(rmse.back().x(), plot->width());
 
   // The recommended layout is highlighted straight away.
-  EXPECT_EQ(highlightedLabels(), sorted(panel->selectedLabels()));
-  EXPECT_EQ(static_cast<Eigen::Index>(panel->selectedLabels().size()), plan.recommendedSize);
+  EXPECT_EQ(highlightedLabels(), sorted(layoutPlan().selectedLabels()));
+  EXPECT_EQ(static_cast<Eigen::Index>(layoutPlan().selectedLabels().size()), plan.recommendedSize);
 
   // Click another size on the plot.
   const auto& sizes = plot->selectableSizes();
@@ -127,7 +132,7 @@ TEST_F(LayoutPlanning, PlansTheSampleAndHighlightsTheClickedSize)
   ASSERT_NE(layout, nullptr);
   std::vector<std::string> expected;
   for (const Eigen::Index m : layout->markers)
-    expected.push_back(panel->result()->frames.labels[static_cast<std::size_t>(m)]);
+    expected.push_back(layoutPlan().result()->frames.labels[static_cast<std::size_t>(m)]);
   EXPECT_EQ(highlightedLabels(), sorted(expected));
   EXPECT_EQ(static_cast<Eigen::Index>(expected.size()), target);
   EXPECT_EQ(window->markerView()->layoutHighlight().size(), 38u);
@@ -167,20 +172,20 @@ TEST_F(LayoutPlanning, CancelStopsTheRunAndLeavesThePanelIdle)
   panel->cancel();
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
   EXPECT_FALSE(panel->busy());
-  EXPECT_EQ(panel->result(), nullptr);
+  EXPECT_EQ(layoutPlan().result(), nullptr);
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("Cancel"))) << panel->statusText().toStdString();
   EXPECT_TRUE(window->markerView()->layoutHighlight().empty());
   // Idle again: a new run starts.
   panel->setParameters(quick());
   EXPECT_EQ(panel->run(), QString());
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
-  EXPECT_NE(panel->result(), nullptr);
+  EXPECT_NE(layoutPlan().result(), nullptr);
 }
 
 TEST_F(LayoutPlanning, ExportsTheSelectedLayout)
 {
   ASSERT_NO_FATAL_FAILURE(runQuickPlan());
-  const std::vector<std::string> labels = panel->selectedLabels();
+  const std::vector<std::string> labels = layoutPlan().selectedLabels();
   ASSERT_FALSE(labels.empty());
   test::TempDir dir;
   const QString list = QString::fromStdString(dir.file("layout.txt").string());
@@ -203,8 +208,8 @@ TEST_F(LayoutPlanning, ExportsTheSelectedLayout)
   const MarkerSet set = readMarkerSet(dir.file("reduced.json"));
   EXPECT_EQ(sorted(set.labels), sorted(capture));
   // Every pair in the file is a pair the plan kept together.
-  const MarkerSymmetry& symmetry = panel->result()->symmetry;
-  const auto& planned = panel->result()->frames.labels;
+  const MarkerSymmetry& symmetry = layoutPlan().result()->symmetry;
+  const auto& planned = layoutPlan().result()->frames.labels;
   for (const auto& [a, b] : set.pairs) {
     const auto ia = std::find(planned.begin(), planned.end(), set.labels[static_cast<std::size_t>(a)]) - planned.begin();
     const auto ib = std::find(planned.begin(), planned.end(), set.labels[static_cast<std::size_t>(b)]) - planned.begin();
@@ -232,7 +237,7 @@ TEST_F(LayoutPlanning, RefusesBadInputWithAMessage)
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());  // read on the worker: the failure arrives as the result
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
-  EXPECT_EQ(panel->result(), nullptr);
+  EXPECT_EQ(layoutPlan().result(), nullptr);
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("take.c3d"))) << panel->statusText().toStdString();
 }
 
@@ -251,8 +256,8 @@ TEST_F(LayoutPlanning, GlobsKeyPosesAndRandomSetsReachThePlan)
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
-  ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
-  const LayoutResult& result = *panel->result();
+  ASSERT_NE(layoutPlan().result(), nullptr) << panel->statusText().toStdString();
+  const LayoutResult& result = *layoutPlan().result();
   for (const std::string& label : result.frames.labels)
     EXPECT_TRUE(label.rfind("section1-", 0) != 0 && label.rfind("section2-", 0) != 0) << label;
   for (const LayoutSize& size : result.plan.sizes)
@@ -270,8 +275,8 @@ TEST_F(LayoutPlanning, GlobsKeyPosesAndRandomSetsReachThePlan)
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
-  ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
-  EXPECT_EQ(panel->result()->plan.basis.keyFrames, rows);
+  ASSERT_NE(layoutPlan().result(), nullptr) << panel->statusText().toStdString();
+  EXPECT_EQ(layoutPlan().result()->plan.basis.keyFrames, rows);
 }
 
 TEST_F(LayoutPlanning, ScrollsRatherThanForcingTheWindowTaller)
@@ -298,7 +303,7 @@ TEST_F(LayoutPlanning, RemembersItsParameters)
   panel->setParameters(p);
   ASSERT_EQ(panel->run(), QString());
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
-  LayoutPlanningPanel fresh(window->document());
+  LayoutPlanningPanel fresh(window->session());
   const ui::LayoutPlanParameters remembered = fresh.parameters();
   EXPECT_EQ(remembered.method, SelectionMethod::Greedy);
   EXPECT_EQ(remembered.randomSubsets, 2);

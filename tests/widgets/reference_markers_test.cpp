@@ -9,6 +9,8 @@
 #include "commands/rename_marker_command.h"
 #include "dialogs/export_dialog.h"
 #include "dialogs/reference_markers_dialog.h"
+#include "document/layout_plan_model.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "sample_window.h"
@@ -97,8 +99,8 @@ TEST_F(ReferenceMarkers, LayoutPlanningStabilizesWithThemAndLeavesThemOut)
   panel->setParameters(quick);
   ASSERT_EQ(panel->run(), QString());
   ASSERT_TRUE(test::waitForJob(panel->jobs()));
-  ASSERT_NE(panel->result(), nullptr) << panel->statusText().toStdString();
-  const ui::LayoutPlanResult& result = *panel->result();
+  ASSERT_NE(window->session().layoutPlan().result(), nullptr) << panel->statusText().toStdString();
+  const ui::LayoutPlanResult& result = *window->session().layoutPlan().result();
   EXPECT_TRUE(result.frames.stabilized);
   EXPECT_EQ(result.stabilizeLabels, kRoots);
   EXPECT_EQ(result.frames.markerCount(), 31) << "38 less the 6 reference markers and Unlabeled1";

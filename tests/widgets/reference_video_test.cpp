@@ -11,6 +11,8 @@
 #include "sample_window.h"
 
 #include "document/reference_video.h"
+#include "document/reference_videos.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/reference_video_panel.h"
 #include "views/video_view.h"
@@ -142,9 +144,10 @@ TEST(ReferenceVideo, AFileThatIsNotAVideoIsRefusedWithAMessage)
   const auto window = openSampleCopy(dir);
   ASSERT_NE(window, nullptr);
   ui::ReferenceVideoPanel* panel = window->referenceVideoPanel();
+  ui::ReferenceVideos& linked = window->session().referenceVideos();
   const QString error = panel->openVideo(qPath(path));
   EXPECT_TRUE(error.contains(QStringLiteral("notes.mp4"))) << error.toStdString();
-  EXPECT_EQ(panel->videoCount(), 0);
+  EXPECT_EQ(linked.count(), 0);
   EXPECT_FALSE(panel->video().isOpen());
   EXPECT_EQ(panel->view().caption(), QStringLiteral("No reference video"));
   // A video file with no frames in it: refused too.
@@ -155,8 +158,8 @@ TEST(ReferenceVideo, AFileThatIsNotAVideoIsRefusedWithAMessage)
     ASSERT_TRUE(writer.isOpened());
   }
   EXPECT_TRUE(panel->openVideo(qPath(empty)).contains(QStringLiteral("empty.avi")));
-  EXPECT_EQ(panel->videoCount(), 0);
-  panel->saveSidecar();
+  EXPECT_EQ(linked.count(), 0);
+  linked.save();
   EXPECT_FALSE(std::filesystem::exists(referenceVideoSidecarPath(dir.file("take.c3d"))));
 }
 
@@ -168,15 +171,16 @@ TEST(ReferenceVideo, SeveralVideosPerTakeEachWithItsOwnOffsetShowTheirFrames)
   const auto window = openSampleCopy(dir);
   ASSERT_NE(window, nullptr);
   ui::ReferenceVideoPanel* panel = window->referenceVideoPanel();
+  ui::ReferenceVideos& linked = window->session().referenceVideos();
   ASSERT_EQ(panel->openVideo(qPath(dir.file("left.avi"))), QString());
   panel->video().setOffset(0.4);
   ASSERT_EQ(panel->openVideo(qPath(dir.file("right.avi"))), QString());
   panel->video().setOffset(1.1);
-  ASSERT_EQ(panel->videoCount(), 2);
-  EXPECT_EQ(panel->currentIndex(), 1);
+  ASSERT_EQ(linked.count(), 2);
+  EXPECT_EQ(linked.currentIndex(), 1);
   EXPECT_EQ(panel->openVideo(qPath(dir.file("left.avi"))), QString());  // already linked: shown, not added
-  EXPECT_EQ(panel->videoCount(), 2);
-  EXPECT_EQ(panel->currentIndex(), 0);
+  EXPECT_EQ(linked.count(), 2);
+  EXPECT_EQ(linked.currentIndex(), 0);
   ui::TakeDocument& document = window->document();
   const std::vector<std::pair<double, double>> videos = {{0.4, 25.0}, {1.1, 30.0}};
   for (const Eigen::Index n : {Eigen::Index{100}, Eigen::Index{900}, Eigen::Index{350}, Eigen::Index{351}}) {
@@ -185,7 +189,7 @@ TEST(ReferenceVideo, SeveralVideosPerTakeEachWithItsOwnOffsetShowTheirFrames)
       panel->setCurrentIndex(v);
       ui::ReferenceVideo& video = panel->video();
       EXPECT_TRUE(video.isActive());
-      EXPECT_FALSE(panel->video(1 - v).isActive()) << "a hidden video decodes nothing";
+      EXPECT_FALSE(linked.at(1 - v).isActive()) << "a hidden video decodes nothing";
       const Eigen::Index expected = expectedFrame(n, videos[static_cast<std::size_t>(v)].first,
                                                   videos[static_cast<std::size_t>(v)].second);
       ASSERT_EQ(video.wantedFrame(), expected);
@@ -194,7 +198,7 @@ TEST(ReferenceVideo, SeveralVideosPerTakeEachWithItsOwnOffsetShowTheirFrames)
     }
   }
   panel->removeVideo(0);
-  ASSERT_EQ(panel->videoCount(), 1);
+  ASSERT_EQ(linked.count(), 1);
   EXPECT_EQ(QFileInfo(panel->video().path()).fileName(), QStringLiteral("right.avi"));
   EXPECT_NEAR(panel->video().offset(), 1.1, 1e-12);
 }
@@ -210,6 +214,7 @@ TEST(ReferenceVideo, VideosAndOffsetsAreRememberedBesideTheTakeAndAMissingOneIsK
   const auto window = openSampleCopy(dir);
   ASSERT_NE(window, nullptr);
   ui::ReferenceVideoPanel* panel = window->referenceVideoPanel();
+  ui::ReferenceVideos& linked = window->session().referenceVideos();
   ASSERT_EQ(panel->openVideo(qPath(dir.file("cam/hmc.avi"))), QString());
   panel->video().setOffset(0.36);
   ASSERT_EQ(panel->openVideo(qPath(elsewhere.file("witness.avi"))), QString());
@@ -226,11 +231,11 @@ TEST(ReferenceVideo, VideosAndOffsetsAreRememberedBesideTheTakeAndAMissingOneIsK
 
   // Reopening the take restores both, with their offsets, showing their frames.
   ASSERT_EQ(window->openFile(qPath(take), true), QString());
-  ASSERT_EQ(panel->videoCount(), 2);
-  EXPECT_NEAR(panel->video(0).offset(), 0.36, 1e-12);
-  EXPECT_NEAR(panel->video(1).offset(), -0.2, 1e-12);
-  EXPECT_FALSE(panel->isMissing(0));
-  EXPECT_FALSE(panel->isMissing(1));
+  ASSERT_EQ(linked.count(), 2);
+  EXPECT_NEAR(linked.at(0).offset(), 0.36, 1e-12);
+  EXPECT_NEAR(linked.at(1).offset(), -0.2, 1e-12);
+  EXPECT_FALSE(linked.isMissing(0));
+  EXPECT_FALSE(linked.isMissing(1));
   window->document().setCurrentFrame(500);
   panel->setCurrentIndex(1);
   ASSERT_TRUE(waitForFrame(panel->video(), expectedFrame(500, -0.2)));
@@ -240,20 +245,20 @@ TEST(ReferenceVideo, VideosAndOffsetsAreRememberedBesideTheTakeAndAMissingOneIsK
   const std::string before = readFileBytes(sidecar);
   std::filesystem::rename(elsewhere.file("witness.avi"), elsewhere.file("moved.avi"));
   ASSERT_EQ(window->openFile(qPath(take), true), QString());
-  ASSERT_EQ(panel->videoCount(), 2);
-  EXPECT_FALSE(panel->isMissing(0));
-  EXPECT_TRUE(panel->isMissing(1));
-  EXPECT_EQ(panel->currentIndex(), 0) << "the video that is there is shown";
+  ASSERT_EQ(linked.count(), 2);
+  EXPECT_FALSE(linked.isMissing(0));
+  EXPECT_TRUE(linked.isMissing(1));
+  EXPECT_EQ(linked.currentIndex(), 0) << "the video that is there is shown";
   EXPECT_TRUE(panel->statusText().contains(QStringLiteral("Locate"))) << panel->statusText().toStdString();
   panel->setCurrentIndex(1);
   EXPECT_TRUE(panel->view().caption().contains(QStringLiteral("witness.avi is missing")))
       << panel->view().caption().toStdString();
-  panel->saveSidecar();
+  linked.save();
   EXPECT_EQ(readFileBytes(sidecar), before) << "declining to locate it keeps it in the sidecar";
   // Changing the other video keeps the missing one as stored.
   panel->setCurrentIndex(0);
   panel->video().setOffset(0.4);
-  panel->saveSidecar();
+  linked.save();
   auto links = readReferenceVideoSidecar(take);
   ASSERT_EQ(links.size(), 2u);
   EXPECT_DOUBLE_EQ(links[0].offset, 0.4);
@@ -263,9 +268,9 @@ TEST(ReferenceVideo, VideosAndOffsetsAreRememberedBesideTheTakeAndAMissingOneIsK
 
   // Located: it opens with its offset, and the sidecar follows it.
   ASSERT_EQ(panel->locateVideo(1, qPath(elsewhere.file("moved.avi"))), QString());
-  EXPECT_FALSE(panel->isMissing(1));
-  EXPECT_NEAR(panel->video(1).offset(), -0.2, 1e-12);
-  panel->saveSidecar();
+  EXPECT_FALSE(linked.isMissing(1));
+  EXPECT_NEAR(linked.at(1).offset(), -0.2, 1e-12);
+  linked.save();
   links = readReferenceVideoSidecar(take);
   ASSERT_EQ(links.size(), 2u);
   EXPECT_TRUE(links[1].found);
@@ -274,7 +279,7 @@ TEST(ReferenceVideo, VideosAndOffsetsAreRememberedBesideTheTakeAndAMissingOneIsK
   // Removing every video removes the sidecar.
   panel->removeVideo(1);
   panel->removeVideo(0);
-  panel->saveSidecar();
+  linked.save();
   EXPECT_FALSE(std::filesystem::exists(sidecar));
 }
 

@@ -54,6 +54,13 @@ const Take& FaceMeshModel::rigTake() const
   return m_stabilized ? *m_stabilized : m_document.take();
 }
 
+std::function<void(Eigen::Index, MeshVertices&)> FaceMeshModel::detachedDeformer() const
+{
+  auto take = std::make_shared<const Take>(rigTake());
+  auto rig = std::make_shared<FaceRig>(m_mesh, m_binding, *take, m_options);
+  return [take, rig](Eigen::Index frame, MeshVertices& vertices) { (void)rig->deform(*take, frame, vertices); };
+}
+
 void FaceMeshModel::setMesh(Mesh mesh, const QString& path)
 {
   m_mesh = std::move(mesh);

@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -86,6 +87,10 @@ public:
   [[nodiscard]] const FaceRig* compareRig() const { return m_compareRig.get(); }
   /// The take the rigs see (head motion removed when stabilizing).
   [[nodiscard]] const Take& rigTake() const;
+  /// The mesh deformed to a frame by a rig of its own over a copy of rigTake(), for a job on a
+  /// worker thread (this model's rig follows every edit and option change). Building it costs a
+  /// FaceRig and a take copy; throws as FaceRig does for a binding that cannot rig.
+  [[nodiscard]] std::function<void(Eigen::Index frame, MeshVertices& vertices)> detachedDeformer() const;
 
   /// The mesh deformed to `frame` by the rig (or, with `compared`, the compare rig). False when
   /// there is no such rig or the take changed under it; then the rigs are dropped, error() says

@@ -2,7 +2,12 @@
 
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
+#include "document/layout_plan_model.h"
+#include "document/reference_videos.h"
 #include "document/take_document.h"
+
+#include "mocap/deform/mesh_binding.h"
+#include "mocap/io/mesh_io.h"
 
 #include <QUndoStack>
 
@@ -28,6 +33,8 @@ StudioSession::StudioSession(QObject* parent) : QObject(parent), m_document(new 
   connect(m_document, &TakeDocument::takeReset, this, &StudioSession::dropPreviousTake);
   m_faceMesh = new FaceMeshModel(*m_document, this);
   m_blendshapes = new BlendshapeSolveModel(this);
+  m_videos = new ReferenceVideos(*m_document, this);
+  m_layoutPlan = new LayoutPlanModel(*m_document, this);
   // After the models have the new take, before any view: the face follows the take's head
   // markers, then a kept rig is bound to the new take (so Reset Camera frames it).
   connect(m_document, &TakeDocument::takeReset, this, &StudioSession::followReferenceMarkers);
@@ -48,6 +55,37 @@ BoundRig StudioSession::boundRig() const
   if (!rig || m_faceMesh->mesh().vertexCount() != rig->neutral.vertexCount())
     return {};
   return {rig, m_faceMesh->binding()};
+}
+
+namespace {
+const QString kMeshKey = QStringLiteral("mesh");
+const QString kBindingKey = QStringLiteral("binding");
+} // namespace
+
+QVariantMap StudioSession::recoveryState() const
+{
+  QVariantMap state;
+  if (m_faceMesh->hasMesh()) {
+    state.insert(kMeshKey, m_faceMesh->meshPath());
+    state.insert(kBindingKey, QString::fromStdString(bindingJson(m_faceMesh->binding())));
+  }
+  return state;
+}
+
+QString StudioSession::restoreRecoveryState(const QVariantMap& state)
+{
+  const QString meshPath = state.value(kMeshKey).toString();
+  if (meshPath.isEmpty())
+    return {};
+  try {
+    Mesh mesh = readMesh(meshPath.toStdString());
+    const Eigen::Index vertices = mesh.vertexCount();
+    m_faceMesh->setMesh(std::move(mesh), meshPath);
+    m_faceMesh->setBinding(parseBinding(state.value(kBindingKey).toString().toStdString(), "recovered binding", vertices));
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return m_faceMesh->error();
 }
 
 void StudioSession::dropPreviousTake()

@@ -3,6 +3,8 @@
 #include "document/bound_rig.h"
 
 #include <QObject>
+#include <QString>
+#include <QVariantMap>
 
 #include <memory>
 
@@ -12,12 +14,15 @@ namespace mocap::ui {
 
 class BlendshapeSolveModel;
 class FaceMeshModel;
+class LayoutPlanModel;
+class ReferenceVideos;
 class TakeDocument;
 
 /// The studio's composition root for the open take: it owns the TakeDocument (the take, its
 /// undo stack, frame, selection and reference markers), the FaceMeshModel (mesh, binding, rigs)
 /// and the BlendshapeSolveModel (blendshape rig, solved weights), which share the document's one
-/// undo stack, and keeps the face mesh on the take's reference markers (head motion removed with
+/// undo stack, the take's ReferenceVideos (with their sidecar) and the LayoutPlanModel (the last
+/// marker layout plan and its picked size), and keeps the face mesh on the take's reference markers (head motion removed with
 /// them). Panels and views are given the session (or its models) and observe them; no panel owns
 /// a model or knows another panel.
 ///
@@ -39,6 +44,8 @@ public:
   [[nodiscard]] TakeDocument& document() const { return *m_document; }
   [[nodiscard]] FaceMeshModel& faceMesh() const { return *m_faceMesh; }
   [[nodiscard]] BlendshapeSolveModel& blendshapes() const { return *m_blendshapes; }
+  [[nodiscard]] ReferenceVideos& referenceVideos() const { return *m_videos; }
+  [[nodiscard]] LayoutPlanModel& layoutPlan() const { return *m_layoutPlan; }
   /// The one undo stack (the document's): take edits, binding edits and weight edits undo in order.
   [[nodiscard]] QUndoStack* undoStack() const;
 
@@ -46,6 +53,12 @@ public:
   /// take starts without them).
   void setKeepRig(bool keep) { m_keepRig = keep; }
   [[nodiscard]] bool keepRig() const { return m_keepRig; }
+
+  /// What a recovery file keeps beside the take: the face mesh's file and its binding (JSON).
+  [[nodiscard]] QVariantMap recoveryState() const;
+  /// Restores recoveryState()'s face mesh and binding (read from the mesh file again); returns ""
+  /// or why they could not be restored.
+  QString restoreRecoveryState(const QVariantMap& state);
 
   /// The blendshape rig with the binding made on its neutral (the face mesh is the rig's
   /// neutral); empty otherwise.
@@ -66,6 +79,8 @@ private:
   TakeDocument* m_document = nullptr;
   FaceMeshModel* m_faceMesh = nullptr;
   BlendshapeSolveModel* m_blendshapes = nullptr;
+  ReferenceVideos* m_videos = nullptr;
+  LayoutPlanModel* m_layoutPlan = nullptr;
   bool m_keepRig = false;
   std::unique_ptr<KeptRig> m_kept;  // between dropPreviousTake and restoreKeptRig
 };

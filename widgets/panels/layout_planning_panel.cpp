@@ -1,6 +1,9 @@
 #include "panels/layout_planning_panel.h"
 
+#include "document/bound_rig.h"
 #include "document/job_runner.h"
+#include "document/layout_plan_model.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
 #include "panels/reference_markers_row.h"
@@ -114,16 +117,17 @@ LayoutRequest layoutRequest(const LayoutPlanParameters& parameters, const std::v
   return request;
 }
 
-LayoutPlanningPanel::LayoutPlanningPanel(TakeDocument& document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_jobs(new JobRunner(this))
+LayoutPlanningPanel::LayoutPlanningPanel(StudioSession& session, QWidget* parent)
+    : QWidget(parent),
+      m_session(session),
+      m_document(session.document()),
+      m_plan(session.layoutPlan()),
+      m_jobs(new JobRunner(this))
 {
   buildForm();
   readSettings();
-  connect(m_plot, &LayoutErrorPlot::sizeSelected, this, &LayoutPlanningPanel::showSelectedSize);
-  // The highlight maps labels onto the open take; another take (or other markers) ends it.
-  connect(&document, &TakeDocument::takeReset, this, &LayoutPlanningPanel::highlightCleared);
-  connect(&document, &TakeDocument::markersChanged, this, &LayoutPlanningPanel::showSelectedSize);
-  connect(&document, &TakeDocument::markerRenamed, this, &LayoutPlanningPanel::showSelectedSize);
+  connect(m_plot, &LayoutErrorPlot::sizeSelected, &m_plan, &LayoutPlanModel::setSelectedSize);
+  connect(&m_plan, &LayoutPlanModel::changed, this, &LayoutPlanningPanel::showSelectedSize);
   setIdle(true);
 }
 
@@ -417,7 +421,7 @@ QString LayoutPlanningPanel::run()
     problem = checkedRequest(p, reference, request);
   BoundRig rig;
   if (problem.isEmpty() && m_judgeOnRig->isChecked()) {
-    rig = m_rigSource ? m_rigSource() : BoundRig{};
+    rig = m_session.boundRig();
     if (!rig.rig || rig.binding.markers.empty())
       problem = tr("Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its "
                    "neutral (Face Mesh panel); or switch it off.");
@@ -475,7 +479,7 @@ void LayoutPlanningPanel::setIdle(bool idle)
 {
   m_idle = idle;
   m_run->setEnabled(idle);
-  const bool exportable = idle && !selectedLabels().empty();
+  const bool exportable = idle && !m_plan.selectedLabels().empty();
   m_exportLabels->setEnabled(exportable);
   m_exportSet->setEnabled(exportable);
   m_exportTake->setEnabled(exportable);
@@ -504,46 +508,32 @@ void LayoutPlanningPanel::onFinished(std::shared_ptr<LayoutPlanResult> result)
   } else if (result->plan.cancelled) {
     m_status->setText(tr("Cancelled; the previous result is kept."));
   } else {
-    m_result = std::move(result);
-    const LayoutPlan& plan = m_result->plan;
-    const LayoutFrames& frames = m_result->frames;
+    const LayoutPlan& plan = result->plan;
+    const LayoutFrames& frames = result->frames;
     m_status->setText(tr("%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.")
                           .arg(frames.markerCount())
                           .arg(static_cast<qlonglong>(frames.frames.rows()))
-                          .arg(m_result->symmetry.pairs().size())
-                          .arg(m_result->pairSource)
+                          .arg(result->symmetry.pairs().size())
+                          .arg(result->pairSource)
                           .arg(static_cast<qlonglong>(plan.pcaComponents))
                           .arg(static_cast<qlonglong>(plan.recommendedSize))
                           .arg(frames.stabilized ? tr("head motion removed with %n reference marker(s)", nullptr,
-                                                      static_cast<int>(m_result->stabilizeLabels.size()))
+                                                      static_cast<int>(result->stabilizeLabels.size()))
                                                  : tr("head motion not removed: no reference markers")));
     m_status->setToolTip(tr("%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; "
                             "recommended by the %3")
                              .arg(static_cast<qlonglong>(frames.droppedFrames))
                              .arg(100.0 * plan.explainedVariance, 0, 'f', 1)
                              .arg(QString::fromStdString(plan.recommendationRule)));
-    m_plot->setPlan(plan, m_result->rig ? &*m_result->rig : nullptr);
-    if (!m_result->rigError.isEmpty())
+    m_plot->setPlan(plan, result->rig ? &*result->rig : nullptr);
+    if (!result->rigError.isEmpty())
       m_status->setText(m_status->text() + QLatin1Char('\n') +
-                        tr("Not judged on the rig: %1").arg(m_result->rigError));
-    else if (m_result->rig && m_result->rig->cancelled)
+                        tr("Not judged on the rig: %1").arg(result->rigError));
+    else if (result->rig && result->rig->cancelled)
       m_status->setText(m_status->text() + QLatin1Char('\n') + tr("Judging on the rig was cancelled."));
-    showSelectedSize();
+    m_plan.setResult(std::move(result), m_plot->selectedSize());  // the table and highlight follow
   }
   setIdle(true);
-}
-
-const ScoredLayout* LayoutPlanningPanel::selectedLayout() const
-{
-  if (!m_result)
-    return nullptr;
-  return m_result->layout(m_plot->selectedSize());
-}
-
-std::vector<std::string> LayoutPlanningPanel::selectedLabels() const
-{
-  const ScoredLayout* layout = selectedLayout();
-  return layout ? m_result->labelsOf(layout->markers) : std::vector<std::string>{};
 }
 
 namespace {
@@ -564,7 +554,8 @@ QString rigSizeText(const LayoutSizeRigErrors& size)
 
 void LayoutPlanningPanel::showSelectedSize()
 {
-  const LayoutSizeRigErrors* rigSize = m_result && m_result->rig ? m_result->rig->size(m_plot->selectedSize()) : nullptr;
+  const LayoutPlanResult* result = m_plan.result();
+  const LayoutSizeRigErrors* rigSize = result && result->rig ? result->rig->size(m_plan.selectedSize()) : nullptr;
   m_rigSummary->setVisible(rigSize != nullptr);
   if (rigSize)
     m_rigSummary->setText(tr("Rig-weight MSE at %1 markers (%2 of them bound; all %3 bound markers: 0): %4")
@@ -572,17 +563,16 @@ void LayoutPlanningPanel::showSelectedSize()
                               .arg(static_cast<qlonglong>(rigSize->pfa ? rigSize->pfa->boundMarkers
                                                           : rigSize->greedy ? rigSize->greedy->boundMarkers
                                                                             : 0))
-                              .arg(static_cast<qlonglong>(m_result->rig->boundMarkers))
+                              .arg(static_cast<qlonglong>(result->rig->boundMarkers))
                               .arg(rigSizeText(*rigSize)));
   m_markers->setRowCount(0);
-  const ScoredLayout* layout = selectedLayout();
+  const ScoredLayout* layout = m_plan.selectedLayout();
   if (!layout) {
-    emit highlightCleared();
     setIdle(m_idle);
     return;
   }
-  const LayoutFrames& frames = m_result->frames;
-  const MarkerSymmetry& symmetry = m_result->symmetry;
+  const LayoutFrames& frames = result->frames;
+  const MarkerSymmetry& symmetry = result->symmetry;
   for (const Eigen::Index m : layout->markers) {
     const int row = m_markers->rowCount();
     m_markers->insertRow(row);
@@ -598,26 +588,12 @@ void LayoutPlanningPanel::showSelectedSize()
                                                 : tr("—")));
   }
   m_markers->resizeColumnsToContents();
-
-  // Kept flags by label, so the highlight fits the open take even when it is not the first planned.
-  const Take& take = m_document.take();
-  std::vector<bool> kept(static_cast<std::size_t>(take.markerCount()), false);
-  for (const std::string& label : selectedLabels())
-    if (const auto m = take.markerIndex(label))
-      kept[static_cast<std::size_t>(*m)] = true;
-  emit highlightChanged(kept);
   setIdle(m_idle);  // the export buttons follow the selection
-}
-
-std::vector<std::string> LayoutPlanningPanel::captureLabels() const
-{
-  const ScoredLayout* layout = selectedLayout();
-  return layout ? m_result->captureLabels(layout) : std::vector<std::string>{};
 }
 
 QString LayoutPlanningPanel::exportLabelList(const QString& path) const
 {
-  const std::vector<std::string> labels = selectedLabels();
+  const std::vector<std::string> labels = m_plan.selectedLabels();
   if (labels.empty())
     return tr("There is no layout to export: run the plan and pick a marker count.");
   std::string text;
@@ -633,7 +609,7 @@ QString LayoutPlanningPanel::exportLabelList(const QString& path) const
 
 QString LayoutPlanningPanel::exportMarkerSet(const QString& path) const
 {
-  const std::vector<std::string> labels = captureLabels();
+  const std::vector<std::string> labels = m_plan.captureLabels();
   if (labels.empty())
     return tr("There is no layout to export: run the plan and pick a marker count.");
   try {
@@ -644,9 +620,10 @@ QString LayoutPlanningPanel::exportMarkerSet(const QString& path) const
       const auto it = std::find(set.labels.begin(), set.labels.end(), label);
       return it == set.labels.end() ? -1 : static_cast<Eigen::Index>(it - set.labels.begin());
     };
-    for (const auto& [a, b] : m_result->symmetry.pairs()) {
-      const Eigen::Index i = indexOf(m_result->frames.labels[static_cast<std::size_t>(a)]);
-      const Eigen::Index j = indexOf(m_result->frames.labels[static_cast<std::size_t>(b)]);
+    const LayoutPlanResult& result = *m_plan.result();
+    for (const auto& [a, b] : result.symmetry.pairs()) {
+      const Eigen::Index i = indexOf(result.frames.labels[static_cast<std::size_t>(a)]);
+      const Eigen::Index j = indexOf(result.frames.labels[static_cast<std::size_t>(b)]);
       if (i >= 0 && j >= 0)
         set.pairs.emplace_back(i, j);
     }
@@ -659,7 +636,7 @@ QString LayoutPlanningPanel::exportMarkerSet(const QString& path) const
 
 QString LayoutPlanningPanel::exportTake(const QString& path) const
 {
-  const std::vector<std::string> labels = captureLabels();
+  const std::vector<std::string> labels = m_plan.captureLabels();
   if (labels.empty())
     return tr("There is no layout to export: run the plan and pick a marker count.");
   try {

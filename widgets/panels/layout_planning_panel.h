@@ -1,15 +1,11 @@
 #pragma once
 
-#include "document/bound_rig.h"
-
-#include "mocap/evaluation/layout_rig_error.h"
 #include "mocap/layout/layout_planning.h"
 
 #include <QString>
 #include <QStringList>
 #include <QWidget>
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,7 +24,10 @@ namespace mocap::ui {
 
 class JobRunner;
 class LayoutErrorPlot;
+class LayoutPlanModel;
+struct LayoutPlanResult;
 class ReferenceMarkersRow;
+class StudioSession;
 class TakeDocument;
 
 /// What the layout planning panel runs with (remembered in QSettings).
@@ -54,22 +53,11 @@ struct LayoutPlanParameters
 [[nodiscard]] LayoutRequest layoutRequest(const LayoutPlanParameters& parameters,
                                           const std::vector<std::string>& referenceLabels);
 
-/// A finished (or failed) planning run: the core result (planned frames, pairs, plan, the head
-/// reference markers it was planned with) and what the panel shows beside it.
-struct LayoutPlanResult : LayoutResult
-{
-  QString pairSource;  ///< where the pairs came from, in words
-  QString error;       ///< non-empty when the run failed
-  std::optional<PlanRigErrors> rig;  ///< the layouts judged on the blendshape rig, when asked
-  QString rigError;                  ///< why they could not be (the plan itself stands)
-};
-
-
 /// The marker layout planning dock (Wellein et al. 2007 via layout_planning.h, the planning `mocap pfa`
-/// runs): the open take
-/// plus optional take files, method and parameters; Run plans on a worker thread with progress and
-/// Cancel; the error-vs-marker-count plot; the selected size's markers with their pair frequencies,
-/// sent to the 3D view as a kept/dropped highlight; export of the reduced label list, marker-set
+/// runs): the open take plus optional take files, method and parameters; Run plans on a worker
+/// thread with progress and Cancel; the result goes to the session's layout plan (LayoutPlanModel,
+/// whose picked layout the 3D view highlights); the error-vs-marker-count plot picks a size; the
+/// picked size's markers with their pair frequencies; export of the reduced label list, marker-set
 /// file and take. Head motion is removed with the take's reference markers
 /// (TakeDocument::referenceMarkers), which are not planned over, as `mocap pfa --stabilize` does.
 /// Planning reads a copy of the take, so editing meanwhile is safe.
@@ -78,12 +66,12 @@ class LayoutPlanningPanel final : public QWidget
   Q_OBJECT
 
 public:
-  explicit LayoutPlanningPanel(TakeDocument& document, QWidget* parent = nullptr);
+  /// Plans the session's take, judges on its bound rig when asked, and keeps the result in its
+  /// layout plan.
+  explicit LayoutPlanningPanel(StudioSession& session, QWidget* parent = nullptr);
   ~LayoutPlanningPanel() override;
 
   [[nodiscard]] LayoutPlanParameters parameters() const;
-  /// Where Run takes the rig from when "Judge on the blendshape rig" is on (asked at each Run).
-  void setRigSource(std::function<BoundRig()> source) { m_rigSource = std::move(source); }
   /// Judge layouts on the rig too (as `mocap pfa --rig`); remembered.
   void setJudgeOnRig(bool on);
   void setParameters(const LayoutPlanParameters& parameters);
@@ -97,12 +85,8 @@ public:
   /// The panel's background job (its finished() is what a test waits on).
   [[nodiscard]] const JobRunner& jobs() const { return *m_jobs; }
 
-  /// The last successful plan, or nullptr.
-  [[nodiscard]] const LayoutPlanResult* result() const { return m_result.get(); }
   [[nodiscard]] LayoutErrorPlot* plot() const { return m_plot; }
   [[nodiscard]] QString statusText() const;
-  /// The planned markers of the selected size (the plan's method), in plan order; empty if none.
-  [[nodiscard]] std::vector<std::string> selectedLabels() const;
 
   /// Exports of the selected layout; each returns an error message or an empty string and writes
   /// atomically. The take and marker set also hold the head reference markers, which a capture
@@ -114,10 +98,6 @@ public:
 signals:
   /// The user asked to edit the reference markers (the main window opens the one editor).
   void editReferenceMarkersRequested();
-  /// One flag per marker of the open take: kept by the selected layout or not.
-  void highlightChanged(const std::vector<bool>& kept);
-  /// No layout to show any more (a new take, a failed or new run).
-  void highlightCleared();
 
 private:
   void buildForm();
@@ -129,15 +109,14 @@ private:
   void showError(const QString& message);
   void exportWithDialog(const QString& title, const QString& filter,
                         QString (LayoutPlanningPanel::*write)(const QString&) const);
-  [[nodiscard]] std::vector<std::string> captureLabels() const;
   /// Builds the request into `request` and checks it against the open take: an error message, or
   /// an empty string.
   QString checkedRequest(const LayoutPlanParameters& parameters, const std::vector<std::string>& reference,
                          LayoutRequest& request) const;
-  [[nodiscard]] const ScoredLayout* selectedLayout() const;
 
+  StudioSession& m_session;
   TakeDocument& m_document;
-  std::function<BoundRig()> m_rigSource;
+  LayoutPlanModel& m_plan;
   QCheckBox* m_judgeOnRig = nullptr;
   QLabel* m_rigSummary = nullptr;
   QListWidget* m_takes = nullptr;
@@ -164,7 +143,6 @@ private:
   QPushButton* m_exportSet = nullptr;
   QPushButton* m_exportTake = nullptr;
 
-  std::shared_ptr<LayoutPlanResult> m_result;
   bool m_idle = true;  // false from Run until the result is shown
 };
 

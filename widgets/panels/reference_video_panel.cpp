@@ -1,6 +1,8 @@
 #include "panels/reference_video_panel.h"
 
 #include "document/reference_video.h"
+#include "document/reference_videos.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/panel_folder.h"
 #include "panels/status_line.h"
@@ -30,29 +32,14 @@ namespace mocap::ui {
 namespace {
 
 const QString kGroup = QStringLiteral("referenceVideo/");
-constexpr int kSaveDelayMs = 400;  // offsets nudged in a row are written once
-
-std::filesystem::path toPath(const QString& path)
-{
-  return std::filesystem::path(path.toStdString());
-}
-
-QString fromPath(const std::filesystem::path& path)
-{
-  return QString::fromStdString(path.string());
-}
-
-bool sameLinks(const std::vector<ReferenceVideoLink>& a, const std::vector<ReferenceVideoLink>& b)
-{
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const ReferenceVideoLink& x, const ReferenceVideoLink& y) {
-    return x.path == y.path && x.relative == y.relative && x.offset == y.offset;
-  });
-}
 
 } // namespace
 
-ReferenceVideoPanel::ReferenceVideoPanel(TakeDocument& document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_none(new ReferenceVideo(document, this))
+ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent)
+    : QWidget(parent),
+      m_document(session.document()),
+      m_videos(session.referenceVideos()),
+      m_none(new ReferenceVideo(session.document(), this))
 {
   m_none->setActive(false);
   auto* layout = new QVBoxLayout(this);
@@ -62,7 +49,7 @@ ReferenceVideoPanel::ReferenceVideoPanel(TakeDocument& document, QWidget* parent
   m_choice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   m_choice->setMinimumContentsLength(12);
   connect(m_choice, &QComboBox::currentIndexChanged, this, [this](int index) {
-    if (index >= 0 && index != m_current)
+    if (index >= 0 && index != m_videos.currentIndex())
       setCurrentIndex(index);
   });
   files->addWidget(m_choice, 1);
@@ -74,7 +61,7 @@ ReferenceVideoPanel::ReferenceVideoPanel(TakeDocument& document, QWidget* parent
   connect(m_locate, &QPushButton::clicked, this, &ReferenceVideoPanel::locateDialog);
   m_remove = new QPushButton(tr("Remove"), this);
   m_remove->setToolTip(tr("Remove the shown video from the take"));
-  connect(m_remove, &QPushButton::clicked, this, [this] { removeVideo(m_current); });
+  connect(m_remove, &QPushButton::clicked, this, [this] { removeVideo(m_videos.currentIndex()); });
   files->addWidget(add);
   files->addWidget(m_locate);
   files->addWidget(m_remove);
@@ -141,159 +128,99 @@ ReferenceVideoPanel::ReferenceVideoPanel(TakeDocument& document, QWidget* parent
   sync->setColumnStretch(1, 1);
   layout->addLayout(sync);
 
-  m_views = new QStackedWidget(this);
-  m_noneView = new VideoView(*m_none, m_views);
-  m_views->addWidget(m_noneView);
-  layout->addWidget(m_views, 1);
+  m_stack = new QStackedWidget(this);
+  m_noneView = new VideoView(*m_none, m_stack);
+  m_stack->addWidget(m_noneView);
+  layout->addWidget(m_stack, 1);
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   layout->addWidget(m_status);
 
-  m_saveTimer.setSingleShot(true);
-  m_saveTimer.setInterval(kSaveDelayMs);
-  connect(&m_saveTimer, &QTimer::timeout, this, &ReferenceVideoPanel::saveSidecar);
-  connect(&document, &TakeDocument::takeReset, this, &ReferenceVideoPanel::restore);
-  connect(&document, &TakeDocument::filePathChanged, this, &ReferenceVideoPanel::takePathChanged);
-  connect(&document, &TakeDocument::currentFrameChanged, this, [this] {
-    if (m_current >= 0)
+  connect(&m_videos, &ReferenceVideos::videoInserted, this, &ReferenceVideoPanel::videoInserted);
+  connect(&m_videos, &ReferenceVideos::videoAboutToBeRemoved, this, &ReferenceVideoPanel::videoAboutToBeRemoved);
+  connect(&m_videos, &ReferenceVideos::currentChanged, this, &ReferenceVideoPanel::currentChanged);
+  connect(&m_videos, &ReferenceVideos::videoChanged, this, [this](int index) {
+    if (index == m_videos.currentIndex())
       updateInfo();
   });
-  restore();
+  connect(&m_videos, &ReferenceVideos::restored, this, &ReferenceVideoPanel::restored);
+  connect(&m_videos, &ReferenceVideos::saveFailed, this, [this](const QString& error) {
+    showStatusLine(*m_status, error, true);
+  });
+  connect(&m_document, &TakeDocument::currentFrameChanged, this, [this] {
+    if (m_videos.currentIndex() >= 0)
+      updateInfo();
+  });
+  for (int i = 0; i < m_videos.count(); ++i)
+    videoInserted(i);
+  updateEvents();
+  currentChanged(m_videos.currentIndex());
 }
 
-ReferenceVideoPanel::~ReferenceVideoPanel()
-{
-  saveSidecar();
-}
+ReferenceVideoPanel::~ReferenceVideoPanel() = default;
 
 ReferenceVideo& ReferenceVideoPanel::video() const
 {
-  return m_current >= 0 ? *m_entries[static_cast<std::size_t>(m_current)].video : *m_none;
-}
-
-ReferenceVideo& ReferenceVideoPanel::video(int index) const
-{
-  return *m_entries.at(static_cast<std::size_t>(index)).video;
+  ReferenceVideo* current = m_videos.current();
+  return current ? *current : *m_none;
 }
 
 VideoView& ReferenceVideoPanel::view() const
 {
-  return m_current >= 0 ? *m_entries[static_cast<std::size_t>(m_current)].view : *m_noneView;
+  const int current = m_videos.currentIndex();
+  return current >= 0 ? *m_views[static_cast<std::size_t>(current)] : *m_noneView;
 }
 
-bool ReferenceVideoPanel::isMissing(int index) const
+void ReferenceVideoPanel::videoInserted(int index)
 {
-  return !video(index).isOpen();
-}
-
-int ReferenceVideoPanel::addEntry(const ReferenceVideoLink& link, ReferenceVideo* opened)
-{
-  Entry entry;
-  entry.video = opened ? opened : new ReferenceVideo(m_document, this);
-  entry.video->setActive(false);
-  entry.stored = link;
-  entry.view = new VideoView(*entry.video, m_views);
-  m_views->addWidget(entry.view);
-  ReferenceVideo* video = entry.video;
-  connect(video, &ReferenceVideo::changed, this, [this, video] {
-    if (m_current >= 0 && video == m_entries[static_cast<std::size_t>(m_current)].video)
-      updateInfo();
-    scheduleSave();
-  });
-  connect(video, &ReferenceVideo::frameShown, this, [this, video] {
-    if (m_current >= 0 && video == m_entries[static_cast<std::size_t>(m_current)].video)
-      updateInfo();
-  });
-  m_entries.push_back(entry);
+  auto* view = new VideoView(m_videos.at(index), m_stack);
+  m_stack->addWidget(view);
+  m_views.insert(m_views.begin() + index, view);
   const QSignalBlocker blocker(m_choice);
-  m_choice->addItem(QString());
-  return videoCount() - 1;
+  m_choice->insertItem(index, QString());
 }
 
-void ReferenceVideoPanel::clearEntries()
+void ReferenceVideoPanel::videoAboutToBeRemoved(int index)
 {
-  for (Entry& entry : m_entries) {
-    delete entry.view;
-    delete entry.video;
-  }
-  m_entries.clear();
+  delete m_views[static_cast<std::size_t>(index)];  // it refers to the video going
+  m_views.erase(m_views.begin() + index);
   const QSignalBlocker blocker(m_choice);
-  m_choice->clear();
-  m_current = -1;
+  m_choice->removeItem(index);
 }
 
-void ReferenceVideoPanel::setCurrentIndex(int index)
+void ReferenceVideoPanel::currentChanged(int index)
 {
-  m_current = index >= 0 && index < videoCount() ? index : (m_entries.empty() ? -1 : 0);
-  for (int i = 0; i < videoCount(); ++i)
-    video(i).setActive(i == m_current);  // only the shown video decodes
-  m_views->setCurrentWidget(&view());
+  m_stack->setCurrentWidget(&view());
   {
     const QSignalBlocker blocker(m_choice);
-    m_choice->setCurrentIndex(m_current);
+    m_choice->setCurrentIndex(index);
   }
   updateInfo();
 }
 
+void ReferenceVideoPanel::setCurrentIndex(int index)
+{
+  m_videos.setCurrentIndex(index);
+}
+
 QString ReferenceVideoPanel::openVideo(const QString& path)
 {
-  const QString absolute = QFileInfo(path).absoluteFilePath();
-  for (int i = 0; i < videoCount(); ++i)
-    if (video(i).isOpen() && QFileInfo(video(i).path()).absoluteFilePath() == absolute) {
-      setCurrentIndex(i);  // already linked: show it
-      return {};
-    }
-  auto* opened = new ReferenceVideo(m_document, this);
-  opened->setActive(false);
-  const QString error = opened->open(absolute);
-  if (!error.isEmpty()) {
-    delete opened;
-    showStatusLine(*m_status, tr("Cannot show %1: %2").arg(QFileInfo(path).fileName(), error), true);
-    return m_status->text();
-  }
-  const std::filesystem::path take = m_document.filePath().isEmpty() ? toPath(absolute) : toPath(m_document.filePath());
-  const int index = addEntry(linkReferenceVideo(toPath(absolute), take, 0.0), opened);
-  setCurrentIndex(index);
-  showStatusLine(*m_status, QString(), false);
-  scheduleSave();
-  return {};
+  const QString error = m_videos.open(path);
+  showStatusLine(*m_status, error, !error.isEmpty());
+  return error;
 }
 
 void ReferenceVideoPanel::removeVideo(int index)
 {
-  if (index < 0 || index >= videoCount())
-    return;
-  Entry entry = m_entries[static_cast<std::size_t>(index)];
-  m_entries.erase(m_entries.begin() + index);
-  {
-    const QSignalBlocker blocker(m_choice);
-    m_choice->removeItem(index);
-  }
-  m_current = -1;
-  delete entry.view;
-  delete entry.video;
-  setCurrentIndex(std::min(index, videoCount() - 1));
+  m_videos.remove(index);
   showStatusLine(*m_status, QString(), false);
-  scheduleSave();
 }
 
 QString ReferenceVideoPanel::locateVideo(int index, const QString& path)
 {
-  if (index < 0 || index >= videoCount())
-    return {};
-  ReferenceVideo& located = video(index);
-  const QString absolute = QFileInfo(path).absoluteFilePath();
-  const QString error = located.open(absolute);  // keeps the offset
-  if (!error.isEmpty()) {
-    showStatusLine(*m_status, tr("Cannot show %1: %2").arg(QFileInfo(path).fileName(), error), true);
-    return m_status->text();
-  }
-  const std::filesystem::path take = m_document.filePath().isEmpty() ? toPath(absolute) : toPath(m_document.filePath());
-  m_entries[static_cast<std::size_t>(index)].stored = linkReferenceVideo(toPath(absolute), take, located.offset());
-  setCurrentIndex(index);
-  showStatusLine(*m_status, QString(), false);
-  scheduleSave();
-  return {};
+  const QString error = m_videos.locate(index, path);
+  showStatusLine(*m_status, error, !error.isEmpty());
+  return error;
 }
 
 void ReferenceVideoPanel::nudgeOrStep(int frames)
@@ -374,22 +301,24 @@ void ReferenceVideoPanel::updateInfo()
       m_frame->setMaximum(last);
     m_frame->setValue(static_cast<int>(shown.wantedFrame().value_or(-1)));
   }
-  m_offset->setEnabled(m_current >= 0);
+  const bool any = m_videos.currentIndex() >= 0;
+  m_offset->setEnabled(any);
   m_frame->setEnabled(open);
-  m_remove->setEnabled(m_current >= 0);
-  m_locate->setEnabled(m_current >= 0 && !open);
+  m_remove->setEnabled(any);
+  m_locate->setEnabled(any && !open);
   m_syncHere->setEnabled(open && shown.heldFrame().has_value());
   m_follow->setEnabled(open && shown.heldFrame().has_value());
   m_syncEvent->setEnabled(open && !m_events.empty());
-  m_choice->setEnabled(!m_entries.empty());
-  for (int i = 0; i < videoCount(); ++i) {
-    const QString name = QFileInfo(video(i).path()).fileName();
-    m_choice->setItemText(i, video(i).isOpen() ? name : tr("%1 (missing)").arg(name));
+  m_choice->setEnabled(m_videos.count() > 0);
+  for (int i = 0; i < m_videos.count(); ++i) {
+    const ReferenceVideo& each = m_videos.at(i);
+    const QString name = QFileInfo(each.path()).fileName();
+    m_choice->setItemText(i, each.isOpen() ? name : tr("%1 (missing)").arg(name));
   }
-  if (m_entries.empty())
+  if (m_videos.count() == 0)
     m_choice->setPlaceholderText(tr("No reference video"));
   if (!open) {
-    m_info->setText(m_current >= 0 ? tr("%1 is not available").arg(QFileInfo(shown.path()).fileName())
+    m_info->setText(any ? tr("%1 is not available").arg(QFileInfo(shown.path()).fileName())
                                    : tr("No reference video"));
     return;
   }
@@ -434,48 +363,9 @@ void ReferenceVideoPanel::updateEvents()
     m_eventChoice->setPlaceholderText(tr("The take has no events"));
 }
 
-void ReferenceVideoPanel::restore()
+void ReferenceVideoPanel::restored(int /*count*/, int missing, const QString& problem)
 {
-  saveSidecar();  // a change still pending belongs to the take that was open
-  m_restoring = true;
-  clearEntries();
-  m_sidecarTake = m_document.filePath();
-  m_sidecarReadable = true;
-  m_saved.clear();
-  QString problem;
-  int missing = 0;
-  if (!m_sidecarTake.isEmpty()) {
-    try {
-      m_saved = readReferenceVideoSidecar(toPath(m_sidecarTake));
-    } catch (const std::exception& e) {
-      m_sidecarReadable = false;
-      problem = tr("The videos remembered for this take cannot be read (%1); that file is left as it is and "
-                   "changes here are not remembered.")
-                    .arg(QString::fromStdString(e.what()));
-    }
-    for (const ReferenceVideoLink& link : m_saved) {
-      const int index = addEntry(link);
-      ReferenceVideo& restored = video(index);
-      restored.setOffset(link.offset);
-      const QString path = fromPath(link.path);
-      const QString error = link.found ? restored.open(path) : QString();
-      if (!link.found)
-        restored.setUnavailable(path, tr("%1 is missing: the take remembers it at %2. Locate… finds it; until "
-                                         "then it stays linked to the take.")
-                                          .arg(QFileInfo(path).fileName(), QDir::toNativeSeparators(path)));
-      else if (!error.isEmpty())
-        restored.setUnavailable(path, tr("Cannot show %1: %2").arg(QFileInfo(path).fileName(), error));
-      if (!restored.isOpen())
-        ++missing;
-    }
-  }
-  m_restoring = false;
   updateEvents();
-  int shown = -1;
-  for (int i = 0; i < videoCount() && shown < 0; ++i)
-    if (video(i).isOpen())
-      shown = i;
-  setCurrentIndex(shown >= 0 ? shown : 0);
   if (!problem.isEmpty())
     showStatusLine(*m_status, problem, true);
   else if (missing > 0)
@@ -486,60 +376,6 @@ void ReferenceVideoPanel::restore()
                    true);
   else
     showStatusLine(*m_status, QString(), false);
-  if (!m_entries.empty())
-    emit videosRestored(videoCount(), missing);
-}
-
-void ReferenceVideoPanel::takePathChanged(const QString& path)
-{
-  if (path == m_sidecarTake)
-    return;
-  // Saved under a new name: the videos go with it (relative to its folder), the old sidecar stays.
-  saveSidecar();
-  m_sidecarTake = path;
-  m_sidecarReadable = true;
-  m_saved.clear();
-  for (Entry& entry : m_entries)
-    if (!entry.video->isOpen() && !path.isEmpty())
-      entry.stored = linkReferenceVideo(entry.stored.path, toPath(path), entry.video->offset());
-  scheduleSave();
-}
-
-std::vector<ReferenceVideoLink> ReferenceVideoPanel::links() const
-{
-  std::vector<ReferenceVideoLink> result;
-  const std::filesystem::path take = toPath(m_sidecarTake);
-  for (const Entry& entry : m_entries) {
-    ReferenceVideoLink link = entry.video->isOpen()
-                                  ? linkReferenceVideo(toPath(entry.video->path()), take, entry.video->offset())
-                                  : entry.stored;  // missing: as stored, so nothing is lost
-    link.offset = entry.video->offset();
-    result.push_back(std::move(link));
-  }
-  return result;
-}
-
-void ReferenceVideoPanel::scheduleSave()
-{
-  if (!m_restoring)
-    m_saveTimer.start();
-}
-
-void ReferenceVideoPanel::saveSidecar()
-{
-  m_saveTimer.stop();
-  if (m_restoring || m_sidecarTake.isEmpty() || !m_sidecarReadable)
-    return;
-  std::vector<ReferenceVideoLink> current = links();
-  if (sameLinks(current, m_saved))
-    return;
-  try {
-    writeReferenceVideoSidecar(toPath(m_sidecarTake), current);
-    m_saved = std::move(current);
-  } catch (const std::exception& e) {
-    showStatusLine(*m_status, tr("Cannot remember the videos beside the take: %1").arg(QString::fromStdString(e.what())),
-                   true);
-  }
 }
 
 void ReferenceVideoPanel::openDialog()
@@ -555,7 +391,8 @@ void ReferenceVideoPanel::openDialog()
 
 void ReferenceVideoPanel::locateDialog()
 {
-  if (m_current < 0)
+  const int current = m_videos.currentIndex();
+  if (current < 0)
     return;
   const QString missing = video().path();
   QString folder = QFileInfo(missing).absolutePath();
@@ -567,7 +404,7 @@ void ReferenceVideoPanel::locateDialog()
   if (path.isEmpty())
     return;  // declined: the video stays linked as it was
   rememberPanelFolder(kGroup, path);
-  (void)locateVideo(m_current, path);
+  (void)locateVideo(current, path);
 }
 
 } // namespace mocap::ui
