@@ -108,8 +108,8 @@ void printSummary(const ActorArguments& arguments, const ActorProfile& profile, 
     if (!unreached.empty())
       std::cout << "not reached (extent 1, as the rig): " << unreached << '\n';
     if (!clipped.empty())
-      std::cout << "warning: reached the calibration's bound " << numberText(arguments.range.maximumWeight)
-                << " (the extent is a lower bound): " << clipped << '\n';
+      std::cout << "warning: at the calibration's bound " << numberText(arguments.range.maximumWeight)
+                << ", so not measured (extent 1; the markers may not see them): " << clipped << '\n';
   }
   std::cout << "wrote " << arguments.out << '\n';
 }

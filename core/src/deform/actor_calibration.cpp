@@ -126,7 +126,8 @@ ActorRange calibrateActorRange(ActorProfile& profile, const BlendshapeRig& rig, 
     range.maximum(s) = maximum;
     range.reached.push_back(maximum >= options.reachedWeight);
     range.clipped.push_back(maximum >= options.maximumWeight * (1.0 - 1e-6));
-    profile.extent(s) = range.reached.back() ? maximum : 1.0;
+    // A shape at the bound is more likely one the markers cannot see than a fourfold exaggeration.
+    profile.extent(s) = range.reached.back() && !range.clipped.back() ? maximum : 1.0;
   }
   profile.romMaximum = range.maximum;
   profile.romSource = romSource;

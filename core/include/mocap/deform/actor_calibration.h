@@ -43,7 +43,7 @@ struct ActorRange
 {
   Eigen::VectorXd maximum;     ///< the shape's maximum in the range-of-motion take, as a fraction of the rig's delta
   std::vector<bool> reached;   ///< maximum ≥ reachedWeight: its extent was set
-  std::vector<bool> clipped;   ///< the maximum reached the solve's upper bound (the extent is a lower bound)
+  std::vector<bool> clipped;   ///< the maximum reached the solve's upper bound: not measured, extent 1
 };
 
 /// Calibrates the actor's range from a range-of-motion take (the same markers, in the profile's
@@ -52,7 +52,8 @@ struct ActorRange
 /// to `options.maximumWeight`, so neither the [0, 1] box nor ridge/GCV shrinkage biases a shape
 /// solved alone (a gain of 1 / the maximum of the usual solve overcorrects: that solve shrinks an
 /// isolated shape far more than one in a performance). Each reached shape's extent becomes its
-/// maximum (over the running median of `options.window` frames); the others keep extent 1.
+/// maximum (over the running median of `options.window` frames); the others, and those at the
+/// bound (most likely shapes the markers cannot see), keep extent 1.
 /// Sets profile.extent, romMaximum and romSource. Not a paper equation. Throws InvalidArgument for
 /// a take missing bound markers (another marker set), in other units, or a rig whose shapes are
 /// not the profile's. O(the blendshape solve's bvls cost + #frames · #shapes · window).
