@@ -636,7 +636,7 @@ TEST(ActorCli, WritesAProfileThatSolveUsesAndRefusesBadInput)
   EXPECT_EQ(cannotWrite.exitCode, 1);
   EXPECT_FALSE(std::filesystem::exists(dir.file("no")));
   const Outcome outside = mocap("actor" + rig + binding + " --neutral '" + take + ":999999' -o '" + profile + "'", dir);
-  EXPECT_EQ(outside.exitCode, 1);
+  EXPECT_EQ(outside.exitCode, 2);  // invalid input, as a bad --neutral frame of solve
   EXPECT_NE(outside.err.find("outside the take"), std::string::npos) << outside.err;
 }
 
