@@ -55,6 +55,9 @@ Command addRig(CLI::App& mocap);
 /// the take's blendshape weights on a rig (bvls, ridge, temporal), as CSV curves, an animated GLB
 /// or a PC2 cache.
 Command addSolve(CLI::App& mocap);
+/// `mocap actor --rig RIG --binding BIND.json --neutral TAKE[:FRAME] [--rom TAKE] -o ACTOR.json`:
+/// an actor profile (neutral, binding, each shape's extent) for `mocap solve --actor`.
+Command addActor(CLI::App& mocap);
 
 /// `mocap review TAKE -o OUT.mp4`: a review video (playblast) of the 3D view (issue 16).
 Command addReview(CLI::App& mocap);

@@ -13,6 +13,7 @@
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
 #include "mocap/cleaning/head_angles.h"
+#include "mocap/deform/actor_profile_io.h"
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
@@ -38,7 +39,7 @@ struct SolveArguments
   BlendshapeSolveOptions settings;
   std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
   std::string format = "plain";
-  std::optional<std::string> stabilize, only, up, units, map;
+  std::optional<std::string> stabilize, only, up, units, map, actor;
   std::optional<double> reduce;  // glTF: key tolerance in weight units
   LeaveOutOptions leaveOut;
   bool json = false;
@@ -157,7 +158,10 @@ void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, c
   json.key("shapes").value(static_cast<std::int64_t>(rig.shapeCount()));
   json.key("markers").value(static_cast<std::int64_t>(solver.markers().size()));
   json.key("frames").value(static_cast<std::int64_t>(result.weights.rows()));
-  json.key("neutral_frame").value(static_cast<std::int64_t>(take.firstFrame() + solver.neutralFrame()));
+  if (solver.options().actor)
+    json.key("neutral_frame").null().key("actor").value(solver.options().actor->name);
+  else
+    json.key("neutral_frame").value(static_cast<std::int64_t>(take.firstFrame() + solver.neutralFrame()));
   json.key("held_frames").value(static_cast<std::int64_t>(std::count(result.held.begin(), result.held.end(), true)));
   json.key("rig_load_seconds").value(loadSeconds);
   json.key("setup_seconds").value(solver.setupSeconds());
@@ -215,6 +219,11 @@ int runSolve(const SolveArguments& arguments)
     checkWeightOutput(rig, mapping);
   }
   Take take = readInputTake(arguments.takePath);
+  if (arguments.actor) {
+    settings.actor = std::make_shared<const ActorProfile>(readActorProfile(*arguments.actor));
+    if (take.units() != settings.actor->units)
+      take.convertUnits(settings.actor->units);
+  }
   std::optional<HeadMotion> motion;  // kept for the Live Link CSV's head rotation
   if (arguments.stabilize) {
     motion = estimateHeadMotion(take, markerIndices(take, splitList(*arguments.stabilize, "--stabilize")));
@@ -272,6 +281,9 @@ Command addSolve(CLI::App& mocap)
                 -(1LL << 40), 1LL << 40);
   command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
       ->type_name("LABELS");
+  command->add_option("--actor", a->actor,
+                      "an actor profile (mocap actor): its neutral instead of --neutral, weights in its range")
+      ->type_name("ACTOR.json");
   oneOf(command->add_option("--method", a->method, "solve"), blendshapeSolveMethodNames())->capture_default_str();
   numberIn(command->add_option("--lambda", settings.lambda,
                                "ridge weight λ relative to the shapes' mean squared motion (default: by GCV)")

@@ -694,5 +694,45 @@ TEST(SolveCli, MapsTheWeightsByAShippedNameOrAFileForEveryWriter)
   EXPECT_FALSE(std::filesystem::exists(live));
 }
 
+// `mocap actor` on the sample (its first frame as the neutral, the take itself as the range of
+// motion) and `mocap solve --actor`; bad input is refused with nothing written.
+TEST(ActorCli, WritesAProfileThatSolveUsesAndRefusesBadInput)
+{
+  test::TempDir dir;
+  const std::filesystem::path sampleDir = checkout::sampleDir();
+  const std::string rig = " --rig '" + (sampleDir / "ict_face_rig.glb").string() + "'";
+  const std::string binding = " --binding '" + (sampleDir / "Facial-Sing.ict_face_rig.binding.json").string() + "'";
+  const std::string take = test::sampleTake().string();
+  const std::string profile = dir.file("actor.json").string();
+  const Outcome made = mocap("actor" + rig + binding + " --neutral '" + take + ":1' --rom '" + take + "' " +
+                                 kStabilize + " -o '" + profile + "' --json",
+                             dir);
+  ASSERT_EQ(made.exitCode, 0) << made.err;
+  const JsonValue json = parseJson(made.out, "actor --json");
+  ASSERT_EQ(json.find("shapes", "actor")->array("shapes").size(), 53u);
+  EXPECT_EQ(json.find("markers", "actor")->number("markers"), 31.0);
+  EXPECT_NE(readFileBytes(profile).find("\"format\": \"mocap actor profile\""), std::string::npos);
+
+  const Outcome solved = mocap("solve --mesh '" + (sampleDir / "ict_face_rig.glb").string() + "'" + binding +
+                                   " --take '" + take + "' " + kStabilize + " --actor '" + profile +
+                                   "' --method bvls -o '" + dir.file("w.csv").string() + "' --json",
+                               dir);
+  ASSERT_EQ(solved.exitCode, 0) << solved.err;
+  const JsonValue solve = parseJson(solved.out, "solve --json");
+  EXPECT_EQ(solve.find("actor", "solve")->string("actor"), "actor");
+  EXPECT_TRUE(solve.find("neutral_frame", "solve")->isNull());
+
+  const Outcome badFrame = mocap("actor" + rig + binding + " --neutral '" + take + ":x' -o '" + profile + "'", dir);
+  EXPECT_EQ(badFrame.exitCode, 2);
+  EXPECT_NE(badFrame.err.find("not a frame number"), std::string::npos) << badFrame.err;
+  const std::string unwritable = dir.file("no/such/folder/actor.json").string();
+  const Outcome cannotWrite = mocap("actor" + rig + binding + " --neutral '" + take + ":1' -o '" + unwritable + "'", dir);
+  EXPECT_EQ(cannotWrite.exitCode, 1);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("no")));
+  const Outcome outside = mocap("actor" + rig + binding + " --neutral '" + take + ":999999' -o '" + profile + "'", dir);
+  EXPECT_EQ(outside.exitCode, 2);  // invalid input, as a bad --neutral frame of solve
+  EXPECT_NE(outside.err.find("outside the take"), std::string::npos) << outside.err;
+}
+
 } // namespace
 } // namespace mocap

@@ -37,6 +37,8 @@ void checkSolveOptions(const BlendshapeSolveOptions& options)
     throw InvalidArgument("blendshape solve: the sparsity must be finite and ≥ 0");
   if (!(options.minimumMarkerShare >= 0.0 && options.minimumMarkerShare <= 1.0))
     throw InvalidArgument("blendshape solve: the minimum marker share must be in [0, 1]");
+  if (!(options.maximumWeight > 0.0 && std::isfinite(options.maximumWeight)))
+    throw InvalidArgument("blendshape solve: the maximum weight must be finite and > 0");
 }
 
 /// The shapes' deltas at the bound points (3·#points × #shapes). O(#points · #shapes · log).
@@ -64,7 +66,7 @@ struct Observations
   std::vector<bool> solvable; // enough markers present
 };
 
-Observations observe(const Take& take, const std::vector<Eigen::Index>& used, Eigen::Index neutral,
+Observations observe(const Take& take, const std::vector<Eigen::Index>& used, const PointSet& neutral,
                      const Retarget& retarget, std::size_t minimumMarkers)
 {
   Observations o;
@@ -133,11 +135,11 @@ Eigen::MatrixXd completeFrames(const Observations& o)
 
 /// Per-frame bounded solves, one factorised problem per pattern of present markers, each frame
 /// warm-started from the previous one.
-void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge, double sparsity,
+void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge, double sparsity, double maximum,
                    const JobControl& control, Eigen::MatrixXd& weights)
 {
   const Eigen::Index shapes = a.cols();
-  const Eigen::VectorXd lower = Eigen::VectorXd::Zero(shapes), upper = Eigen::VectorXd::Ones(shapes);
+  const Eigen::VectorXd lower = Eigen::VectorXd::Zero(shapes), upper = Eigen::VectorXd::Constant(shapes, maximum);
   std::map<Mask, std::unique_ptr<BoundedLeastSquares>> solvers;
   Eigen::VectorXd previous = Eigen::VectorXd::Zero(shapes);
   const auto frames = static_cast<Eigen::Index>(o.present.size());
@@ -190,12 +192,12 @@ BandedCholesky::Band temporalBand(Eigen::Index n, double c, double mu)
 }
 
 /// The whole take at once: min Σₜ ½‖Aₜwₜ − bₜ‖² + ½λ‖wₜ‖² + s·Σwₜ + ½μ‖D·W‖², 0 ≤ W ≤ 1, by ADMM
-/// (Boyd et al. 2011, over-relaxed) splitting the quadratic from the box. With AᵀA = VΛVᵀ the
+/// (Boyd et al. 2011, over-relaxed) splitting the quadratic from the box (upper bound `maximum`). With AᵀA = VΛVᵀ the
 /// quadratic step decouples into #shapes pentadiagonal systems along time, factorised once, so an
 /// iteration costs O(#frames · #shapes²). Missing markers' rows are imputed from the current
 /// weights each iteration (the majorise-minimise step for dropped rows). Returns the iterations.
 int solveTemporal(const Eigen::MatrixXd& a, const Observations& o, double ridge, double mu, double sparsity,
-                  const JobControl& control, Eigen::MatrixXd& weights)
+                  double maximum, const JobControl& control, Eigen::MatrixXd& weights)
 {
   const Eigen::Index frames = o.b.rows(), shapes = a.cols();
   const Eigen::MatrixXd gram = a.transpose() * a;
@@ -247,7 +249,7 @@ int solveTemporal(const Eigen::MatrixXd& a, const Observations& o, double ridge,
       factors[static_cast<std::size_t>(k)].solveInPlace(y.col(k));
     x.noalias() = y * v.transpose();
     const Eigen::MatrixXd relaxed = kAlpha * x + (1.0 - kAlpha) * z;
-    const Eigen::MatrixXd zNew = (relaxed + u).cwiseMax(0.0).cwiseMin(1.0);
+    const Eigen::MatrixXd zNew = (relaxed + u).cwiseMax(0.0).cwiseMin(maximum);
     u += relaxed - zNew;
     const double primal = (x - zNew).norm(), dual = (zNew - z).norm();
     z = zNew;
@@ -326,8 +328,24 @@ BlendshapeSolver::BlendshapeSolver(const BlendshapeRig& rig, const MeshBinding& 
   const Stopwatch setup;
   checkSolveOptions(options);
   checkRig(rig);
-  m_bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
+  if (options.actor) {
+    if (take.units() != options.actor->units)
+      throw InvalidArgument("the take is in " + std::string(unitName(take.units())) + ", the actor's neutral in " +
+                            std::string(unitName(options.actor->units)));
+    std::vector<std::string> labels;
+    for (const MarkerBinding& marker : binding.markers)
+      labels.push_back(marker.label);
+    const std::vector<Eigen::Index> markers = markerIndices(take, labels);
+    const Eigen::Index frame = options.neutralFrame ? chooseNeutralFrame(take, markers, options.neutralFrame) : -1;
+    m_bound = bindTakeToNeutral(binding, take, rig.neutral.vertices,
+                                placeActorNeutral(actorNeutral(*options.actor, labels), take, markers, frame),
+                                options.scale);
+  } else {
+    m_bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
+  }
   m_a = sampleShapes(rig, m_bound.points);
+  if (options.actor)
+    m_a *= actorExtents(*options.actor, rig.shapeNames()).asDiagonal();
   m_termScale = std::max(m_a.squaredNorm() / static_cast<double>(m_a.cols()), 1e-300);
   m_setupSeconds = setup.seconds();
 }
@@ -355,7 +373,11 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
   const auto minimum = std::max<std::size_t>(
       std::min<std::size_t>(3, used.size()),
       static_cast<std::size_t>(std::ceil(m_options.minimumMarkerShare * static_cast<double>(used.size()))));
-  const Observations o = observe(take, used, m_bound.neutral, m_bound.retarget, minimum);
+  PointSet neutral(static_cast<Eigen::Index>(used.size()), 3);
+  for (std::size_t m = 0, row = 0; m < usedRows.size(); ++m)
+    if (usedRows[m])
+      neutral.row(static_cast<Eigen::Index>(row++)) = m_bound.neutralMarkers.row(static_cast<Eigen::Index>(m));
+  const Observations o = observe(take, used, neutral, m_bound.retarget, minimum);
 
   BlendshapeSolveResult result;
   if (m_options.method == BlendshapeSolveMethod::Bvls) {
@@ -372,9 +394,9 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
   if (m_options.method == BlendshapeSolveMethod::Temporal)
     result.iterations =
         solveTemporal(a, o, ridge, temporalWeight(m_options.smoothness * m_termScale, take.frameRate()), sparsity,
-                      control, result.weights);
+                      m_options.maximumWeight, control, result.weights);
   else
-    solvePerFrame(a, o, ridge, sparsity, control, result.weights);
+    solvePerFrame(a, o, ridge, sparsity, m_options.maximumWeight, control, result.weights);
 
   result.held.resize(o.solvable.size());
   result.residual.resize(take.frameCount());

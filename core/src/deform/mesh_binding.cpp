@@ -96,6 +96,12 @@ std::pair<MeshPoint, double> closestSurfacePoint(const Eigen::Ref<const MeshVert
 std::string bindingJson(const MeshBinding& binding)
 {
   JsonWriter json;
+  writeBinding(json, binding);
+  return json.str() + "\n";
+}
+
+void writeBinding(JsonWriter& json, const MeshBinding& binding)
+{
   json.beginObject();
   json.key("mesh_vertices").value(static_cast<std::int64_t>(binding.meshVertices));
   if (binding.hasAlignment) {
@@ -135,7 +141,6 @@ std::string bindingJson(const MeshBinding& binding)
   }
   json.endObject();
   json.endObject();
-  return json.str() + "\n";
 }
 
 namespace {
@@ -187,7 +192,11 @@ MeshPoint pointOf(const JsonValue& value, const std::string& source, const std::
 
 MeshBinding parseBinding(std::string_view text, const std::string& source, Eigen::Index vertexCount)
 {
-  const JsonValue root = parseJson(text, source);
+  return bindingFromJson(parseJson(text, source), source, vertexCount);
+}
+
+MeshBinding bindingFromJson(const JsonValue& root, const std::string& source, Eigen::Index vertexCount)
+{
   if (!root.isObject())
     throw FormatError(source, "a binding is a JSON object");
   const JsonValue* markers = root.find("markers", "the binding");

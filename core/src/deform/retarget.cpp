@@ -102,11 +102,19 @@ void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& mar
                           const Retarget& retarget, Eigen::Index frame, PointSet& displacements,
                           std::vector<bool>& present)
 {
+  controlDisplacements(take, markers, markerPositions(take, neutralFrame, markers), retarget, frame, displacements,
+                       present);
+}
+
+void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& markers,
+                          const Eigen::Ref<const PointSet>& neutral, const Retarget& retarget, Eigen::Index frame,
+                          PointSet& displacements, std::vector<bool>& present)
+{
   displacements.setZero(static_cast<Eigen::Index>(markers.size()), 3);
   present.assign(markers.size(), false);
   for (std::size_t i = 0; i < markers.size(); ++i) {
     const Eigen::Index m = markers[i];
-    const Eigen::Vector3d delta = take.position(frame, m) - take.position(neutralFrame, m);
+    const Eigen::Vector3d delta = take.position(frame, m) - neutral.row(static_cast<Eigen::Index>(i)).transpose();
     if (!take.isValid(frame, m) || !delta.allFinite())
       continue;
     present[i] = true;
@@ -128,8 +136,10 @@ bool BoundTake::fits(const Take& take) const
          std::all_of(markers.begin(), markers.end(), [&](Eigen::Index m) { return m < take.markerCount(); });
 }
 
-BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,
-                   std::optional<long long> neutralFrame, RetargetScale scale)
+namespace {
+
+/// The binding's markers found in `take` and their points on `rest`; no neutral yet.
+BoundTake bindLabels(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest)
 {
   if (binding.meshVertices != 0 && binding.meshVertices != rest.rows())
     throw InvalidArgument("the binding was made for a mesh of " + std::to_string(binding.meshVertices) +
@@ -140,9 +150,31 @@ BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Re
     bound.points.push_back(marker.point);
   }
   bound.markers = markerIndices(take, bound.labels);
-  bound.neutral = chooseNeutralFrame(take, bound.markers, neutralFrame);
   bound.boundPoints = boundPositions(rest, bound.points);
+  return bound;
+}
+
+} // namespace
+
+BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,
+                   std::optional<long long> neutralFrame, RetargetScale scale)
+{
+  BoundTake bound = bindLabels(binding, take, rest);
+  bound.neutral = chooseNeutralFrame(take, bound.markers, neutralFrame);
   bound.neutralMarkers = markerPositions(take, bound.neutral, bound.markers);
+  bound.retarget = fitRetarget(bound.neutralMarkers, bound.boundPoints, scale);
+  return bound;
+}
+
+BoundTake bindTakeToNeutral(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,
+                            const Eigen::Ref<const PointSet>& neutral, RetargetScale scale)
+{
+  BoundTake bound = bindLabels(binding, take, rest);
+  if (neutral.rows() != static_cast<Eigen::Index>(bound.markers.size()) || neutral.cols() != 3)
+    throw InvalidArgument("the neutral has " + std::to_string(neutral.rows()) + " positions for " +
+                          std::to_string(bound.markers.size()) + " bound markers");
+  bound.neutral = -1;
+  bound.neutralMarkers = neutral;
   bound.retarget = fitRetarget(bound.neutralMarkers, bound.boundPoints, scale);
   return bound;
 }

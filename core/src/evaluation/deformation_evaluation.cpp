@@ -98,15 +98,18 @@ LeaveOutResult evaluateBlendshapeLeaveOut(const BlendshapeSolver& solver, const 
     use[static_cast<std::size_t>(h)] = false;
   const BlendshapeSolveResult solved = solver.solve(take, use);
   std::vector<Eigen::Index> hiddenMarkers;
-  for (const Eigen::Index h : result.hidden)
-    hiddenMarkers.push_back(markers[static_cast<std::size_t>(h)]);
+  PointSet hiddenNeutral(static_cast<Eigen::Index>(result.hidden.size()), 3);  // the frame's, or an actor's
+  for (std::size_t i = 0; i < result.hidden.size(); ++i) {
+    hiddenMarkers.push_back(markers[static_cast<std::size_t>(result.hidden[i])]);
+    hiddenNeutral.row(static_cast<Eigen::Index>(i)) = solver.neutralMarkers().row(result.hidden[i]);
+  }
   const Retarget& retarget = solver.retarget();
   PointSet truth;
   std::vector<bool> present;
   for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
     if (solved.held[static_cast<std::size_t>(f)])
       continue;
-    controlDisplacements(take, hiddenMarkers, solver.neutralFrame(), retarget, f, truth, present);
+    controlDisplacements(take, hiddenMarkers, hiddenNeutral, retarget, f, truth, present);
     const Eigen::VectorXd w = solved.weights.row(f).transpose();
     for (std::size_t i = 0; i < result.hidden.size(); ++i) {
       if (!present[i])

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "mocap/base/job_control.h"
+#include "mocap/deform/actor_profile.h"
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/model/blendshape_rig.h"
@@ -8,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,11 +47,20 @@ struct BlendshapeSolveOptions
   /// Frames with fewer present bound markers than this share (and than 3) are not solved but
   /// hold the previous frame's weights, flagged in BlendshapeSolveResult::held.
   double minimumMarkerShare = 0.5;
+  /// An actor's calibration (actor_profile.h): its neutral positions (matched by label, placed
+  /// rigidly on the take's `neutralFrame`, or its first frame with the most bound markers, by
+  /// placeActorNeutral) replace the neutral frame, and each shape's column of A is scaled by the
+  /// actor's extent, so the weights are in the actor's range (1 = the actor's maximum). None: the
+  /// take's neutral frame and the rig's range.
+  std::shared_ptr<const ActorProfile> actor;
+  /// The weights' upper bound: 1, the rig's (or the actor's) full expression; calibration solves
+  /// a range-of-motion take with more so that an exaggerated shape is not clipped.
+  double maximumWeight = 1.0;
 };
 
 struct BlendshapeSolveResult
 {
-  Eigen::MatrixXd weights;   ///< #frames × #shapes, each in [0, 1]
+  Eigen::MatrixXd weights;   ///< #frames × #shapes, each in [0, maximumWeight]
   Eigen::VectorXd residual;  ///< per frame, RMS distance (take units) of the present markers from the rig's points; NaN where held
   std::vector<bool> held;    ///< frames with too few markers, left at the previous frame's weights (0 before the first solved one)
   double lambda = 0.0;       ///< the λ used (relative, see BlendshapeSolveOptions)
@@ -71,8 +82,9 @@ class BlendshapeSolver
 {
 public:
   /// Throws InvalidArgument as FaceRig does for the binding and take, for a binding made for
-  /// another vertex count, an invalid rig (checkRig) and options out of range (negative λ, μ or
-  /// sparsity, a marker share outside [0, 1]).
+  /// another vertex count, an invalid rig (checkRig), options out of range (negative λ, μ or
+  /// sparsity, a marker share outside [0, 1], a maximum weight not > 0) and an actor profile that
+  /// lacks a bound marker or one of the rig's shapes.
   BlendshapeSolver(const BlendshapeRig& rig, const MeshBinding& binding, const Take& take,
                    const BlendshapeSolveOptions& options = {});
 
@@ -86,9 +98,13 @@ public:
   [[nodiscard]] const std::vector<std::string>& labels() const { return m_bound.labels; }
   [[nodiscard]] const std::vector<Eigen::Index>& markers() const { return m_bound.markers; }
   [[nodiscard]] const std::vector<MeshPoint>& points() const { return m_bound.points; }
+  /// −1 when the neutral is an actor's.
   [[nodiscard]] Eigen::Index neutralFrame() const { return m_bound.neutral; }
+  /// The bound markers' neutral positions (#markers × 3, take units).
+  [[nodiscard]] const PointSet& neutralMarkers() const { return m_bound.neutralMarkers; }
   [[nodiscard]] const Retarget& retarget() const { return m_bound.retarget; }
-  /// The shapes' deltas at the bound points: rows 3m … 3m+2 are marker m's x, y, z (mesh units).
+  /// The shapes' deltas at the bound points: rows 3m … 3m+2 are marker m's x, y, z (mesh units),
+  /// each column times the actor's extent when solving with an actor profile.
   [[nodiscard]] const Eigen::MatrixXd& shapeMatrix() const { return m_a; }
   /// trace(AᵀA)/#shapes: the unit of λ, μ and the sparsity weight.
   [[nodiscard]] double scaleOfTerms() const { return m_termScale; }

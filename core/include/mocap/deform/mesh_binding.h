@@ -10,6 +10,9 @@
 
 namespace mocap {
 
+class JsonValue;
+class JsonWriter;
+
 /// A point on a mesh as barycentric weights of three vertices (a vertex itself: {v, v, v} with
 /// weights (1, 0, 0)), so it follows the mesh when the vertices move.
 struct MeshPoint
@@ -63,6 +66,10 @@ struct MeshBinding
 /// given twice or a mesh_vertices count that differs. O(size).
 [[nodiscard]] MeshBinding parseBinding(std::string_view text, const std::string& source, Eigen::Index vertexCount);
 [[nodiscard]] MeshBinding readBinding(const std::filesystem::path& path, Eigen::Index vertexCount);
+/// The binding JSON as a value inside another document (an actor profile embeds it). O(size).
+void writeBinding(JsonWriter& json, const MeshBinding& binding);
+/// parseBinding of a parsed value. O(size).
+[[nodiscard]] MeshBinding bindingFromJson(const JsonValue& root, const std::string& source, Eigen::Index vertexCount);
 
 struct AutoBindOptions
 {

@@ -64,6 +64,11 @@ std::vector<Eigen::Index> stabilizeTake(Take& take, const std::vector<std::strin
 void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& markers, Eigen::Index neutralFrame,
                           const Retarget& retarget, Eigen::Index frame, PointSet& displacements,
                           std::vector<bool>& present);
+/// The same from given neutral positions (#markers × 3, take units; an actor's, actor_profile.h).
+/// O(#markers).
+void controlDisplacements(const Take& take, const std::vector<Eigen::Index>& markers,
+                          const Eigen::Ref<const PointSet>& neutral, const Retarget& retarget, Eigen::Index frame,
+                          PointSet& displacements, std::vector<bool>& present);
 
 /// The bound points' rest positions (#points × 3). O(#points).
 [[nodiscard]] PointSet boundPositions(const Eigen::Ref<const MeshVertices>& vertices,
@@ -76,7 +81,7 @@ struct BoundTake
   std::vector<std::string> labels;    ///< binding order
   std::vector<Eigen::Index> markers;  ///< take marker index per bound marker
   std::vector<MeshPoint> points;      ///< bound point per marker
-  Eigen::Index neutral = 0;           ///< neutral frame index (0-based)
+  Eigen::Index neutral = 0;           ///< neutral frame index (0-based); −1 when the neutral was given (an actor's)
   Retarget retarget;
   PointSet neutralMarkers;            ///< the markers in the neutral frame (take units)
   PointSet boundPoints;               ///< their bound points on `rest` (mesh units)
@@ -92,5 +97,12 @@ struct BoundTake
 /// O(#frames · #markers).
 [[nodiscard]] BoundTake bindTake(const MeshBinding& binding, const Take& take, const Eigen::Ref<const MeshVertices>& rest,
                                  std::optional<long long> neutralFrame, RetargetScale scale);
+
+/// bindTake with the neutral positions given (#binding markers × 3 in binding order, take units;
+/// an actor's neutral) instead of a neutral frame of the take: no frame of the take needs every
+/// marker. Throws as bindTake and InvalidArgument for a neutral of another size. O(#markers).
+[[nodiscard]] BoundTake bindTakeToNeutral(const MeshBinding& binding, const Take& take,
+                                          const Eigen::Ref<const MeshVertices>& rest,
+                                          const Eigen::Ref<const PointSet>& neutral, RetargetScale scale);
 
 } // namespace mocap
