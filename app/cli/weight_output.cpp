@@ -30,13 +30,6 @@ void writeLiveLink(const std::filesystem::path& out, const BlendshapeRig& rig,
                                                   options.headRotation));
 }
 
-/// The key frames every curve of `weights` shares within `tolerance` (glTF's one weights sampler).
-KeyReduction sharedKeyFrames(const Eigen::Ref<const Eigen::MatrixXd>& weights, double tolerance)
-{
-  const Eigen::Index frames = weights.rows();
-  return reduceKeys(Eigen::VectorXd::LinSpaced(frames, 0.0, static_cast<double>(frames - 1)), weights, tolerance);
-}
-
 std::optional<KeyCount> writeMapped(const std::filesystem::path& out, const std::string& extension,
                                     const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights,
                                     const WeightOutput& options)
@@ -50,7 +43,7 @@ std::optional<KeyCount> writeMapped(const std::filesystem::path& out, const std:
   if (extension == "glb") {
     std::vector<Eigen::Index> keys;  // empty: every frame
     if (reduce) {
-      KeyReduction shared = sharedKeyFrames(weights, *options.reduce);
+      KeyReduction shared = reduceFrameKeys(weights, *options.reduce);
       count.add(weights.rows(), static_cast<Eigen::Index>(shared.keys.size()), shared.maxError);
       keys = std::move(shared.keys);
     }

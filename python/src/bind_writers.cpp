@@ -60,9 +60,7 @@ void bindWriters(py::module_& m)
           const py::gil_scoped_release release;
           std::vector<Eigen::Index> keys;  // empty: every frame
           if (reduce && weights.rows() > 0) {
-            const KeyReduction shared = reduceKeys(
-                Eigen::VectorXd::LinSpaced(weights.rows(), 0.0, static_cast<double>(weights.rows() - 1)), weights,
-                *reduce);
+            const KeyReduction shared = reduceFrameKeys(weights, *reduce);
             count.add(weights.rows(), static_cast<Eigen::Index>(shared.keys.size()), shared.maxError);
             keys = shared.keys;
           }

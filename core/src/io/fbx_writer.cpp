@@ -56,7 +56,7 @@ std::vector<KeyReduction> reduceEachCurve(const std::vector<std::vector<float>>&
 {
   std::vector<KeyReduction> reductions;
   for (const std::vector<float>& curve : curves)
-    reductions.push_back(reduceKeys(frameIndices(curve.size()), asDoubles(curve), tolerance));
+    reductions.push_back(reduceFrameKeys(asDoubles(curve), tolerance));
   return reductions;
 }
 

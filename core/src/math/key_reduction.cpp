@@ -116,6 +116,12 @@ KeyReduction reduceKeys(const Eigen::Ref<const Eigen::VectorXd>& times, const Ei
   return result;
 }
 
+KeyReduction reduceFrameKeys(const Eigen::Ref<const Eigen::MatrixXd>& values, double tolerance)
+{
+  const Eigen::Index n = values.rows();
+  return reduceKeys(Eigen::VectorXd::LinSpaced(n, 0.0, static_cast<double>(n - 1)), values, tolerance);
+}
+
 void KeyCount::add(Eigen::Index samples, Eigen::Index keys, double error)
 {
   before += samples;

@@ -44,6 +44,10 @@ struct KeyCount
 [[nodiscard]] KeyReduction reduceKeys(const Eigen::Ref<const Eigen::VectorXd>& times,
                                       const Eigen::Ref<const Eigen::MatrixXd>& values, double tolerance);
 
+/// reduceKeys of curves sampled once per frame (times 0, 1, 2, …): the key frames all columns of
+/// `values` share (glTF's one weights sampler). O(reduceKeys).
+[[nodiscard]] KeyReduction reduceFrameKeys(const Eigen::Ref<const Eigen::MatrixXd>& values, double tolerance);
+
 /// The linear interpolation of `keys` (ascending sample indices from the first sample to the
 /// last) at every sample: `values` where a key is, the line between the keys around it elsewhere.
 /// Throws InvalidArgument as keyInterpolationError. O(n · c).
