@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace mocap {
 namespace {
 
@@ -23,6 +25,15 @@ TEST(C3dParameters, Int16CountsAboveSignedRangeReadUnsigned)
   EXPECT_LT(*frames.number(), 0.0);
   EXPECT_EQ(*frames.unsignedInt16(), 40000);
   EXPECT_TRUE(frames.dimensions.empty());
+}
+
+TEST(C3dParameters, AFloatCountOutsideTheUnsigned16BitRangeIsNone)
+{
+  // Found by fuzz_c3d_reader: 6.29e8 in a float parameter read as a count was undefined behaviour.
+  EXPECT_FALSE(C3dParameter::makeFloat("USED", {6.29148e8}, true).unsignedInt16().has_value());
+  EXPECT_FALSE(C3dParameter::makeFloat("USED", {-3.0}, true).unsignedInt16().has_value());
+  EXPECT_FALSE(C3dParameter::makeFloat("USED", {std::nan("")}, true).unsignedInt16().has_value());
+  EXPECT_EQ(*C3dParameter::makeFloat("USED", {65535.0}, true).unsignedInt16(), 65535);
 }
 
 TEST(C3dParameters, TreeLookupIsCaseInsensitiveAndSetKeepsDescriptions)

@@ -47,8 +47,13 @@ std::optional<std::uint16_t> C3dParameter::unsignedInt16(std::size_t i) const
   const auto value = number(i);
   if (!value)
     return std::nullopt;
-  if (type != C3dType::Int16)
-    return static_cast<std::uint16_t>(std::max(*value, 0.0));
+  if (type != C3dType::Int16) {
+    // A float or byte value outside 0…65535 (or NaN) is no unsigned 16-bit count: none, not a
+    // wrapped or clamped number (converting it would be undefined behaviour; the fuzzer found one).
+    if (!(*value >= 0.0 && *value <= 65535.0))
+      return std::nullopt;
+    return static_cast<std::uint16_t>(*value);
+  }
   return static_cast<std::uint16_t>(static_cast<std::int16_t>(*value));
 }
 
