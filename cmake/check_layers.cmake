@@ -4,12 +4,13 @@
 #
 # core/ (KIND=core; files under include/mocap/<group>/ and src/<group>/, includes "mocap/<group>/"):
 #   0 base · 1 model · 2 math · 3 io, video · 4 cleaning (with cleaning/fill) · 5 tracking, layout, deform ·
-#   6 evaluation · 7 batch
+#   6 evaluation, stream · 7 batch
 # math (numerics on plain arrays) sits below io because a writer may use it (the FBX writer
 # reduces its curves' keys).
 # cleaning sits below tracking, layout and deform because they use its head stabilization and
 # smoothers; nothing in cleaning needs them. batch (archives cleaned with a preset, and their
-# reports) sits on top so it may run any method below.
+# reports) sits on top so it may run any method below. stream (live UDP senders) takes solved
+# weights and takes as they come, beside evaluation.
 #
 # widgets/ (KIND=widgets; files under <group>/, includes "<group>/"):
 #   0 document · 1 commands · 2 views · 3 models, dialogs · 4 actions · 5 panels
@@ -17,7 +18,7 @@
 # the document; views draw it and know no panel; item models and dialogs may use views (colours,
 # plots, progress rows); actions open dialogs; panels may trigger actions. Nothing in widgets/ includes the application (app/, main_window.h).
 if(KIND STREQUAL "core")
-  set(ranks base 0 model 1 math 2 io 3 video 3 cleaning 4 tracking 5 layout 5 deform 5 evaluation 6 batch 7)
+  set(ranks base 0 model 1 math 2 io 3 video 3 cleaning 4 tracking 5 layout 5 deform 5 evaluation 6 stream 6 batch 7)
   set(globs "include/mocap/*.h" "src/*.cpp")
   set(file_group "^(include/mocap|src)/([a-z_]+)/")
   set(include_group "^#include \"mocap/([a-z_]+)/")

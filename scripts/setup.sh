@@ -31,6 +31,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   parallel chromium  # GNU parallel runs `mocap clean --index` in a cli test; Chromium renders the archive report (gui)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the `mocap` Python module and its tests (label python)
+  liblo-tools  # oscdump reads `mocap stream --protocol vmc` in a cli test
 )
 
 install_missing_packages() {

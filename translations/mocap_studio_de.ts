@@ -302,7 +302,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+120"/>
+        <location filename="../app/studio/main_window.cpp" line="+121"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -362,7 +362,12 @@
         <translation>Referenzvideo</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>Live Stream</source>
+        <translation>Live-Stream</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
@@ -992,7 +997,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-856"/>
+        <location line="-861"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1312,8 +1317,8 @@
         <translation>  (Spitze %1)</translation>
     </message>
     <message>
-        <location line="+77"/>
-        <location line="+24"/>
+        <location line="+64"/>
+        <location line="+22"/>
         <source>Solve the take first.</source>
         <translation>Lösen Sie zuerst die Aufnahme.</translation>
     </message>
@@ -3321,6 +3326,147 @@
         <location line="+2"/>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LiveStreamPanel</name>
+    <message>
+        <location filename="../widgets/panels/live_stream_panel.cpp" line="+49"/>
+        <source>Live Link Face (Unreal, MetaHuman)</source>
+        <translation>Live Link Face (Unreal, MetaHuman)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VMC / OSC (VSeeFace, Blender add-ons)</source>
+        <translation>VMC / OSC (VSeeFace, Blender-Add-ons)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live Link Face: the datagrams Epic&apos;s iPhone app sends, the 52 ARKit curves and the head&apos;s turn.
+VMC: OSC bundles of the weights under ARKit names, and the markers as trackers.</source>
+        <translation>Live Link Face: die Datagramme der iPhone-App von Epic, die 52 ARKit-Kurven und die Kopfdrehung.
+VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The computer the engine runs on: a name or an address</source>
+        <translation>Der Rechner, auf dem die Engine läuft: ein Name oder eine Adresse</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The Live Link subject name the engine lists</source>
+        <translation>Der Live-Link-Subjektname, den die Engine anzeigt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Solved weights</source>
+        <translation>Gelöste Gewichte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The Blendshape Solve dock&apos;s weights on ARKit&apos;s 52 curves (ICT FaceKit names by the shipped ict_to_arkit map)</source>
+        <translation>Die Gewichte des Blendshape-Solve-Docks auf den 52 ARKit-Kurven (ICT-FaceKit-Namen über die mitgelieferte Zuordnung ict_to_arkit)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Markers (VMC)</source>
+        <translation>Marker (VMC)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each marker as a VMC tracker, in metres; a missing sample is not sent</source>
+        <translation>Jeder Marker als VMC-Tracker, in Metern; ein fehlender Abtastwert wird nicht gesendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The take&apos;s rate</source>
+        <translation>Rate der Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Datagrams per second; each carries the frame shown at that moment</source>
+        <translation>Datagramme pro Sekunde; jedes trägt das in diesem Moment gezeigte Bild</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start or stop the stream (Ctrl+Shift+L)</source>
+        <translation>Stream starten oder stoppen (Strg+Umschalt+L)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Host</source>
+        <translation>Host</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Subject</source>
+        <translation>Subjekt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Ctrl+Shift+L</source>
+        <translation>Ctrl+Shift+L</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>Connecting to %1…</source>
+        <translation>Verbindung zu %1…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+7"/>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Not streaming.</source>
+        <translation>Kein Stream.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Streaming to %1: %2 datagrams/s, %3 sent</source>
+        <translation>Stream an %1: %2 Datagramme/s, %3 gesendet</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, %1 refused: %2</source>
+        <translation>, %1 abgewiesen: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot stream: %1</source>
+        <translation>Stream nicht möglich: %1</translation>
     </message>
 </context>
 <context>

@@ -293,7 +293,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+120"/>
+        <location filename="../app/studio/main_window.cpp" line="+121"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -353,7 +353,12 @@
         <translation>参考视频</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
+        <source>Live Stream</source>
+        <translation>实时流</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Weights</source>
         <translation>权重</translation>
     </message>
@@ -981,7 +986,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-856"/>
+        <location line="-861"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1299,8 +1304,8 @@
         <translation>  （峰值 %1）</translation>
     </message>
     <message>
-        <location line="+77"/>
-        <location line="+24"/>
+        <location line="+64"/>
+        <location line="+22"/>
         <source>Solve the take first.</source>
         <translation>请先求解拍摄。</translation>
     </message>
@@ -3295,6 +3300,147 @@
         <location line="+2"/>
         <source>Wrote %1</source>
         <translation>已写入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::LiveStreamPanel</name>
+    <message>
+        <location filename="../widgets/panels/live_stream_panel.cpp" line="+49"/>
+        <source>Live Link Face (Unreal, MetaHuman)</source>
+        <translation>Live Link Face（Unreal、MetaHuman）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VMC / OSC (VSeeFace, Blender add-ons)</source>
+        <translation>VMC / OSC（VSeeFace、Blender 插件）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live Link Face: the datagrams Epic&apos;s iPhone app sends, the 52 ARKit curves and the head&apos;s turn.
+VMC: OSC bundles of the weights under ARKit names, and the markers as trackers.</source>
+        <translation>Live Link Face：Epic 的 iPhone 应用发送的数据报，52 条 ARKit 曲线和头部转动。
+VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记点。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The computer the engine runs on: a name or an address</source>
+        <translation>运行引擎的计算机：名称或地址</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The Live Link subject name the engine lists</source>
+        <translation>引擎列出的 Live Link 主体名称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Solved weights</source>
+        <translation>求解的权重</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The Blendshape Solve dock&apos;s weights on ARKit&apos;s 52 curves (ICT FaceKit names by the shipped ict_to_arkit map)</source>
+        <translation>Blendshape 求解面板的权重映射到 ARKit 的 52 条曲线（ICT FaceKit 名称通过自带的 ict_to_arkit 映射）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Markers (VMC)</source>
+        <translation>标记点（VMC）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each marker as a VMC tracker, in metres; a missing sample is not sent</source>
+        <translation>每个标记点作为 VMC 跟踪器，单位为米；缺失的采样不发送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The take&apos;s rate</source>
+        <translation>拍摄的帧率</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Datagrams per second; each carries the frame shown at that moment</source>
+        <translation>每秒数据报数；每个携带当时显示的帧</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start or stop the stream (Ctrl+Shift+L)</source>
+        <translation>开始或停止流（Ctrl+Shift+L）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Protocol</source>
+        <translation>协议</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Host</source>
+        <translation>主机</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port</source>
+        <translation>端口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Subject</source>
+        <translation>主体</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rate</source>
+        <translation>速率</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Ctrl+Shift+L</source>
+        <translation>Ctrl+Shift+L</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <source>Connecting to %1…</source>
+        <translation>正在连接 %1…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+7"/>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Not streaming.</source>
+        <translation>未在推流。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Streaming to %1: %2 datagrams/s, %3 sent</source>
+        <translation>正在推流到 %1：%2 个数据报/秒，已发送 %3 个</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, %1 refused: %2</source>
+        <translation>，%1 个被拒绝：%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot stream: %1</source>
+        <translation>无法推流：%1</translation>
     </message>
 </context>
 <context>

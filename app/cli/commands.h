@@ -58,6 +58,9 @@ Command addSolve(CLI::App& mocap);
 /// `mocap actor --rig RIG --binding BIND.json --neutral TAKE[:FRAME] [--rom TAKE] -o ACTOR.json`:
 /// an actor profile (neutral, binding, each shape's extent) for `mocap solve --actor`.
 Command addActor(CLI::App& mocap);
+/// `mocap stream TAKE --rig RIG --binding BIND.json --protocol livelink|vmc --to HOST:PORT`: the
+/// solved weights (or --weights curves) and markers sent live over UDP in real time (issue 34).
+Command addStream(CLI::App& mocap);
 
 /// `mocap review TAKE -o OUT.mp4`: a review video (playblast) of the 3D view (issue 16).
 Command addReview(CLI::App& mocap);

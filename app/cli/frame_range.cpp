@@ -9,9 +9,15 @@ namespace mocap::cli {
 
 std::pair<Eigen::Index, Eigen::Index> parseFrameRange(const std::optional<std::string>& text, const Take& take)
 {
+  return parseFrameRange(text, take.firstFrame(), take.frameCount());
+}
+
+std::pair<Eigen::Index, Eigen::Index> parseFrameRange(const std::optional<std::string>& text, long long firstFrame,
+                                                      Eigen::Index frameCount)
+{
   if (!text)
-    return {0, take.frameCount()};
-  const std::int64_t first = take.firstFrame(), last = first + take.frameCount() - 1;
+    return {0, frameCount};
+  const std::int64_t first = firstFrame, last = first + frameCount - 1;
   try {
     const IndexRange range = parseIndexRange(*text, first, last);
     return {static_cast<Eigen::Index>(range.first - first), static_cast<Eigen::Index>(range.last - first + 1)};

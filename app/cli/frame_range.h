@@ -13,5 +13,8 @@ namespace mocap::cli {
 /// UsageError naming the text and what is wrong for another form or a range that is reversed or
 /// leaves the take. O(|text|).
 [[nodiscard]] std::pair<Eigen::Index, Eigen::Index> parseFrameRange(const std::optional<std::string>& text, const Take& take);
+/// The same for frames numbered firstFrame…firstFrame + frameCount - 1 (weight curves).
+[[nodiscard]] std::pair<Eigen::Index, Eigen::Index> parseFrameRange(const std::optional<std::string>& text,
+                                                                    long long firstFrame, Eigen::Index frameCount);
 
 } // namespace mocap::cli

@@ -65,6 +65,7 @@ int main(int argc, char** argv)
       addInfo(mocap),     addConvert(mocap),  addClean(mocap),      addBatch(mocap),      addSummarize(mocap),  addEvalFill(mocap), addEvalSpikes(mocap),
       addEvalSmooth(mocap), addSmoothTable(mocap), addPfa(mocap),   addTrack(mocap),    addFixSwaps(mocap),
       addEvalTrack(mocap), addBind(mocap),    addDeform(mocap),     addRig(mocap),      addSolve(mocap),     addActor(mocap),    addReview(mocap),
+      addStream(mocap),
   };
   if (argc >= 2 && std::string(argv[1]) == "help") {
     std::cout << mocap.help();

@@ -1,19 +1,16 @@
 // `mocap solve`: solves a take to the weights of a blendshape rig through a marker binding and
 // writes weight curves (CSV), the rig with its animated weights (GLB, FBX) or the solved mesh as a
 // PC2 point cache.
-#include "take_input.h"
 #include "arguments.h"
 #include "cli_error.h"
 #include "commands.h"
 #include "leave_out_cli.h"
-#include "rig_input.h"
+#include "take_solve.h"
 #include "weight_output.h"
 
 #include "mocap/base/stopwatch.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
-#include "mocap/cleaning/head_angles.h"
-#include "mocap/deform/actor_profile_io.h"
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
@@ -35,11 +32,10 @@ namespace {
 /// The options of `mocap solve`; BlendshapeSolveOptions and LeaveOutOptions hold the defaults the usage shows.
 struct SolveArguments
 {
-  std::string meshPath, shapesPath, bindingPath, takePath, out;
-  BlendshapeSolveOptions settings;
-  std::string method = std::string(blendshapeSolveMethodName(BlendshapeSolveOptions{}.method));
+  SolveInput input;
+  std::string out;
   std::string format = "plain";
-  std::optional<std::string> stabilize, only, up, units, map, actor;
+  std::optional<std::string> up, units, map;
   std::optional<double> reduce;  // glTF: key tolerance in weight units
   LeaveOutOptions leaveOut;
   bool json = false;
@@ -82,13 +78,6 @@ FbxRigOptions fbxOptions(const SolveArguments& arguments)
   return options;
 }
 
-/// The head's yaw, pitch and roll per frame in the rig's axes for the Live Link CSV, from the
-/// head motion --stabilize removed; empty (zeros in the file) without it.
-Eigen::MatrixXd headRotation(const std::optional<HeadMotion>& motion, const BlendshapeSolver& solver)
-{
-  return motion ? headYawPitchRoll(*motion, solver.retarget().rotation) : Eigen::MatrixXd();
-}
-
 /// Weight curves for .csv, the rig with its animated weights for .glb and .fbx, else (checkOutput
 /// allowed only .pc2) the solved mesh as a point cache. With --reduce, returns the keys kept: for
 /// .glb the key frames every curve shares (glTF's weights sampler has one time list), for .fbx the
@@ -109,7 +98,7 @@ std::optional<KeyCount> writeOutput(const std::filesystem::path& out, const Solv
     return writeWeightOutput(out, rig, result.weights, options);
   }
   MeshSequenceWriter sink(out, rig.neutral, MeshSequenceFormat::ObjPlusPc2,
-                          std::filesystem::path(arguments.meshPath).stem().string(),
+                          std::filesystem::path(arguments.input.meshPath).stem().string(),
                           static_cast<float>(take.firstFrame()));
   MeshVertices posed;
   for (Eigen::Index f = 0; f < result.weights.rows(); ++f) {
@@ -207,32 +196,20 @@ void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, c
 int runSolve(const SolveArguments& arguments)
 {
   checkOutput(arguments);
-  BlendshapeSolveOptions settings = arguments.settings;
-  settings.method = parseBlendshapeSolveMethod(arguments.method).value();
-  const Stopwatch load;
-  const BlendshapeRig rig = readInputRig(arguments.meshPath, arguments.shapesPath, arguments.only);
-  const double loadSeconds = load.seconds();
-  if (lowerExtension(arguments.out) != "pc2") {
-    WeightOutput mapping;
-    mapping.map = arguments.map;
-    mapping.liveLink = arguments.format == "livelink";
-    checkWeightOutput(rig, mapping);
-  }
-  Take take = readInputTake(arguments.takePath);
-  if (arguments.actor) {
-    settings.actor = std::make_shared<const ActorProfile>(readActorProfile(*arguments.actor));
-    if (take.units() != settings.actor->units)
-      take.convertUnits(settings.actor->units);
-  }
-  std::optional<HeadMotion> motion;  // kept for the Live Link CSV's head rotation
-  if (arguments.stabilize) {
-    motion = estimateHeadMotion(take, markerIndices(take, splitList(*arguments.stabilize, "--stabilize")));
-    removeHeadMotion(take, *motion);
-  }
-  const BlendshapeSolver solver(rig, readBinding(arguments.bindingPath, rig.neutral.vertexCount()), take, settings);
-  const BlendshapeSolveResult result = solver.solve(take);
-  const std::optional<KeyCount> keys =
-      writeOutput(arguments.out, arguments, rig, take, result, headRotation(motion, solver));
+  const SolvedTake solved = solveInputTake(arguments.input, [&](const BlendshapeRig& rig) {
+    if (lowerExtension(arguments.out) != "pc2") {
+      WeightOutput mapping;
+      mapping.map = arguments.map;
+      mapping.liveLink = arguments.format == "livelink";
+      checkWeightOutput(rig, mapping);
+    }
+  });
+  const BlendshapeRig& rig = *solved.rig;
+  const Take& take = solved.take;
+  const BlendshapeSolver& solver = *solved.solver;
+  const BlendshapeSolveResult& result = solved.result;
+  const double loadSeconds = solved.rigLoadSeconds;
+  const std::optional<KeyCount> keys = writeOutput(arguments.out, arguments, rig, take, result, solved.headRotation());
   std::optional<LeaveOutResult> quality;
   if (arguments.leaveOut.fraction > 0.0)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
@@ -244,7 +221,7 @@ int runSolve(const SolveArguments& arguments)
   const ResidualSummary residual = summarize(result.residual);
   const auto held = std::count(result.held.begin(), result.held.end(), true);
   std::cout << "solved " << result.weights.rows() << " frames to " << rig.shapeCount() << " shapes from "
-            << solver.markers().size() << " markers (" << arguments.method << ", λ " << result.lambda
+            << solver.markers().size() << " markers (" << arguments.input.method << ", λ " << result.lambda
             << (result.lambdaChosen ? " by GCV" : "") << ")\nrig " << fixedNumber(loadSeconds, 3) << " s, set-up "
             << fixedNumber(solver.setupSeconds(), 3) << " s, solve " << fixedNumber(result.solveSeconds, 3)
             << " s\nmarker residual " << fixedNumber(residual.mean, 2) << " mm mean, " << fixedNumber(residual.p95, 2)
@@ -268,23 +245,24 @@ Command addSolve(CLI::App& mocap)
   CLI::App* command = mocap.add_subcommand(
       "solve", "solve the take to a blendshape rig's weights; weight curves (CSV), animated rig (GLB, FBX) or mesh (PC2)");
   const auto a = std::make_shared<SolveArguments>();
-  BlendshapeSolveOptions& settings = a->settings;
-  command->add_option("--mesh", a->meshPath, "the rig: its neutral (.obj, .ply) with --shapes, or a glTF rig (.glb, .gltf)")
+  SolveInput& input = a->input;
+  BlendshapeSolveOptions& settings = input.settings;
+  command->add_option("--mesh", input.meshPath, "the rig: its neutral (.obj, .ply) with --shapes, or a glTF rig (.glb, .gltf)")
       ->required()
       ->type_name("NEUTRAL.obj|RIG.glb");
-  command->add_option("--shapes", a->shapesPath, "folder with one OBJ per shape, named after it")->type_name("DIR");
-  command->add_option("--binding", a->bindingPath, "the binding mocap bind wrote")->required()->type_name("BIND.json");
-  command->add_option("--take", a->takePath, "the take to solve")->required()->type_name("TAKE");
+  command->add_option("--shapes", input.shapesPath, "folder with one OBJ per shape, named after it")->type_name("DIR");
+  command->add_option("--binding", input.bindingPath, "the binding mocap bind wrote")->required()->type_name("BIND.json");
+  command->add_option("--take", input.takePath, "the take to solve")->required()->type_name("TAKE");
   wholeNumberIn(command->add_option("--neutral", settings.neutralFrame,
                                     "the neutral frame (default: the first with every bound marker)")
                     ->type_name("FRAME"),
                 -(1LL << 40), 1LL << 40);
-  command->add_option("--stabilize", a->stabilize, "head-mounted markers whose motion is removed first")
+  command->add_option("--stabilize", input.stabilize, "head-mounted markers whose motion is removed first")
       ->type_name("LABELS");
-  command->add_option("--actor", a->actor,
+  command->add_option("--actor", input.actor,
                       "an actor profile (mocap actor): its neutral instead of --neutral, weights in its range")
       ->type_name("ACTOR.json");
-  oneOf(command->add_option("--method", a->method, "solve"), blendshapeSolveMethodNames())->capture_default_str();
+  oneOf(command->add_option("--method", input.method, "solve"), blendshapeSolveMethodNames())->capture_default_str();
   numberIn(command->add_option("--lambda", settings.lambda,
                                "ridge weight λ relative to the shapes' mean squared motion (default: by GCV)")
                ->type_name("L"),
@@ -297,7 +275,7 @@ Command addSolve(CLI::App& mocap)
   numberIn(command->add_option("--sparsity", settings.sparsity, "L1 weight pulling unused shapes to 0")->type_name("S"),
            0.0, 1e3)
       ->capture_default_str();
-  command->add_option("--only", a->only, "solve only these shapes")->type_name("NAME,...");
+  command->add_option("--only", input.only, "solve only these shapes")->type_name("NAME,...");
   oneOf(command->add_option("--format", a->format,
                             "CSV layout: Frame,Time,<shape>,… or Live Link Face's (52 ARKit curves in the app's "
                             "order, head and eye rotations, timecode)"),

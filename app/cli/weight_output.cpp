@@ -13,21 +13,17 @@ namespace mocap::cli {
 
 namespace {
 
-/// The map onto Live Link Face's curves: --map's, else the default for the rig's names; checked.
-RetargetMap liveLinkMap(const BlendshapeRig& rig, const WeightOutput& options)
+/// --map's map when given.
+std::optional<RetargetMap> mapArgument(const WeightOutput& options)
 {
-  RetargetMap map = options.map ? readRetargetMapByNameOrPath(*options.map) : liveLinkFaceMapForRig(rig.shapeNames());
-  checkLiveLinkFaceChannels(map);
-  return map;
+  return options.map ? std::optional<RetargetMap>(readRetargetMapByNameOrPath(*options.map)) : std::nullopt;
 }
 
 void writeLiveLink(const std::filesystem::path& out, const BlendshapeRig& rig,
                    const Eigen::Ref<const Eigen::MatrixXd>& weights, const WeightOutput& options)
 {
-  const RetargetMap map = liveLinkMap(rig, options);
-  const MappedWeights mapped = applyRetargetMap(map, rig.shapeNames(), weights);
-  writeLiveLinkFaceCsv(out, liveLinkFaceRecording(mapped.names, mapped.weights, options.frameRate,
-                                                  options.headRotation));
+  writeLiveLinkFaceCsv(out, liveLinkFaceRecordingOfRig(rig.shapeNames(), weights, mapArgument(options),
+                                                       options.frameRate, options.headRotation));
 }
 
 std::optional<KeyCount> writeMapped(const std::filesystem::path& out, const std::string& extension,
@@ -81,7 +77,7 @@ void checkWeightOutput(const BlendshapeRig& rig, const WeightOutput& options)
 {
   const Eigen::MatrixXd noFrames(0, rig.shapeCount());
   if (options.liveLink)
-    (void)applyRetargetMap(liveLinkMap(rig, options), rig.shapeNames(), noFrames);
+    (void)applyRetargetMap(liveLinkFaceMap(rig.shapeNames(), mapArgument(options)), rig.shapeNames(), noFrames);
   else if (options.map)
     (void)applyRetargetMap(readRetargetMapByNameOrPath(*options.map), rig.shapeNames(), noFrames);
 }

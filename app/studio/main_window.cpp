@@ -29,6 +29,7 @@
 #include "panels/head_stabilization_step.h"
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
+#include "panels/live_stream_panel.h"
 #include "panels/reference_video_panel.h"
 #include "document/layout_plan_model.h"
 #include "document/reference_video.h"
@@ -270,6 +271,11 @@ void MainWindow::createDocks()
     if (count > 0)
       (void)showDock(QStringLiteral("referenceVideoDock"));
   });
+
+  QDockWidget* streamDock = addDock(tr("Live Stream"), QStringLiteral("liveStreamDock"),
+                                    new ui::LiveStreamPanel(*m_session, this), Qt::RightDockWidgetArea);
+  tabifyDockWidget(cleaningDock, streamDock);
+  streamDock->hide();  // View ▸ Live Stream shows it
 
   m_weights = new ui::WeightCurveView(*m_document, m_session->blendshapes(), this);
   m_weightsDock =

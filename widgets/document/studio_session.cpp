@@ -3,6 +3,7 @@
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/layout_plan_model.h"
+#include "document/live_stream.h"
 #include "document/reference_videos.h"
 #include "document/take_document.h"
 
@@ -35,6 +36,7 @@ StudioSession::StudioSession(QObject* parent) : QObject(parent), m_document(new 
   m_blendshapes = new BlendshapeSolveModel(this);
   m_videos = new ReferenceVideos(*m_document, this);
   m_layoutPlan = new LayoutPlanModel(*m_document, this);
+  m_liveStream = new LiveStream(*this, this);
   // After the models have the new take, before any view: the face follows the take's head
   // markers, then a kept rig is bound to the new take (so Reset Camera frames it).
   connect(m_document, &TakeDocument::takeReset, this, &StudioSession::followReferenceMarkers);

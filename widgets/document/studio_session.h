@@ -15,6 +15,7 @@ namespace mocap::ui {
 class BlendshapeSolveModel;
 class FaceMeshModel;
 class LayoutPlanModel;
+class LiveStream;
 class ReferenceVideos;
 class TakeDocument;
 
@@ -46,6 +47,8 @@ public:
   [[nodiscard]] BlendshapeSolveModel& blendshapes() const { return *m_blendshapes; }
   [[nodiscard]] ReferenceVideos& referenceVideos() const { return *m_videos; }
   [[nodiscard]] LayoutPlanModel& layoutPlan() const { return *m_layoutPlan; }
+  /// The live stream of the take's current frame to engines (View ▸ Live Stream).
+  [[nodiscard]] LiveStream& liveStream() const { return *m_liveStream; }
   /// The one undo stack (the document's): take edits, binding edits and weight edits undo in order.
   [[nodiscard]] QUndoStack* undoStack() const;
 
@@ -81,6 +84,7 @@ private:
   BlendshapeSolveModel* m_blendshapes = nullptr;
   ReferenceVideos* m_videos = nullptr;
   LayoutPlanModel* m_layoutPlan = nullptr;
+  LiveStream* m_liveStream = nullptr;
   bool m_keepRig = false;
   std::unique_ptr<KeptRig> m_kept;  // between dropPreviousTake and restoreKeptRig
 };

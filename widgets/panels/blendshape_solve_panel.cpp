@@ -4,6 +4,7 @@
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/job_runner.h"
+#include "document/live_link_recording.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
@@ -12,10 +13,8 @@
 #include "views/blendshape_scene.h"
 #include "views/status_timeout.h"
 
-#include "mocap/cleaning/head_angles.h"
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/live_link_face_csv.h"
-#include "mocap/io/live_link_face_map.h"
 #include "mocap/io/rig_io.h"
 #include "mocap/io/weights_csv_writer.h"
 
@@ -89,7 +88,8 @@ Eigen::VectorXd peaks(const Eigen::MatrixXd& weights)
 } // namespace
 
 BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
-    : QWidget(parent), m_document(session.document()), m_faceMesh(session.faceMesh()), m_model(session.blendshapes()),
+    : QWidget(parent), m_session(session), m_document(session.document()), m_faceMesh(session.faceMesh()),
+      m_model(session.blendshapes()),
       m_scene(new BlendshapeScene(m_model, m_faceMesh, view, this)),
       m_edits(new WeightEditActions(m_document, m_model, this)), m_jobs(new JobRunner(this))
 {
@@ -547,19 +547,6 @@ void BlendshapeSolvePanel::showEditResult(const QString& why)
   emit message(why, kStatusMessageMs);
 }
 
-Eigen::MatrixXd BlendshapeSolvePanel::headRotation() const
-{
-  const std::vector<std::string>& labels = m_faceMesh.stabilization();
-  if (labels.empty())
-    return {};
-  const std::shared_ptr<const HeadMotion> motion = m_document.headMotion(markerIndices(m_document.take(), labels));
-  const std::optional<Eigen::Affine3d> meshToLab = motion ? m_faceMesh.meshToLab(motion->referenceFrame) : std::nullopt;
-  if (!meshToLab)
-    return {};
-  // The mesh's axes in the lab at the reference frame, where the head has not turned yet.
-  return headYawPitchRoll(*motion, meshToLab->rotation().transpose());
-}
-
 QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
 {
   if (!m_model.hasResult())
@@ -570,9 +557,7 @@ QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
     if (liveLink) {
       // Live Link Face's own layout: the rig's shapes onto its 52 ARKit curves (ICT FaceKit names by
       // the shipped map), the head's turn when the take is stabilized, timecode at the take's rate.
-      const MappedWeights mapped = applyRetargetMap(liveLinkFaceMapForRig(names), names, m_model.weights());
-      writeLiveLinkFaceCsv(path.toStdString(),
-                           liveLinkFaceRecording(mapped.names, mapped.weights, take.frameRate(), headRotation()));
+      writeLiveLinkFaceCsv(path.toStdString(), sessionLiveLinkRecording(m_session));
     } else {
       writeWeightsCsv(path.toStdString(), names, m_model.weights(), take.firstFrame(), take.frameRate());
     }

@@ -121,11 +121,9 @@ private:
   void loadGltfDialog();
   void loadObjDialog();
   void exportCsvDialog();
-  /// The head's yaw, pitch and roll per frame in the mesh's axes when the take is stabilized (the
-  /// Live Link CSV's head columns), else empty (zeros).
-  [[nodiscard]] Eigen::MatrixXd headRotation() const;
   void exportGlbDialog();
 
+  StudioSession& m_session;
   TakeDocument& m_document;
   FaceMeshModel& m_faceMesh;
   BlendshapeSolveModel& m_model;

@@ -119,4 +119,20 @@ void checkLiveLinkFaceSources(const RetargetMap& map)
                               "', which is not one of Live Link Face's 52 curves");
 }
 
+RetargetMap liveLinkFaceMap(const std::vector<std::string>& rigShapes, const std::optional<RetargetMap>& map)
+{
+  RetargetMap checked = map ? *map : liveLinkFaceMapForRig(rigShapes);
+  checkLiveLinkFaceChannels(checked);
+  return checked;
+}
+
+LiveLinkFaceRecording liveLinkFaceRecordingOfRig(const std::vector<std::string>& rigShapes,
+                                                 const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                                 const std::optional<RetargetMap>& map, double frameRate,
+                                                 const Eigen::Ref<const Eigen::MatrixXd>& headRotation)
+{
+  const MappedWeights mapped = applyRetargetMap(liveLinkFaceMap(rigShapes, map), rigShapes, weights);
+  return liveLinkFaceRecording(mapped.names, mapped.weights, frameRate, headRotation);
+}
+
 } // namespace mocap

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "mocap/io/live_link_face_csv.h"
 #include "mocap/model/retarget_map.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +32,19 @@ void checkLiveLinkFaceChannels(const RetargetMap& map);
 /// Throws InvalidArgument naming the first channel (and its line) with a source that is not one of
 /// Live Link Face's 52 curves: a map reading a recording takes only those. O(Σ #sources).
 void checkLiveLinkFaceSources(const RetargetMap& map);
+
+/// The map a rig's weights take onto the 52 curves: `map` when given, else liveLinkFaceMapForRig;
+/// checked with checkLiveLinkFaceChannels. Throws as those. O(the map's size + #shapes).
+[[nodiscard]] RetargetMap liveLinkFaceMap(const std::vector<std::string>& rigShapes,
+                                          const std::optional<RetargetMap>& map);
+
+/// A rig's solved weights (#frames × #rigShapes) as a Live Link Face recording through
+/// liveLinkFaceMap(rigShapes, map), timed at `frameRate`, with `headRotation` as
+/// liveLinkFaceRecording takes it: what the Live Link CSV writes and the live stream sends.
+/// Throws as liveLinkFaceMap and applyRetargetMap. O(#frames · (Σ #sources + 61)).
+[[nodiscard]] LiveLinkFaceRecording liveLinkFaceRecordingOfRig(const std::vector<std::string>& rigShapes,
+                                                               const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                                               const std::optional<RetargetMap>& map, double frameRate,
+                                                               const Eigen::Ref<const Eigen::MatrixXd>& headRotation);
 
 } // namespace mocap
