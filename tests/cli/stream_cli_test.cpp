@@ -94,5 +94,20 @@ TEST(StreamCli, WeightCurvesFromAFileReachALiveLinkReceiverFrameByFrame)
   EXPECT_EQ(json.find("last_frame", "stream")->number("last"), 26.0);
 }
 
+TEST(StreamCli, CtrlCEndsALoopCleanlyWithItsSummary)
+{
+  const test::TempDir dir;
+  test::LoopbackReceiver receiver;
+  const test::ShellResult run = test::runShell(
+      "timeout --preserve-status -s INT 1 " + test::shellQuote(std::string(checkout::cliProgram())) + " stream " + sampleTake() +
+          " --protocol vmc --markers --loop --frames 1:50 --json --to 127.0.0.1:" + std::to_string(receiver.port()),
+      dir.path());
+  ASSERT_EQ(run.exitCode, 0) << "a loop ends with Ctrl+C as asked\n" << run.err;
+  const JsonValue json = parseJson(run.out, "stream --json");
+  EXPECT_TRUE(json.find("interrupted", "stream")->boolean("interrupted"));
+  EXPECT_GT(json.find("datagrams_sent", "stream")->number("sent"), 50.0) << "the 50 frames looped at 100 Hz for 1 s";
+  EXPECT_GE(receiver.receive(1000, std::chrono::milliseconds(100)).size(), 50U);
+}
+
 } // namespace
 } // namespace mocap
