@@ -41,4 +41,11 @@ std::vector<LoopbackReceiver::Datagram> LoopbackReceiver::receive(std::size_t co
   return datagrams;
 }
 
+void LoopbackReceiver::drain()
+{
+  std::vector<std::uint8_t> buffer(65536);
+  while (recv(m_socket, buffer.data(), buffer.size(), MSG_DONTWAIT) >= 0) {
+  }
+}
+
 } // namespace mocap::test

@@ -28,6 +28,9 @@ public:
   /// Datagrams as they come, until `count` arrived or none came for `quiet` (default 0.2 s).
   std::vector<Datagram> receive(std::size_t count, std::chrono::milliseconds quiet = std::chrono::milliseconds(200));
 
+  /// Drops the datagrams already queued (what was sent before a change under test), without waiting.
+  void drain();
+
 private:
   int m_socket = -1;
   int m_port = 0;
