@@ -2,6 +2,7 @@
 
 #include "document/live_stream.h"
 #include "document/studio_session.h"
+#include "document/take_document.h"
 #include "panels/status_line.h"
 
 #include <QCheckBox>
@@ -40,6 +41,15 @@ LiveStreamPanel::LiveStreamPanel(StudioSession& session, QWidget* parent)
   connect(&m_stream, &LiveStream::started, this, &LiveStreamPanel::showRunning);
   connect(&m_stream, &LiveStream::stopped, this, &LiveStreamPanel::showRunning);
   connect(&m_stream, &LiveStream::failed, this, &LiveStreamPanel::showError);
+  // While the take's rate is used, the rate box shows it (the start for a rate of one's own).
+  TakeDocument& document = session.document();
+  const auto showTakeRate = [this, &document] {
+    if (m_takeRate->isChecked() && document.take().frameRate() > 0.0)
+      m_rate->setValue(document.take().frameRate());
+  };
+  connect(&document, &TakeDocument::takeReset, this, showTakeRate);
+  connect(m_takeRate, &QCheckBox::toggled, this, showTakeRate);
+  showTakeRate();
   showRunning();
 }
 
@@ -116,9 +126,7 @@ void LiveStreamPanel::readSettings()
   m_markers->setChecked(settings.value(settingKey("markers"), false).toBool());
   m_takeRate->setChecked(settings.value(settingKey("takeRate"), true).toBool());
   m_rate->setValue(settings.value(settingKey("rate"), 60.0).toDouble());
-  m_rate->setDisabled(m_takeRate->isChecked());
-  m_markers->setEnabled(m_protocol->currentData() == QStringLiteral("vmc"));
-  m_subject->setEnabled(m_protocol->currentData() == QStringLiteral("livelink"));
+  enableFieldsOfProtocol();
 }
 
 void LiveStreamPanel::writeSettings() const
@@ -141,8 +149,15 @@ void LiveStreamPanel::protocolChanged()
   const int other = defaultStreamPort(vmc ? StreamProtocol::LiveLink : StreamProtocol::Vmc);
   if (m_port->value() == other)
     m_port->setValue(defaultStreamPort(vmc ? StreamProtocol::Vmc : StreamProtocol::LiveLink));
+  enableFieldsOfProtocol();
+}
+
+void LiveStreamPanel::enableFieldsOfProtocol()
+{
+  const bool vmc = m_protocol->currentData() == QStringLiteral("vmc");
   m_markers->setEnabled(vmc);
   m_subject->setEnabled(!vmc);
+  m_rate->setDisabled(m_takeRate->isChecked());
 }
 
 void LiveStreamPanel::setDestination(const QString& host, int port)
@@ -186,8 +201,11 @@ void LiveStreamPanel::showRunning()
 {
   const bool running = m_stream.running();
   m_start->setText(running ? tr("Stop") : tr("Start"));
-  for (QWidget* field : std::initializer_list<QWidget*>{m_protocol, m_host, m_port, m_subject, m_weights, m_takeRate})
+  for (QWidget* field :
+       std::initializer_list<QWidget*>{m_protocol, m_host, m_port, m_subject, m_weights, m_markers, m_takeRate, m_rate})
     field->setDisabled(running);
+  if (!running)
+    enableFieldsOfProtocol();
   if (running) {
     m_lastSent = 0;
     m_lastFailed = 0;

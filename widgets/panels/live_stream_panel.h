@@ -46,6 +46,8 @@ private:
   void readSettings();
   void writeSettings() const;
   void protocolChanged();
+  /// Markers only over VMC, a subject only for Live Link, a rate of one's own only when asked.
+  void enableFieldsOfProtocol();
   void showRunning();
   void showStats();
   void showError(const QString& message);
