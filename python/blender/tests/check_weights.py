@@ -1,12 +1,15 @@
 """Installs the Mocap Studio add-on zip in Blender, imports the bundled rig's GLB and keys its shape
 keys from solved weights with File ▸ Import ▸ Mocap Solved Weights, then checks the keys.
 
-    blender -b --factory-startup --python-exit-code 1 --python check_weights.py -- ZIP RIG.glb W.csv LL.csv
+    blender -b --factory-startup --python-exit-code 1 --python check_weights.py -- \
+        ZIP RIG.glb W.csv LL.csv TAKE BINDING
 
-W.csv is `mocap solve -o W.csv` (the rig's own shape names: imported by name); LL.csv is the same
-solve as Live Link Face CSV, imported through the shipped arkit_to_ict map by the mocap module
-(which must import inside Blender). Every keyed value must equal its curve within 1e-6 at every
-frame. Prints PASS/FAIL lines; exits 1 on failure.
+W.csv is `mocap solve -o W.csv` of TAKE with BINDING (the rig's own shape names: imported by name);
+LL.csv is the same solve as Live Link Face CSV, imported through the shipped arkit_to_ict map by the
+mocap module (which must import inside Blender); then the Mocap panel's Solve onto Shape Keys
+solves TAKE itself. Every keyed value must equal its curve (the panel's: W.csv's) within 1e-6 at
+every frame (the panel's within 1e-5, as test_solve.py compares mocap.solve with the CSV). Prints
+PASS/FAIL lines; exits 1 on failure.
 """
 
 import csv
@@ -30,7 +33,7 @@ def read_csv(path):
     return rows[0][2:], [[float(v) for v in row[2:]] for row in rows[1:]]
 
 
-def check_keys(mesh, names, rows, what):
+def check_keys(mesh, names, rows, what, tolerance=1e-6):
     """Every shape key named as a curve is keyed with the curve's values at frames 1, 2, …"""
     blocks = mesh.data.shape_keys.key_blocks
     action = mesh.data.shape_keys.animation_data.action
@@ -47,11 +50,11 @@ def check_keys(mesh, names, rows, what):
                 % (what, name, len(curve.keyframe_points), len(rows)))
         for i, row in enumerate(rows):
             worst = max(worst, abs(curve.evaluate(1 + i) - row[c]))
-    require(worst <= 1e-6, "%s: a key is %.3g off its weight" % (what, worst))
+    require(worst <= tolerance, "%s: a key is %.3g off its weight" % (what, worst))
     return len(keyed), worst
 
 
-def main(zip_path, rig_path, weights_path, live_link_path):
+def main(zip_path, rig_path, weights_path, live_link_path, take_path, binding_path):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
     bpy.ops.preferences.addon_enable(module="mocap_studio")
@@ -80,6 +83,14 @@ def main(zip_path, rig_path, weights_path, live_link_path):
     names, mapped = mocap.retarget_weights(curves, numpy.array(values), "arkit_to_ict")
     count, worst = check_keys(mesh, list(names), mapped.tolist(), "Live Link CSV through arkit_to_ict")
     print("PASS: Live Link CSV through arkit_to_ict: %d shape keys within %.2g" % (count, worst))
+
+    scene = bpy.context.scene
+    scene.mocap_take, scene.mocap_rig, scene.mocap_binding = take_path, rig_path, binding_path
+    result = bpy.ops.mocap.solve_shape_keys()
+    require(result == {"FINISHED"}, "the panel's solve returned %s" % result)
+    names, rows = read_csv(weights_path)  # mocap solve's own weights, shortest round-trip numbers
+    count, worst = check_keys(mesh, names, rows, "the panel's solve", 1e-5)
+    print("PASS: Solve onto Shape Keys: %d shape keys equal mocap solve's weights within %.2g" % (count, worst))
 
     try:  # an operator that reports an error raises it when called from a script
         result = bpy.ops.import_anim.mocap_weights(filepath=live_link_path)

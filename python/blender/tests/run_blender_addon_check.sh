@@ -24,7 +24,7 @@ check() {
 weights() {
   BLENDER_USER_SCRIPTS="$out/scripts-weights" BLENDER_USER_CONFIG="$out/config-weights" \
     "$blender" -b --factory-startup --python-exit-code 1 --python "$here/check_weights.py" -- \
-    "$zip" "$rig" "$out/weights.csv" "$out/livelink.csv"
+    "$zip" "$rig" "$out/weights.csv" "$out/livelink.csv" "$take" "$binding"
 }
 MOCAP_PYTHON_PATH="$module_dir" MOCAP_CLI= check module
 MOCAP_PYTHON_PATH= MOCAP_CLI="$mocap" check cli
