@@ -3,11 +3,9 @@
 // and checks are the preset reader's (batch/clean_preset.h), not a second copy of them.
 
 #include "bindings.h"
+#include "clean_options.h"
 
 #include "mocap/base/file_io.h"
-#include "mocap/batch/clean_preset.h"
-#include "mocap/batch/clean_report_json.h"
-#include "mocap/batch/clean_run.h"
 #include "mocap/model/take.h"
 
 #include <pybind11/stl.h>
@@ -20,17 +18,16 @@ namespace mocap::python {
 
 namespace {
 
-/// The preset's JSON text: `preset` (a path, a dict or None) with `options` laid over it, each
-/// step either a dict of its options or "off".
-std::string presetText(const py::object& preset, const py::kwargs& options)
+/// `preset` (a path, a dict or None) with `options` laid over it, each step either a dict of its
+/// options or "off".
+py::dict mergedPreset(const py::object& preset, const py::kwargs& options)
 {
-  const py::module_ json = py::module_::import("json");
   py::dict merged;
   if (py::isinstance<py::dict>(preset)) {
     merged = py::dict(preset);
   } else if (!preset.is_none()) {
     const std::string path = py::str(py::module_::import("os").attr("fspath")(preset));
-    merged = json.attr("loads")(readFileBytes(path));  // IoError as the CLI gives it
+    merged = py::module_::import("json").attr("loads")(readFileBytes(path));  // IoError as the CLI gives it
   }
   for (const auto& [key, value] : options) {
     if (py::isinstance<py::str>(value) && value.cast<std::string>() == "off")
@@ -38,7 +35,7 @@ std::string presetText(const py::object& preset, const py::kwargs& options)
     else
       merged[key] = value;
   }
-  return json.attr("dumps")(merged).cast<std::string>();
+  return merged;
 }
 
 } // namespace
@@ -51,14 +48,7 @@ void bindCleaning(py::module_& m)
         const std::string source = preset.is_none() || py::isinstance<py::dict>(preset)
                                        ? std::string("mocap.clean options")
                                        : py::str(preset).cast<std::string>();
-        const CleanOptions parsed = parseCleanPreset(presetText(preset, options), source);
-        std::string report;
-        {
-          const py::gil_scoped_release release;
-          const CleanReport done = cleanAndRecord(take, parsed, "mocap python");
-          report = cleanReportJson("", "", take, parsed, done);
-        }
-        return py::module_::import("json").attr("loads")(report);
+        return cleanAndReport(take, parseCleanOptions(mergedPreset(preset, options), source));
       },
       py::arg("take"), py::arg("preset") = py::none(),
       "Cleans the take in place as `mocap clean` does (stabilize → spikes → fill → smooth) and "

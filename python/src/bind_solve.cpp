@@ -1,9 +1,11 @@
 // Rigs, bindings and the blendshape solve: mocap.load_rig, mocap.read_binding, mocap.solve.
 
 #include "bindings.h"
+#include "mesh_source.h"
 #include "python_job.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/io/rig_io.h"
@@ -70,15 +72,27 @@ void bindBinding(py::module_& m)
                                  labels.push_back(marker.label);
                                return labels;
                              })
-      .def_readonly("mesh_vertices", &MeshBinding::meshVertices);
+      .def_property_readonly("residuals",
+                             [](const MeshBinding& b) {
+                               std::vector<double> residuals;
+                               for (const MarkerBinding& marker : b.markers)
+                                 residuals.push_back(marker.residual);
+                               return residuals;
+                             },
+                             "per marker, the distance from its aligned neutral position to its mesh point (mm)")
+      .def_readonly("mesh_vertices", &MeshBinding::meshVertices)
+      .def("json", &bindingJson, "The binding as `mocap bind -o` writes it.")
+      .def(
+          "write", [](const MeshBinding& b, const std::filesystem::path& path) { writeFileAtomically(path, bindingJson(b)); },
+          py::arg("path"), "Writes json() to `path` atomically.");
   m.def(
       "read_binding",
-      [](const std::filesystem::path& path, const BlendshapeRig& rig) {
-        return readBinding(path, rig.neutral.vertexCount());
+      [](const std::filesystem::path& path, const py::object& mesh) {
+        return readBinding(path, meshFrom(mesh).vertexCount());
       },
-      py::arg("path"), py::arg("rig"),
-      "Reads a binding (`mocap bind`'s JSON) made for the rig's mesh; raises when it was made for "
-      "another vertex count.");
+      py::arg("path"), py::arg("mesh"),
+      "Reads a binding (`mocap bind`'s JSON) made for `mesh` (a mocap.Rig, or the mesh file it was bound "
+      "to); raises when it was made for another vertex count.");
 }
 
 BlendshapeSolveOptions solveOptions(const std::string& method, std::optional<double> lambda, double smoothness,

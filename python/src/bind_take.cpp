@@ -8,6 +8,7 @@
 #include "mocap/model/gaps.h"
 #include "mocap/model/take.h"
 
+#include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -111,6 +112,33 @@ py::list eventsOf(const Take& take)
   return events;
 }
 
+/// The analog channels as read: rate, identities and scaling, the stored values and the physical
+/// ones (AnalogData::physical), each #samples × #channels (copies).
+py::dict analogOf(const Take& take)
+{
+  const AnalogData& analog = take.analog();
+  py::dict d;
+  d["rate"] = analog.rate;
+  d["general_scale"] = analog.generalScale;
+  py::list channels;
+  for (const AnalogChannel& c : analog.channels) {
+    py::dict channel;
+    channel["label"] = c.label;
+    channel["description"] = c.description;
+    channel["unit"] = c.unit;
+    channel["scale"] = c.scale;
+    channel["offset"] = c.offset;
+    channels.append(channel);
+  }
+  d["channels"] = channels;
+  d["stored"] = analog.stored;
+  Eigen::MatrixXd physical(analog.sampleCount(), analog.channelCount());
+  for (Eigen::Index c = 0; c < analog.channelCount(); ++c)
+    physical.col(c) = analog.physical(c);
+  d["physical"] = physical;
+  return d;
+}
+
 void bindGap(py::module_& m)
 {
   py::class_<Gap>(m, "Gap", "A run of missing samples of one marker.")
@@ -203,6 +231,10 @@ void bindTake(py::module_& m)
       .def("gaps", [](const Take& t) { return findGaps(t); }, "Every run of missing samples, markers in order.")
       .def_property_readonly("history", &historyOf, "the processing steps applied, oldest first")
       .def_property_readonly("events", &eventsOf, "the take's events (label, context, time in s, ...)")
+      .def_property_readonly("analog", &analogOf,
+                             "the analog channels (force plates, EMG...): {'rate', 'general_scale', 'channels': "
+                             "[{label, description, unit, scale, offset}], 'stored': samples × channels as in "
+                             "the file, 'physical': (stored − offset) · scale · general_scale}")
       .def("__repr__", [](const Take& t) {
         return "<mocap.Take " + std::to_string(t.markerCount()) + " markers × " + std::to_string(t.frameCount()) +
                " frames at " + std::to_string(t.frameRate()) + " Hz>";

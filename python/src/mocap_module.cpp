@@ -9,6 +9,11 @@ PYBIND11_MODULE(mocap, m)
   mocap::python::bindTake(m);
   mocap::python::bindTakeFiles(m);
   mocap::python::bindCleaning(m);
+  mocap::python::bindCleaningSteps(m);
   mocap::python::bindSolve(m);
+  mocap::python::bindMarkerBinding(m);
+  mocap::python::bindDeform(m);
+  mocap::python::bindLayout(m);
   mocap::python::bindWriters(m);
+  mocap::python::bindWeightCurves(m);
 }

@@ -1,5 +1,6 @@
 """The `mocap` module's takes: reading, writing, NumPy arrays and errors (ctest `python_module`)."""
 
+import json
 import os
 import pathlib
 import subprocess
@@ -135,3 +136,20 @@ def test_reading_a_thousand_times_leaks_nothing():
     for _ in range(1000):
         mocap.read(SMALL).positions
     assert resident_kb() - before < 2048, "RSS grew by more than 2 MB over 1 000 reads"
+
+
+def test_analog_channels_are_the_files():
+    path = SOURCE / "tests" / "data" / "c3d" / "sample01" / "Eb015pr.c3d"
+    cli = os.environ.get("MOCAP_CLI")
+    if not cli:
+        pytest.skip("MOCAP_CLI is not set (ctest sets it to build/bin/mocap)")
+    info = json.loads(subprocess.run([cli, "info", str(path), "--json"], check=True, capture_output=True,
+                                     text=True).stdout)
+    analog = mocap.read(path).analog
+    assert analog["rate"] == info["analog_rate"]
+    assert [c["label"] for c in analog["channels"]] == info["analog_labels"]
+    assert analog["stored"].shape == analog["physical"].shape and analog["stored"].shape[1] == 16
+    c = analog["channels"][2]
+    np.testing.assert_allclose(analog["physical"][:, 2],
+                               (analog["stored"][:, 2] - c["offset"]) * c["scale"] * analog["general_scale"])
+    assert mocap.read(SAMPLE).analog["stored"].shape[1] == 0

@@ -30,10 +30,7 @@ std::string processingTime()
   return text;
 }
 
-namespace {
-
-/// One history step per pipeline step that ran.
-void appendHistory(Take& take, const CleanOptions& options, const CleanReport& report, const std::string& tool)
+void recordCleanSteps(Take& take, const CleanOptions& options, const CleanReport& report, const std::string& tool)
 {
   const std::string time = processingTime();
   auto step = [&](std::string operation, std::vector<std::pair<std::string, std::string>> parameters,
@@ -80,12 +77,10 @@ void appendHistory(Take& take, const CleanOptions& options, const CleanReport& r
          static_cast<std::int64_t>(report.smoothedSamples));
 }
 
-} // namespace
-
 CleanReport cleanAndRecord(Take& take, const CleanOptions& options, const std::string& tool)
 {
   CleanReport report = cleanTake(take, options);
-  appendHistory(take, options, report, tool);
+  recordCleanSteps(take, options, report, tool);
   return report;
 }
 

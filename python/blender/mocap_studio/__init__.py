@@ -1,13 +1,15 @@
 """Mocap Studio for Blender: File ▸ Import ▸ Mocap Take (.c3d, .trc) as animated empties, with
-gaps as hidden keys and each sample's state (measured, filled, edited) as a custom property. Uses
-the `mocap` Python module when Blender's Python can import it, else the `mocap` command line."""
+gaps as hidden keys and each sample's state (measured, filled, edited) as a custom property;
+File ▸ Import ▸ Mocap Solved Weights (weight or Live Link Face CSV onto the active mesh's shape
+keys) and the 3D view's Mocap tab, which solves a take onto them. Uses the `mocap` Python module
+when Blender's Python can import it, else the `mocap` command line (takes only)."""
 
 bl_info = {
     "name": "Mocap Studio",
     "author": "Mocap Studio",
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
-    "location": "File > Import > Mocap Take",
+    "location": "File > Import > Mocap Take / Mocap Solved Weights; 3D View > Sidebar > Mocap",
     "description": "Import motion capture takes cleaned with Mocap Studio",
     "category": "Import-Export",
 }
@@ -18,7 +20,7 @@ import bpy
 from bpy.props import StringProperty
 from bpy_extras.io_utils import ImportHelper
 
-from . import take_empties, take_source
+from . import take_empties, take_source, weights_ops
 
 
 class MocapStudioPreferences(bpy.types.AddonPreferences):
@@ -64,18 +66,21 @@ class IMPORT_SCENE_OT_mocap_take(bpy.types.Operator, ImportHelper):
 
 def _menu(self, context):
     self.layout.operator(IMPORT_SCENE_OT_mocap_take.bl_idname, text="Mocap Take (.c3d, .trc)")
+    self.layout.operator(weights_ops.IMPORT_ANIM_OT_mocap_weights.bl_idname, text="Mocap Solved Weights (.csv)")
 
 
-_classes = (MocapStudioPreferences, IMPORT_SCENE_OT_mocap_take)
+_classes = (MocapStudioPreferences, IMPORT_SCENE_OT_mocap_take) + weights_ops.classes
 
 
 def register():
     for cls in _classes:
         bpy.utils.register_class(cls)
+    weights_ops.register_properties()
     bpy.types.TOPBAR_MT_file_import.append(_menu)
 
 
 def unregister():
     bpy.types.TOPBAR_MT_file_import.remove(_menu)
+    weights_ops.unregister_properties()
     for cls in reversed(_classes):
         bpy.utils.unregister_class(cls)

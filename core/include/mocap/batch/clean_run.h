@@ -13,6 +13,12 @@ namespace mocap {
 /// Throws as cleanTake. Cost: cleanTake's.
 CleanReport cleanAndRecord(Take& take, const CleanOptions& options, const std::string& tool);
 
+/// The history steps cleanAndRecord appends, one per step of `options` that ran (stabilize head,
+/// repair spikes, fill gaps, smooth) with its parameters, `report`'s sample counts, the whole
+/// take's frames, processingTime() and `tool`; for callers that run a step on a selection
+/// (mocap.fill_gaps with markers or frames) and narrow the step afterwards. O(#steps).
+void recordCleanSteps(Take& take, const CleanOptions& options, const CleanReport& report, const std::string& tool);
+
 /// Writes the cleaned take atomically in the format `output`'s extension names. A BVH of a
 /// stabilized take carries the head motion in its root joint, so its markers go in head space.
 /// Throws as writeTake / writeBvh. O(take size).
