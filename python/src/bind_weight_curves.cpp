@@ -68,12 +68,10 @@ void writeLiveLink(const std::filesystem::path& path, const std::vector<std::str
     throw InvalidArgument("head_rotation must be frames × 3 (" + std::to_string(weights.rows()) +
                           " × 3: yaw, pitch, roll in radians), not " + std::to_string(headRotation->rows()) +
                           " × " + std::to_string(headRotation->cols()));
-  const RetargetMap retarget = map.is_none() ? liveLinkFaceMapForRig(names) : *retargetMap(map);
-  checkLiveLinkFaceChannels(retarget);
+  const std::optional<RetargetMap> retarget = retargetMap(map);
   const py::gil_scoped_release release;
-  const MappedWeights mapped = applyRetargetMap(retarget, names, weights);
-  writeLiveLinkFaceCsv(path, liveLinkFaceRecording(mapped.names, mapped.weights, rate,
-                                                  headRotation.value_or(Eigen::MatrixXd())));
+  writeLiveLinkFaceCsv(path, liveLinkFaceRecordingOfRig(names, weights, retarget, rate,
+                                                        headRotation.value_or(Eigen::MatrixXd())));
 }
 
 } // namespace
