@@ -1103,6 +1103,11 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& objectName
     dock->setWidget(content);
   }
   addDockWidget(area, dock);
+  // Shown from the View menu, a dock comes to the front, not in a tab behind the others.
+  connect(dock->toggleViewAction(), &QAction::triggered, dock, [dock](bool shown) {
+    if (shown)
+      dock->raise();
+  });
   return dock;
 }
 

@@ -15,8 +15,10 @@
 
 #include "mocap/io/take_io.h"
 
+#include <QAction>
 #include <QDockWidget>
 #include <QHeaderView>
+#include <QImage>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStatusBar>
@@ -107,6 +109,60 @@ TEST(ForeignTakeWalkthrough, MarkersDockShowsTheValidColumnAtTheFirstRunSize)
   EXPECT_GE(table->columnWidth(valid), table->horizontalHeader()->sectionSizeHint(valid)) << "header cut";
   const QModelIndex label = table->model()->index(0, ui::MarkerTableModel::LabelColumn);
   EXPECT_EQ(label.data(Qt::ToolTipRole).toString(), label.data().toString());
+}
+
+TEST(ForeignTakeWalkthrough, ElidedLabelsThatDifferAtTheirEndLookDifferent)
+{
+  // Dance.c3d's Channel101, Channel102, … all read "Channel1…" in the Markers dock: labels of other
+  // systems differ at their end, so a narrow label column elides in the middle.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ui::TakeDocument& document = window->document();
+  (void)document.renameMarker(0, "Skeleton_LShoulder_Channel101");
+  (void)document.renameMarker(1, "Skeleton_LShoulder_Channel102");
+  QTest::qWait(50);
+  const auto looks = [](QTableView& table, int row, int column) {
+    const QModelIndex index = table.model()->index(row, column);
+    return table.viewport()->grab(table.visualRect(index)).toImage();
+  };
+  auto* markers = qobject_cast<QTableView*>(window->findChild<QDockWidget*>(QStringLiteral("markersDock"))->widget());
+  ASSERT_NE(markers, nullptr);
+  const int label = ui::MarkerTableModel::LabelColumn;
+  ASSERT_LT(markers->columnWidth(label), markers->fontMetrics().horizontalAdvance(QStringLiteral("Skeleton_LShoulder_Channel101")));
+  EXPECT_NE(looks(*markers, 0, label), looks(*markers, 1, label)) << "the Markers dock";
+  auto* dock = window->findChild<QDockWidget*>(QStringLiteral("gapListDock"));
+  dock->show();
+  dock->raise();
+  QTest::qWait(50);
+  QTableView* gaps = window->gapListPanel()->view();
+  gaps->sortByColumn(ui::GapTableModel::MarkerColumn, Qt::AscendingOrder);
+  int first = -1, second = -1;
+  for (int row = 0; row < gaps->model()->rowCount(); ++row) {
+    const QString text = gaps->model()->index(row, ui::GapTableModel::MarkerColumn).data().toString();
+    if (first < 0 && text.endsWith(QStringLiteral("101")))
+      first = row;
+    if (second < 0 && text.endsWith(QStringLiteral("102")))
+      second = row;
+  }
+  if (first >= 0 && second >= 0) {  // both markers have gaps
+    EXPECT_NE(looks(*gaps, first, ui::GapTableModel::MarkerColumn), looks(*gaps, second, ui::GapTableModel::MarkerColumn))
+        << "the Gaps dock";
+  }
+}
+
+TEST(ForeignTakeWalkthrough, ADockShownFromTheViewMenuComesToTheFront)
+{
+  // View ▸ Face Mesh added a tab behind the Gaps dock: nothing seemed to happen.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  for (const char* name : {"faceMeshDock", "blendshapeSolveDock", "referenceVideoDock"}) {
+    auto* dock = window->findChild<QDockWidget*>(QString::fromLatin1(name));
+    ASSERT_NE(dock, nullptr) << name;
+    ASSERT_FALSE(dock->isVisible()) << name;
+    dock->toggleViewAction()->trigger();
+    QTest::qWait(50);
+    EXPECT_FALSE(dock->visibleRegion().isEmpty()) << name << " is behind another tab";
+  }
 }
 
 /// Where `label` was drawn at the last render: its text's box in display pixels (y up).

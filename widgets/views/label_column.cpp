@@ -2,9 +2,29 @@
 
 #include <QHeaderView>
 #include <QStyle>
+#include <QStyledItemDelegate>
 #include <QTableView>
 
 namespace mocap::ui {
+
+namespace {
+
+/// Elides a label in its middle: labels from other systems differ at their end ("Channel101",
+/// "Channel102"), which eliding at the right would hide.
+class MiddleElidingDelegate final : public QStyledItemDelegate
+{
+public:
+  using QStyledItemDelegate::QStyledItemDelegate;
+
+protected:
+  void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override
+  {
+    QStyledItemDelegate::initStyleOption(option, index);
+    option->textElideMode = Qt::ElideMiddle;
+  }
+};
+
+} // namespace
 
 void limitLabelColumn(QTableView& view, int column, bool checkable)
 {
@@ -13,7 +33,7 @@ void limitLabelColumn(QTableView& view, int column, bool checkable)
   QHeaderView* header = view.horizontalHeader();
   header->setSectionResizeMode(column, QHeaderView::Interactive);  // a user may still widen it
   header->resizeSection(column, width);
-  view.setTextElideMode(Qt::ElideRight);
+  view.setItemDelegateForColumn(column, new MiddleElidingDelegate(&view));
 }
 
 } // namespace mocap::ui
