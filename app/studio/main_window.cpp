@@ -50,6 +50,8 @@
 #include "views/sample_colors.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
+#include "panels/form_wrapping.h"
+#include "views/label_column.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -193,6 +195,7 @@ void MainWindow::createDocks()
   m_table->verticalHeader()->hide();
   m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   m_table->horizontalHeader()->setStretchLastSection(true);
+  ui::limitLabelColumn(*m_table, ui::MarkerTableModel::LabelColumn, false);  // "Valid %" stays in view
   connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
     if (m_syncingSelection)
       return;
@@ -1100,11 +1103,17 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& objectName
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(content);
+    ui::wrapLongFormRows(*content);  // nor sideways
     dock->setWidget(scroll);
   } else {
     dock->setWidget(content);
   }
   addDockWidget(area, dock);
+  // Shown from the View menu, a dock comes to the front, not in a tab behind the others.
+  connect(dock->toggleViewAction(), &QAction::triggered, dock, [dock](bool shown) {
+    if (shown)
+      dock->raise();
+  });
   return dock;
 }
 
@@ -1132,7 +1141,7 @@ void MainWindow::proportionDocks()
     const Qt::DockWidgetArea area = dockWidgetArea(dock);
     if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) {
       sideDocks.append(dock);
-      widths.append(width() * (area == Qt::LeftDockWidgetArea ? 12 : 30) / 100);
+      widths.append(width() * (area == Qt::LeftDockWidgetArea ? 16 : 30) / 100);
     } else if (area == Qt::BottomDockWidgetArea) {
       bottomDocks.append(dock);
       heights.append(height() * 26 / 100);

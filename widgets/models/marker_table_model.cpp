@@ -73,6 +73,8 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
               "Outputs")
         .arg(QString::fromUtf8(type.data(), static_cast<int>(type.size())));
   }
+  if (role == Qt::ToolTipRole && index.column() == LabelColumn)  // the column elides long labels
+    return QString::fromStdString(m_document.take().label(marker));
   if (role == Qt::TextAlignmentRole && index.column() != LabelColumn)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
   return {};

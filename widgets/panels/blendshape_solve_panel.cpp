@@ -8,6 +8,7 @@
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
+#include "panels/flow_layout.h"
 #include "panels/panel_folder.h"
 #include "panels/status_line.h"
 #include "views/blendshape_scene.h"
@@ -133,7 +134,7 @@ QWidget* BlendshapeSolvePanel::buildRigBox()
   m_rigLabel = new QLabel(tr("No rig"), box);
   m_rigLabel->setWordWrap(true);
   rows->addWidget(m_rigLabel);
-  auto* buttons = new QHBoxLayout;
+  auto* buttons = new FlowLayout;  // rows of buttons wrap in a narrow dock
   auto* gltf = new QPushButton(tr("Load glTF Rig…"), box);
   gltf->setToolTip(tr("A .glb or .gltf with the neutral mesh and one morph target per shape"));
   connect(gltf, &QPushButton::clicked, this, &BlendshapeSolvePanel::loadGltfDialog);
@@ -142,7 +143,6 @@ QWidget* BlendshapeSolvePanel::buildRigBox()
   connect(obj, &QPushButton::clicked, this, &BlendshapeSolvePanel::loadObjDialog);
   buttons->addWidget(gltf);
   buttons->addWidget(obj);
-  buttons->addStretch();
   rows->addLayout(buttons);
   return box;
 }
@@ -260,7 +260,7 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   });
   rows->addWidget(m_show);
   rows->addWidget(m_beside);
-  auto* buttons = new QHBoxLayout;
+  auto* buttons = new FlowLayout;
   m_exportCsv = new QPushButton(tr("Export Weights…"), box);
   m_exportCsv->setToolTip(tr("Weight curves as CSV: one column per shape (plain or Live Link Face layout)"));
   connect(m_exportCsv, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportCsvDialog);
@@ -269,7 +269,6 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   connect(m_exportGlb, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportGlbDialog);
   buttons->addWidget(m_exportCsv);
   buttons->addWidget(m_exportGlb);
-  buttons->addStretch();
   rows->addLayout(buttons);
   connect(&m_model, &BlendshapeSolveModel::resultChanged, this, [this] {
     m_exportCsv->setEnabled(m_model.hasResult());

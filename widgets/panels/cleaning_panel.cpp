@@ -4,6 +4,7 @@
 #include "commands/record_step_command.h"
 #include "document/job_runner.h"
 #include "document/take_document.h"
+#include "panels/form_wrapping.h"
 #include "panels/job_progress_row.h"
 
 #include <QAbstractSpinBox>
@@ -118,10 +119,7 @@ CleaningPanel::~CleaningPanel() = default;  // the runner stops and awaits its j
 
 void CleaningPanel::addStep(CleaningStep* step)
 {
-  // A field wider than the dock goes under its label rather than pushing Apply out of view
-  // sideways (the dock is about 310 px wide when the studio first opens on a 1280×800 screen).
-  for (QFormLayout* form : step->findChildren<QFormLayout*>())
-    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+  wrapLongFormRows(*step);  // a step may come after the panel is docked
   m_tabs->addTab(step, step->title());
   connect(step, &CleaningStep::changed, this, &CleaningPanel::schedule);
 }

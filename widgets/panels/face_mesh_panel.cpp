@@ -4,6 +4,7 @@
 #include "document/face_mesh_model.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
+#include "panels/flow_layout.h"
 #include "panels/panel_folder.h"
 #include "panels/reference_markers_row.h"
 #include "panels/status_line.h"
@@ -24,7 +25,6 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPushButton>
@@ -90,7 +90,7 @@ void FaceMeshPanel::buildUi()
   m_meshLabel = new QLabel(tr("No mesh"), meshBox);
   m_meshLabel->setWordWrap(true);
   meshLayout->addWidget(m_meshLabel);
-  auto* files = new QHBoxLayout;
+  auto* files = new FlowLayout;  // rows of buttons wrap in a narrow dock
   auto* loadMeshButton = new QPushButton(tr("Load Mesh…"), meshBox);
   loadMeshButton->setToolTip(tr("A face mesh as OBJ or PLY, or a glTF rig's neutral"));
   connect(loadMeshButton, &QPushButton::clicked, this, &FaceMeshPanel::loadMeshDialog);
@@ -105,7 +105,7 @@ void FaceMeshPanel::buildUi()
   m_bindingLabel = new QLabel(meshBox);
   m_bindingLabel->setWordWrap(true);
   meshLayout->addWidget(m_bindingLabel);
-  auto* edit = new QHBoxLayout;
+  auto* edit = new FlowLayout;
   auto* autoBindButton = new QPushButton(tr("Auto-Bind"), meshBox);
   autoBindButton->setToolTip(tr("Align the neutral frame to the mesh and bind each marker to its nearest surface "
                                 "point (the selected markers when three or more are selected)"));
@@ -125,7 +125,6 @@ void FaceMeshPanel::buildUi()
   edit->addWidget(m_pick);
   edit->addWidget(undo);
   edit->addWidget(redo);
-  edit->addStretch();
   meshLayout->addLayout(edit);
   layout->addWidget(meshBox);
 

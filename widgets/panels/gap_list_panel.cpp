@@ -7,6 +7,7 @@
 #include "models/fill_rule_text.h"
 #include "models/gap_table_model.h"
 #include "panels/job_progress_row.h"
+#include "views/label_column.h"
 
 #include "mocap/cleaning/fill/per_gap_fill.h"
 
@@ -23,7 +24,6 @@
 #include <QSettings>
 #include <QShortcut>
 #include <QSortFilterProxyModel>
-#include <QStyle>
 #include <QStyledItemDelegate>
 #include <QTableView>
 #include <QTimer>
@@ -153,14 +153,11 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   // and method titles ("Distance-weighted neighbours (Lin–Ouhyoung)") are long: fixed widths, elided,
   // the whole text in the tooltip, so marker, frames, state and override fit the dock as the studio
   // first opens on a 1280×800 screen.
-  // Labels from other systems run long ("Skeleton_LShoulder2"): the marker column holds a check box
-  // and a label as long as "section14-3" and elides longer ones (the whole label in the tooltip).
+  // Labels from other systems run long ("Skeleton_LShoulder2"): see limitLabelColumn.
+  limitLabelColumn(*m_view, GapTableModel::MarkerColumn, true);
   const int digits = m_view->fontMetrics().horizontalAdvance(QStringLiteral("000000"));
-  const int labelWidth = m_view->style()->pixelMetric(QStyle::PM_IndicatorWidth) +
-                     m_view->fontMetrics().horizontalAdvance(QStringLiteral("section14-30"));
   for (const auto& [column, width] :
-       {std::pair{GapTableModel::MarkerColumn, labelWidth}, std::pair{GapTableModel::FirstFrameColumn, digits},
-        std::pair{GapTableModel::LengthColumn, digits},
+       {std::pair{GapTableModel::FirstFrameColumn, digits}, std::pair{GapTableModel::LengthColumn, digits},
         std::pair{GapTableModel::StateColumn, 100}, std::pair{GapTableModel::MethodColumn, 110}}) {
     header->setSectionResizeMode(column, QHeaderView::Interactive);
     header->resizeSection(column, width);

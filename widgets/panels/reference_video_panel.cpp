@@ -4,6 +4,7 @@
 #include "document/reference_videos.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
+#include "panels/flow_layout.h"
 #include "panels/panel_folder.h"
 #include "panels/status_line.h"
 #include "views/video_view.h"
@@ -15,8 +16,7 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QGridLayout>
-#include <QHBoxLayout>
+#include <QFormLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -43,7 +43,6 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
 {
   m_none->setActive(false);
   auto* layout = new QVBoxLayout(this);
-  auto* files = new QHBoxLayout;
   m_choice = new QComboBox(this);
   m_choice->setToolTip(tr("The take's reference videos: the one picked here is shown"));
   m_choice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -52,7 +51,7 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
     if (index >= 0 && index != m_videos.currentIndex())
       setCurrentIndex(index);
   });
-  files->addWidget(m_choice, 1);
+  layout->addWidget(m_choice);
   auto* add = new QPushButton(tr("Add Reference Video…"), this);
   add->setToolTip(tr("A video of the session (MP4, MOV, AVI, MKV) shown at the take's current frame"));
   connect(add, &QPushButton::clicked, this, &ReferenceVideoPanel::openDialog);
@@ -62,6 +61,7 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
   m_remove = new QPushButton(tr("Remove"), this);
   m_remove->setToolTip(tr("Remove the shown video from the take"));
   connect(m_remove, &QPushButton::clicked, this, [this] { removeVideo(m_videos.currentIndex()); });
+  auto* files = new FlowLayout;  // wraps in a narrow dock
   files->addWidget(add);
   files->addWidget(m_locate);
   files->addWidget(m_remove);
@@ -70,8 +70,9 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
   m_info->setWordWrap(true);
   layout->addWidget(m_info);
 
-  auto* sync = new QGridLayout;
-  sync->addWidget(new QLabel(tr("Offset:"), this), 0, 0);
+  // Each row's buttons wrap under its box in a narrow dock.
+  auto* sync = new QFormLayout;
+  auto* offsetRow = new FlowLayout;
   m_offset = new QDoubleSpinBox(this);
   m_offset->setRange(-86400.0, 86400.0);
   m_offset->setDecimals(3);
@@ -79,7 +80,7 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
   m_offset->setSuffix(tr(" s"));
   m_offset->setToolTip(tr("Video time at the take's first frame: video time = (take frame − first) / take rate + offset"));
   connect(m_offset, &QDoubleSpinBox::valueChanged, this, [this](double seconds) { video().setOffset(seconds); });
-  sync->addWidget(m_offset, 0, 1);
+  offsetRow->addWidget(m_offset);
   auto* earlier = new QPushButton(tr("−1 frame"), this);
   earlier->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Comma));
   earlier->setToolTip(tr("Show the video one of its frames earlier (Alt+,)"));
@@ -88,10 +89,11 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
   later->setShortcut(QKeySequence(Qt::ALT | Qt::Key_Period));
   later->setToolTip(tr("Show the video one of its frames later (Alt+.)"));
   connect(later, &QPushButton::clicked, this, [this] { nudgeOrStep(1); });
-  sync->addWidget(earlier, 0, 2);
-  sync->addWidget(later, 0, 3);
+  offsetRow->addWidget(earlier);
+  offsetRow->addWidget(later);
+  sync->addRow(tr("Offset:"), offsetRow);
 
-  sync->addWidget(new QLabel(tr("Video frame:"), this), 1, 0);
+  auto* frameRow = new FlowLayout;
   m_frame = new QSpinBox(this);
   // −1 reads "none": the take's frame has no video frame (before or after the video), so the
   // box never claims a frame the view does not show; stepping down to it follows the take again.
@@ -103,20 +105,21 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
   connect(m_frame, &QSpinBox::valueChanged, this, [this](int frame) {
     video().hold(frame < 0 ? std::nullopt : std::optional<Eigen::Index>(frame));
   });
-  sync->addWidget(m_frame, 1, 1);
+  frameRow->addWidget(m_frame);
   m_syncHere = new QPushButton(tr("Sync here"), this);
   m_syncHere->setToolTip(tr("Set the offset so the held video frame shows at the take's current frame"));
   connect(m_syncHere, &QPushButton::clicked, this, &ReferenceVideoPanel::syncHere);
   m_follow = new QPushButton(tr("Follow take"), this);
   m_follow->setToolTip(tr("Stop holding the video: show the frame for the take's current frame again"));
   connect(m_follow, &QPushButton::clicked, this, [this] { video().hold(std::nullopt); });
-  sync->addWidget(m_syncHere, 1, 2);
-  sync->addWidget(m_follow, 1, 3);
+  frameRow->addWidget(m_syncHere);
+  frameRow->addWidget(m_follow);
+  sync->addRow(tr("Video frame:"), frameRow);
 
-  sync->addWidget(new QLabel(tr("Event:"), this), 2, 0);
+  auto* eventRow = new FlowLayout;
   m_eventChoice = new QComboBox(this);
   m_eventChoice->setToolTip(tr("The take's events (C3D EVENT parameters); a sync event is picked first"));
-  sync->addWidget(m_eventChoice, 2, 1);
+  eventRow->addWidget(m_eventChoice);
   m_syncEvent = new QPushButton(tr("Sync to event"), this);
   m_syncEvent->setToolTip(tr("Set the offset so the event shows the video's first frame, or the held one"));
   connect(m_syncEvent, &QPushButton::clicked, this, [this] {
@@ -124,8 +127,8 @@ ReferenceVideoPanel::ReferenceVideoPanel(StudioSession& session, QWidget* parent
     if (index >= 0 && static_cast<std::size_t>(index) < m_events.size())
       (void)syncToEvent(m_events[static_cast<std::size_t>(index)]);
   });
-  sync->addWidget(m_syncEvent, 2, 2, 1, 2);
-  sync->setColumnStretch(1, 1);
+  eventRow->addWidget(m_syncEvent);
+  sync->addRow(tr("Event:"), eventRow);
   layout->addLayout(sync);
 
   m_stack = new QStackedWidget(this);

@@ -36,7 +36,9 @@
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
+#include <vtkStdString.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 #include <vtkUnsignedCharArray.h>
 
 
@@ -190,6 +192,7 @@ m_status->setAttribute(Qt::WA_NativeWindow);
     corner->SetPosition(-direction[0] * 5.0, -direction[1] * 5.0, -direction[2] * 5.0);
     corner->SetViewUp(main->GetViewUp());
     m_axesRenderer->ResetCameraClippingRange();
+    keepLabelsInView();
   });
 
   connect(&document, &TakeDocument::takeReset, this, [this] {
@@ -650,6 +653,39 @@ void MarkerView3d::updateLabels()
     const Eigen::Vector3d p = displayPosition(frame, m);
     const Eigen::Vector3d lifted = p + offset * Eigen::Vector3d::Unit(m_upAxis);
     m_labels[i]->SetPosition(lifted.x(), lifted.y(), lifted.z());
+  }
+}
+
+void MarkerView3d::keepLabelsInView()
+{
+  // A label sits above and right of its marker, so the one of a marker at the view's top or right
+  // edge (where Reset Camera puts the outermost markers) was cut: it is shifted back inside as far
+  // as needed, as long as its marker is in view. O(#labels) per render.
+  vtkRenderer* renderer = m_viewport->renderer();
+  const int* size = renderer->GetSize();
+  const int dpi = m_viewport->renderWindow()->GetDPI();
+  for (const auto& label : m_labels) {
+    label->SetDisplayOffset(0, 0);
+    if (!label->GetVisibility())
+      continue;
+    const double* position = label->GetPosition();
+    renderer->SetWorldPoint(position[0], position[1], position[2], 1.0);
+    renderer->WorldToDisplay();
+    const double* anchor = renderer->GetDisplayPoint();
+    if (anchor[0] < 0.0 || anchor[1] < 0.0 || anchor[0] > size[0] || anchor[1] > size[1])
+      continue;  // its marker is out of view: no label dragged in
+    int box[4] = {0, 0, 0, 0};  // xmin, xmax, ymin, ymax around the anchor, in pixels
+    if (!vtkTextRenderer::GetInstance()->GetBoundingBox(label->GetTextProperty(), vtkStdString(label->GetInput()), box,
+                                                        dpi))
+      continue;
+    const auto shift = [](double at, int low, int high, int room) {
+      const int over = static_cast<int>(std::ceil(at)) + high - room;
+      if (over > 0)
+        return -over;
+      const int under = -static_cast<int>(std::floor(at)) - low;
+      return under > 0 ? under : 0;
+    };
+    label->SetDisplayOffset(shift(anchor[0], box[0], box[1], size[0]), shift(anchor[1], box[2], box[3], size[1]));
   }
 }
 

@@ -136,6 +136,7 @@ private:
   void updateLinks();
   void computeLinks();
   void updateLabels();
+  void keepLabelsInView();
   void updateStatus();
   void updateFollow();
   /// The document's reference markers (the whole face when it has none). O(#markers).
