@@ -44,19 +44,21 @@ void bindCleaning(py::module_& m)
 {
   m.def(
       "clean",
-      [](Take& take, const py::object& preset, const py::kwargs& options) {
+      [](Take& take, const py::object& preset, const py::object& progress, const py::kwargs& options) {
         const std::string source = preset.is_none() || py::isinstance<py::dict>(preset)
                                        ? std::string("mocap.clean options")
                                        : py::str(preset).cast<std::string>();
-        return cleanAndReport(take, parseCleanOptions(mergedPreset(preset, options), source));
+        return cleanAndReport(take, parseCleanOptions(mergedPreset(preset, options), source), progress);
       },
-      py::arg("take"), py::arg("preset") = py::none(),
+      py::arg("take"), py::arg("preset") = py::none(), py::arg("progress") = py::none(),
       "Cleans the take in place as `mocap clean` does (stabilize → spikes → fill → smooth) and "
       "returns the report `mocap clean --report` writes, as a dict. Options are a cleaning preset "
       "(a JSON file's path or a dict, `mocap batch --preset`'s format) and/or keyword arguments of "
       "the same shape, which win: spikes={\"method\": \"robust\", \"factor\": 1.5}, "
       "fill={\"max_gap_seconds\": 1.0}, smooth=\"off\", stabilize={\"markers\": [\"head1\", …]}. "
-      "Left out: `mocap clean`'s defaults. Raises InvalidArgument naming the key for an unknown "
+      "Left out: `mocap clean`'s defaults. progress(fraction) is called as the work goes on (False "
+      "from it, or Ctrl+C, stops the clean at its next checkpoint and leaves the take as it was: "
+      "KeyboardInterrupt or mocap.Cancelled). Raises InvalidArgument naming the key for an unknown "
       "key or a value out of range.");
 }
 

@@ -1,4 +1,5 @@
 #include "clean_options.h"
+#include "python_job.h"
 
 #include "mocap/batch/clean_preset.h"
 #include "mocap/batch/clean_report_json.h"
@@ -28,13 +29,16 @@ py::dict cleanReportDict(const Take& take, const CleanOptions& options, const Cl
   return py::module_::import("json").attr("loads")(cleanReportJson("", "", take, options, report));
 }
 
-py::dict cleanAndReport(Take& take, const CleanOptions& options)
+py::dict cleanAndReport(Take& take, const CleanOptions& options, const py::object& progress)
 {
-  CleanReport report;
-  {
-    const py::gil_scoped_release release;
-    report = cleanAndRecord(take, options, kCleanTool);
-  }
+  const CleanReport report = runReleased(progress, [&](const JobControl& job) {
+    // On a copy, so Ctrl+C leaves the take as it was (never part-cleaned without its history);
+    // copied back by assignment, which keeps the buffers NumPy views of the take look into.
+    Take cleaned = take;
+    CleanReport done = cleanAndRecord(cleaned, options, kCleanTool, job);
+    take = cleaned;
+    return done;
+  });
   return cleanReportDict(take, options, report);
 }
 

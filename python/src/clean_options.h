@@ -23,7 +23,9 @@ inline constexpr const char* kCleanTool = "mocap python";
 [[nodiscard]] pybind11::dict cleanReportDict(const Take& take, const CleanOptions& options, const CleanReport& report);
 
 /// Cleans the take in place as `mocap clean` does (cleanAndRecord, the GIL released) and returns
-/// the report dict. Throws as cleanAndRecord.
-[[nodiscard]] pybind11::dict cleanAndReport(Take& take, const CleanOptions& options);
+/// the report dict; `progress(fraction)` as PythonJob calls it. Ctrl+C (or a callback's False)
+/// stops it at the next checkpoint and leaves the take as it was. Throws as cleanAndRecord.
+[[nodiscard]] pybind11::dict cleanAndReport(Take& take, const CleanOptions& options,
+                                            const pybind11::object& progress = pybind11::none());
 
 } // namespace mocap::python

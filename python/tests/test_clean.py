@@ -1,5 +1,6 @@
 """mocap.clean: the `mocap clean` pipeline from Python (ctest `python_module`)."""
 
+import _thread
 import json
 import os
 import pathlib
@@ -62,3 +63,32 @@ def test_bad_options_name_the_key():
         mocap.clean(take, spikes={"factor": "big"})
     with pytest.raises(mocap.IoError):
         mocap.clean(take, "/nonexistent/preset.json")
+
+
+def test_clean_reports_progress_and_a_cancel_leaves_the_take_as_it_was():
+    take = mocap.read(SAMPLE)
+    before, history = take.positions.copy(), len(take.history)
+    seen = []
+    mocap.clean(take, progress=seen.append)
+    assert seen and seen == sorted(seen) and 0.0 <= seen[0] <= seen[-1] <= 1.0
+
+    take = mocap.read(SAMPLE)
+    view = take.raw_positions  # a view of the take's own memory stays valid through a clean
+    with pytest.raises(mocap.Cancelled):
+        mocap.clean(take, progress=lambda fraction: False)
+    np.testing.assert_array_equal(take.positions, before)
+    assert len(take.history) == history, "nothing recorded for a clean that did not happen"
+
+    calls = []
+
+    def press_ctrl_c(fraction):
+        calls.append(fraction)
+        if len(calls) == 1:
+            _thread.interrupt_main()  # as Ctrl+C does
+
+    with pytest.raises(KeyboardInterrupt):
+        mocap.clean(take, progress=press_ctrl_c)
+    np.testing.assert_array_equal(take.positions, before)
+    mocap.clean(take)
+    assert len(take.history) > history
+    assert np.array_equal(np.asarray(view), take.raw_positions), "the view sees the cleaned samples"

@@ -27,6 +27,19 @@ TEST(SampleBuffer, CopyMoveAndResizeKeepContents)
   }
 }
 
+TEST(SampleBuffer, CopyAssignmentOfTheSameSizeKeepsTheStorage)
+{
+  SampleBuffer<double> a(100), b(100), c(7);
+  std::iota(a.data(), a.data() + 100, 1.0);
+  double* const storage = b.data();
+  b = a;
+  EXPECT_EQ(b.data(), storage) << "a pointer into the buffer (a NumPy view) stays valid";
+  EXPECT_EQ(b.data()[99], 100.0);
+  c = a;
+  EXPECT_EQ(c.size(), 100u);
+  EXPECT_EQ(c.data()[0], 1.0);
+}
+
 TEST(SampleBuffer, LargeBlocksAreReusedAfterRelease)
 {
   const std::size_t count = std::size_t{4} << 20;

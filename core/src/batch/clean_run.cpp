@@ -77,9 +77,9 @@ void recordCleanSteps(Take& take, const CleanOptions& options, const CleanReport
          static_cast<std::int64_t>(report.smoothedSamples));
 }
 
-CleanReport cleanAndRecord(Take& take, const CleanOptions& options, const std::string& tool)
+CleanReport cleanAndRecord(Take& take, const CleanOptions& options, const std::string& tool, const JobControl& job)
 {
-  CleanReport report = cleanTake(take, options);
+  CleanReport report = cleanTake(take, options, job);
   recordCleanSteps(take, options, report, tool);
   return report;
 }

@@ -18,9 +18,10 @@ Eigen::Index patchSamples(const std::vector<SamplePatch>& patches)
 
 } // namespace
 
-CleanReport cleanTake(Take& take, const CleanOptions& options)
+CleanReport cleanTake(Take& take, const CleanOptions& options, const JobControl& job)
 {
   CleanReport report;
+  job.checkpoint(0.0);
   report.modelOutputs = modelOutputPoints(take);
   if (!options.stabilizeLabels.empty()) {
     report.stabilizeMarkers = markerIndices(take, options.stabilizeLabels);
@@ -30,20 +31,23 @@ CleanReport cleanTake(Take& take, const CleanOptions& options)
     removeHeadMotion(take, *report.headMotion);
   }
   if (options.spikes) {
-    report.spikes = detectSpikes(take, *options.spikes);
+    report.spikes = detectSpikes(take, *options.spikes, job.part(0.0, 0.3));
     std::vector<SamplePatch> repairs = replaceSpikes(take, report.spikes);
     report.repairedSamples = patchSamples(repairs);
     applyPatches(take, std::move(repairs));
   }
   if (options.fill) {
-    FillResult filled = fillGaps(take, *options.fill);
+    job.checkpoint(0.3);
+    FillResult filled = fillGaps(take, *options.fill, job.part(0.3, 0.6));
     report.filledSamples = patchSamples(filled.patches);
     report.gaps = std::move(filled.gaps);
     applyPatches(take, std::move(filled.patches));
   }
   if (options.smooth) {
-    report.smoothedSamples = smoothTakeInPlace(take, *options.smooth);
+    job.checkpoint(0.6);
+    report.smoothedSamples = smoothTakeInPlace(take, *options.smooth, job.part(0.6, 1.0));
   }
+  job.checkpoint(1.0);
   if (report.headMotion && !options.keepStabilized)
     restoreHeadMotion(take, *report.headMotion);
   return report;

@@ -10,8 +10,9 @@ namespace mocap {
 /// One take cleaned the way `mocap clean` does it, shared by `mocap clean`, `mocap batch` and
 /// `mocap clean --manifest`: the pipeline (cleanTake), then one history step per step that ran,
 /// so the written take says how it was cleaned (tool, parameters, samples changed, time).
-/// Throws as cleanTake. Cost: cleanTake's.
-CleanReport cleanAndRecord(Take& take, const CleanOptions& options, const std::string& tool);
+/// Throws as cleanTake (JobCancelled through `job` before any history is written). Cost: cleanTake's.
+CleanReport cleanAndRecord(Take& take, const CleanOptions& options, const std::string& tool,
+                           const JobControl& job = {});
 
 /// The history steps cleanAndRecord appends, one per step of `options` that ran (stabilize head,
 /// repair spikes, fill gaps, smooth) with its parameters, `report`'s sample counts, the whole

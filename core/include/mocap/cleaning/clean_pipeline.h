@@ -1,5 +1,7 @@
 #pragma once
 
+#include "mocap/base/job_control.h"
+
 #include "mocap/cleaning/fill/gap_fill.h"
 #include "mocap/cleaning/head_stabilization.h"
 #include "mocap/cleaning/smoothing.h"
@@ -41,7 +43,10 @@ struct CleanReport
 };
 
 /// Runs the steps on `take` in place, on its marker points only: model outputs keep every byte. Throws InvalidArgument for an unknown stabilization label.
+/// Reports progress through `job` (spikes, fill and smooth each their part) and throws
+/// JobCancelled at the next checkpoint once cancelled, leaving the take part-cleaned: a caller
+/// that must not keep that works on a copy.
 /// Cost: the sum of the steps (each O(#frames · #markers) up to its neighbour search).
-CleanReport cleanTake(Take& take, const CleanOptions& options);
+CleanReport cleanTake(Take& take, const CleanOptions& options, const JobControl& job = {});
 
 } // namespace mocap

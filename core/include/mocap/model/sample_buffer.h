@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstring>
 #include <type_traits>
 #include <utility>
 
@@ -24,6 +25,8 @@ public:
   explicit SampleBuffer(std::size_t count);
   ~SampleBuffer();
   SampleBuffer(const SampleBuffer& other);
+  /// Copies `other`'s elements; a buffer of the same size keeps its storage (pointers into it,
+  /// such as a NumPy view of a take, stay valid), else it is replaced.
   SampleBuffer& operator=(const SampleBuffer& other);
   SampleBuffer(SampleBuffer&& other) noexcept;
   SampleBuffer& operator=(SampleBuffer&& other) noexcept;
@@ -65,10 +68,15 @@ SampleBuffer<T>::SampleBuffer(const SampleBuffer& other) : SampleBuffer(other.m_
 template <typename T>
 SampleBuffer<T>& SampleBuffer<T>::operator=(const SampleBuffer& other)
 {
-  if (this != &other) {
-    SampleBuffer copy(other);
-    *this = std::move(copy);
+  if (this == &other)
+    return *this;
+  if (m_size == other.m_size) {  // as std::vector does: the storage stays, so pointers into it stay valid
+    if (m_size > 0)
+      std::memcpy(static_cast<void*>(m_data), other.m_data, m_size * sizeof(T));
+    return *this;
   }
+  SampleBuffer copy(other);
+  *this = std::move(copy);
   return *this;
 }
 
