@@ -241,16 +241,17 @@ TEST(ActorProfile, OnADifferentActorTheCalibrationCutsTheRangeError)
             << ")\nRMS log(slope) with the profile " << rms(logSlopeWith) << ", without " << rms(logSlopeWithout)
             << "\nweight RMS error with the profile " << weightRms(with.weights) << ", without "
             << weightRms(without.weights) << "\n";
-  // Measured: RMS log(gain × factor) 0.120 against 0.260 with g++ (0.46×), 0.132 against 0.255
-  // with clang's sanitizer build (0.52×; 45 shapes seen instead of 46): the issue's target of 0.5×
-  // is reached in one build and missed in the other, so this asserts the 0.6× both reach and the
-  // issue stays open on it. 1 / the usual solve's ROM maximum: 0.333–0.387, worse than none.
-  // RMS log(slope) 0.199 against 0.370 (0.54×: the solver's own shrinkage stays); weight RMS
-  // error 0.034 against 0.052.
+  // Measured (g++): RMS log(slope) 0.175 against 0.370 (0.47×, the issue's target), RMS log(gain ×
+  // factor) 0.125 against 0.260 (0.48×), weight RMS error 0.032 against 0.052; 1 / the usual
+  // solve's ROM maximum: 0.356, worse than none. The gain is over the slope without the profile,
+  // which is also lowered where that solve clips a shape the actor exaggerates at the rig's 1 (gain
+  // × factor ≈ 1.18 for the brow and sneer at 1.5) or measures from one noisy neutral frame, so
+  // gain × factor keeps the 0.6× both builds reach. Before the solve kept the rig's units (it
+  // weighed λ and μ by 1 / extent² in effect) RMS log(slope) was 0.199 (0.54×).
   ASSERT_GE(logFactor.size(), 10u);
+  EXPECT_LE(rms(logSlopeWith), 0.5 * rms(logSlopeWithout));
   EXPECT_LE(rms(logGainFactor), 0.6 * rms(logFactor));
   EXPECT_LT(rms(logGainFactor), rms(logNaiveGainFactor));
-  EXPECT_LT(rms(logSlopeWith), rms(logSlopeWithout));
   EXPECT_LT(weightRms(with.weights), weightRms(without.weights));
 }
 
