@@ -73,7 +73,7 @@ int convertRecording(const ConvertArguments& arguments)
   options.frameRate = rate;
   if (arguments.up)
     options.fbx.up = parseFbxUpAxis(*arguments.up).value();
-  options.fbx.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
+  options.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
   writeWeightOutput(arguments.output, rig, mappedWeightsOnRig(*map, mapped, rig.shapeNames()), options);
   std::cout << "wrote " << recording.timecodes.size() << " frames at " << rate << " Hz from "
             << recording.timecodes.front() << " onto " << rig.shapeCount() << " shapes: " << arguments.output << '\n';

@@ -43,9 +43,10 @@ std::optional<KeyCount> writeMapped(const std::filesystem::path& out, const std:
       count.add(weights.rows(), static_cast<Eigen::Index>(shared.keys.size()), shared.maxError);
       keys = std::move(shared.keys);
     }
-    writeRigGlb(out, rig, weights, options.frameRate, keys);
+    writeRigGlb(out, rig, weights, options.frameRate, keys, options.startSeconds);
   } else if (extension == "fbx") {
     FbxRigOptions fbx = options.fbx;
+    fbx.startSeconds = options.startSeconds.value_or(0.0);
     if (reduce)
       fbx.keys = {options.reduce, &count};
     writeRigFbx(out, rig, weights, options.frameRate, fbx);

@@ -20,7 +20,10 @@ struct WeightOutput
   bool liveLink = false;              ///< .csv in Live Link Face's layout (else Frame,Time,<shape>,…)
   long long firstFrame = 0;           ///< the plain CSV's first frame number
   double frameRate = 0.0;
-  FbxRigOptions fbx;                  ///< .fbx: axes and units
+  FbxRigOptions fbx;                  ///< .fbx: axes and units (its startSeconds is set from startSeconds)
+  /// A recording's start time (its first timecode): .fbx's first key and time span, .glb's
+  /// animation extras.startSeconds. None: a solve, starting at 0.
+  std::optional<double> startSeconds;
   /// --reduce: .glb keeps the fewest key frames all curves share, .fbx each curve's fewest keys,
   /// within this many weight units of every frame of the curves written (after the map).
   std::optional<double> reduce;

@@ -70,6 +70,10 @@ TEST(LiveLinkCli, ARecordingBecomesTheIctRigsAnimation)
       mappedWeightsOnRig(map, applyRetargetMap(map, liveLinkFaceShapeNames(), recording.weights), rig.shapeNames());
   const tinygltf::Model model = test::glbModel(readFileBytes(glb));
   ASSERT_EQ(model.animations.size(), 1u);
+  // glTF has no start time: the recording's start timecode is kept in the animation's extras.
+  ASSERT_TRUE(model.animations[0].extras.Has("startSeconds"));
+  EXPECT_NEAR(model.animations[0].extras.Get("startSeconds").GetNumberAsDouble(),
+              liveLinkFaceSeconds("16:55:51:38.453"), 1e-9);
   const tinygltf::AnimationSampler& sampler = model.animations[0].samplers.at(0);
   const std::vector<float> times = glbFloats(model, sampler.input), values = glbFloats(model, sampler.output);
   ASSERT_EQ(times.size(), 200u);

@@ -92,6 +92,21 @@ TEST(GltfWriter, KeysOnlyTheFramesItIsGiven)
   EXPECT_THROW((void)rigGlb(rig, weights, 50.0, {0, 3, 2, 4}), InvalidArgument) << "keys ascend";
 }
 
+TEST(GltfWriter, KeepsAStartTimeInTheAnimationsExtras)
+{
+  const BlendshapeRig rig = twoShapeRig();
+  const Eigen::MatrixXd weights = Eigen::MatrixXd::Constant(3, 2, 0.5);
+  const tinygltf::Model started = test::glbModel(rigGlb(rig, weights, 30.0, {}, 60951.2742));
+  const tinygltf::Value& extras = started.animations.at(0).extras;
+  ASSERT_TRUE(extras.Has("startSeconds"));
+  EXPECT_DOUBLE_EQ(extras.Get("startSeconds").GetNumberAsDouble(), 60951.2742);
+  const tinygltf::Accessor& times = started.accessors[static_cast<std::size_t>(started.animations[0].samplers.at(0).input)];
+  EXPECT_EQ(accessorValues<float>(started, times.bufferView, 1).front(), 0.0f) << "the keys still start at 0";
+  EXPECT_FALSE(test::glbModel(rigGlb(rig, weights, 30.0)).animations.at(0).extras.Has("startSeconds"));
+  EXPECT_THROW((void)rigGlb(rig, weights, 30.0, {}, -1.0), InvalidArgument);
+  EXPECT_THROW((void)rigGlb(rig, weights, 30.0, {}, std::nan("")), InvalidArgument);
+}
+
 TEST(GltfWriter, RefusesBadWeightsAndRates)
 {
   const BlendshapeRig rig = twoShapeRig();

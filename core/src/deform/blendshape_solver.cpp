@@ -134,12 +134,12 @@ Eigen::MatrixXd completeFrames(const Observations& o)
 }
 
 /// Per-frame bounded solves, one factorised problem per pattern of present markers, each frame
-/// warm-started from the previous one.
-void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge, double sparsity, double maximum,
-                   const JobControl& control, Eigen::MatrixXd& weights)
+/// warm-started from the previous one; 0 ≤ w ≤ `upper` per shape.
+void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge, double sparsity,
+                   const Eigen::VectorXd& upper, const JobControl& control, Eigen::MatrixXd& weights)
 {
   const Eigen::Index shapes = a.cols();
-  const Eigen::VectorXd lower = Eigen::VectorXd::Zero(shapes), upper = Eigen::VectorXd::Constant(shapes, maximum);
+  const Eigen::VectorXd lower = Eigen::VectorXd::Zero(shapes);
   std::map<Mask, std::unique_ptr<BoundedLeastSquares>> solvers;
   Eigen::VectorXd previous = Eigen::VectorXd::Zero(shapes);
   const auto frames = static_cast<Eigen::Index>(o.present.size());
@@ -192,12 +192,12 @@ BandedCholesky::Band temporalBand(Eigen::Index n, double c, double mu)
 }
 
 /// The whole take at once: min Σₜ ½‖Aₜwₜ − bₜ‖² + ½λ‖wₜ‖² + s·Σwₜ + ½μ‖D·W‖², 0 ≤ W ≤ 1, by ADMM
-/// (Boyd et al. 2011, over-relaxed) splitting the quadratic from the box (upper bound `maximum`). With AᵀA = VΛVᵀ the
+/// (Boyd et al. 2011, over-relaxed) splitting the quadratic from the box (upper bound `upper` per shape). With AᵀA = VΛVᵀ the
 /// quadratic step decouples into #shapes pentadiagonal systems along time, factorised once, so an
 /// iteration costs O(#frames · #shapes²). Missing markers' rows are imputed from the current
 /// weights each iteration (the majorise-minimise step for dropped rows). Returns the iterations.
 int solveTemporal(const Eigen::MatrixXd& a, const Observations& o, double ridge, double mu, double sparsity,
-                  double maximum, const JobControl& control, Eigen::MatrixXd& weights)
+                  const Eigen::VectorXd& upper, const JobControl& control, Eigen::MatrixXd& weights)
 {
   const Eigen::Index frames = o.b.rows(), shapes = a.cols();
   const Eigen::MatrixXd gram = a.transpose() * a;
@@ -249,7 +249,9 @@ int solveTemporal(const Eigen::MatrixXd& a, const Observations& o, double ridge,
       factors[static_cast<std::size_t>(k)].solveInPlace(y.col(k));
     x.noalias() = y * v.transpose();
     const Eigen::MatrixXd relaxed = kAlpha * x + (1.0 - kAlpha) * z;
-    const Eigen::MatrixXd zNew = (relaxed + u).cwiseMax(0.0).cwiseMin(maximum);
+    Eigen::MatrixXd zNew = (relaxed + u).cwiseMax(0.0);
+    for (Eigen::Index k = 0; k < shapes; ++k)
+      zNew.col(k) = zNew.col(k).cwiseMin(upper(k));
     u += relaxed - zNew;
     const double primal = (x - zNew).norm(), dual = (zNew - z).norm();
     z = zNew;
@@ -343,10 +345,11 @@ BlendshapeSolver::BlendshapeSolver(const BlendshapeRig& rig, const MeshBinding& 
   } else {
     m_bound = bindTake(binding, take, rig.neutral.vertices, options.neutralFrame, options.scale);
   }
-  m_a = sampleShapes(rig, m_bound.points);
-  if (options.actor)
-    m_a *= actorExtents(*options.actor, rig.shapeNames()).asDiagonal();
-  m_termScale = std::max(m_a.squaredNorm() / static_cast<double>(m_a.cols()), 1e-300);
+  m_rigShapes = sampleShapes(rig, m_bound.points);
+  m_extent = options.actor ? actorExtents(*options.actor, rig.shapeNames())
+                           : Eigen::VectorXd::Ones(m_rigShapes.cols());
+  m_a = m_rigShapes * m_extent.asDiagonal();
+  m_termScale = std::max(m_rigShapes.squaredNorm() / static_cast<double>(m_rigShapes.cols()), 1e-300);
   m_setupSeconds = setup.seconds();
 }
 
@@ -369,7 +372,13 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
   }
   if (used.empty())
     throw InvalidArgument("blendshape solve: no marker is used");
-  const Eigen::MatrixXd a = presentRows(m_a, usedRows);
+  // Solved in the rig's units (w = extent · the actor's weight), so that λ (and GCV's choice of
+  // it), μ and the sparsity shrink each shape as they do without a profile; only the box becomes
+  // the actor's, [0, maximum · extent]. Solving A·diag(extent) instead would weigh a shape's ridge
+  // and smoothness by 1 / extent² (and rescale λ's unit with trace(AᵀA)), so the profile would also
+  // change how much each shape is shrunk, not only its unit.
+  const Eigen::MatrixXd a = presentRows(m_rigShapes, usedRows);
+  const Eigen::VectorXd upper = m_options.maximumWeight * m_extent;
   const auto minimum = std::max<std::size_t>(
       std::min<std::size_t>(3, used.size()),
       static_cast<std::size_t>(std::ceil(m_options.minimumMarkerShare * static_cast<double>(used.size()))));
@@ -394,9 +403,9 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
   if (m_options.method == BlendshapeSolveMethod::Temporal)
     result.iterations =
         solveTemporal(a, o, ridge, temporalWeight(m_options.smoothness * m_termScale, take.frameRate()), sparsity,
-                      m_options.maximumWeight, control, result.weights);
+                      upper, control, result.weights);
   else
-    solvePerFrame(a, o, ridge, sparsity, m_options.maximumWeight, control, result.weights);
+    solvePerFrame(a, o, ridge, sparsity, upper, control, result.weights);
 
   result.held.resize(o.solvable.size());
   result.residual.resize(take.frameCount());
@@ -412,6 +421,7 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
                                          m_bound.retarget.uniformScale);
     }
   }
+  result.weights *= m_extent.cwiseInverse().asDiagonal();  // the actor's units
   result.solveSeconds = solveTime.seconds();
   return result;
 }

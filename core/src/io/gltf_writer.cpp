@@ -117,7 +117,7 @@ int addMorphTarget(tinygltf::Model& model, const SparseShape& shape, std::size_t
 }
 
 void addAnimation(tinygltf::Model& model, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
-                  const std::vector<Eigen::Index>& keys)
+                  const std::vector<Eigen::Index>& keys, std::optional<double> startSeconds)
 {
   std::vector<float> times, values;
   const auto keyCount = keys.empty() ? weights.rows() : static_cast<Eigen::Index>(keys.size());
@@ -149,6 +149,8 @@ void addAnimation(tinygltf::Model& model, const Eigen::Ref<const Eigen::MatrixXd
   channel.target_path = "weights";
   tinygltf::Animation animation;
   animation.name = "solve";
+  if (startSeconds)
+    animation.extras = tinygltf::Value(tinygltf::Value::Object{{"startSeconds", tinygltf::Value(*startSeconds)}});
   animation.samplers.push_back(sampler);
   animation.channels.push_back(channel);
   model.animations.push_back(animation);
@@ -157,7 +159,7 @@ void addAnimation(tinygltf::Model& model, const Eigen::Ref<const Eigen::MatrixXd
 } // namespace
 
 std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
-                   const std::vector<Eigen::Index>& keys)
+                   const std::vector<Eigen::Index>& keys, std::optional<double> startSeconds)
 {
   checkRig(rig);
   if (weights.rows() > 0 && weights.cols() != rig.shapeCount())
@@ -167,6 +169,8 @@ std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
     throw InvalidArgument("glTF: a weight is not finite");
   if (!(frameRate > 0.0) || !std::isfinite(frameRate))
     throw InvalidArgument("glTF: the frame rate must be positive");
+  if (startSeconds && !(*startSeconds >= 0.0 && std::isfinite(*startSeconds)))
+    throw InvalidArgument("glTF: the start time must be finite and ≥ 0 seconds");
   if (!keys.empty() && (keys.front() != 0 || keys.back() != weights.rows() - 1 ||
                         std::adjacent_find(keys.begin(), keys.end(), std::greater_equal<>()) != keys.end()))
     throw InvalidArgument("glTF: the key frames must ascend from the first frame to the last");
@@ -199,7 +203,7 @@ std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
   model.scenes.push_back(scene);
   model.defaultScene = 0;
   if (weights.rows() > 0)
-    addAnimation(model, weights, frameRate, keys);
+    addAnimation(model, weights, frameRate, keys, startSeconds);
 
   std::ostringstream out;
   if (!tinygltf::TinyGLTF().WriteGltfSceneToStream(&model, out, false, true))
@@ -209,9 +213,9 @@ std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::Matri
 
 void writeRigGlb(const std::filesystem::path& path, const BlendshapeRig& rig,
                  const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
-                 const std::vector<Eigen::Index>& keys)
+                 const std::vector<Eigen::Index>& keys, std::optional<double> startSeconds)
 {
-  writeFileAtomically(path, rigGlb(rig, weights, frameRate, keys));
+  writeFileAtomically(path, rigGlb(rig, weights, frameRate, keys, startSeconds));
 }
 
 } // namespace mocap

@@ -49,9 +49,11 @@ struct BlendshapeSolveOptions
   double minimumMarkerShare = 0.5;
   /// An actor's calibration (actor_profile.h): its neutral positions (matched by label, placed
   /// rigidly on the take's `neutralFrame`, or its first frame with the most bound markers, by
-  /// placeActorNeutral) replace the neutral frame, and each shape's column of A is scaled by the
-  /// actor's extent, so the weights are in the actor's range (1 = the actor's maximum). None: the
-  /// take's neutral frame and the rig's range.
+  /// placeActorNeutral) replace the neutral frame, and the weights are in the actor's range
+  /// (1 = the actor's maximum): each is the rig's weight over the shape's extent. The solve itself
+  /// stays in the rig's units (λ, GCV, μ and the sparsity shrink each shape as without a profile),
+  /// only its upper bound becomes maximumWeight · extent. None: the take's neutral frame and the
+  /// rig's range.
   std::shared_ptr<const ActorProfile> actor;
   /// The weights' upper bound: 1, the rig's (or the actor's) full expression; calibration solves
   /// a range-of-motion take with more so that an exaggerated shape is not clipped.
@@ -106,14 +108,17 @@ public:
   /// The shapes' deltas at the bound points: rows 3m … 3m+2 are marker m's x, y, z (mesh units),
   /// each column times the actor's extent when solving with an actor profile.
   [[nodiscard]] const Eigen::MatrixXd& shapeMatrix() const { return m_a; }
-  /// trace(AᵀA)/#shapes: the unit of λ, μ and the sparsity weight.
+  /// trace(AᵀA)/#shapes of the rig's deltas (without the actor's extents): the unit of λ, μ and
+  /// the sparsity weight.
   [[nodiscard]] double scaleOfTerms() const { return m_termScale; }
   [[nodiscard]] double setupSeconds() const { return m_setupSeconds; }
 
 private:
   BlendshapeSolveOptions m_options;
   BoundTake m_bound;
-  Eigen::MatrixXd m_a;
+  Eigen::MatrixXd m_rigShapes;  // the rig's deltas at the bound points
+  Eigen::VectorXd m_extent;     // the actor's extents, ones without a profile
+  Eigen::MatrixXd m_a;          // m_rigShapes · diag(m_extent)
   double m_termScale = 1.0;
   double m_setupSeconds = 0.0;
 };

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,15 +17,19 @@ namespace mocap {
 /// `weights` has rows, an animation of the node's `weights` path with one key per frame (frame i
 /// at i / frameRate seconds, linear interpolation), or at the frames `keys` only when it is not
 /// empty (ascending from the first frame to the last: reduceKeys' choice, which all shapes share,
-/// as glTF's one weights sampler requires). Coordinates are written as float32 in the
-/// rig's units. Throws InvalidArgument for an invalid rig (checkRig), weights with another column
-/// count or outside a finite range, or a non-positive rate. O(#vertices + Σ #moved + #frames · #shapes).
+/// as glTF's one weights sampler requires). glTF has no start time: `startSeconds`, when given
+/// (a Live Link Face recording's start timecode, as FBX keeps it), is kept in the animation's
+/// `extras.startSeconds` (seconds, a number); the keys still start at 0. Coordinates are written as
+/// float32 in the rig's units. Throws InvalidArgument for an invalid rig (checkRig), weights with
+/// another column count or outside a finite range, a non-positive rate, or a start time that is
+/// negative or not finite. O(#vertices + Σ #moved + #frames · #shapes).
 [[nodiscard]] std::string rigGlb(const BlendshapeRig& rig, const Eigen::Ref<const Eigen::MatrixXd>& weights,
-                                 double frameRate, const std::vector<Eigen::Index>& keys = {});
+                                 double frameRate, const std::vector<Eigen::Index>& keys = {},
+                                 std::optional<double> startSeconds = std::nullopt);
 
 /// Writes rigGlb atomically. Throws as rigGlb and IoError.
 void writeRigGlb(const std::filesystem::path& path, const BlendshapeRig& rig,
                  const Eigen::Ref<const Eigen::MatrixXd>& weights, double frameRate,
-                 const std::vector<Eigen::Index>& keys = {});
+                 const std::vector<Eigen::Index>& keys = {}, std::optional<double> startSeconds = std::nullopt);
 
 } // namespace mocap
