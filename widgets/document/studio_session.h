@@ -16,7 +16,9 @@ class BlendshapeSolveModel;
 class FaceMeshModel;
 class LayoutPlanModel;
 class ReferenceVideos;
+struct StudioOptions;
 class TakeDocument;
+class ViewState;
 
 /// The studio's composition root for the open take: it owns the TakeDocument (the take, its
 /// undo stack, frame, selection and reference markers), the FaceMeshModel (mesh, binding, rigs)
@@ -46,6 +48,13 @@ public:
   [[nodiscard]] BlendshapeSolveModel& blendshapes() const { return *m_blendshapes; }
   [[nodiscard]] ReferenceVideos& referenceVideos() const { return *m_videos; }
   [[nodiscard]] LayoutPlanModel& layoutPlan() const { return *m_layoutPlan; }
+  /// How the session is shown (up axis, trails, unit, colours, highlight…): the views observe it.
+  [[nodiscard]] ViewState& view() const { return *m_view; }
+  /// The user's remembered settings (read from QSettings when the session is made).
+  [[nodiscard]] StudioOptions& options() const { return *m_options; }
+  /// From now on the session follows the options: the view state, keepRig() and whether the
+  /// document shows model outputs (the studio calls it; a session for a review video does not).
+  void followOptions();
   /// The one undo stack (the document's): take edits, binding edits and weight edits undo in order.
   [[nodiscard]] QUndoStack* undoStack() const;
 
@@ -81,6 +90,8 @@ private:
   BlendshapeSolveModel* m_blendshapes = nullptr;
   ReferenceVideos* m_videos = nullptr;
   LayoutPlanModel* m_layoutPlan = nullptr;
+  ViewState* m_view = nullptr;
+  std::unique_ptr<StudioOptions> m_options;
   bool m_keepRig = false;
   std::unique_ptr<KeptRig> m_kept;  // between dropPreviousTake and restoreKeptRig
 };
