@@ -165,6 +165,114 @@
     </message>
 </context>
 <context>
+    <name>MarkerMenus</name>
+    <message>
+        <location filename="../widgets/actions/marker_menus.cpp" line="+24"/>
+        <source>&amp;Marker</source>
+        <translation>&amp;Marker</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Delete Markers</source>
+        <translation>Marker &amp;löschen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove the selected markers from the take (undoable)</source>
+        <translation>Die ausgewählten Marker aus der Aufnahme entfernen (rückgängig machbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add &amp;Averaged Marker…</source>
+        <translation>&amp;Gemittelten Marker hinzufügen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A virtual marker at the mean of the selected markers</source>
+        <translation>Ein virtueller Marker im Mittel der ausgewählten Marker</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Swap Over Range</source>
+        <translation>Im Bereich &amp;tauschen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exchange the data of the two selected markers over the selected frame range</source>
+        <translation>Die Daten der beiden ausgewählten Marker im ausgewählten Bildbereich vertauschen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Reference Markers…</source>
+        <translation>&amp;Referenzmarker…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The head-mounted markers that head stabilization, layout planning and the face mesh use</source>
+        <translation>Die am Kopf befestigten Marker, die Kopfstabilisierung, Layoutplanung und Gesichtsnetz verwenden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Selected as Reference &amp;Markers</source>
+        <translation>Auswahl als Referenz&amp;marker festlegen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Make the selected markers (at least three) the take&apos;s reference markers (undoable)</source>
+        <translation>Die ausgewählten Marker (mindestens drei) zu den Referenzmarkern der Aufnahme machen (rückgängig machbar)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Hide Selected</source>
+        <translation>Auswahl &amp;ausblenden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;All</source>
+        <translation>&amp;Alle einblenden</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Label</source>
+        <translation>&amp;Beschriftung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Track and Label</source>
+        <translation>&amp;Verfolgen und beschriften</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
+        <translation>Die unbeschrifteten Punkte neu verfolgen und ihnen die Namen der beschrifteten Marker der Aufnahme geben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fix &amp;Swaps…</source>
+        <translation>&amp;Vertauschungen beheben…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Find frames where two labels exchange and repair the ones you accept</source>
+        <translation>Bilder finden, in denen zwei Namen vertauscht sind, und die bestätigten reparieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Assign Label by Clicking</source>
+        <translation>Namen per &amp;Klick zuweisen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Select a marker in the table, then click a point in the 3D view to give it that label</source>
+        <translation>Einen Marker in der Tabelle wählen, dann einen Punkt in der 3D-Ansicht anklicken, um ihm diesen Namen zu geben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Labelling: select a marker in the table, then click the point that is it</source>
+        <translation>Beschriften: einen Marker in der Tabelle wählen, dann den Punkt anklicken, der er ist</translation>
+    </message>
+</context>
+<context>
     <name>QProgressDialog</name>
     <message>
         <location filename="../widgets/dialogs/job_dialog.cpp" line="+35"/>
@@ -188,6 +296,29 @@
         <location line="+4"/>
         <source>Bind %1 to the surface</source>
         <translation>%1 an die Oberfläche binden</translation>
+    </message>
+</context>
+<context>
+    <name>RecoveryOffer</name>
+    <message>
+        <location filename="../widgets/actions/recovery_offer.cpp" line="+25"/>
+        <source>an untitled take</source>
+        <translation>einer unbenannten Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recover unsaved edits?</source>
+        <translation>Ungesicherte Änderungen wiederherstellen?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?</source>
+        <translation>Mocap Studio wurde nicht normal beendet. Ungesicherte Änderungen von %1 wurden am %2 aufbewahrt. Wiederherstellen?</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot recover</source>
+        <translation>Wiederherstellen nicht möglich</translation>
     </message>
 </context>
 <context>
@@ -242,7 +373,7 @@
 <context>
     <name>SampleState</name>
     <message>
-        <location filename="../widgets/views/sample_colors.cpp" line="+73"/>
+        <location filename="../widgets/views/sample_colors.cpp" line="+55"/>
         <source>measured</source>
         <translation>gemessen</translation>
     </message>
@@ -270,7 +401,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+135"/>
         <source>%1 smoothing</source>
         <translation>Glättung: %1</translation>
     </message>
@@ -300,34 +431,81 @@
     </message>
 </context>
 <context>
+    <name>ViewOptionActions</name>
+    <message>
+        <location filename="../widgets/actions/view_option_actions.cpp" line="+28"/>
+        <source>Y Axis Up</source>
+        <translation>Y-Achse nach oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z Axis Up</source>
+        <translation>Z-Achse nach oben</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Reset Camera</source>
+        <translation>Kamera &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Trails</source>
+        <translation>&amp;Spuren</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Marker &amp;Links</source>
+        <translation>Marker&amp;verbindungen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;Model Outputs</source>
+        <translation>&amp;Modellausgaben anzeigen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
+        <translation>Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Follow Head</source>
+        <translation>Kopf &amp;folgen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
+        <translation>Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+121"/>
+        <location filename="../app/studio/main_window.cpp" line="+96"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location line="+34"/>
         <source>Frame %1 of %2–%3 — %4 markers selected</source>
-        <translation>Frame %1 von %2–%3 — %4 Marker ausgewählt</translation>
+        <translation type="vanished">Frame %1 von %2–%3 — %4 Marker ausgewählt</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+39"/>
         <source>Autosave failed: %1</source>
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+14"/>
         <source>Markers</source>
         <translation>Marker</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Curves</source>
         <translation>Kurven</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>History</source>
         <translation>Verlauf</translation>
     </message>
@@ -347,7 +525,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
@@ -372,53 +550,43 @@
         <translation>Gewichte</translation>
     </message>
     <message>
-        <location line="+61"/>
         <source>Export Animation</source>
-        <translation>Animation exportieren</translation>
+        <translation type="vanished">Animation exportieren</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>The face mesh cannot be exported: %1</source>
-        <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
+        <translation type="vanished">Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
         <source>Rendering the review video…</source>
-        <translation>Das Prüfvideo wird gerendert…</translation>
+        <translation type="vanished">Das Prüfvideo wird gerendert…</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>Cancel</source>
-        <translation>Abbrechen</translation>
+        <translation type="vanished">Abbrechen</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Review video cancelled; nothing was written.</source>
-        <translation>Prüfvideo abgebrochen; es wurde nichts geschrieben.</translation>
+        <translation type="vanished">Prüfvideo abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+6"/>
         <source>Export Review Video</source>
-        <translation>Prüfvideo exportieren</translation>
+        <translation type="vanished">Prüfvideo exportieren</translation>
     </message>
     <message>
-        <location line="-6"/>
         <source>The review video was not written: %1</source>
-        <translation>Das Prüfvideo wurde nicht geschrieben: %1</translation>
+        <translation type="vanished">Das Prüfvideo wurde nicht geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1</source>
-        <translation>Dieses System hat keinen MP4-Encoder, daher wurde das Video als Motion-JPEG-AVI geschrieben: %1</translation>
+        <translation type="vanished">Dieses System hat keinen MP4-Encoder, daher wurde das Video als Motion-JPEG-AVI geschrieben: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Wrote %1 (%2 frames, %3)</source>
-        <translation>%1 geschrieben (%2 Frames, %3)</translation>
+        <translation type="vanished">%1 geschrieben (%2 Frames, %3)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+67"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -433,12 +601,12 @@
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Keep Face Rig for the Next Take</source>
         <translation>Gesichts-&amp;Rig für den nächsten Take behalten</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Opening another take keeps the face mesh, its marker binding and the blendshape rig (the actor&apos;s), bound to the markers the new take has; off, every take starts without them</source>
         <translation>Beim Öffnen eines anderen Takes bleiben das Gesichtsnetz, seine Markerbindung und das Blendshape-Rig (die des Darstellers) erhalten, gebunden an die Marker des neuen Takes; aus: jeder Take beginnt ohne sie</translation>
     </message>
@@ -518,79 +686,66 @@
         <translation>Marker &amp;umbenennen…</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Einstellungen…</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Reset Camera</source>
-        <translation>Kamera &amp;zurücksetzen</translation>
+        <translation type="vanished">Kamera &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Y Axis Up</source>
-        <translation>Y-Achse nach oben</translation>
+        <translation type="vanished">Y-Achse nach oben</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Z Axis Up</source>
-        <translation>Z-Achse nach oben</translation>
+        <translation type="vanished">Z-Achse nach oben</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>&amp;Trails</source>
-        <translation>&amp;Spuren</translation>
+        <translation type="vanished">&amp;Spuren</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Marker &amp;Links</source>
-        <translation>Marker&amp;verbindungen</translation>
+        <translation type="vanished">Marker&amp;verbindungen</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Show &amp;Model Outputs</source>
-        <translation>&amp;Modellausgaben anzeigen</translation>
+        <translation type="vanished">&amp;Modellausgaben anzeigen</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
-        <translation>Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
+        <translation type="vanished">Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
+    </message>
+    <message>
+        <source>&amp;Follow Head</source>
+        <translation type="vanished">Kopf &amp;folgen</translation>
+    </message>
+    <message>
+        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
+        <translation type="vanished">Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Follow Head</source>
-        <translation>Kopf &amp;folgen</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
-        <translation>Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <location line="+90"/>
         <source>Language</source>
-        <translation>Sprache</translation>
+        <translation type="vanished">Sprache</translation>
     </message>
     <message>
-        <location line="-90"/>
-        <location line="+90"/>
         <source>The new language is used from the next start.</source>
-        <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
+        <translation type="vanished">Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="+12"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -648,316 +803,255 @@
         <translation type="vanished">3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
     <message>
-        <location line="+66"/>
         <source>Head markers set; Edit ▸ Undo takes them back</source>
-        <translation>Kopfmarker gesetzt; Bearbeiten ▸ Rückgängig nimmt sie zurück</translation>
+        <translation type="vanished">Kopfmarker gesetzt; Bearbeiten ▸ Rückgängig nimmt sie zurück</translation>
     </message>
     <message>
-        <location line="+26"/>
         <source>Reference markers unchanged</source>
-        <translation>Referenzmarker unverändert</translation>
+        <translation type="vanished">Referenzmarker unverändert</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>Select at least three head-mounted markers first</source>
-        <translation>Wählen Sie zuerst mindestens drei am Kopf befestigte Marker aus</translation>
+        <translation type="vanished">Wählen Sie zuerst mindestens drei am Kopf befestigte Marker aus</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The selected markers already are the reference markers</source>
-        <translation>Die ausgewählten Marker sind bereits die Referenzmarker</translation>
+        <translation type="vanished">Die ausgewählten Marker sind bereits die Referenzmarker</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>&amp;Marker</source>
-        <translation>&amp;Marker</translation>
+        <translation type="vanished">&amp;Marker</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Delete Markers</source>
-        <translation>Marker &amp;löschen</translation>
+        <translation type="vanished">Marker &amp;löschen</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Remove the selected markers from the take (undoable)</source>
-        <translation>Die ausgewählten Marker aus der Aufnahme entfernen (rückgängig machbar)</translation>
+        <translation type="vanished">Die ausgewählten Marker aus der Aufnahme entfernen (rückgängig machbar)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Add &amp;Averaged Marker…</source>
-        <translation>&amp;Gemittelten Marker hinzufügen…</translation>
+        <translation type="vanished">&amp;Gemittelten Marker hinzufügen…</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>A virtual marker at the mean of the selected markers</source>
-        <translation>Ein virtueller Marker im Mittel der ausgewählten Marker</translation>
+        <translation type="vanished">Ein virtueller Marker im Mittel der ausgewählten Marker</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Swap Over Range</source>
-        <translation>Im Bereich &amp;tauschen</translation>
+        <translation type="vanished">Im Bereich &amp;tauschen</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Exchange the data of the two selected markers over the selected frame range</source>
-        <translation>Die Daten der beiden ausgewählten Marker im ausgewählten Bildbereich vertauschen</translation>
+        <translation type="vanished">Die Daten der beiden ausgewählten Marker im ausgewählten Bildbereich vertauschen</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>&amp;Reference Markers…</source>
-        <translation>&amp;Referenzmarker…</translation>
+        <translation type="vanished">&amp;Referenzmarker…</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>The head-mounted markers that head stabilization, layout planning and the face mesh use</source>
-        <translation>Die am Kopf befestigten Marker, die Kopfstabilisierung, Layoutplanung und Gesichtsnetz verwenden</translation>
+        <translation type="vanished">Die am Kopf befestigten Marker, die Kopfstabilisierung, Layoutplanung und Gesichtsnetz verwenden</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Set Selected as Reference &amp;Markers</source>
-        <translation>Auswahl als Referenz&amp;marker festlegen</translation>
+        <translation type="vanished">Auswahl als Referenz&amp;marker festlegen</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Make the selected markers (at least three) the take&apos;s reference markers (undoable)</source>
-        <translation>Die ausgewählten Marker (mindestens drei) zu den Referenzmarkern der Aufnahme machen (rückgängig machbar)</translation>
+        <translation type="vanished">Die ausgewählten Marker (mindestens drei) zu den Referenzmarkern der Aufnahme machen (rückgängig machbar)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>&amp;Hide Selected</source>
-        <translation>Auswahl &amp;ausblenden</translation>
+        <translation type="vanished">Auswahl &amp;ausblenden</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Show &amp;All</source>
-        <translation>&amp;Alle einblenden</translation>
+        <translation type="vanished">&amp;Alle einblenden</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>&amp;Label</source>
-        <translation>&amp;Beschriftung</translation>
+        <translation type="vanished">&amp;Beschriftung</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Track and Label</source>
-        <translation>&amp;Verfolgen und beschriften</translation>
+        <translation type="vanished">&amp;Verfolgen und beschriften</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
-        <translation>Die unbeschrifteten Punkte neu verfolgen und ihnen die Namen der beschrifteten Marker der Aufnahme geben</translation>
+        <translation type="vanished">Die unbeschrifteten Punkte neu verfolgen und ihnen die Namen der beschrifteten Marker der Aufnahme geben</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Fix &amp;Swaps…</source>
-        <translation>&amp;Vertauschungen beheben…</translation>
+        <translation type="vanished">&amp;Vertauschungen beheben…</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Find frames where two labels exchange and repair the ones you accept</source>
-        <translation>Bilder finden, in denen zwei Namen vertauscht sind, und die bestätigten reparieren</translation>
+        <translation type="vanished">Bilder finden, in denen zwei Namen vertauscht sind, und die bestätigten reparieren</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Assign Label by Clicking</source>
-        <translation>Namen per &amp;Klick zuweisen</translation>
+        <translation type="vanished">Namen per &amp;Klick zuweisen</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Select a marker in the table, then click a point in the 3D view to give it that label</source>
-        <translation>Einen Marker in der Tabelle wählen, dann einen Punkt in der 3D-Ansicht anklicken, um ihm diesen Namen zu geben</translation>
+        <translation type="vanished">Einen Marker in der Tabelle wählen, dann einen Punkt in der 3D-Ansicht anklicken, um ihm diesen Namen zu geben</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Labelling: select a marker in the table, then click the point that is it</source>
-        <translation>Beschriften: einen Marker in der Tabelle wählen, dann den Punkt anklicken, der er ist</translation>
+        <translation type="vanished">Beschriften: einen Marker in der Tabelle wählen, dann den Punkt anklicken, der er ist</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>Opening %1…</source>
-        <translation>%1 wird geöffnet…</translation>
+        <translation type="vanished">%1 wird geöffnet…</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Cancelled</source>
-        <translation>Abgebrochen</translation>
+        <translation type="vanished">Abgebrochen</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>Cannot open file</source>
-        <translation>Datei kann nicht geöffnet werden</translation>
+        <translation type="vanished">Datei kann nicht geöffnet werden</translation>
     </message>
     <message numerus="yes">
-        <location line="+16"/>
         <source>⚠ Incomplete: %n warning(s)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>⚠ Unvollständig: %n Warnung</numerusform>
             <numerusform>⚠ Unvollständig: %n Warnungen</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
         <source>⚠ %n warning(s)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>⚠ %n Warnung</numerusform>
             <numerusform>⚠ %n Warnungen</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Show every warning from reading the file</source>
-        <translation>Alle Warnungen beim Lesen der Datei anzeigen</translation>
+        <translation type="vanished">Alle Warnungen beim Lesen der Datei anzeigen</translation>
     </message>
     <message>
-        <location line="+61"/>
         <source>Saved %1</source>
-        <translation>%1 gespeichert</translation>
+        <translation type="vanished">%1 gespeichert</translation>
     </message>
     <message>
-        <location line="+10"/>
         <source>%1 — note: %2</source>
-        <translation>%1 — Hinweis: %2</translation>
+        <translation type="vanished">%1 — Hinweis: %2</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <location line="+22"/>
         <source>Save Cleaning Preset</source>
-        <translation>Bereinigungsvorgabe speichern</translation>
+        <translation type="vanished">Bereinigungsvorgabe speichern</translation>
     </message>
     <message>
-        <location line="-21"/>
         <source>Cleaning presets (*.json)</source>
-        <translation>Bereinigungsvorgaben (*.json)</translation>
+        <translation type="vanished">Bereinigungsvorgaben (*.json)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Include this take&apos;s head markers (%1)</source>
-        <translation>Die Kopfmarker dieser Aufnahme mitspeichern (%1)</translation>
+        <translation type="vanished">Die Kopfmarker dieser Aufnahme mitspeichern (%1)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>none chosen</source>
-        <translation>keine gewählt</translation>
+        <translation type="vanished">keine gewählt</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>A preset carries cleaning options; head markers belong to a take. Include them only when every take the preset is for names its head markers the same way: a take without them then fails with that reason.</source>
-        <translation>Eine Vorgabe enthält Bereinigungsoptionen; Kopfmarker gehören zu einer Aufnahme. Speichern Sie sie nur mit, wenn jede Aufnahme, für die die Vorgabe gedacht ist, ihre Kopfmarker gleich benennt: eine Aufnahme ohne sie schlägt dann mit diesem Grund fehl.</translation>
+        <translation type="vanished">Eine Vorgabe enthält Bereinigungsoptionen; Kopfmarker gehören zu einer Aufnahme. Speichern Sie sie nur mit, wenn jede Aufnahme, für die die Vorgabe gedacht ist, ihre Kopfmarker gleich benennt: eine Aufnahme ohne sie schlägt dann mit diesem Grund fehl.</translation>
     </message>
     <message>
-        <location line="+11"/>
         <source>The preset was not saved: %1</source>
-        <translation>Die Vorgabe wurde nicht gespeichert: %1</translation>
+        <translation type="vanished">Die Vorgabe wurde nicht gespeichert: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Saved the cleaning preset %1</source>
-        <translation>Bereinigungsvorgabe %1 gespeichert</translation>
+        <translation type="vanished">Bereinigungsvorgabe %1 gespeichert</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply</source>
-        <translation>Bereinigungsvorgabe %1 in das Bereinigungsfenster geladen; die Aufnahme ändert sich erst mit Anwenden</translation>
+        <translation type="vanished">Bereinigungsvorgabe %1 in das Bereinigungsfenster geladen; die Aufnahme ändert sich erst mit Anwenden</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>; it turns off %1 (left as they were)</source>
-        <translation>; sie schaltet %1 aus (unverändert gelassen)</translation>
+        <translation type="vanished">; sie schaltet %1 aus (unverändert gelassen)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>; its head markers (%1) are not this take&apos;s: the take keeps its own</source>
-        <translation>; ihre Kopfmarker (%1) gehören nicht zu dieser Aufnahme: die Aufnahme behält ihre eigenen</translation>
+        <translation type="vanished">; ihre Kopfmarker (%1) gehören nicht zu dieser Aufnahme: die Aufnahme behält ihre eigenen</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+6"/>
         <source>Load Cleaning Preset</source>
-        <translation>Bereinigungsvorgabe laden</translation>
+        <translation type="vanished">Bereinigungsvorgabe laden</translation>
     </message>
     <message>
-        <location line="-4"/>
         <source>Cleaning presets (*.json);;All files (*)</source>
-        <translation>Bereinigungsvorgaben (*.json);;Alle Dateien (*)</translation>
+        <translation type="vanished">Bereinigungsvorgaben (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The preset was not loaded: %1</source>
-        <translation>Die Vorgabe wurde nicht geladen: %1</translation>
+        <translation type="vanished">Die Vorgabe wurde nicht geladen: %1</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+69"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+36"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
     <message>
-        <location line="-282"/>
         <source>Open take</source>
-        <translation>Take öffnen</translation>
+        <translation type="vanished">Take öffnen</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>Overwrite the original?</source>
-        <translation>Original überschreiben?</translation>
+        <translation type="vanished">Original überschreiben?</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Save over %1? The original capture is replaced by the edited take.</source>
-        <translation>%1 überschreiben? Die Originalaufnahme wird durch den bearbeiteten Take ersetzt.</translation>
+        <translation type="vanished">%1 überschreiben? Die Originalaufnahme wird durch den bearbeiteten Take ersetzt.</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+12"/>
         <source>Cannot save</source>
-        <translation>Speichern nicht möglich</translation>
+        <translation type="vanished">Speichern nicht möglich</translation>
     </message>
     <message>
-        <location line="-6"/>
         <source>Save take as</source>
-        <translation>Take speichern unter</translation>
+        <translation type="vanished">Take speichern unter</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>C3D (*.c3d);;TRC (*.trc)</source>
-        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
+        <translation type="vanished">C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+100"/>
         <source>Export</source>
-        <translation>Exportieren</translation>
+        <translation type="vanished">Exportieren</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)</source>
-        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX-Marker (*.fbx)</translation>
+        <translation type="vanished">C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX-Marker (*.fbx)</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Cannot export</source>
-        <translation>Export nicht möglich</translation>
+        <translation type="vanished">Export nicht möglich</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Exported %1</source>
-        <translation>%1 exportiert</translation>
+        <translation type="vanished">%1 exportiert</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>Unsaved edits</source>
-        <translation>Ungespeicherte Änderungen</translation>
+        <translation type="vanished">Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>The take has unsaved edits. Save them?</source>
-        <translation>Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
+        <translation type="vanished">Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-68"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -972,34 +1066,29 @@
         <translation>%1[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="+30"/>
         <source>an untitled take</source>
-        <translation>einer unbenannten Aufnahme</translation>
+        <translation type="vanished">einer unbenannten Aufnahme</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Recover unsaved edits?</source>
-        <translation>Ungesicherte Änderungen wiederherstellen?</translation>
+        <translation type="vanished">Ungesicherte Änderungen wiederherstellen?</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?</source>
-        <translation>Mocap Studio wurde nicht normal beendet. Ungesicherte Änderungen von %1 wurden am %2 aufbewahrt. Wiederherstellen?</translation>
+        <translation type="vanished">Mocap Studio wurde nicht normal beendet. Ungesicherte Änderungen von %1 wurden am %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Cannot recover</source>
-        <translation>Wiederherstellen nicht möglich</translation>
+        <translation type="vanished">Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-861"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
-        <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
+        <translation type="vanished">Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -1013,29 +1102,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+108"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+274"/>
+        <location line="+272"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-267"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+257"/>
+        <location line="+255"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="-253"/>
+        <location line="-251"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1055,7 +1144,7 @@
         <translation>Ein neutrales OBJ/PLY und ein Ordner mit einem OBJ je Shape, nach ihm benannt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <location line="+33"/>
         <source>Solve</source>
         <translation>Lösen</translation>
@@ -1211,7 +1300,7 @@
         <translation>Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
     </message>
@@ -1392,7 +1481,7 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+68"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+69"/>
         <source>Live preview</source>
         <translation>Live-Vorschau</translation>
     </message>
@@ -1417,7 +1506,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+119"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -1451,9 +1540,79 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::CleaningPresetActions</name>
+    <message>
+        <location filename="../widgets/actions/cleaning_preset_actions.cpp" line="+52"/>
+        <location line="+22"/>
+        <source>Save Cleaning Preset</source>
+        <translation>Bereinigungsvorgabe speichern</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>Cleaning presets (*.json)</source>
+        <translation>Bereinigungsvorgaben (*.json)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Include this take&apos;s head markers (%1)</source>
+        <translation>Die Kopfmarker dieser Aufnahme mitspeichern (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none chosen</source>
+        <translation>keine gewählt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A preset carries cleaning options; head markers belong to a take. Include them only when every take the preset is for names its head markers the same way: a take without them then fails with that reason.</source>
+        <translation>Eine Vorgabe enthält Bereinigungsoptionen; Kopfmarker gehören zu einer Aufnahme. Speichern Sie sie nur mit, wenn jede Aufnahme, für die die Vorgabe gedacht ist, ihre Kopfmarker gleich benennt: eine Aufnahme ohne sie schlägt dann mit diesem Grund fehl.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The preset was not saved: %1</source>
+        <translation>Die Vorgabe wurde nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Saved the cleaning preset %1</source>
+        <translation>Bereinigungsvorgabe %1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply</source>
+        <translation>Bereinigungsvorgabe %1 in das Bereinigungsfenster geladen; die Aufnahme ändert sich erst mit Anwenden</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; it turns off %1 (left as they were)</source>
+        <translation>; sie schaltet %1 aus (unverändert gelassen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; its head markers (%1) are not this take&apos;s: the take keeps its own</source>
+        <translation>; ihre Kopfmarker (%1) gehören nicht zu dieser Aufnahme: die Aufnahme behält ihre eigenen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+6"/>
+        <source>Load Cleaning Preset</source>
+        <translation>Bereinigungsvorgabe laden</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Cleaning presets (*.json);;All files (*)</source>
+        <translation>Bereinigungsvorgaben (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The preset was not loaded: %1</source>
+        <translation>Die Vorgabe wurde nicht geladen: %1</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+135"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+143"/>
         <source>Select a marker to see its curves</source>
         <translation>Marker auswählen, um seine Kurven anzuzeigen</translation>
     </message>
@@ -1504,12 +1663,18 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
+        <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
         <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+1"/>
+        <source>The face mesh cannot be exported: %1</source>
+        <translation>Das Gesichtsnetz kann nicht exportiert werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+14"/>
         <source>BVH of the markers (.bvh)</source>
         <translation>BVH der Marker (.bvh)</translation>
     </message>
@@ -1750,12 +1915,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+234"/>
+        <location line="+233"/>
         <source>No mesh</source>
         <translation>Kein Netz</translation>
     </message>
     <message>
-        <location line="-230"/>
+        <location line="-229"/>
         <source>Load Mesh…</source>
         <translation>Netz laden…</translation>
     </message>
@@ -1800,12 +1965,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+283"/>
+        <location line="+282"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>Wählen Sie einen Marker aus und klicken Sie dann auf seinen Scheitelpunkt im Netz</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-279"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
@@ -1815,7 +1980,7 @@
         <translation>Wiederholen</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Deformation</source>
         <translation>Verformung</translation>
     </message>
@@ -2047,6 +2212,14 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::FrameStatusLabel</name>
+    <message>
+        <location filename="../widgets/views/frame_status_label.cpp" line="+21"/>
+        <source>Frame %1 of %2–%3 — %4 markers selected</source>
+        <translation>Frame %1 von %2–%3 — %4 Marker ausgewählt</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::FrameStripView</name>
     <message>
         <location filename="../widgets/views/frame_strip_view.cpp" line="+132"/>
@@ -2171,7 +2344,7 @@
         <translation>Nur offene Lücken</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+39"/>
         <source>Check Shown</source>
         <translation>Angezeigte abhaken</translation>
     </message>
@@ -3331,7 +3504,7 @@
 <context>
     <name>mocap::ui::LiveStreamPanel</name>
     <message>
-        <location filename="../widgets/panels/live_stream_panel.cpp" line="+49"/>
+        <location filename="../widgets/panels/live_stream_panel.cpp" line="+59"/>
         <source>Live Link Face (Unreal, MetaHuman)</source>
         <translation>Live Link Face (Unreal, MetaHuman)</translation>
     </message>
@@ -3433,7 +3606,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+84"/>
         <source>Connecting to %1…</source>
         <translation>Verbindung zu %1…</translation>
     </message>
@@ -3449,7 +3622,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Start</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>Not streaming.</source>
         <translation>Kein Stream.</translation>
     </message>
@@ -3459,7 +3632,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Stream an %1: %2 Datagramme/s, %3 gesendet</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>, %1 refused: %2</source>
         <translation>, %1 abgewiesen: %2</translation>
     </message>
@@ -3564,7 +3737,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Eine Modellausgabe (%1), kein Marker: wird nie bereinigt; gezeichnet und in der Lückenliste nur mit Ansicht ▸ Modellausgaben anzeigen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -3592,14 +3765,14 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+135"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+138"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+241"/>
+        <location line="+264"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
@@ -3643,7 +3816,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+82"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+26"/>
         <source>Preferences</source>
         <translation>Einstellungen</translation>
     </message>
@@ -3762,6 +3935,40 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <source>Default Colours</source>
         <translation>Standardfarben</translation>
     </message>
+    <message>
+        <location line="+58"/>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The new language is used from the next start.</source>
+        <translation>Die neue Sprache wird ab dem nächsten Start verwendet.</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReadWarningsButton</name>
+    <message numerus="yes">
+        <location filename="../widgets/dialogs/read_warnings_button.cpp" line="+26"/>
+        <source>⚠ Incomplete: %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ Unvollständig: %n Warnung</numerusform>
+            <numerusform>⚠ Unvollständig: %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>⚠ %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ %n Warnung</numerusform>
+            <numerusform>⚠ %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show every warning from reading the file</source>
+        <translation>Alle Warnungen beim Lesen der Datei anzeigen</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::ReadWarningsDialog</name>
@@ -3797,6 +4004,29 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <location line="+0"/>
         <source>Close</source>
         <translation>Schließen</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceMarkerActions</name>
+    <message>
+        <location filename="../widgets/actions/reference_marker_actions.cpp" line="+39"/>
+        <source>Reference markers unchanged</source>
+        <translation>Referenzmarker unverändert</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Select at least three head-mounted markers first</source>
+        <translation>Wählen Sie zuerst mindestens drei am Kopf befestigte Marker aus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The selected markers already are the reference markers</source>
+        <translation>Die ausgewählten Marker sind bereits die Referenzmarker</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Head markers set; Edit ▸ Undo takes them back</source>
+        <translation>Kopfmarker gesetzt; Bearbeiten ▸ Rückgängig nimmt sie zurück</translation>
     </message>
 </context>
 <context>
@@ -3896,7 +4126,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+47"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>Die Referenzvideos der Aufnahme: Das hier gewählte wird angezeigt</translation>
     </message>
@@ -3931,12 +4161,12 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Das angezeigte Video aus der Aufnahme entfernen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+32"/>
         <source>Offset:</source>
         <translation>Versatz:</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-14"/>
         <source> s</source>
         <translation> s</translation>
     </message>
@@ -3961,12 +4191,12 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Das Video um einen seiner Frames später zeigen (Alt+.)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+27"/>
         <source>Video frame:</source>
         <translation>Videoframe:</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-16"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
@@ -3996,12 +4226,12 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Das Video nicht mehr anhalten: wieder den Frame zum aktuellen Frame der Aufnahme zeigen</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+18"/>
         <source>Event:</source>
         <translation>Ereignis:</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-10"/>
         <source>The take&apos;s events (C3D EVENT parameters); a sync event is picked first</source>
         <translation>Die Ereignisse der Aufnahme (C3D-EVENT-Parameter); ein Sync-Ereignis wird zuerst gewählt</translation>
     </message>
@@ -4025,7 +4255,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation type="vanished">Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
     </message>
     <message>
-        <location line="-315"/>
+        <location line="-317"/>
         <source>+1 frame</source>
         <translation>+1 Frame</translation>
     </message>
@@ -4038,7 +4268,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation type="vanished">%1 kann nicht gezeigt werden: %2</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+154"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>Halten Sie das Video zuerst an einem Moment an: Frame eingeben oder schrittweise ändern, dann die Aufnahme auf denselben Moment stellen</translation>
     </message>
@@ -4153,13 +4383,44 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::ReviewExportDialog</name>
     <message>
+        <location filename="../widgets/actions/review_video_export.cpp" line="+34"/>
+        <source>Rendering the review video…</source>
+        <translation>Das Prüfvideo wird gerendert…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Review video cancelled; nothing was written.</source>
+        <translation>Prüfvideo abgebrochen; es wurde nichts geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+33"/>
         <location line="+54"/>
         <source>Export Review Video</source>
         <translation>Prüfvideo exportieren</translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="+2"/>
+        <source>The review video was not written: %1</source>
+        <translation>Das Prüfvideo wurde nicht geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1</source>
+        <translation>Dieses System hat keinen MP4-Encoder, daher wurde das Video als Motion-JPEG-AVI geschrieben: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wrote %1 (%2 frames, %3)</source>
+        <translation>%1 geschrieben (%2 Frames, %3)</translation>
+    </message>
+    <message>
+        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="-45"/>
         <source>Browse…</source>
         <translation>Durchsuchen…</translation>
     </message>
@@ -4435,6 +4696,100 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <location line="+15"/>
         <source>Repair Checked</source>
         <translation>Ausgewählte reparieren</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::TakeFileActions</name>
+    <message>
+        <location filename="../widgets/actions/take_file_actions.cpp" line="+35"/>
+        <source>Opening %1…</source>
+        <translation>%1 wird geöffnet…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open file</source>
+        <translation>Datei kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Open take</source>
+        <translation>Take öffnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motion capture (*.c3d *.trc);;All files (*)</source>
+        <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Overwrite the original?</source>
+        <translation>Original überschreiben?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save over %1? The original capture is replaced by the edited take.</source>
+        <translation>%1 überschreiben? Die Originalaufnahme wird durch den bearbeiteten Take ersetzt.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+12"/>
+        <source>Cannot save</source>
+        <translation>Speichern nicht möglich</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Save take as</source>
+        <translation>Take speichern unter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX-Marker (*.fbx)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 — note: %2</source>
+        <translation>%1 — Hinweis: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Unsaved edits</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The take has unsaved edits. Save them?</source>
+        <translation>Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
     </message>
 </context>
 <context>

@@ -158,6 +158,114 @@
     </message>
 </context>
 <context>
+    <name>MarkerMenus</name>
+    <message>
+        <location filename="../widgets/actions/marker_menus.cpp" line="+24"/>
+        <source>&amp;Marker</source>
+        <translation>标记点(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Delete Markers</source>
+        <translation>删除标记点(&amp;D)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Remove the selected markers from the take (undoable)</source>
+        <translation>从拍摄中移除所选标记点（可撤销）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add &amp;Averaged Marker…</source>
+        <translation>添加平均标记点(&amp;A)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A virtual marker at the mean of the selected markers</source>
+        <translation>位于所选标记点平均位置的虚拟标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Swap Over Range</source>
+        <translation>在范围内交换(&amp;S)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exchange the data of the two selected markers over the selected frame range</source>
+        <translation>在所选帧范围内交换两个所选标记点的数据</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Reference Markers…</source>
+        <translation>参考标记点(&amp;R)…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The head-mounted markers that head stabilization, layout planning and the face mesh use</source>
+        <translation>头部稳定、布局规划和面部网格所使用的头戴标记点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Selected as Reference &amp;Markers</source>
+        <translation>将所选设为参考标记点(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Make the selected markers (at least three) the take&apos;s reference markers (undoable)</source>
+        <translation>将所选标记点（至少三个）设为动捕片段的参考标记点（可撤销）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Hide Selected</source>
+        <translation>隐藏所选(&amp;H)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;All</source>
+        <translation>全部显示(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Label</source>
+        <translation>标注(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Track and Label</source>
+        <translation>跟踪并标注(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
+        <translation>重新跟踪未标注的点，并赋予它们拍摄中已标注标记点的名称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fix &amp;Swaps…</source>
+        <translation>修复交换(&amp;S)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Find frames where two labels exchange and repair the ones you accept</source>
+        <translation>查找两个名称互换的帧，并修复您接受的那些</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Assign Label by Clicking</source>
+        <translation>点击分配名称(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Select a marker in the table, then click a point in the 3D view to give it that label</source>
+        <translation>在表格中选择一个标记点，然后在三维视图中点击一个点以赋予它该名称</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Labelling: select a marker in the table, then click the point that is it</source>
+        <translation>标注：在表格中选择一个标记点，然后点击对应的点</translation>
+    </message>
+</context>
+<context>
     <name>QProgressDialog</name>
     <message>
         <location filename="../widgets/dialogs/job_dialog.cpp" line="+35"/>
@@ -181,6 +289,29 @@
         <location line="+4"/>
         <source>Bind %1 to the surface</source>
         <translation>将 %1 绑定到表面</translation>
+    </message>
+</context>
+<context>
+    <name>RecoveryOffer</name>
+    <message>
+        <location filename="../widgets/actions/recovery_offer.cpp" line="+25"/>
+        <source>an untitled take</source>
+        <translation>未命名拍摄</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recover unsaved edits?</source>
+        <translation>恢复未保存的编辑？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?</source>
+        <translation>Mocap Studio 未正常关闭。%1 的未保存编辑已于 %2 保留。是否恢复？</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot recover</source>
+        <translation>无法恢复</translation>
     </message>
 </context>
 <context>
@@ -235,7 +366,7 @@
 <context>
     <name>SampleState</name>
     <message>
-        <location filename="../widgets/views/sample_colors.cpp" line="+63"/>
+        <location filename="../widgets/views/sample_colors.cpp" line="+45"/>
         <source>smoothed</source>
         <translation>已平滑</translation>
     </message>
@@ -263,7 +394,7 @@
 <context>
     <name>SmoothingStep</name>
     <message>
-        <location filename="../widgets/panels/smoothing_step.cpp" line="+134"/>
+        <location filename="../widgets/panels/smoothing_step.cpp" line="+135"/>
         <source>%1 smoothing</source>
         <translation>%1 平滑</translation>
     </message>
@@ -291,34 +422,81 @@
     </message>
 </context>
 <context>
+    <name>ViewOptionActions</name>
+    <message>
+        <location filename="../widgets/actions/view_option_actions.cpp" line="+28"/>
+        <source>Y Axis Up</source>
+        <translation>Y 轴朝上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z Axis Up</source>
+        <translation>Z 轴朝上</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&amp;Reset Camera</source>
+        <translation>重置相机(&amp;C)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Trails</source>
+        <translation>轨迹(&amp;T)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Marker &amp;Links</source>
+        <translation>标记点连线(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;Model Outputs</source>
+        <translation>显示模型输出(&amp;M)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
+        <translation>绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Follow Head</source>
+        <translation>跟随头部(&amp;F)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
+        <translation>头部移动时相机始终对准头部（头部标记点的质心）</translation>
+    </message>
+</context>
+<context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+121"/>
+        <location filename="../app/studio/main_window.cpp" line="+96"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
     <message>
-        <location line="+34"/>
         <source>Frame %1 of %2–%3 — %4 markers selected</source>
-        <translation>第 %1 帧（%2–%3）— 已选择 %4 个标记点</translation>
+        <translation type="vanished">第 %1 帧（%2–%3）— 已选择 %4 个标记点</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+39"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+14"/>
         <source>Markers</source>
         <translation>标记点</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Curves</source>
         <translation>曲线</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>History</source>
         <translation>历史记录</translation>
     </message>
@@ -338,7 +516,7 @@
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Face Mesh</source>
         <translation>面部网格</translation>
     </message>
@@ -363,53 +541,43 @@
         <translation>权重</translation>
     </message>
     <message>
-        <location line="+61"/>
         <source>Export Animation</source>
-        <translation>导出动画</translation>
+        <translation type="vanished">导出动画</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>The face mesh cannot be exported: %1</source>
-        <translation>无法导出面部网格：%1</translation>
+        <translation type="vanished">无法导出面部网格：%1</translation>
     </message>
     <message>
-        <location line="+28"/>
         <source>Rendering the review video…</source>
-        <translation>正在渲染审阅视频…</translation>
+        <translation type="vanished">正在渲染审阅视频…</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>Cancel</source>
-        <translation>取消</translation>
+        <translation type="vanished">取消</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Review video cancelled; nothing was written.</source>
-        <translation>审阅视频已取消；未写入任何内容。</translation>
+        <translation type="vanished">审阅视频已取消；未写入任何内容。</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <location line="+6"/>
         <source>Export Review Video</source>
-        <translation>导出审阅视频</translation>
+        <translation type="vanished">导出审阅视频</translation>
     </message>
     <message>
-        <location line="-6"/>
         <source>The review video was not written: %1</source>
-        <translation>审阅视频未写入：%1</translation>
+        <translation type="vanished">审阅视频未写入：%1</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1</source>
-        <translation>此系统没有 MP4 编码器，因此视频以 Motion JPEG AVI 写入：%1</translation>
+        <translation type="vanished">此系统没有 MP4 编码器，因此视频以 Motion JPEG AVI 写入：%1</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Wrote %1 (%2 frames, %3)</source>
-        <translation>已写入 %1（%2 帧，%3）</translation>
+        <translation type="vanished">已写入 %1（%2 帧，%3）</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+67"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -424,12 +592,12 @@
         <translation>最近打开(&amp;R)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Keep Face Rig for the Next Take</source>
         <translation>为下一个拍摄保留面部绑定(&amp;K)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Opening another take keeps the face mesh, its marker binding and the blendshape rig (the actor&apos;s), bound to the markers the new take has; off, every take starts without them</source>
         <translation>打开另一个拍摄时保留面部网格、其标记点绑定和混合形状绑定（演员的），并绑定到新拍摄中已有的标记点；关闭时，每个拍摄都从空白开始</translation>
     </message>
@@ -509,79 +677,66 @@
         <translation>重命名标记点(&amp;M)…</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
         <source>&amp;Preferences…</source>
         <translation>首选项(&amp;P)…</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Reset Camera</source>
-        <translation>重置相机(&amp;C)</translation>
+        <translation type="vanished">重置相机(&amp;C)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Y Axis Up</source>
-        <translation>Y 轴朝上</translation>
+        <translation type="vanished">Y 轴朝上</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Z Axis Up</source>
-        <translation>Z 轴朝上</translation>
+        <translation type="vanished">Z 轴朝上</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>&amp;Trails</source>
-        <translation>轨迹(&amp;T)</translation>
+        <translation type="vanished">轨迹(&amp;T)</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Marker &amp;Links</source>
-        <translation>标记点连线(&amp;L)</translation>
+        <translation type="vanished">标记点连线(&amp;L)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Show &amp;Model Outputs</source>
-        <translation>显示模型输出(&amp;M)</translation>
+        <translation type="vanished">显示模型输出(&amp;M)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
-        <translation>绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
+        <translation type="vanished">绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
+    </message>
+    <message>
+        <source>&amp;Follow Head</source>
+        <translation type="vanished">跟随头部(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
+        <translation type="vanished">头部移动时相机始终对准头部（头部标记点的质心）</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Follow Head</source>
-        <translation>跟随头部(&amp;F)</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Keep the camera on the head as it moves (the centroid of the head markers)</source>
-        <translation>头部移动时相机始终对准头部（头部标记点的质心）</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <location line="+90"/>
         <source>Language</source>
-        <translation>语言</translation>
+        <translation type="vanished">语言</translation>
     </message>
     <message>
-        <location line="-90"/>
-        <location line="+90"/>
         <source>The new language is used from the next start.</source>
-        <translation>新语言将在下次启动时生效。</translation>
+        <translation type="vanished">新语言将在下次启动时生效。</translation>
     </message>
     <message>
-        <location line="-58"/>
+        <location line="+12"/>
         <source>&amp;Help</source>
         <translation>帮助(&amp;H)</translation>
     </message>
@@ -639,314 +794,253 @@
         <translation type="vanished">三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
     <message>
-        <location line="+66"/>
         <source>Head markers set; Edit ▸ Undo takes them back</source>
-        <translation>已设置头部标记点；编辑 ▸ 撤销可取消</translation>
+        <translation type="vanished">已设置头部标记点；编辑 ▸ 撤销可取消</translation>
     </message>
     <message>
-        <location line="+26"/>
         <source>Reference markers unchanged</source>
-        <translation>参考标记点未更改</translation>
+        <translation type="vanished">参考标记点未更改</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>Select at least three head-mounted markers first</source>
-        <translation>请先选择至少三个头戴标记点</translation>
+        <translation type="vanished">请先选择至少三个头戴标记点</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The selected markers already are the reference markers</source>
-        <translation>所选标记点已经是参考标记点</translation>
+        <translation type="vanished">所选标记点已经是参考标记点</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>&amp;Marker</source>
-        <translation>标记点(&amp;M)</translation>
+        <translation type="vanished">标记点(&amp;M)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Delete Markers</source>
-        <translation>删除标记点(&amp;D)</translation>
+        <translation type="vanished">删除标记点(&amp;D)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Remove the selected markers from the take (undoable)</source>
-        <translation>从拍摄中移除所选标记点（可撤销）</translation>
+        <translation type="vanished">从拍摄中移除所选标记点（可撤销）</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Add &amp;Averaged Marker…</source>
-        <translation>添加平均标记点(&amp;A)…</translation>
+        <translation type="vanished">添加平均标记点(&amp;A)…</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>A virtual marker at the mean of the selected markers</source>
-        <translation>位于所选标记点平均位置的虚拟标记点</translation>
+        <translation type="vanished">位于所选标记点平均位置的虚拟标记点</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Swap Over Range</source>
-        <translation>在范围内交换(&amp;S)</translation>
+        <translation type="vanished">在范围内交换(&amp;S)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Exchange the data of the two selected markers over the selected frame range</source>
-        <translation>在所选帧范围内交换两个所选标记点的数据</translation>
+        <translation type="vanished">在所选帧范围内交换两个所选标记点的数据</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>&amp;Reference Markers…</source>
-        <translation>参考标记点(&amp;R)…</translation>
+        <translation type="vanished">参考标记点(&amp;R)…</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>The head-mounted markers that head stabilization, layout planning and the face mesh use</source>
-        <translation>头部稳定、布局规划和面部网格所使用的头戴标记点</translation>
+        <translation type="vanished">头部稳定、布局规划和面部网格所使用的头戴标记点</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Set Selected as Reference &amp;Markers</source>
-        <translation>将所选设为参考标记点(&amp;M)</translation>
+        <translation type="vanished">将所选设为参考标记点(&amp;M)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Make the selected markers (at least three) the take&apos;s reference markers (undoable)</source>
-        <translation>将所选标记点（至少三个）设为动捕片段的参考标记点（可撤销）</translation>
+        <translation type="vanished">将所选标记点（至少三个）设为动捕片段的参考标记点（可撤销）</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>&amp;Hide Selected</source>
-        <translation>隐藏所选(&amp;H)</translation>
+        <translation type="vanished">隐藏所选(&amp;H)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Show &amp;All</source>
-        <translation>全部显示(&amp;A)</translation>
+        <translation type="vanished">全部显示(&amp;A)</translation>
     </message>
     <message>
-        <location line="+6"/>
         <source>&amp;Label</source>
-        <translation>标注(&amp;L)</translation>
+        <translation type="vanished">标注(&amp;L)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Track and Label</source>
-        <translation>跟踪并标注(&amp;T)</translation>
+        <translation type="vanished">跟踪并标注(&amp;T)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Re-track the unlabelled points and give them the labels of the take&apos;s labelled markers</source>
-        <translation>重新跟踪未标注的点，并赋予它们拍摄中已标注标记点的名称</translation>
+        <translation type="vanished">重新跟踪未标注的点，并赋予它们拍摄中已标注标记点的名称</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Fix &amp;Swaps…</source>
-        <translation>修复交换(&amp;S)…</translation>
+        <translation type="vanished">修复交换(&amp;S)…</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Find frames where two labels exchange and repair the ones you accept</source>
-        <translation>查找两个名称互换的帧，并修复您接受的那些</translation>
+        <translation type="vanished">查找两个名称互换的帧，并修复您接受的那些</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>&amp;Assign Label by Clicking</source>
-        <translation>点击分配名称(&amp;A)</translation>
+        <translation type="vanished">点击分配名称(&amp;A)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Select a marker in the table, then click a point in the 3D view to give it that label</source>
-        <translation>在表格中选择一个标记点，然后在三维视图中点击一个点以赋予它该名称</translation>
+        <translation type="vanished">在表格中选择一个标记点，然后在三维视图中点击一个点以赋予它该名称</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Labelling: select a marker in the table, then click the point that is it</source>
-        <translation>标注：在表格中选择一个标记点，然后点击对应的点</translation>
+        <translation type="vanished">标注：在表格中选择一个标记点，然后点击对应的点</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>Opening %1…</source>
-        <translation>正在打开 %1…</translation>
+        <translation type="vanished">正在打开 %1…</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Cancelled</source>
-        <translation>已取消</translation>
+        <translation type="vanished">已取消</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>Cannot open file</source>
-        <translation>无法打开文件</translation>
+        <translation type="vanished">无法打开文件</translation>
     </message>
     <message numerus="yes">
-        <location line="+16"/>
         <source>⚠ Incomplete: %n warning(s)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>⚠ 不完整：%n 条警告</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
         <source>⚠ %n warning(s)</source>
-        <translation>
+        <translation type="vanished">
             <numerusform>⚠ %n 条警告</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Show every warning from reading the file</source>
-        <translation>显示读取文件时的所有警告</translation>
+        <translation type="vanished">显示读取文件时的所有警告</translation>
     </message>
     <message>
-        <location line="+61"/>
         <source>Saved %1</source>
-        <translation>已保存 %1</translation>
+        <translation type="vanished">已保存 %1</translation>
     </message>
     <message>
-        <location line="+10"/>
         <source>%1 — note: %2</source>
-        <translation>%1 — 注意：%2</translation>
+        <translation type="vanished">%1 — 注意：%2</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <location line="+22"/>
         <source>Save Cleaning Preset</source>
-        <translation>保存清理预设</translation>
+        <translation type="vanished">保存清理预设</translation>
     </message>
     <message>
-        <location line="-21"/>
         <source>Cleaning presets (*.json)</source>
-        <translation>清理预设 (*.json)</translation>
+        <translation type="vanished">清理预设 (*.json)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Include this take&apos;s head markers (%1)</source>
-        <translation>包含此录制的头部标记点（%1）</translation>
+        <translation type="vanished">包含此录制的头部标记点（%1）</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>none chosen</source>
-        <translation>未选择</translation>
+        <translation type="vanished">未选择</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>A preset carries cleaning options; head markers belong to a take. Include them only when every take the preset is for names its head markers the same way: a take without them then fails with that reason.</source>
-        <translation>预设保存清理选项；头部标记点属于某个录制。仅当预设适用的每个录制都以相同方式命名其头部标记点时才包含它们：没有这些标记点的录制将因此失败。</translation>
+        <translation type="vanished">预设保存清理选项；头部标记点属于某个录制。仅当预设适用的每个录制都以相同方式命名其头部标记点时才包含它们：没有这些标记点的录制将因此失败。</translation>
     </message>
     <message>
-        <location line="+11"/>
         <source>The preset was not saved: %1</source>
-        <translation>预设未保存：%1</translation>
+        <translation type="vanished">预设未保存：%1</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Saved the cleaning preset %1</source>
-        <translation>已保存清理预设 %1</translation>
+        <translation type="vanished">已保存清理预设 %1</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply</source>
-        <translation>已将清理预设 %1 加载到清理面板；点击应用之前录制不会改变</translation>
+        <translation type="vanished">已将清理预设 %1 加载到清理面板；点击应用之前录制不会改变</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>; it turns off %1 (left as they were)</source>
-        <translation>；它关闭了 %1（保持原样）</translation>
+        <translation type="vanished">；它关闭了 %1（保持原样）</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>; its head markers (%1) are not this take&apos;s: the take keeps its own</source>
-        <translation>；其头部标记点（%1）不属于此录制：录制保留自己的</translation>
+        <translation type="vanished">；其头部标记点（%1）不属于此录制：录制保留自己的</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+6"/>
         <source>Load Cleaning Preset</source>
-        <translation>加载清理预设</translation>
+        <translation type="vanished">加载清理预设</translation>
     </message>
     <message>
-        <location line="-4"/>
         <source>Cleaning presets (*.json);;All files (*)</source>
-        <translation>清理预设 (*.json);;所有文件 (*)</translation>
+        <translation type="vanished">清理预设 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The preset was not loaded: %1</source>
-        <translation>预设未加载：%1</translation>
+        <translation type="vanished">预设未加载：%1</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+69"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+36"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
     <message>
-        <location line="-282"/>
         <source>Open take</source>
-        <translation>打开动捕片段</translation>
+        <translation type="vanished">打开动捕片段</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>Overwrite the original?</source>
-        <translation>覆盖原始文件？</translation>
+        <translation type="vanished">覆盖原始文件？</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Save over %1? The original capture is replaced by the edited take.</source>
-        <translation>要覆盖 %1 吗？原始捕捉数据将被编辑后的动捕片段替换。</translation>
+        <translation type="vanished">要覆盖 %1 吗？原始捕捉数据将被编辑后的动捕片段替换。</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <location line="+12"/>
         <source>Cannot save</source>
-        <translation>无法保存</translation>
+        <translation type="vanished">无法保存</translation>
     </message>
     <message>
-        <location line="-6"/>
         <source>Save take as</source>
-        <translation>动捕片段另存为</translation>
+        <translation type="vanished">动捕片段另存为</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>C3D (*.c3d);;TRC (*.trc)</source>
-        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
+        <translation type="vanished">C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+100"/>
         <source>Export</source>
-        <translation>导出</translation>
+        <translation type="vanished">导出</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)</source>
-        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX 标记点 (*.fbx)</translation>
+        <translation type="vanished">C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX 标记点 (*.fbx)</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Cannot export</source>
-        <translation>无法导出</translation>
+        <translation type="vanished">无法导出</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Exported %1</source>
-        <translation>已导出 %1</translation>
+        <translation type="vanished">已导出 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
         <source>Unsaved edits</source>
-        <translation>未保存的修改</translation>
+        <translation type="vanished">未保存的修改</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>The take has unsaved edits. Save them?</source>
-        <translation>动捕片段有未保存的修改。是否保存？</translation>
+        <translation type="vanished">动捕片段有未保存的修改。是否保存？</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-68"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -961,34 +1055,29 @@
         <translation>%1[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="+30"/>
         <source>an untitled take</source>
-        <translation>未命名拍摄</translation>
+        <translation type="vanished">未命名拍摄</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Recover unsaved edits?</source>
-        <translation>恢复未保存的编辑？</translation>
+        <translation type="vanished">恢复未保存的编辑？</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?</source>
-        <translation>Mocap Studio 未正常关闭。%1 的未保存编辑已于 %2 保留。是否恢复？</translation>
+        <translation type="vanished">Mocap Studio 未正常关闭。%1 的未保存编辑已于 %2 保留。是否恢复？</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Cannot recover</source>
-        <translation>无法恢复</translation>
+        <translation type="vanished">无法恢复</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-861"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
-        <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
+        <translation type="vanished">动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
 </context>
 <context>
@@ -1002,29 +1091,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+107"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+108"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+274"/>
+        <location line="+272"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-267"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+257"/>
+        <location line="+255"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="-253"/>
+        <location line="-251"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1044,7 +1133,7 @@
         <translation>一个中性 OBJ/PLY 和一个文件夹，每个形状一个以其命名的 OBJ</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <location line="+33"/>
         <source>Solve</source>
         <translation>求解</translation>
@@ -1200,7 +1289,7 @@
         <translation>带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+87"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>请等待正在运行的任务，或将其取消。</translation>
     </message>
@@ -1379,7 +1468,7 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+68"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+69"/>
         <source>Live preview</source>
         <translation>实时预览</translation>
     </message>
@@ -1404,7 +1493,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+119"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -1437,9 +1526,79 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::CleaningPresetActions</name>
+    <message>
+        <location filename="../widgets/actions/cleaning_preset_actions.cpp" line="+52"/>
+        <location line="+22"/>
+        <source>Save Cleaning Preset</source>
+        <translation>保存清理预设</translation>
+    </message>
+    <message>
+        <location line="-21"/>
+        <source>Cleaning presets (*.json)</source>
+        <translation>清理预设 (*.json)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Include this take&apos;s head markers (%1)</source>
+        <translation>包含此录制的头部标记点（%1）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none chosen</source>
+        <translation>未选择</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A preset carries cleaning options; head markers belong to a take. Include them only when every take the preset is for names its head markers the same way: a take without them then fails with that reason.</source>
+        <translation>预设保存清理选项；头部标记点属于某个录制。仅当预设适用的每个录制都以相同方式命名其头部标记点时才包含它们：没有这些标记点的录制将因此失败。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The preset was not saved: %1</source>
+        <translation>预设未保存：%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Saved the cleaning preset %1</source>
+        <translation>已保存清理预设 %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply</source>
+        <translation>已将清理预设 %1 加载到清理面板；点击应用之前录制不会改变</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; it turns off %1 (left as they were)</source>
+        <translation>；它关闭了 %1（保持原样）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; its head markers (%1) are not this take&apos;s: the take keeps its own</source>
+        <translation>；其头部标记点（%1）不属于此录制：录制保留自己的</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+6"/>
+        <source>Load Cleaning Preset</source>
+        <translation>加载清理预设</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Cleaning presets (*.json);;All files (*)</source>
+        <translation>清理预设 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The preset was not loaded: %1</source>
+        <translation>预设未加载：%1</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::CurveView</name>
     <message>
-        <location filename="../widgets/views/curve_view.cpp" line="+135"/>
+        <location filename="../widgets/views/curve_view.cpp" line="+143"/>
         <source>Select a marker to see its curves</source>
         <translation>选择一个标记点以查看其曲线</translation>
     </message>
@@ -1490,12 +1649,18 @@
 <context>
     <name>mocap::ui::ExportDialog</name>
     <message>
+        <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
         <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+1"/>
+        <source>The face mesh cannot be exported: %1</source>
+        <translation>无法导出面部网格：%1</translation>
+    </message>
+    <message>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+14"/>
         <source>BVH of the markers (.bvh)</source>
         <translation>标记点的 BVH（.bvh）</translation>
     </message>
@@ -1730,12 +1895,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+234"/>
+        <location line="+233"/>
         <source>No mesh</source>
         <translation>无网格</translation>
     </message>
     <message>
-        <location line="-230"/>
+        <location line="-229"/>
         <source>Load Mesh…</source>
         <translation>加载网格…</translation>
     </message>
@@ -1780,12 +1945,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+283"/>
+        <location line="+282"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>选择一个标记点，然后在网格上点击其对应的顶点</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-279"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
@@ -1795,7 +1960,7 @@
         <translation>重做</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Deformation</source>
         <translation>变形</translation>
     </message>
@@ -2025,6 +2190,14 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::FrameStatusLabel</name>
+    <message>
+        <location filename="../widgets/views/frame_status_label.cpp" line="+21"/>
+        <source>Frame %1 of %2–%3 — %4 markers selected</source>
+        <translation>第 %1 帧（%2–%3）— 已选择 %4 个标记点</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::FrameStripView</name>
     <message>
         <location filename="../widgets/views/frame_strip_view.cpp" line="+132"/>
@@ -2149,7 +2322,7 @@
         <translation>仅未填补的缺口</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+39"/>
         <source>Check Shown</source>
         <translation>勾选显示项</translation>
     </message>
@@ -3305,7 +3478,7 @@
 <context>
     <name>mocap::ui::LiveStreamPanel</name>
     <message>
-        <location filename="../widgets/panels/live_stream_panel.cpp" line="+49"/>
+        <location filename="../widgets/panels/live_stream_panel.cpp" line="+59"/>
         <source>Live Link Face (Unreal, MetaHuman)</source>
         <translation>Live Link Face（Unreal、MetaHuman）</translation>
     </message>
@@ -3407,7 +3580,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>Ctrl+Shift+L</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+84"/>
         <source>Connecting to %1…</source>
         <translation>正在连接 %1…</translation>
     </message>
@@ -3423,7 +3596,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>开始</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>Not streaming.</source>
         <translation>未在推流。</translation>
     </message>
@@ -3433,7 +3606,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>正在推流到 %1：%2 个数据报/秒，已发送 %3 个</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
         <source>, %1 refused: %2</source>
         <translation>，%1 个被拒绝：%2</translation>
     </message>
@@ -3538,7 +3711,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>模型输出（%1），不是标记点：从不清理；仅在 视图 ▸ 显示模型输出 时绘制并列入缺口列表</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -3566,14 +3739,14 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+135"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+138"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+241"/>
+        <location line="+264"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>已基于 %n 个标记点进行头部稳定 — 按 Ctrl+B 返回实验室坐标系</numerusform>
@@ -3616,7 +3789,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::PreferencesDialog</name>
     <message>
-        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+82"/>
+        <location filename="../widgets/dialogs/preferences_dialog.cpp" line="+26"/>
         <source>Preferences</source>
         <translation>首选项</translation>
     </message>
@@ -3735,6 +3908,38 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <source>Default Colours</source>
         <translation>默认颜色</translation>
     </message>
+    <message>
+        <location line="+58"/>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The new language is used from the next start.</source>
+        <translation>新语言将在下次启动时生效。</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReadWarningsButton</name>
+    <message numerus="yes">
+        <location filename="../widgets/dialogs/read_warnings_button.cpp" line="+26"/>
+        <source>⚠ Incomplete: %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ 不完整：%n 条警告</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>⚠ %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ %n 条警告</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show every warning from reading the file</source>
+        <translation>显示读取文件时的所有警告</translation>
+    </message>
 </context>
 <context>
     <name>mocap::ui::ReadWarningsDialog</name>
@@ -3769,6 +3974,29 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <location line="+0"/>
         <source>Close</source>
         <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::ReferenceMarkerActions</name>
+    <message>
+        <location filename="../widgets/actions/reference_marker_actions.cpp" line="+39"/>
+        <source>Reference markers unchanged</source>
+        <translation>参考标记点未更改</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Select at least three head-mounted markers first</source>
+        <translation>请先选择至少三个头戴标记点</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The selected markers already are the reference markers</source>
+        <translation>所选标记点已经是参考标记点</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Head markers set; Edit ▸ Undo takes them back</source>
+        <translation>已设置头部标记点；编辑 ▸ 撤销可取消</translation>
     </message>
 </context>
 <context>
@@ -3867,7 +4095,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+47"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>录制的参考视频：显示此处选中的视频</translation>
     </message>
@@ -3902,12 +4130,12 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>从录制中移除所显示的视频</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+32"/>
         <source>Offset:</source>
         <translation>偏移：</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-14"/>
         <source> s</source>
         <translation>秒</translation>
     </message>
@@ -3932,12 +4160,12 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>将视频推后一帧显示 (Alt+.)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+27"/>
         <source>Video frame:</source>
         <translation>视频帧：</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-16"/>
         <source>none</source>
         <translation>无</translation>
     </message>
@@ -3967,12 +4195,12 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>不再停住视频：重新显示录制当前帧对应的视频帧</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+18"/>
         <source>Event:</source>
         <translation>事件：</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-10"/>
         <source>The take&apos;s events (C3D EVENT parameters); a sync event is picked first</source>
         <translation>录制的事件（C3D EVENT 参数）；优先选择同步事件</translation>
     </message>
@@ -3996,7 +4224,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation type="vanished">将视频提前一帧（Alt+,）</translation>
     </message>
     <message>
-        <location line="-315"/>
+        <location line="-317"/>
         <source>+1 frame</source>
         <translation>+1 帧</translation>
     </message>
@@ -4009,7 +4237,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation type="vanished">无法显示 %1：%2</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+154"/>
         <source>First hold the video at a moment: type its frame or step it, then step the take to the same moment</source>
         <translation>请先将视频停在某一时刻：输入或步进其帧，然后将录制步进到同一时刻</translation>
     </message>
@@ -4123,13 +4351,44 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::ReviewExportDialog</name>
     <message>
+        <location filename="../widgets/actions/review_video_export.cpp" line="+34"/>
+        <source>Rendering the review video…</source>
+        <translation>正在渲染审阅视频…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Review video cancelled; nothing was written.</source>
+        <translation>审阅视频已取消；未写入任何内容。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+33"/>
         <location line="+54"/>
         <source>Export Review Video</source>
         <translation>导出审阅视频</translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="+2"/>
+        <source>The review video was not written: %1</source>
+        <translation>审阅视频未写入：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1</source>
+        <translation>此系统没有 MP4 编码器，因此视频以 Motion JPEG AVI 写入：%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wrote %1 (%2 frames, %3)</source>
+        <translation>已写入 %1（%2 帧，%3）</translation>
+    </message>
+    <message>
+        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="-45"/>
         <source>Browse…</source>
         <translation>浏览…</translation>
     </message>
@@ -4404,6 +4663,100 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <location line="+15"/>
         <source>Repair Checked</source>
         <translation>修复已勾选项</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::TakeFileActions</name>
+    <message>
+        <location filename="../widgets/actions/take_file_actions.cpp" line="+35"/>
+        <source>Opening %1…</source>
+        <translation>正在打开 %1…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open file</source>
+        <translation>无法打开文件</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Open take</source>
+        <translation>打开动捕片段</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motion capture (*.c3d *.trc);;All files (*)</source>
+        <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Overwrite the original?</source>
+        <translation>覆盖原始文件？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save over %1? The original capture is replaced by the edited take.</source>
+        <translation>要覆盖 %1 吗？原始捕捉数据将被编辑后的动捕片段替换。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+12"/>
+        <source>Cannot save</source>
+        <translation>无法保存</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <source>Save take as</source>
+        <translation>动捕片段另存为</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)</source>
+        <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX 标记点 (*.fbx)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported %1</source>
+        <translation>已导出 %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 — note: %2</source>
+        <translation>%1 — 注意：%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Unsaved edits</source>
+        <translation>未保存的修改</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The take has unsaved edits. Save them?</source>
+        <translation>动捕片段有未保存的修改。是否保存？</translation>
     </message>
 </context>
 <context>

@@ -53,6 +53,14 @@ QString languageName(const QString& code)
   return {};
 }
 
+QStringList availableLanguageNames()
+{
+  QStringList names;
+  for (const QString& code : availableLanguages())
+    names << languageName(code);
+  return names;
+}
+
 QString defaultLanguage()
 {
   // Language and script, not the country: de_AT gets German, zh_TW (Traditional) does not get zh_CN.

@@ -15,6 +15,9 @@ QStringList availableLanguages();
 /// empty for an unknown code.
 QString languageName(const QString& code);
 
+/// The names of availableLanguages(), in that order.
+QStringList availableLanguageNames();
+
 /// The first of the system's preferred UI languages that the studio speaks, else "en".
 QString defaultLanguage();
 

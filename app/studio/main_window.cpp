@@ -2,23 +2,30 @@
 
 #include "language.h"
 
+#include "actions/animation_export.h"
+#include "actions/cleaning_preset_actions.h"
 #include "actions/labelling_actions.h"
+#include "actions/language_menu.h"
 #include "actions/head_stabilized_view_action.h"
 #include "actions/marker_edit_actions.h"
+#include "actions/marker_menus.h"
+#include "actions/option_toggle.h"
+#include "actions/reference_marker_actions.h"
+#include "actions/recovery_offer.h"
+#include "actions/review_video_export.h"
+#include "actions/take_file_actions.h"
+#include "actions/transport_shortcuts.h"
+#include "actions/view_option_actions.h"
 
-#include "commands/record_step_command.h"
-#include "commands/set_reference_markers_command.h"
-#include "dialogs/export_dialog.h"
-#include "dialogs/reference_markers_dialog.h"
 #include "dialogs/job_dialog.h"
 #include "dialogs/manual_window.h"
 #include "dialogs/preferences_dialog.h"
-#include "dialogs/read_warnings_dialog.h"
-#include "dialogs/review_export_dialog.h"
+#include "dialogs/read_warnings_button.h"
 #include "document/autosave.h"
+#include "document/studio_options.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
-#include "models/marker_table_model.h"
+#include "document/view_state.h"
 #include "panels/cleaning_panel.h"
 #include "document/blendshape_solve_model.h"
 #include "panels/blendshape_solve_panel.h"
@@ -30,6 +37,7 @@
 #include "panels/history_panel.h"
 #include "panels/layout_planning_panel.h"
 #include "panels/live_stream_panel.h"
+#include "panels/marker_table_panel.h"
 #include "panels/reference_video_panel.h"
 #include "document/layout_plan_model.h"
 #include "document/reference_video.h"
@@ -40,84 +48,49 @@
 #include "views/weight_curve_view.h"
 #include "document/face_mesh_model.h"
 #include "views/marker_view_3d.h"
+#include "views/frame_status_label.h"
 #include "views/model_outputs_note.h"
 #include "views/status_timeout.h"
-#include "views/steady_label.h"
 #include "views/blendshape_scene.h"
 #include "views/face_mesh_scene.h"
 #include "views/mesh_layer.h"
 #include "views/review_scene.h"
-#include "views/sample_colors.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
 #include "panels/form_wrapping.h"
-#include "views/label_column.h"
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
-#include <QCheckBox>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QGridLayout>
-#include <QHeaderView>
-#include <QLocale>
-#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QProgressDialog>
 #include <QScreen>
 #include <QScrollArea>
 #include <QTimer>
-#include <QToolButton>
 #include <QVBoxLayout>
 #include <QSettings>
-#include <QSortFilterProxyModel>
 #include <QStatusBar>
 #include <QTabBar>
-#include <QTableView>
 #include <QToolBar>
 #include <QUndoStack>
-#include <QUndoView>
 
-#include <algorithm>
-#include <memory>
 #include <utility>
 
-#include "mocap/cleaning/head_stabilization.h"
-#include "mocap/base/length_unit.h"
-#include "mocap/model/marker_set.h"
-#include "mocap/io/take_io.h"
-#include "mocap/base/file_io.h"
-#include "mocap/batch/clean_preset.h"
-
 namespace mocap::studio {
-
-namespace {
-constexpr int kMaxRecent = 8;
-const char* const kOpenFilter =
-    QT_TRANSLATE_NOOP("mocap::studio::MainWindow", "Motion capture (*.c3d *.trc);;All files (*)");
-
-/// "a, b, c" for a message.
-QString joinLabels(const std::vector<std::string>& labels)
-{
-  QStringList list;
-  for (const std::string& label : labels)
-    list << QString::fromStdString(label);
-  return list.join(QStringLiteral(", "));
-}
-} // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_session(new ui::StudioSession(this)), m_document(&m_session->document())
 {
   setAcceptDrops(true);
   ui::WheelGuard::install();
+  m_session->followOptions();
   m_view3d = new ui::MarkerView3d(*m_document, this);
+  m_view3d->observe(m_session->view());
+  m_referenceMarkers = new ui::ReferenceMarkerActions(*m_document, *this, this);
   setCentralWidget(centralArea());
   m_timeline = new ui::TimelineWidget(*m_document, this);
   auto* timelineBar = new QToolBar(tr("Timeline"), this);
@@ -127,20 +100,29 @@ MainWindow::MainWindow(QWidget* parent)
   addToolBar(Qt::BottomToolBarArea, timelineBar);
   m_markerEdits = new ui::MarkerEditActions(*m_document, *this, this);
   m_labelling = new ui::LabellingActions(*m_document, *this, this);
-  const auto showMessage = [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); };
-  connect(m_markerEdits, &ui::MarkerEditActions::message, this, showMessage);
-  connect(m_labelling, &ui::LabellingActions::message, this, showMessage);
+  QStatusBar* status = statusBar();
+  connect(m_markerEdits, &ui::MarkerEditActions::message, status, &QStatusBar::showMessage);
+  connect(m_labelling, &ui::LabellingActions::message, status, &QStatusBar::showMessage);
+  connect(m_referenceMarkers, &ui::ReferenceMarkerActions::message, status, &QStatusBar::showMessage);
+  m_files = new ui::TakeFileActions(*m_document, m_session->options(), *this, this);
+  connect(m_files, &ui::TakeFileActions::message, status, &QStatusBar::showMessage);
   createDocks();
+  m_cleaningPresets = new ui::CleaningPresetActions(
+      *m_document, *this,
+      {[this] { return m_cleaning->cleanOptions(); },
+       [this](const CleanOptions& options) { return m_cleaning->loadCleanOptions(options); }},
+      this);
+  connect(m_cleaningPresets, &ui::CleaningPresetActions::message, status, &QStatusBar::showMessage);
+  connect(m_cleaningPresets, &ui::CleaningPresetActions::loaded, this,
+          [this] { (void)showDock(QStringLiteral("cleaningDock")); });
   createActions();
-  m_status = new QLabel(this);
-  m_status->setObjectName(QStringLiteral("frameStatus"));
-  statusBar()->addPermanentWidget(m_status);
-  m_warningsButton = new QToolButton(this);
-  m_warningsButton->setObjectName(QStringLiteral("readWarningsButton"));
-  m_warningsButton->setAutoRaise(true);
-  m_warningsButton->hide();
-  connect(m_warningsButton, &QToolButton::clicked, this, &MainWindow::openReadWarnings);
+  statusBar()->addPermanentWidget(new ui::FrameStatusLabel(*m_document, this));
+  m_warningsButton = new ui::ReadWarningsButton(*m_document, this);
   statusBar()->addPermanentWidget(m_warningsButton);
+  connect(m_files, &ui::TakeFileActions::opened, this, [this](const QString&, bool askToAcknowledge) {
+    m_warningsButton->showWarnings(askToAcknowledge);
+    updateTitle();
+  });
   statusBar()->addPermanentWidget(new ui::ModelOutputsNote(*m_document, this));
   connect(m_timeline, &ui::TimelineWidget::message, this, [this](const QString& text) {
     statusBar()->showMessage(text, ui::kStatusMessageMs);
@@ -148,32 +130,13 @@ MainWindow::MainWindow(QWidget* parent)
 
   connect(m_document, &ui::TakeDocument::modifiedChanged, this, &MainWindow::updateTitle);
   connect(m_document, &ui::TakeDocument::filePathChanged, this, &MainWindow::updateTitle);
-  connect(m_document, &ui::TakeDocument::selectionChanged, this, &MainWindow::syncTableSelection);
-  // The status line follows both the frame and the selection it names.
-  auto updateStatusLine = [this] {
-    const Take& take = m_document->take();
-    const auto text = [&](Eigen::Index frame, std::size_t selected) {
-      // The take's range in the file's numbering: a take starting at frame 63 is not "555 of 493".
-      return tr("Frame %1 of %2–%3 — %4 markers selected")
-          .arg(static_cast<qlonglong>(take.firstFrame() + frame))
-          .arg(static_cast<qlonglong>(take.firstFrame()))
-          .arg(static_cast<qlonglong>(take.firstFrame() + std::max<Eigen::Index>(take.frameCount() - 1, 0)))
-          .arg(static_cast<qulonglong>(selected));
-    };
-    const std::pair<Eigen::Index, Eigen::Index> fitted{take.frameCount(), take.markerCount()};
-    if (fitted != m_statusFitsTake) {  // sized for the take's widest line
-      ui::fixLabelSizeFor(*m_status, text(take.frameCount() - 1, static_cast<std::size_t>(take.markerCount())));
-      m_statusFitsTake = fitted;
-    }
-    m_status->setText(text(m_document->currentFrame(), m_document->selection().size()));
-  };
-  connect(m_document, &ui::TakeDocument::currentFrameChanged, this, updateStatusLine);
-  connect(m_document, &ui::TakeDocument::selectionChanged, this, updateStatusLine);
   m_autosave = new ui::Autosave(*m_document, {}, this);
   connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
     statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 2 * ui::kStatusMessageMs);
   });
   m_autosave->setSessionProvider([this] { return recoverySession(); });
+  m_session->options().autosaveMinutes.follow(m_autosave,
+                                              [this](int minutes) { m_autosave->setInterval(minutes * 60 * 1000); });
   readSettings();
   updateTitle();
 }
@@ -182,31 +145,11 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::createDocks()
 {
-  m_tableModel = new ui::MarkerTableModel(*m_document, this);
-  m_proxy = new QSortFilterProxyModel(this);
-  m_proxy->setSourceModel(m_tableModel);
-  m_proxy->setSortRole(Qt::UserRole);
-  m_table = new QTableView(this);
-  m_table->setModel(m_proxy);
-  m_table->setSortingEnabled(true);
-  m_table->sortByColumn(-1, Qt::AscendingOrder);  // file order until the user sorts
-  m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
-  m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
-  m_table->verticalHeader()->hide();
-  m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  m_table->horizontalHeader()->setStretchLastSection(true);
-  ui::limitLabelColumn(*m_table, ui::MarkerTableModel::LabelColumn, false);  // "Valid %" stays in view
-  connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
-    if (m_syncingSelection)
-      return;
-    std::vector<Eigen::Index> markers;
-    for (const QModelIndex& row : m_table->selectionModel()->selectedRows())
-      markers.push_back(m_proxy->mapToSource(row).row());
-    m_document->setSelection(std::move(markers));
-  });
+  m_table = new ui::MarkerTablePanel(*m_document, this);
   addDock(tr("Markers"), QStringLiteral("markersDock"), m_table, Qt::LeftDockWidgetArea, DockContent::Fixed);
 
   m_curves = new ui::CurveView(*m_document, this);
+  m_curves->observe(m_session->view());
   QDockWidget* curveDock =
       addDock(tr("Curves"), QStringLiteral("curvesDock"), m_curves, Qt::BottomDockWidgetArea, DockContent::Fixed);
 
@@ -214,7 +157,9 @@ void MainWindow::createDocks()
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
   auto* gapFillStep = new ui::GapFillStep(*m_document, m_cleaning);
   m_cleaning->addStep(gapFillStep);
-  m_cleaning->addStep(new ui::SmoothingStep(m_cleaning));
+  auto* smoothingStep = new ui::SmoothingStep(m_cleaning);
+  smoothingStep->observe(m_session->view());
+  m_cleaning->addStep(smoothingStep);
   // Last: its preview moves every marker, not something to compute on every open.
   m_cleaning->addStep(new ui::HeadStabilizationStep(*m_document, m_cleaning));
   QDockWidget* historyDock = addDock(tr("History"), QStringLiteral("historyDock"),
@@ -242,18 +187,19 @@ void MainWindow::createDocks()
   // the dock closed) gives the 3D view its sample-state colours back, returning shows it again.
   auto showLayout = [this, layoutDock] {
     ui::LayoutHighlight shown = layoutDock->isVisible() ? m_session->layoutPlan().highlight() : ui::LayoutHighlight{};
-    m_view3d->setLayoutHighlight(std::move(shown.kept), std::move(shown.reference));
+    m_session->view().setLayoutHighlight(std::move(shown.kept), std::move(shown.reference));
   };
   connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::changed, this, showLayout);
   connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::highlightChanged, this, showLayout);
   connect(layoutDock, &QDockWidget::visibilityChanged, this, showLayout);
   // Every panel shows the take's reference markers and sends the user to the one editor.
-  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, this,
-          &MainWindow::editReferenceMarkers);
+  connect(m_layoutPlanning, &ui::LayoutPlanningPanel::editReferenceMarkersRequested, m_referenceMarkers,
+          &ui::ReferenceMarkerActions::edit);
   connect(m_cleaning->step<ui::HeadStabilizationStep>(), &ui::HeadStabilizationStep::editReferenceMarkersRequested,
-          this, &MainWindow::editReferenceMarkers);
+          m_referenceMarkers, &ui::ReferenceMarkerActions::edit);
   m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, this);
-  connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, this, &MainWindow::editReferenceMarkers);
+  connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, m_referenceMarkers,
+          &ui::ReferenceMarkerActions::edit);
   m_faceMeshDock = addDock(tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
@@ -290,7 +236,7 @@ void MainWindow::createDocks()
       return;
     // The first solve of a rig: show its curves, and frame the posed rig with the markers.
     if (!m_weightsDock->isVisible())
-      m_view3d->resetCamera();
+      m_session->view().resetCamera();
     m_weightsDock->show();
     m_weightsDock->raise();
   });
@@ -331,23 +277,8 @@ QString MainWindow::loadFaceMesh(const QString& meshPath, const QString& binding
     error = m_faceMesh->loadBinding(bindingPath);
   m_faceMeshDock->show();
   m_faceMeshDock->raise();
-  m_view3d->resetCamera();  // frame the mesh with the markers
+  m_session->view().resetCamera();  // frame the mesh with the markers
   return error;
-}
-
-void MainWindow::exportAnimation()
-{
-  ui::ExportDialog dialog(*m_document, this);
-  const ui::FaceMeshModel& mesh = m_session->faceMesh();
-  if (mesh.rig()) {
-    try {  // the export runs on a worker thread: with a rig of its own
-      dialog.setMeshSource(mesh.mesh(), mesh.detachedDeformer(), QStringLiteral("face"));
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Export Animation"),
-                           tr("The face mesh cannot be exported: %1").arg(QString::fromStdString(e.what())));
-    }
-  }
-  dialog.exec();
 }
 
 ui::ReviewSource MainWindow::reviewSource() const
@@ -362,65 +293,13 @@ ui::ReviewSource MainWindow::reviewSource() const
   return source;
 }
 
-void MainWindow::exportReviewVideo()
-{
-  if (!m_document->hasTake())
-    return;
-  const ui::ReferenceVideo* video = m_session->referenceVideos().current();
-  const bool shown = video && video->isOpen();
-  ui::ReviewExportDialog dialog(*m_document, shown ? video->path() : QString(), video ? video->offset() : 0.0, this);
-  if (dialog.exec() != QDialog::Accepted)
-    return;
-  const ui::ReviewRequest request = dialog.request();
-  QProgressDialog progress(tr("Rendering the review video…"), tr("Cancel"), 0,
-                           static_cast<int>(request.last - request.first + 1), this);
-  progress.setWindowModality(Qt::WindowModal);
-  progress.setMinimumDuration(300);
-  // Frames render on this thread (the view's GL context is here); events are served between them.
-  const ui::ReviewOutcome outcome = ui::exportReview(reviewSource(), request, [&progress](long long done, long long) {
-    progress.setValue(static_cast<int>(done));
-    QCoreApplication::processEvents();
-    return !progress.wasCanceled();
-  });
-  progress.reset();
-  if (outcome.cancelled) {
-    statusBar()->showMessage(tr("Review video cancelled; nothing was written."), ui::kStatusMessageMs);
-    return;
-  }
-  if (!outcome.done) {
-    QMessageBox::warning(this, tr("Export Review Video"), tr("The review video was not written: %1").arg(outcome.error));
-    return;
-  }
-  const QString written = QString::fromStdString(outcome.encoding.path.string());
-  const QString codec = QString::fromStdString(outcome.encoding.codec);
-  if (outcome.encoding.path != request.output)
-    QMessageBox::information(this, tr("Export Review Video"),
-                             tr("This system has no MP4 encoder, so the video was written as Motion JPEG AVI: %1")
-                                 .arg(written));
-  statusBar()->showMessage(tr("Wrote %1 (%2 frames, %3)").arg(written).arg(outcome.frames).arg(codec), 8000);
-}
-
-QAction* MainWindow::addRememberedToggle(QMenu* menu, const QString& text, const QString& settingsKey,
-                                         const std::function<void(bool)>& apply)
-{
-  QAction* action = menu->addAction(text);
-  action->setCheckable(true);
-  action->setChecked(QSettings().value(settingsKey, false).toBool());
-  apply(action->isChecked());
-  connect(action, &QAction::toggled, this, [apply, settingsKey](bool on) {
-    apply(on);
-    QSettings().setValue(settingsKey, on);
-  });
-  return action;
-}
-
 void MainWindow::createActions()
 {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openDialog);
-  m_recentMenu = file->addMenu(tr("Open &Recent"));
-  QAction* keepRig = addRememberedToggle(file, tr("&Keep Face Rig for the Next Take"), QStringLiteral("session/keepRig"),
-                                         [this](bool on) { m_session->setKeepRig(on); });
+  file->addAction(tr("&Open…"), QKeySequence::Open, m_files, &ui::TakeFileActions::openWithDialog);
+  m_files->followRecentFiles(*file->addMenu(tr("Open &Recent")));
+  ui::StudioOptions& options = m_session->options();
+  QAction* keepRig = ui::addOptionToggle(*file, tr("&Keep Face Rig for the Next Take"), options.keepRig);
   keepRig->setObjectName(QStringLiteral("keepRigAction"));
   keepRig->setToolTip(tr("Opening another take keeps the face mesh, its marker binding and the blendshape rig (the "
                          "actor's), bound to the markers the new take has; off, every take starts without them"));
@@ -430,15 +309,15 @@ void MainWindow::createActions()
                                2 * ui::kStatusMessageMs);
   });
   file->addSeparator();
-  file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
-  file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), this, &MainWindow::saveAs);
-  file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), this, &MainWindow::exportDialog);
+  file->addAction(tr("&Save"), QKeySequence::Save, m_files, &ui::TakeFileActions::save);
+  file->addAction(tr("Save &As…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S), m_files, &ui::TakeFileActions::saveAs);
+  file->addAction(tr("&Export…"), QKeySequence(Qt::CTRL | Qt::Key_E), m_files, &ui::TakeFileActions::exportWithDialog);
   file->addAction(tr("Export Ani&mation…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), this,
-                  &MainWindow::exportAnimation);
+                  [this] { ui::exportAnimation(*m_session, *this); });
   file->addAction(tr("Export Re&view Video…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_E), this,
                   &MainWindow::exportReviewVideo);
-  file->addAction(tr("Save &Cleaning Preset…"), this, &MainWindow::saveCleaningPresetDialog);
-  file->addAction(tr("&Load Cleaning Preset…"), this, &MainWindow::loadCleaningPresetDialog)
+  file->addAction(tr("Save &Cleaning Preset…"), m_cleaningPresets, &ui::CleaningPresetActions::saveWithDialog);
+  file->addAction(tr("&Load Cleaning Preset…"), m_cleaningPresets, &ui::CleaningPresetActions::loadWithDialog)
       ->setObjectName(QStringLiteral("loadCleaningPresetAction"));
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -453,89 +332,30 @@ void MainWindow::createActions()
   edit->addSeparator();
   QAction* deleteRange = edit->addAction(tr("&Delete Range"), QKeySequence::Delete, m_markerEdits, &ui::MarkerEditActions::deleteRange);
   deleteRange->setToolTip(tr("Make the selected frame range of the selected markers a gap (Shift-drag on the curves)"));
-  edit->addAction(tr("&Rename Marker…"), QKeySequence(Qt::Key_F2), this, [this] {
-    const QModelIndex current = m_table->currentIndex();
-    if (current.isValid())
-      m_table->edit(current.siblingAtColumn(ui::MarkerTableModel::LabelColumn));
-  });
+  edit->addAction(tr("&Rename Marker…"), QKeySequence(Qt::Key_F2), m_table, &ui::MarkerTablePanel::editCurrentLabel);
   edit->addSeparator();
-  QAction* preferences =
-      edit->addAction(tr("&Preferences…"), QKeySequence(Qt::CTRL | Qt::Key_Comma), this, &MainWindow::editPreferences);
+  QAction* preferences = edit->addAction(tr("&Preferences…"), QKeySequence(Qt::CTRL | Qt::Key_Comma), this, [this] {
+    ui::editPreferences(m_session->options(), availableLanguages(), availableLanguageNames(), defaultLanguage(), this);
+  });
   preferences->setMenuRole(QAction::PreferencesRole);
 
-  createMarkerMenu();
-  createLabelMenu();
+  ui::addMarkerMenu(*menuBar(), *m_document, *m_markerEdits, *m_referenceMarkers);
+  ui::addLabelMenu(*menuBar(), *m_labelling, *m_markerEdits, *m_view3d,
+                   [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); });
 
   m_viewMenu = menuBar()->addMenu(tr("&View"));
-  m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);
-  auto* upGroup = new QActionGroup(this);
-  m_yUp = m_viewMenu->addAction(tr("Y Axis Up"));
-  m_zUp = m_viewMenu->addAction(tr("Z Axis Up"));
-  for (QAction* a : {m_yUp, m_zUp}) {
-    a->setCheckable(true);
-    upGroup->addAction(a);
-  }
-  connect(m_yUp, &QAction::triggered, this, [this] { changePreferences([](ui::Preferences& p) { p.upAxis = 1; }); });
-  connect(m_zUp, &QAction::triggered, this, [this] { changePreferences([](ui::Preferences& p) { p.upAxis = 2; }); });
-  m_trails = m_viewMenu->addAction(tr("&Trails"));
-  m_trails->setCheckable(true);
-  connect(m_trails, &QAction::triggered, this, [this](bool on) {
-    changePreferences([on](ui::Preferences& p) { p.trailFrames = on ? std::max(p.trailFrames, 50) : 0; });
-  });
-  QAction* links = addRememberedToggle(m_viewMenu, tr("Marker &Links"), QStringLiteral("view/links"),
-                                       [this](bool on) { m_view3d->setLinksVisible(on); });
-  links->setShortcut(QKeySequence(Qt::Key_L));
-  QAction* outputs = addRememberedToggle(m_viewMenu, tr("Show &Model Outputs"), QStringLiteral("view/modelOutputs"),
-                                         [this](bool on) { m_document->setShowModelOutputs(on); });
-  outputs->setObjectName(QStringLiteral("showModelOutputsAction"));
-  outputs->setToolTip(tr("Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points "
-                         "(they are never cleaned)"));
-  QAction* follow = addRememberedToggle(m_viewMenu, tr("&Follow Head"), QStringLiteral("view/followHead"),
-                                        [this](bool on) { m_view3d->setFollowHead(on); });
-  follow->setObjectName(QStringLiteral("followHeadAction"));
-  follow->setShortcut(QKeySequence(Qt::Key_F));
-  follow->setToolTip(tr("Keep the camera on the head as it moves (the centroid of the head markers)"));
-  QMenu* languages = m_viewMenu->addMenu(tr("&Language"));
-  auto* languageGroup = new QActionGroup(this);
-  const QString current = QSettings().value(QStringLiteral("language"), defaultLanguage()).toString();
-  for (const QString& code : availableLanguages()) {
-    QAction* action = languages->addAction(languageName(code));
-    action->setCheckable(true);
-    action->setChecked(code == current);
-    languageGroup->addAction(action);
-    connect(action, &QAction::triggered, this, [this, code] {
-      changePreferences([code](ui::Preferences& p) { p.language = code; });
-      QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
-    });
-  }
+  ui::addViewOptionActions(*m_viewMenu, options, m_session->view());
+  ui::addLanguageMenu(*m_viewMenu->addMenu(tr("&Language")), options.language, availableLanguages(),
+                      availableLanguageNames(), defaultLanguage(), *this);
   m_viewMenu->addSeparator();
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
   m_headStabilizedView = new ui::HeadStabilizedViewAction(*m_document, *m_view3d, *this, this);
-  connect(m_headStabilizedView, &ui::HeadStabilizedViewAction::message, this,
-          [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); });
+  connect(m_headStabilizedView, &ui::HeadStabilizedViewAction::message, statusBar(), &QStatusBar::showMessage);
   m_viewMenu->addAction(m_headStabilizedView->action());
 
-  // Transport keys work wherever the focus is (window shortcuts).
-  auto addShortcut = [this](const QKeySequence& keys, auto slot) {
-    auto* action = new QAction(this);
-    action->setShortcut(keys);
-    action->setShortcutContext(Qt::WindowShortcut);
-    connect(action, &QAction::triggered, this, slot);
-    addAction(action);
-  };
-  addShortcut(QKeySequence(Qt::Key_Space), [this] { m_timeline->togglePlaying(); });
-  addShortcut(QKeySequence(Qt::Key_Right), [this] { m_timeline->step(1); });
-  addShortcut(QKeySequence(Qt::Key_Left), [this] { m_timeline->step(-1); });
-  addShortcut(QKeySequence(Qt::SHIFT | Qt::Key_Right), [this] { m_timeline->step(10); });
-  addShortcut(QKeySequence(Qt::SHIFT | Qt::Key_Left), [this] { m_timeline->step(-10); });
-  addShortcut(QKeySequence(Qt::Key_Home), [this] { m_document->setCurrentFrame(0); });
-  addShortcut(QKeySequence(Qt::Key_End), [this] { m_document->setCurrentFrame(m_document->take().frameCount() - 1); });
-  addShortcut(QKeySequence(Qt::Key_PageDown), [this] { m_timeline->jumpToGap(1); });
-  addShortcut(QKeySequence(Qt::Key_PageUp), [this] { m_timeline->jumpToGap(-1); });
-  addShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageDown), [this] { m_timeline->jumpToFlag(1); });
-  addShortcut(QKeySequence(Qt::CTRL | Qt::Key_PageUp), [this] { m_timeline->jumpToFlag(-1); });
+  ui::addTransportShortcuts(*this, *m_document, *m_timeline);
 
   QMenu* help = menuBar()->addMenu(tr("&Help"));
   QAction* manual = help->addAction(tr("&Manual"), this, &MainWindow::showManual);
@@ -549,55 +369,12 @@ void MainWindow::createActions()
                               "H hide, Shift+H show all, Ctrl+drag rubber-band selection, Ctrl+B head-stabilized "
                               "view, F camera follows the head, Ctrl+Shift+S save as.</p>"));
   });
-  updateRecentMenu();
 }
 
-void MainWindow::applyPreferences(const ui::Preferences& preferences)
+void MainWindow::exportReviewVideo()
 {
-  m_view3d->setMarkerScale(preferences.markerSizePercent / 100.0);
-  m_view3d->setTrailFrames(preferences.trailFrames);
-  m_view3d->setUpAxis(preferences.upAxis);
-  m_autosave->setInterval(preferences.autosaveMinutes * 60 * 1000);
-  const LengthUnit unit = parseLengthUnit(preferences.displayUnit.toStdString()).value_or(LengthUnit::Millimetre);
-  m_curves->setDisplayUnit(unit);
-  if (auto* smoothing = m_cleaning->step<ui::SmoothingStep>())
-    smoothing->setDisplayUnit(unit);
-  if (!(preferences.colors == ui::colorScheme())) {
-    ui::setColorScheme(preferences.colors);
-    m_view3d->refreshColors();
-    m_curves->update();
-  }
-  m_view3d->setDisplayUnit(unit);
-  m_yUp->setChecked(preferences.upAxis == 1);
-  m_zUp->setChecked(preferences.upAxis == 2);
-  m_trails->setChecked(preferences.trailFrames > 0);
-}
-
-void MainWindow::changePreferences(const std::function<void(ui::Preferences&)>& change)
-{
-  ui::Preferences preferences = ui::Preferences::load();
-  change(preferences);
-  preferences = preferences.clamped();
-  preferences.save();
-  applyPreferences(preferences);
-}
-
-void MainWindow::editPreferences()
-{
-  ui::Preferences preferences = ui::Preferences::load();
-  if (preferences.language.isEmpty())
-    preferences.language = defaultLanguage();
-  QStringList names;
-  for (const QString& code : availableLanguages())
-    names << languageName(code);
-  ui::PreferencesDialog dialog(preferences, availableLanguages(), names, this);
-  if (dialog.exec() != QDialog::Accepted)
-    return;
-  const ui::Preferences chosen = dialog.preferences();
-  if (chosen.language != preferences.language)
-    QMessageBox::information(this, tr("Language"), tr("The new language is used from the next start."));
-  chosen.save();
-  applyPreferences(chosen);
+  ui::exportReviewVideo(reviewSource(), *this,
+                        [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); });
 }
 
 QWidget* MainWindow::centralArea()
@@ -607,300 +384,18 @@ QWidget* MainWindow::centralArea()
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
   m_headMarkersBar = new ui::HeadMarkersProposalBar(*m_document, area);
-  connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::acceptRequested, this,
-          [this](const std::vector<Eigen::Index>& markers) {
-            if (changeReferenceMarkers(markers))
-              statusBar()->showMessage(tr("Head markers set; Edit ▸ Undo takes them back"), ui::kStatusMessageMs);
-          });
-  connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::chooseRequested, this, &MainWindow::editReferenceMarkers);
+  connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::acceptRequested, m_referenceMarkers,
+          &ui::ReferenceMarkerActions::acceptProposed);
+  connect(m_headMarkersBar, &ui::HeadMarkersProposalBar::chooseRequested, m_referenceMarkers,
+          &ui::ReferenceMarkerActions::edit);
   layout->addWidget(m_headMarkersBar);
   layout->addWidget(m_view3d, 1);
   return area;
 }
 
-bool MainWindow::changeReferenceMarkers(std::vector<Eigen::Index> markers)
-{
-  std::sort(markers.begin(), markers.end());
-  markers.erase(std::unique(markers.begin(), markers.end()), markers.end());
-  if (markers == m_document->referenceMarkers())
-    return false;  // an edit that changes nothing pushes nothing
-  m_document->undoStack()->push(new ui::SetReferenceMarkersCommand(*m_document, std::move(markers)));
-  return true;
-}
-
-void MainWindow::editReferenceMarkers()
-{
-  if (!m_document->hasTake())
-    return;
-  ui::ReferenceMarkersDialog dialog(*m_document, this);
-  if (dialog.exec() != QDialog::Accepted)
-    return;
-  if (!changeReferenceMarkers(dialog.chosen()))
-    statusBar()->showMessage(tr("Reference markers unchanged"), ui::kStatusMessageMs);
-}
-
-void MainWindow::setSelectedAsReferenceMarkers()
-{
-  if (m_document->selection().size() < 3) {
-    statusBar()->showMessage(tr("Select at least three head-mounted markers first"), ui::kStatusMessageMs);
-    return;
-  }
-  if (!changeReferenceMarkers(m_document->selection()))
-    statusBar()->showMessage(tr("The selected markers already are the reference markers"), ui::kStatusMessageMs);
-}
-
-void MainWindow::createMarkerMenu()
-{
-  QMenu* markers = menuBar()->addMenu(tr("&Marker"));
-  markers->addAction(tr("&Delete Markers"), QKeySequence(Qt::CTRL | Qt::Key_Delete), m_markerEdits,
-                     &ui::MarkerEditActions::deleteMarkers)
-      ->setToolTip(tr("Remove the selected markers from the take (undoable)"));
-  markers->addAction(tr("Add &Averaged Marker…"), QKeySequence(Qt::CTRL | Qt::Key_M), m_markerEdits,
-                     &ui::MarkerEditActions::addAveragedMarker)
-      ->setToolTip(tr("A virtual marker at the mean of the selected markers"));
-  markers->addAction(tr("&Swap Over Range"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X), m_markerEdits,
-                     &ui::MarkerEditActions::swapOverRange)
-      ->setToolTip(tr("Exchange the data of the two selected markers over the selected frame range"));
-  markers->addSeparator();
-  QAction* reference = markers->addAction(tr("&Reference Markers…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R),
-                                          this, &MainWindow::editReferenceMarkers);
-  reference->setObjectName(QStringLiteral("referenceMarkersAction"));
-  reference->setToolTip(tr("The head-mounted markers that head stabilization, layout planning and the face mesh use"));
-  markers->addAction(tr("Set Selected as Reference &Markers"), this, &MainWindow::setSelectedAsReferenceMarkers)
-      ->setToolTip(tr("Make the selected markers (at least three) the take's reference markers (undoable)"));
-  markers->addSeparator();
-  markers->addAction(tr("&Hide Selected"), QKeySequence(Qt::Key_H), this,
-                     [this] { m_document->setHidden(m_document->selection(), true); });
-  markers->addAction(tr("Show &All"), QKeySequence(Qt::SHIFT | Qt::Key_H), this,
-                     [this] { m_document->showAllMarkers(); });
-}
-
-void MainWindow::createLabelMenu()
-{
-  QMenu* label = menuBar()->addMenu(tr("&Label"));
-  label->addAction(tr("&Track and Label"), QKeySequence(Qt::CTRL | Qt::Key_T), m_labelling,
-                   &ui::LabellingActions::trackAndLabel)
-      ->setToolTip(tr("Re-track the unlabelled points and give them the labels of the take's labelled markers"));
-  label->addAction(tr("Fix &Swaps…"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F), m_labelling,
-                   &ui::LabellingActions::reviewSwaps)
-      ->setToolTip(tr("Find frames where two labels exchange and repair the ones you accept"));
-  QAction* assign = label->addAction(tr("&Assign Label by Clicking"));
-  assign->setShortcut(QKeySequence(Qt::Key_A));
-  assign->setCheckable(true);
-  assign->setToolTip(tr("Select a marker in the table, then click a point in the 3D view to give it that label"));
-  connect(assign, &QAction::toggled, this, [this](bool on) {
-    m_view3d->setLabellingMode(on);
-    statusBar()->showMessage(on ? tr("Labelling: select a marker in the table, then click the point that is it")
-                                : QString(),
-                             on ? 0 : 1);
-  });
-  connect(m_view3d, &ui::MarkerView3d::labelPointClicked, m_markerEdits, &ui::MarkerEditActions::assignLabel);
-}
-
 QString MainWindow::openFile(const QString& path, bool quiet)
 {
-  // Read on a worker (a long take takes seconds); the UI thread only installs the result.
-  ui::TakeDocument::ReadResult read;
-  QString error;
-  try {
-    if (!ui::runJob(this, tr("Opening %1…").arg(QFileInfo(path).fileName()),
-                    [&](const JobControl&) { read = ui::TakeDocument::read(path); }))
-      return tr("Cancelled");
-    m_document->open(std::move(read), path);
-  } catch (const std::exception& e) {  // a failed read leaves the open take as it was
-    error = QString::fromStdString(e.what());
-  }
-  if (!error.isEmpty()) {
-    if (!quiet)
-      QMessageBox::critical(this, tr("Cannot open file"), error);
-    return error;
-  }
-  m_confirmedOverwrite = false;
-  addRecent(path);
-  QSettings().setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
-  showReadWarnings(!quiet && m_document->isIncomplete());
-  updateTitle();
-  return {};
-}
-
-void MainWindow::showReadWarnings(bool askToAcknowledge)
-{
-  const auto& warnings = m_document->loadWarnings();
-  m_warningsButton->setVisible(!warnings.empty());
-  m_warningsButton->setText(m_document->isIncomplete()
-                                ? tr("⚠ Incomplete: %n warning(s)", nullptr, static_cast<int>(warnings.size()))
-                                : tr("⚠ %n warning(s)", nullptr, static_cast<int>(warnings.size())));
-  m_warningsButton->setToolTip(tr("Show every warning from reading the file"));
-  if (askToAcknowledge)
-    openReadWarnings();
-}
-
-void MainWindow::openReadWarnings()
-{
-  auto toList = [](const std::vector<std::string>& texts) {
-    QStringList list;
-    for (const std::string& text : texts)
-      list << QString::fromStdString(text);
-    return list;
-  };
-  ui::ReadWarningsDialog dialog(QFileInfo(m_document->filePath()).fileName(), toList(m_document->loadWarnings()),
-                                toList(m_document->dataLossWarnings()), this);
-  dialog.exec();
-}
-
-void MainWindow::openDialog()
-{
-  if (!confirmDiscard())
-    return;
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open take"), QSettings().value("lastFolder").toString(),
-                                                    tr(kOpenFilter));
-  if (!path.isEmpty())
-    openFile(path);
-}
-
-bool MainWindow::save()
-{
-  const QString path = m_document->filePath();
-  if (path.isEmpty())
-    return saveAs();
-  if (!m_confirmedOverwrite) {
-    const auto answer = QMessageBox::question(
-        this, tr("Overwrite the original?"),
-        tr("Save over %1? The original capture is replaced by the edited take.").arg(QFileInfo(path).fileName()),
-        QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
-    if (answer != QMessageBox::Save)
-      return false;
-    m_confirmedOverwrite = true;
-  }
-  const QString error = m_document->save(path);
-  if (!error.isEmpty())
-    QMessageBox::critical(this, tr("Cannot save"), error);
-  return error.isEmpty();
-}
-
-bool MainWindow::saveAs()
-{
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save take as"), m_document->filePath(),
-                                                    tr("C3D (*.c3d);;TRC (*.trc)"));
-  if (path.isEmpty())
-    return false;
-  const QString error = m_document->save(path);
-  if (!error.isEmpty()) {
-    QMessageBox::critical(this, tr("Cannot save"), error);
-    return false;
-  }
-  m_confirmedOverwrite = true;  // the user chose this file
-  addRecent(path);
-  showSavedMessage(tr("Saved %1").arg(path), path);
-  return true;
-}
-
-void MainWindow::showSavedMessage(const QString& message, const QString& path)
-{
-  const std::string leftOut = leftOutOnWriting(m_document->take(), formatFromPath(path.toStdString()));
-  if (leftOut.empty())
-    statusBar()->showMessage(message, ui::kStatusMessageMs);
-  else  // data the file does not hold: shown longer, and not only in passing
-    statusBar()->showMessage(tr("%1 — note: %2").arg(message, QString::fromStdString(leftOut)),
-                             3 * ui::kStatusMessageMs);
-}
-
-QString MainWindow::saveCleaningPreset(const QString& path, bool withHeadMarkers)
-{
-  CleanOptions options = m_cleaning->cleanOptions();
-  if (withHeadMarkers)
-    options.stabilizeLabels = m_document->referenceLabels();
-  try {
-    writeFileAtomically(path.toStdString(), cleanPresetJson(options));
-  } catch (const std::exception& e) {
-    return QString::fromStdString(e.what());
-  }
-  return {};
-}
-
-void MainWindow::saveCleaningPresetDialog()
-{
-  QFileDialog dialog(this, tr("Save Cleaning Preset"), QFileInfo(m_document->filePath()).absolutePath(),
-                     tr("Cleaning presets (*.json)"));
-  dialog.setAcceptMode(QFileDialog::AcceptSave);
-  dialog.setDefaultSuffix(QStringLiteral("json"));
-  dialog.setOption(QFileDialog::DontUseNativeDialog);  // a native dialog takes no extra box
-  auto* withHeadMarkers = new QCheckBox(tr("Include this take's head markers (%1)")
-                                            .arg(m_document->referenceMarkers().empty()
-                                                     ? tr("none chosen")
-                                                     : joinLabels(m_document->referenceLabels())),
-                                        &dialog);
-  withHeadMarkers->setObjectName(QStringLiteral("includeHeadMarkers"));
-  withHeadMarkers->setToolTip(tr("A preset carries cleaning options; head markers belong to a take. Include them "
-                                 "only when every take the preset is for names its head markers the same way: "
-                                 "a take without them then fails with that reason."));
-  withHeadMarkers->setEnabled(!m_document->referenceMarkers().empty());
-  if (auto* grid = qobject_cast<QGridLayout*>(dialog.layout()))
-    grid->addWidget(withHeadMarkers, grid->rowCount(), 0, 1, -1);
-  if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
-    return;
-  const QString path = dialog.selectedFiles().front();
-  const QString error = saveCleaningPreset(path, withHeadMarkers->isChecked());
-  if (!error.isEmpty())
-    QMessageBox::warning(this, tr("Save Cleaning Preset"), tr("The preset was not saved: %1").arg(error));
-  else
-    statusBar()->showMessage(tr("Saved the cleaning preset %1").arg(path), ui::kStatusMessageMs);
-}
-
-QString MainWindow::loadCleaningPreset(const QString& path)
-{
-  CleanOptions options;
-  try {
-    options = readCleanPreset(path.toStdString());
-  } catch (const std::exception& e) {
-    return QString::fromStdString(e.what());
-  }
-  const QStringList off = m_cleaning->loadCleanOptions(options);
-  showDock(QStringLiteral("cleaningDock"));
-  QString message = tr("Loaded the cleaning preset %1 into the Cleaning panel; nothing changes the take until Apply")
-                        .arg(QFileInfo(path).fileName());
-  if (!off.isEmpty())
-    message += tr("; it turns off %1 (left as they were)").arg(off.join(QStringLiteral(", ")));
-  if (!options.stabilizeLabels.empty())
-    message += tr("; its head markers (%1) are not this take's: the take keeps its own")
-                   .arg(joinLabels(options.stabilizeLabels));
-  statusBar()->showMessage(message, 2 * ui::kStatusMessageMs);
-  return {};
-}
-
-void MainWindow::loadCleaningPresetDialog()
-{
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load Cleaning Preset"),
-                                                    QFileInfo(m_document->filePath()).absolutePath(),
-                                                    tr("Cleaning presets (*.json);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  if (const QString error = loadCleaningPreset(path); !error.isEmpty())
-    QMessageBox::warning(this, tr("Load Cleaning Preset"), tr("The preset was not loaded: %1").arg(error));
-}
-
-void MainWindow::exportDialog()
-{
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export"), QFileInfo(m_document->filePath()).absolutePath(),
-                                                    tr("C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)"));
-  if (path.isEmpty())
-    return;
-  const QString error = m_document->save(path, false);
-  if (!error.isEmpty())
-    QMessageBox::critical(this, tr("Cannot export"), error);
-  else
-    showSavedMessage(tr("Exported %1").arg(path), path);
-}
-
-bool MainWindow::confirmDiscard()
-{
-  if (!m_document->isModified())
-    return true;
-  const auto answer = QMessageBox::warning(this, tr("Unsaved edits"), tr("The take has unsaved edits. Save them?"),
-                                           QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-  if (answer == QMessageBox::Save)
-    return save();
-  return answer == QMessageBox::Discard;
+  return m_files->open(path, quiet);
 }
 
 void MainWindow::updateTitle()
@@ -912,60 +407,15 @@ void MainWindow::updateTitle()
   setWindowModified(m_document->isModified());
 }
 
-void MainWindow::addRecent(const QString& path)
-{
-  const QString absolute = QFileInfo(path).absoluteFilePath();
-  m_recent.removeAll(absolute);
-  m_recent.prepend(absolute);
-  while (m_recent.size() > kMaxRecent)
-    m_recent.removeLast();
-  QSettings().setValue(QStringLiteral("recentFiles"), m_recent);
-  updateRecentMenu();
-}
-
-void MainWindow::updateRecentMenu()
-{
-  m_recentMenu->clear();
-  for (const QString& path : m_recent)
-    m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] {
-      if (confirmDiscard())
-        openFile(path);
-    })->setToolTip(path);
-  m_recentMenu->setEnabled(!m_recent.isEmpty());
-}
-
 bool MainWindow::offerRecovery()
 {
-  for (const ui::RecoveryFile& file : ui::Autosave::leftovers()) {
-    const QString name =
-        file.originalPath.isEmpty() ? tr("an untitled take") : QFileInfo(file.originalPath).fileName();
-    const auto answer = QMessageBox::question(
-        this, tr("Recover unsaved edits?"),
-        tr("Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?")
-            .arg(name, QLocale().toString(file.written, QLocale::ShortFormat)),
-        QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
-    if (answer == QMessageBox::Ignore)
-      continue;  // ask again next time
-    if (answer == QMessageBox::Discard) {
-      ui::Autosave::remove(file);
-      continue;
-    }
-    try {
-      m_document->setTake(readTake(file.path.toStdString()), file.originalPath);
-    } catch (const std::exception& e) {
-      QMessageBox::critical(this, tr("Cannot recover"), QString::fromStdString(e.what()));
-      continue;
-    }
-    m_document->markModified();
-    m_confirmedOverwrite = false;
-    restoreSession(file.session);
-    // Our own recovery copy first, then the old one goes: the edits are never only in memory.
-    if (m_autosave->saveNow().isEmpty())
-      ui::Autosave::remove(file);
-    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(name), 2 * ui::kStatusMessageMs);
-    return true;
-  }
-  return false;
+  const std::optional<QString> name = ui::offerRecovery(*m_document, *m_autosave, *this, [this](const QVariantMap& session) {
+    m_files->forgetOverwriteConfirmation();
+    restoreSession(session);
+  });
+  if (name)
+    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(*name), 2 * ui::kStatusMessageMs);
+  return name.has_value();
 }
 
 QVariantMap MainWindow::recoverySession() const
@@ -1016,21 +466,6 @@ int MainWindow::selectLabels(const QStringList& labels)
   return found;
 }
 
-void MainWindow::syncTableSelection()
-{
-  m_syncingSelection = true;
-  QItemSelection selection;
-  for (Eigen::Index m : m_document->selection()) {
-    const QModelIndex source = m_tableModel->index(static_cast<int>(m), 0);
-    const QModelIndex row = m_proxy->mapFromSource(source);
-    selection.select(row, row.siblingAtColumn(ui::MarkerTableModel::ColumnCount - 1));
-  }
-  m_table->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
-  if (!m_document->selection().empty())
-    m_table->scrollTo(m_proxy->mapFromSource(m_tableModel->index(static_cast<int>(m_document->selection().front()), 0)));
-  m_syncingSelection = false;
-}
-
 void MainWindow::closeEvent(QCloseEvent* event)
 {
   if (ui::jobRunning()) {  // the worker reads the document: it must end before the window does
@@ -1038,7 +473,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     event->ignore();
     return;
   }
-  if (!confirmDiscard()) {
+  if (!m_files->confirmDiscard()) {
     event->ignore();
     return;
   }
@@ -1055,19 +490,16 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 void MainWindow::dropEvent(QDropEvent* event)
 {
   const auto urls = event->mimeData()->urls();
-  if (!urls.isEmpty() && urls.front().isLocalFile() && confirmDiscard())
+  if (!urls.isEmpty() && urls.front().isLocalFile() && m_files->confirmDiscard())
     openFile(urls.front().toLocalFile());
 }
 
 void MainWindow::readSettings()
 {
   QSettings settings;
-  m_recent = settings.value(QStringLiteral("recentFiles")).toStringList();
   if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
     applyFirstRunLayout();
   restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
-  updateRecentMenu();
-  applyPreferences(ui::Preferences::load());
   // The layout is saved shortly after every change (dock moved, shown, resized), not only on a
   // clean quit, so a crash keeps it.
   m_layoutSaver = new QTimer(this);
@@ -1079,6 +511,11 @@ void MainWindow::readSettings()
     connect(dock, &QDockWidget::visibilityChanged, m_layoutSaver, qOverload<>(&QTimer::start));
     connect(dock, &QDockWidget::topLevelChanged, m_layoutSaver, qOverload<>(&QTimer::start));
   }
+}
+
+QTableView* MainWindow::markerTable() const
+{
+  return m_table;
 }
 
 ui::ManualWindow* MainWindow::showManual()

@@ -13,19 +13,20 @@
 
 class QAction;
 class QDockWidget;
-class QLabel;
 class QMenu;
-class QSortFilterProxyModel;
 class QTableView;
 class QTimer;
-class QToolButton;
 
 namespace mocap::ui {
 class Autosave;
+class CleaningPresetActions;
+class MarkerTablePanel;
+class ReadWarningsButton;
+class TakeFileActions;
+class ReferenceMarkerActions;
 class HeadStabilizedViewAction;
 class LabellingActions;
 class MarkerEditActions;
-struct Preferences;
 class CleaningPanel;
 class BlendshapeSolvePanel;
 class ReferenceVideoPanel;
@@ -36,7 +37,6 @@ class HeadMarkersProposalBar;
 class CurveView;
 class LayoutPlanningPanel;
 class ManualWindow;
-class MarkerTableModel;
 class MarkerView3d;
 struct ReviewSource;
 class StudioSession;
@@ -65,7 +65,7 @@ public:
   /// The open take's session: the document and the models the docks observe.
   [[nodiscard]] ui::StudioSession& session() { return *m_session; }
   [[nodiscard]] ui::MarkerView3d* markerView() const { return m_view3d; }
-  [[nodiscard]] QTableView* markerTable() const { return m_table; }
+  [[nodiscard]] QTableView* markerTable() const;
   [[nodiscard]] ui::CurveView* curveView() const { return m_curves; }
   [[nodiscard]] ui::TimelineWidget* timeline() const { return m_timeline; }
   [[nodiscard]] ui::CleaningPanel* cleaningPanel() const { return m_cleaning; }
@@ -102,22 +102,12 @@ public:
   /// one was recovered.
   bool offerRecovery();
   [[nodiscard]] ui::Autosave* autosave() const { return m_autosave; }
-  /// Marker ▸ Reference Markers…: the one editor of the take's head reference markers; pushes
-  /// one undoable command when the set changed.
-  void editReferenceMarkers();
-  /// Pushes SetReferenceMarkersCommand unless `markers` is the current set. Returns whether it did.
-  bool changeReferenceMarkers(std::vector<Eigen::Index> markers);
+  /// The Marker menu's edits of the take's head reference markers (the one editor, undoable).
+  [[nodiscard]] ui::ReferenceMarkerActions* referenceMarkerActions() const { return m_referenceMarkers; }
   /// The Label menu's Track and Label and swap search (on workers, undoable).
   [[nodiscard]] ui::LabellingActions* labellingActions() const { return m_labelling; }
-  /// Writes the Cleaning dock's settings as a cleaning preset (the JSON `mocap batch --preset`
-  /// and `mocap clean --preset` read), atomically. The take's head markers go in only
-  /// `withHeadMarkers` (a preset carries options; the markers are this take's). Returns the error
-  /// message, empty on success.
-  QString saveCleaningPreset(const QString& path, bool withHeadMarkers = false);
-  /// Reads a cleaning preset into the Cleaning dock's steps (CleaningPanel::loadCleanOptions):
-  /// shown in the panels and their previews, the take untouched until Apply. Returns the error
-  /// message (the panels untouched), empty on success.
-  QString loadCleaningPreset(const QString& path);
+  /// File ▸ Save and Load Cleaning Preset on the Cleaning dock's settings.
+  [[nodiscard]] ui::CleaningPresetActions* cleaningPresets() const { return m_cleaningPresets; }
   /// The bar asking to accept the head markers proposed for a take without any.
   [[nodiscard]] ui::HeadMarkersProposalBar* headMarkersBar() const { return m_headMarkersBar; }
 
@@ -129,38 +119,10 @@ protected:
   void dropEvent(QDropEvent* event) override;
 
 private:
-  /// A checkable action in `menu`, off unless QSettings' `settingsKey` says on; `apply` runs with the
-  /// restored state now and with each change, which is remembered.
-  QAction* addRememberedToggle(QMenu* menu, const QString& text, const QString& settingsKey,
-                               const std::function<void(bool)>& apply);
   void createActions();
   void createDocks();
-  void openDialog();
-  bool save();
-  bool saveAs();
-  void exportDialog();
-  /// `message` in the status bar, with what the file at `path` leaves out (leftOutOnWriting), if
-  /// anything, shown longer.
-  void showSavedMessage(const QString& message, const QString& path);
-  /// File ▸ Export Animation: BVH of the markers, and the face mesh deformed by the take when
-  /// one is loaded.
-  void exportAnimation();
-  /// File ▸ Save Cleaning Preset…: asks for the file (with an "include head markers" box, off),
-  /// then saveCleaningPreset.
-  void saveCleaningPresetDialog();
-  /// File ▸ Load Cleaning Preset…: asks for the file, then loadCleaningPreset.
-  void loadCleaningPresetDialog();
   /// The 3D view with the head markers bar above it.
   [[nodiscard]] QWidget* centralArea();
-  void createMarkerMenu();
-  void createLabelMenu();
-  void editPreferences();
-  void applyPreferences(const ui::Preferences& preferences);
-  void changePreferences(const std::function<void(ui::Preferences&)>& change);
-  /// Lists the reader's warnings in the status bar (a button opening all of them); with
-  /// `askToAcknowledge`, opens the dialog at once (data is missing).
-  void showReadWarnings(bool askToAcknowledge);
-  void openReadWarnings();
   /// Whether a dock's content scrolls (panels) or takes the dock's size (views that zoom and pan, panels
   /// that scroll themselves).
   enum class DockContent
@@ -179,12 +141,7 @@ private:
   /// The face mesh, its binding and the window layout, kept with every autosave.
   [[nodiscard]] QVariantMap recoverySession() const;
   void restoreSession(const QVariantMap& session);
-  void setSelectedAsReferenceMarkers();
-  bool confirmDiscard();
   void updateTitle();
-  void updateRecentMenu();
-  void addRecent(const QString& path);
-  void syncTableSelection();
   void readSettings();
   void writeSettings() const;
 
@@ -195,6 +152,9 @@ private:
   ui::HeadMarkersProposalBar* m_headMarkersBar = nullptr;
   ui::MarkerEditActions* m_markerEdits = nullptr;
   ui::LabellingActions* m_labelling = nullptr;
+  ui::ReferenceMarkerActions* m_referenceMarkers = nullptr;
+  ui::CleaningPresetActions* m_cleaningPresets = nullptr;
+  ui::TakeFileActions* m_files = nullptr;
   ui::CurveView* m_curves = nullptr;
   ui::TimelineWidget* m_timeline = nullptr;
   ui::CleaningPanel* m_cleaning = nullptr;
@@ -208,23 +168,12 @@ private:
   ui::GapListPanel* m_gapList = nullptr;
   ui::ManualWindow* m_manual = nullptr;  // created on first use
   QDockWidget* m_faceMeshDock = nullptr;
-  ui::MarkerTableModel* m_tableModel = nullptr;
-  QSortFilterProxyModel* m_proxy = nullptr;
-  QTableView* m_table = nullptr;
-  QMenu* m_recentMenu = nullptr;
+  ui::MarkerTablePanel* m_table = nullptr;
   QMenu* m_viewMenu = nullptr;
-  QAction* m_yUp = nullptr;
-  QAction* m_zUp = nullptr;
-  QAction* m_trails = nullptr;
   ui::HeadStabilizedViewAction* m_headStabilizedView = nullptr;
-  QLabel* m_status = nullptr;
-  std::pair<Eigen::Index, Eigen::Index> m_statusFitsTake{-1, -1};  // frames, markers m_status is sized for
-  QToolButton* m_warningsButton = nullptr;
+  ui::ReadWarningsButton* m_warningsButton = nullptr;
   QTimer* m_layoutSaver = nullptr;
   bool m_firstRun = false;  // saves the window layout shortly after every change
-  QStringList m_recent;
-  bool m_syncingSelection = false;
-  bool m_confirmedOverwrite = false;
 };
 
 } // namespace mocap::studio

@@ -4,6 +4,7 @@
 #include "../core/test_support.h"
 
 #include "main_window.h"
+#include "actions/cleaning_preset_actions.h"
 #include "sample_window.h"
 #include "panels/cleaning_panel.h"
 #include "panels/gap_fill_step.h"
@@ -38,7 +39,7 @@ TEST(CleaningPreset, TheStudioSavesItsCleaningSettingsAsThePresetTheBatchReads)
 
   test::TempDir dir;
   const QString path = QString::fromStdString(dir.file("studio.json").string());
-  ASSERT_EQ(window->saveCleaningPreset(path), QString());
+  ASSERT_EQ(window->cleaningPresets()->save(path), QString());
   const CleanOptions preset = readCleanPreset(path.toStdString());
   ASSERT_TRUE(preset.fill && preset.spikes && preset.smooth);  // the dock's three pipeline steps
   EXPECT_TRUE(preset.fill->extrapolate);
@@ -49,10 +50,10 @@ TEST(CleaningPreset, TheStudioSavesItsCleaningSettingsAsThePresetTheBatchReads)
   EXPECT_EQ(readFileBytes(dir.file("studio.json")), cleanPresetJson(preset));
   // Head markers are the take's, not an option: only a tick puts them in (by label).
   EXPECT_TRUE(preset.stabilizeLabels.empty());
-  ASSERT_EQ(window->saveCleaningPreset(path, true), QString());
+  ASSERT_EQ(window->cleaningPresets()->save(path, true), QString());
   EXPECT_EQ(readCleanPreset(path.toStdString()).stabilizeLabels, window->document().referenceLabels());
 
-  EXPECT_NE(window->saveCleaningPreset(QString::fromStdString((dir.file("missing") / "x.json").string())), QString());
+  EXPECT_NE(window->cleaningPresets()->save(QString::fromStdString((dir.file("missing") / "x.json").string())), QString());
   EXPECT_FALSE(std::filesystem::exists(dir.file("missing")));
 }
 
@@ -97,7 +98,7 @@ TEST(CleaningPreset, LoadSetsThePanelsOptionsAndLeavesTheTakeAlone)
                                    "extrapolate": true, "min_valid_fraction": 0.4},
                           "smooth": {"method": "butterworth", "cutoff_hz": 9}})");
   CleanOptions wanted = readCleanPreset(dir.file("p.json"));
-  ASSERT_EQ(window->loadCleaningPreset(QString::fromStdString(dir.file("p.json").string())), QString());
+  ASSERT_EQ(window->cleaningPresets()->load(QString::fromStdString(dir.file("p.json").string())), QString());
   const CleanOptions shown = window->cleaningPanel()->cleanOptions();
   ASSERT_TRUE(shown.fill && shown.smooth);
   EXPECT_EQ(shown.fill->method, wanted.fill->method);
@@ -115,7 +116,7 @@ TEST(CleaningPreset, LoadSetsThePanelsOptionsAndLeavesTheTakeAlone)
   EXPECT_EQ(document.referenceLabels(), reference);
   // A file that is no preset is an error, and the panels keep what they show.
   writeFileAtomically(dir.file("bad.json"), R"({"fill": {"max_gap_s": 1}})");
-  EXPECT_NE(window->loadCleaningPreset(QString::fromStdString(dir.file("bad.json").string())), QString());
+  EXPECT_NE(window->cleaningPresets()->load(QString::fromStdString(dir.file("bad.json").string())), QString());
   EXPECT_DOUBLE_EQ(window->cleaningPanel()->cleanOptions().fill->maxGapSeconds, 1.5);
 }
 

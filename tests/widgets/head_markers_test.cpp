@@ -8,6 +8,7 @@
 #include "document/autosave.h"
 #include "document/take_document.h"
 #include "main_window.h"
+#include "actions/reference_marker_actions.h"
 #include "panels/head_markers_proposal_bar.h"
 #include "panels/reference_markers_row.h"
 #include "sample_window.h"
@@ -40,7 +41,7 @@ protected:
     std::vector<Eigen::Index> markers;
     for (const std::string& label : kChosen)
       markers.push_back(*doc().take().markerIndex(label));
-    ASSERT_TRUE(window->changeReferenceMarkers(markers));
+    ASSERT_TRUE(window->referenceMarkerActions()->change(markers));
   }
 };
 

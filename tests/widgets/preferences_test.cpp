@@ -1,6 +1,7 @@
 // Preferences: remembered across runs, and absurd hand-edited values are clamped, never used.
 #include "dialogs/preferences_dialog.h"
 #include "views/display_units.h"
+#include "views/sample_colors.h"
 
 #include <QPushButton>
 #include <QSettings>

@@ -6,74 +6,18 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QPushButton>
-#include <QSettings>
+#include <QMessageBox>
 #include <QSpinBox>
-
-#include "mocap/base/length_unit.h"
 
 #include <algorithm>
 
 namespace mocap::ui {
 
 namespace {
-constexpr double kMinMarkerPercent = 0.1, kMaxMarkerPercent = 10.0;
-constexpr int kMaxTrailFrames = 1000;
-constexpr int kMaxAutosaveMinutes = 60;
-
-// The settings key of each colour, in the order the dialog lists them.
-const std::pair<const char*, QColor ColorScheme::*> kColorKeys[] = {
-    {"original", &ColorScheme::original}, {"filled", &ColorScheme::filled},
-    {"smoothed", &ColorScheme::smoothed}, {"edited", &ColorScheme::edited},
-    {"selection", &ColorScheme::selection}, {"flagged", &ColorScheme::flagged},
-    {"background", &ColorScheme::background}};
+constexpr double kMinMarkerPercent = Preferences::kMinMarkerPercent, kMaxMarkerPercent = Preferences::kMaxMarkerPercent;
+constexpr int kMaxTrailFrames = Preferences::kMaxTrailFrames;
+constexpr int kMaxAutosaveMinutes = Preferences::kMaxAutosaveMinutes;
 } // namespace
-
-Preferences Preferences::load()
-{
-  const QSettings settings;
-  Preferences p;
-  p.markerSizePercent = settings.value(QStringLiteral("view/markerSizePercent"), p.markerSizePercent).toDouble();
-  p.trailFrames = settings.value(QStringLiteral("view/trailFrames"), p.trailFrames).toInt();
-  p.upAxis = settings.value(QStringLiteral("view/upAxis"), p.upAxis).toInt();
-  p.language = settings.value(QStringLiteral("language")).toString();
-  p.autosaveMinutes = settings.value(QStringLiteral("autosaveMinutes"), p.autosaveMinutes).toInt();
-  p.displayUnit = settings.value(QStringLiteral("view/displayUnit"), p.displayUnit).toString();
-  for (const auto& [key, member] : kColorKeys)
-    p.colors.*member = QColor(settings.value(QStringLiteral("view/colors/") + QLatin1String(key),
-                                             (p.colors.*member).name()).toString());
-  return p.clamped();
-}
-
-void Preferences::save() const
-{
-  QSettings settings;
-  settings.setValue(QStringLiteral("view/markerSizePercent"), markerSizePercent);
-  settings.setValue(QStringLiteral("view/trailFrames"), trailFrames);
-  settings.setValue(QStringLiteral("view/upAxis"), upAxis);
-  if (!language.isEmpty())
-    settings.setValue(QStringLiteral("language"), language);
-  settings.setValue(QStringLiteral("autosaveMinutes"), autosaveMinutes);
-  settings.setValue(QStringLiteral("view/displayUnit"), displayUnit);
-  for (const auto& [key, member] : kColorKeys)
-    settings.setValue(QStringLiteral("view/colors/") + QLatin1String(key), (colors.*member).name());
-}
-
-Preferences Preferences::clamped() const
-{
-  Preferences p = *this;
-  p.markerSizePercent = std::clamp(p.markerSizePercent, kMinMarkerPercent, kMaxMarkerPercent);
-  if (!(p.markerSizePercent == p.markerSizePercent))  // NaN from a hand-edited file
-    p.markerSizePercent = Preferences{}.markerSizePercent;
-  p.trailFrames = std::clamp(p.trailFrames, 0, kMaxTrailFrames);
-  p.upAxis = p.upAxis == 1 ? 1 : 2;
-  p.autosaveMinutes = std::clamp(p.autosaveMinutes, 1, kMaxAutosaveMinutes);
-  if (!parseLengthUnit(p.displayUnit.toStdString()))
-    p.displayUnit = Preferences{}.displayUnit;
-  for (const auto& [key, member] : kColorKeys)
-    if (!(p.colors.*member).isValid())  // a hand-edited name Qt cannot read
-      p.colors.*member = ColorScheme{}.*member;
-  return p;
-}
 
 PreferencesDialog::PreferencesDialog(const Preferences& preferences, const QStringList& languageCodes,
                                      const QStringList& languageNames, QWidget* parent)
@@ -179,6 +123,28 @@ void PreferencesDialog::updateColorButtons()
                               .arg(color.name(), color.lightnessF() > 0.5f ? QStringLiteral("black")
                                                                           : QStringLiteral("white")));
   }
+}
+
+void sayLanguageIsUsedFromTheNextStart(QWidget& parent)
+{
+  QMessageBox::information(&parent, PreferencesDialog::tr("Language"),
+                           PreferencesDialog::tr("The new language is used from the next start."));
+}
+
+bool editPreferences(StudioOptions& options, const QStringList& languageCodes, const QStringList& languageNames,
+                     const QString& fallbackLanguage, QWidget* parent)
+{
+  Preferences preferences = options.preferences();
+  if (preferences.language.isEmpty())
+    preferences.language = fallbackLanguage;
+  PreferencesDialog dialog(preferences, languageCodes, languageNames, parent);
+  if (dialog.exec() != QDialog::Accepted)
+    return false;
+  const Preferences chosen = dialog.preferences();
+  if (chosen.language != preferences.language && parent)
+    sayLanguageIsUsedFromTheNextStart(*parent);
+  options.setPreferences(chosen);
+  return true;
 }
 
 } // namespace mocap::ui

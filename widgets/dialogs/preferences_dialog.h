@@ -1,6 +1,6 @@
 #pragma once
 
-#include "views/sample_colors.h"
+#include "document/studio_options.h"
 
 #include <QDialog>
 #include <QString>
@@ -17,24 +17,7 @@ class QSpinBox;
 
 namespace mocap::ui {
 
-/// The studio's per-user view and safety settings, kept in QSettings.
-struct Preferences
-{
-  double markerSizePercent = 1.2;  ///< sphere radius, % of the take's size
-  int trailFrames = 50;            ///< ± frames of the selected markers' trails (0: off)
-  int upAxis = 2;                  ///< 1 = Y up, 2 = Z up
-  QString language;                ///< code, e.g. "de"; empty: the system's
-  int autosaveMinutes = 1;         ///< interval of the recovery copy
-  QString displayUnit = QStringLiteral("mm");  ///< "mm", "cm" or "m" for read-outs
-  ColorScheme colors;                          ///< sample states, selection, 3D background
-
-  [[nodiscard]] static Preferences load();
-  void save() const;
-  /// Clamps every field into its range (settings files can be edited by hand).
-  [[nodiscard]] Preferences clamped() const;
-};
-
-/// Edits Preferences; the language list is given as (code, name) pairs so the dialog does not
+/// Edits Preferences (the value of StudioOptions); the language list is given as (code, name) pairs so the dialog does not
 /// depend on how the application installs translations.
 class PreferencesDialog final : public QDialog
 {
@@ -63,5 +46,14 @@ private:
   QSpinBox* m_autosave = nullptr;
   QComboBox* m_unit = nullptr;
 };
+
+/// Tells the user that a newly chosen language is used from the next start.
+void sayLanguageIsUsedFromTheNextStart(QWidget& parent);
+
+/// Edit ▸ Preferences: shows the dialog on `options` (with `fallbackLanguage` when none is
+/// chosen yet) and, when accepted, sets the options, which every view follows; says that a new
+/// language is used from the next start. Returns whether it was accepted.
+bool editPreferences(StudioOptions& options, const QStringList& languageCodes, const QStringList& languageNames,
+                     const QString& fallbackLanguage, QWidget* parent);
 
 } // namespace mocap::ui

@@ -5,7 +5,9 @@
 #include "document/layout_plan_model.h"
 #include "document/live_stream.h"
 #include "document/reference_videos.h"
+#include "document/studio_options.h"
 #include "document/take_document.h"
+#include "document/view_state.h"
 
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/io/mesh_io.h"
@@ -27,7 +29,9 @@ struct StudioSession::KeptRig
   QString rigPath;
 };
 
-StudioSession::StudioSession(QObject* parent) : QObject(parent), m_document(new TakeDocument(this))
+StudioSession::StudioSession(QObject* parent)
+    : QObject(parent), m_document(new TakeDocument(this)), m_view(new ViewState(this)),
+      m_options(std::make_unique<StudioOptions>())
 {
   // Connected before the models exist: the previous take's context is gone before they or any
   // view handle the new take.
@@ -45,6 +49,13 @@ StudioSession::StudioSession(QObject* parent) : QObject(parent), m_document(new 
 }
 
 StudioSession::~StudioSession() = default;
+
+void StudioSession::followOptions()
+{
+  m_view->followOptions(*m_options);
+  m_options->keepRig.follow(this, [this](bool keep) { setKeepRig(keep); });
+  m_options->showModelOutputs.follow(this, [this](bool show) { m_document->setShowModelOutputs(show); });
+}
 
 QUndoStack* StudioSession::undoStack() const
 {

@@ -17,7 +17,9 @@ class FaceMeshModel;
 class LayoutPlanModel;
 class LiveStream;
 class ReferenceVideos;
+struct StudioOptions;
 class TakeDocument;
+class ViewState;
 
 /// The studio's composition root for the open take: it owns the TakeDocument (the take, its
 /// undo stack, frame, selection and reference markers), the FaceMeshModel (mesh, binding, rigs)
@@ -49,6 +51,13 @@ public:
   [[nodiscard]] LayoutPlanModel& layoutPlan() const { return *m_layoutPlan; }
   /// The live stream of the take's current frame to engines (View ▸ Live Stream).
   [[nodiscard]] LiveStream& liveStream() const { return *m_liveStream; }
+  /// How the session is shown (up axis, trails, unit, colours, highlight…): the views observe it.
+  [[nodiscard]] ViewState& view() const { return *m_view; }
+  /// The user's remembered settings (read from QSettings when the session is made).
+  [[nodiscard]] StudioOptions& options() const { return *m_options; }
+  /// From now on the session follows the options: the view state, keepRig() and whether the
+  /// document shows model outputs (the studio calls it; a session for a review video does not).
+  void followOptions();
   /// The one undo stack (the document's): take edits, binding edits and weight edits undo in order.
   [[nodiscard]] QUndoStack* undoStack() const;
 
@@ -85,6 +94,8 @@ private:
   ReferenceVideos* m_videos = nullptr;
   LayoutPlanModel* m_layoutPlan = nullptr;
   LiveStream* m_liveStream = nullptr;
+  ViewState* m_view = nullptr;
+  std::unique_ptr<StudioOptions> m_options;
   bool m_keepRig = false;
   std::unique_ptr<KeptRig> m_kept;  // between dropPreviousTake and restoreKeptRig
 };

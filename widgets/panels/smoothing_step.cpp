@@ -1,5 +1,6 @@
 #include "panels/smoothing_step.h"
 
+#include "document/view_state.h"
 #include "views/display_units.h"
 
 #include "mocap/cleaning/position_change.h"
@@ -144,6 +145,12 @@ StepJob SmoothingStep::job() const
                             .arg(static_cast<qlonglong>(take.firstFrame() + change.maxFrame));
     return result;
   };
+}
+
+void SmoothingStep::observe(const ViewState& state)
+{
+  setDisplayUnit(state.displayUnit());
+  connect(&state, &ViewState::displayUnitChanged, this, &SmoothingStep::setDisplayUnit);
 }
 
 } // namespace mocap::ui

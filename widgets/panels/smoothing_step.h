@@ -10,6 +10,8 @@ class QSpinBox;
 
 namespace mocap::ui {
 
+class ViewState;
+
 /// Smoothing (mocap::smoothTake): method and the parameters that method uses — B-spline degree
 /// and knot spacing, Butterworth cutoff, smoothing-spline degree, Savitzky–Golay window. The
 /// summary says how far the samples would move: RMS and largest change of position, in the
@@ -25,6 +27,8 @@ public:
   [[nodiscard]] StepJob job() const override;
   /// Unit of the change the summary reports (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
+  /// Follows `state`'s display unit from now on.
+  void observe(const ViewState& state);
   void addToPreset(CleanOptions& options) const override;
   /// "12 400 samples smoothed on 37 markers".
   [[nodiscard]] QString appliedSummary(const std::vector<SamplePatch>& applied, const StepResult& result) const override;

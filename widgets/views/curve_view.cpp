@@ -3,6 +3,7 @@
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
 #include "document/take_document.h"
+#include "document/view_state.h"
 #include "views/display_units.h"
 #include "views/sample_colors.h"
 #include "views/selection_palette.h"
@@ -83,6 +84,13 @@ void CurveView::setDisplayUnit(LengthUnit unit)
 {
   m_displayUnit = unit;
   update();
+}
+
+void CurveView::observe(const ViewState& state)
+{
+  setDisplayUnit(state.displayUnit());
+  connect(&state, &ViewState::displayUnitChanged, this, &CurveView::setDisplayUnit);
+  connect(&state, &ViewState::colorsChanged, this, qOverload<>(&QWidget::update));
 }
 
 std::optional<std::pair<double, double>> CurveView::valueRange(int axis) const

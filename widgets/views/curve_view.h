@@ -16,6 +16,7 @@
 namespace mocap::ui {
 
 class TakeDocument;
+class ViewState;
 
 /// x, y and z against frame for the selected markers, one strip per axis. Each selected marker
 /// has its own colour (selection_palette.h, shared with the 3D view) named in the legend above
@@ -37,6 +38,8 @@ public:
 
   /// Unit of the value labels (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit);
+  /// Follows `state`'s display unit and colours from now on.
+  void observe(const ViewState& state);
   [[nodiscard]] QSize sizeHint() const override { return {800, 260}; }
   /// Where sample `frame` of `marker` on `axis` (0 x, 1 y, 2 z) was last drawn; nullopt before
   /// the first paint or when it is not drawn.

@@ -1,6 +1,7 @@
 #include "views/marker_view_3d.h"
 
 #include "document/take_document.h"
+#include "document/view_state.h"
 #include "views/camera_framing.h"
 #include "views/display_units.h"
 #include "views/sample_colors.h"
@@ -245,6 +246,28 @@ MarkerView3d::~MarkerView3d() = default;
 double MarkerView3d::takeSize() const
 {
   return diagonalOf(m_document.take(), m_document.currentFrame());
+}
+
+void MarkerView3d::observe(const ViewState& state)
+{
+  setMarkerScale(state.markerScale());
+  setTrailFrames(state.trailFrames());
+  setUpAxis(state.upAxis());
+  setDisplayUnit(state.displayUnit());
+  refreshColors();
+  setLinksVisible(state.linksVisible());
+  setFollowHead(state.followHead());
+  setLayoutHighlight(state.layoutKept(), state.layoutReference());
+  connect(&state, &ViewState::markerScaleChanged, this, &MarkerView3d::setMarkerScale);
+  connect(&state, &ViewState::trailFramesChanged, this, &MarkerView3d::setTrailFrames);
+  connect(&state, &ViewState::upAxisChanged, this, &MarkerView3d::setUpAxis);
+  connect(&state, &ViewState::displayUnitChanged, this, &MarkerView3d::setDisplayUnit);
+  connect(&state, &ViewState::colorsChanged, this, &MarkerView3d::refreshColors);
+  connect(&state, &ViewState::linksVisibleChanged, this, &MarkerView3d::setLinksVisible);
+  connect(&state, &ViewState::followHeadChanged, this, &MarkerView3d::setFollowHead);
+  connect(&state, &ViewState::layoutHighlightChanged, this,
+          [this, &state] { setLayoutHighlight(state.layoutKept(), state.layoutReference()); });
+  connect(&state, &ViewState::cameraResetRequested, this, &MarkerView3d::resetCamera);
 }
 
 void MarkerView3d::setTrailFrames(int frames)
@@ -534,8 +557,9 @@ void MarkerView3d::computeLinks()
 {
   const Take& take = m_document.take();
   m_links.clear();
-  if (!take.empty())
-    m_links = nearestNeighbourLinks(take, mostCompleteFrame(take));
+  const Eigen::Index frame = take.empty() ? -1 : mostCompleteFrame(take);
+  if (frame >= 0)  // none: no marker is ever valid, nothing to link
+    m_links = nearestNeighbourLinks(take, frame);
 }
 
 void MarkerView3d::updateLinks()

@@ -31,6 +31,7 @@ class vtkUnsignedCharArray;
 namespace mocap::ui {
 
 class TakeDocument;
+class ViewState;
 class VtkViewport;
 
 /// The 3D viewport: the current frame's markers as spheres coloured by sample state
@@ -49,6 +50,10 @@ public:
   ~MarkerView3d() override;
 
   [[nodiscard]] VtkViewport* viewport() const { return m_viewport; }
+  /// Draws as `state` says from now on: up axis, marker size, trails, links, head follow, display
+  /// unit, colours and layout highlight, each applied now and on each change, and frames the
+  /// camera when it asks (ViewState::resetCamera). The setters below stay for a view without one.
+  void observe(const ViewState& state);
   /// Frames drawn before and after the current one for each selected marker (0 = no trails).
   void setTrailFrames(int frames);
   [[nodiscard]] int trailFrames() const { return m_trailFrames; }
@@ -60,7 +65,8 @@ public:
   /// Labelling mode: a click on a drawn marker emits labelPointClicked instead of selecting it.
   void setLabellingMode(bool on) { m_labellingMode = on; }
   [[nodiscard]] bool labellingMode() const { return m_labellingMode; }
-  /// Lines between neighbouring markers (each to its nearest three in the most complete frame).
+  /// Lines between neighbouring markers (each to its nearest three in the most complete frame;
+  /// none when no marker is ever valid).
   void setLinksVisible(bool visible);
   [[nodiscard]] bool linksVisible() const { return m_linksVisible; }
   [[nodiscard]] const std::vector<std::pair<Eigen::Index, Eigen::Index>>& links() const { return m_links; }

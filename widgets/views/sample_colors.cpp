@@ -5,24 +5,6 @@
 
 namespace mocap::ui {
 
-namespace {
-ColorScheme& currentScheme()
-{
-  static ColorScheme scheme;
-  return scheme;
-}
-} // namespace
-
-const ColorScheme& colorScheme()
-{
-  return currentScheme();
-}
-
-void setColorScheme(const ColorScheme& scheme)
-{
-  currentScheme() = scheme;
-}
-
 SampleMark primaryMark(SampleState state)
 {
   switch (state.origin()) {
