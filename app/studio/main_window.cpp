@@ -8,6 +8,7 @@
 
 #include "commands/record_step_command.h"
 #include "commands/set_reference_markers_command.h"
+#include "actions/actor_actions.h"
 #include "dialogs/export_dialog.h"
 #include "dialogs/reference_markers_dialog.h"
 #include "dialogs/job_dialog.h"
@@ -456,6 +457,7 @@ void MainWindow::createActions()
 
   createMarkerMenu();
   createLabelMenu();
+  menuBar()->addMenu(m_blendshapeSolve->actors().createMenu(this));
 
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   m_viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view3d, &ui::MarkerView3d::resetCamera);

@@ -1,6 +1,9 @@
 #include "panels/blendshape_solve_panel.h"
 
+#include "actions/actor_actions.h"
+#include "actions/live_link_recording_import.h"
 #include "actions/weight_edit_actions.h"
+#include "dialogs/live_link_open_dialog.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/job_runner.h"
@@ -8,16 +11,14 @@
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
 #include "panels/panel_folder.h"
+#include "panels/retarget_section.h"
 #include "panels/status_line.h"
 #include "views/blendshape_scene.h"
 #include "views/status_timeout.h"
 
 #include "mocap/cleaning/head_angles.h"
-#include "mocap/io/gltf_writer.h"
-#include "mocap/io/live_link_face_csv.h"
-#include "mocap/io/live_link_face_map.h"
 #include "mocap/io/rig_io.h"
-#include "mocap/io/weights_csv_writer.h"
+#include "mocap/io/weight_output.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -67,8 +68,14 @@ SolveRun solveInBackground(const std::shared_ptr<const BlendshapeRig>& rig, cons
   SolveRun run;
   run.options = options;
   try {
-    const BlendshapeSolver solver(*rig, binding, take, options);
-    run.result = solver.solve(take, {}, control);
+    std::optional<Take> inActorUnits;  // an actor's neutral is in its own units, as `mocap solve --actor` converts
+    if (options.actor && take.units() != options.actor->units) {
+      inActorUnits = take;
+      inActorUnits->convertUnits(options.actor->units);
+    }
+    const Take& solved = inActorUnits ? *inActorUnits : take;
+    const BlendshapeSolver solver(*rig, binding, solved, options);
+    run.result = solver.solve(solved, {}, control);
     run.markers = solver.markers().size();
     run.setupSeconds = solver.setupSeconds();
   } catch (const JobCancelled&) {
@@ -91,7 +98,8 @@ Eigen::VectorXd peaks(const Eigen::MatrixXd& weights)
 BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
     : QWidget(parent), m_document(session.document()), m_faceMesh(session.faceMesh()), m_model(session.blendshapes()),
       m_scene(new BlendshapeScene(m_model, m_faceMesh, view, this)),
-      m_edits(new WeightEditActions(m_document, m_model, this)), m_jobs(new JobRunner(this))
+      m_edits(new WeightEditActions(m_document, m_model, this)), m_actors(new ActorActions(session, *this, this)),
+      m_jobs(new JobRunner(this))
 {
   TakeDocument& document = m_document;
   buildUi();
@@ -101,6 +109,10 @@ BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d&
   connect(&m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
   connect(&m_model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeSolvePanel::fillShapeList);
   connect(&document, &TakeDocument::takeReset, &m_model, &BlendshapeSolveModel::clearResult);
+  connect(m_actors, &ActorActions::message, this, [this](const QString& text, int timeoutMs) {
+    showStatus(text);
+    emit message(text, timeoutMs);
+  });
   // Weights solved before an edit of the take no longer follow it: say so (they stay, as a product).
   const auto stale = [this] {
     if (m_model.hasResult() && !busy())
@@ -119,6 +131,8 @@ void BlendshapeSolvePanel::buildUi()
   layout->addWidget(buildSolveBox());
   layout->addWidget(buildShapesBox(), 1);
   layout->addWidget(buildDisplayBox());
+  m_retarget = new RetargetSection(m_document, m_model, m_model.retargetMap(), this);
+  layout->addWidget(m_retarget);
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -261,12 +275,17 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   rows->addWidget(m_show);
   rows->addWidget(m_beside);
   auto* buttons = new QHBoxLayout;
+  m_openLiveLink = new QPushButton(tr("Open Live Link Recording…"), box);
+  m_openLiveLink->setToolTip(tr("A Live Link Face CSV as the rig's weight curves, through a map (undoable)"));
+  connect(m_openLiveLink, &QPushButton::clicked, this, &BlendshapeSolvePanel::openLiveLinkDialog);
   m_exportCsv = new QPushButton(tr("Export Weights…"), box);
   m_exportCsv->setToolTip(tr("Weight curves as CSV: one column per shape (plain or Live Link Face layout)"));
-  connect(m_exportCsv, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportCsvDialog);
-  m_exportGlb = new QPushButton(tr("Export Rig GLB…"), box);
-  m_exportGlb->setToolTip(tr("The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)"));
-  connect(m_exportGlb, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportGlbDialog);
+  connect(m_exportCsv, &QPushButton::clicked, this, [this] { openExportDialog(RigExportFormat::WeightsCsv); });
+  m_exportGlb = new QPushButton(tr("Export Rig…"), box);
+  m_exportGlb->setToolTip(tr("The rig with its blend shapes and the weights as animation curves, FBX or glTF "
+                             "(Unreal, Maya, MotionBuilder, Blender, Unity), through a retarget map, keys reduced"));
+  connect(m_exportGlb, &QPushButton::clicked, this, [this] { openExportDialog(RigExportFormat::Fbx); });
+  buttons->addWidget(m_openLiveLink);
   buttons->addWidget(m_exportCsv);
   buttons->addWidget(m_exportGlb);
   buttons->addStretch();
@@ -275,8 +294,10 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
     m_exportCsv->setEnabled(m_model.hasResult());
     m_exportGlb->setEnabled(m_model.hasResult());
   });
+  connect(&m_model, &BlendshapeSolveModel::rigChanged, this, [this] { m_openLiveLink->setEnabled(m_model.hasRig()); });
   m_exportCsv->setEnabled(false);
   m_exportGlb->setEnabled(false);
+  m_openLiveLink->setEnabled(false);
   return box;
 }
 
@@ -337,6 +358,7 @@ BlendshapeSolveOptions BlendshapeSolvePanel::optionsFromUi() const
   // The neutral frame is the face mesh's: the binding was made on it.
   options.neutralFrame = m_faceMesh.options().neutralFrame;
   options.scale = m_faceMesh.options().scale;
+  options.actor = m_model.actor();
   return options;
 }
 
@@ -560,22 +582,31 @@ Eigen::MatrixXd BlendshapeSolvePanel::headRotation() const
   return headYawPitchRoll(*motion, meshToLab->rotation().transpose());
 }
 
-QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
+RigExportSource BlendshapeSolvePanel::exportSource() const
+{
+  const Take& take = m_document.take();
+  RigExportSource source;
+  source.rig = m_model.rig();
+  source.weights = m_model.weights();
+  source.baseName = QFileInfo(m_document.filePath()).completeBaseName();
+  if (const std::optional<ReadWeightCurves>& read = m_model.readCurves()) {
+    source.frameRate = read->frameRate;  // the recording's own timing, timecode kept
+    source.startSeconds = read->startSeconds;
+    source.baseName = QFileInfo(read->path).completeBaseName();
+  } else {
+    source.frameRate = take.frameRate();
+    source.firstFrame = take.firstFrame();
+    source.headRotation = headRotation();
+  }
+  return source;
+}
+
+QString BlendshapeSolvePanel::writeCurves(const QString& path, const WeightOutput& options)
 {
   if (!m_model.hasResult())
     return tr("Solve the take first.");
   try {
-    const Take& take = m_document.take();
-    const std::vector<std::string> names = m_model.rig()->shapeNames();
-    if (liveLink) {
-      // Live Link Face's own layout: the rig's shapes onto its 52 ARKit curves (ICT FaceKit names by
-      // the shipped map), the head's turn when the take is stabilized, timecode at the take's rate.
-      const MappedWeights mapped = applyRetargetMap(liveLinkFaceMapForRig(names), names, m_model.weights());
-      writeLiveLinkFaceCsv(path.toStdString(),
-                           liveLinkFaceRecording(mapped.names, mapped.weights, take.frameRate(), headRotation()));
-    } else {
-      writeWeightsCsv(path.toStdString(), names, m_model.weights(), take.firstFrame(), take.frameRate());
-    }
+    (void)writeWeightOutput(path.toStdString(), *m_model.rig(), m_model.weights(), options);
   } catch (const std::exception& e) {
     showStatus(tr("Cannot write the weights: %1").arg(QString::fromStdString(e.what())), true);
     return m_status->text();
@@ -584,17 +615,47 @@ QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
   return {};
 }
 
+QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
+{
+  WeightOutput options = rigExportOptions(exportSource());
+  options.liveLink = liveLink;
+  return writeCurves(path, options);
+}
+
 QString BlendshapeSolvePanel::exportGlb(const QString& path)
 {
+  return writeCurves(path, rigExportOptions(exportSource()));
+}
+
+void BlendshapeSolvePanel::openExportDialog(RigExportFormat format)
+{
   if (!m_model.hasResult())
-    return tr("Solve the take first.");
-  try {
-    writeRigGlb(path.toStdString(), *m_model.rig(), m_model.weights(), m_document.take().frameRate());
-  } catch (const std::exception& e) {
-    showStatus(tr("Cannot write the rig: %1").arg(QString::fromStdString(e.what())), true);
+    return;
+  RigExportDialog dialog(exportSource(), this);
+  // The weights button keeps a remembered Live Link choice; otherwise each button picks its kind.
+  const bool csv = format == RigExportFormat::WeightsCsv;
+  const bool rememberedCsv = dialog.format() == RigExportFormat::WeightsCsv || dialog.format() == RigExportFormat::LiveLinkCsv;
+  if (csv != rememberedCsv)
+    dialog.setFormat(format);
+  dialog.exec();
+  if (!dialog.statusText().isEmpty())
+    showStatus(dialog.statusText());
+}
+
+QString BlendshapeSolvePanel::openLiveLinkRecording(const QString& path, const std::optional<std::string>& map)
+{
+  const QString error = ui::openLiveLinkRecording(m_document, m_model, path, map);
+  if (!error.isEmpty()) {
+    showStatus(tr("Cannot open the recording: %1").arg(error), true);
     return m_status->text();
   }
-  showStatus(tr("Wrote %1").arg(QFileInfo(path).fileName()));
+  const ReadWeightCurves& read = *m_model.readCurves();
+  showStatus(tr("Opened %1: %n sample(s) at %2 Hz from %3 as the curves of %4 shapes; exports keep its rate and timecode.",
+                nullptr, static_cast<int>(m_model.weights().rows()))
+                 .arg(QFileInfo(path).fileName())
+                 .arg(read.frameRate, 0, 'g', 6)
+                 .arg(read.firstTimecode)
+                 .arg(m_model.weights().cols()));
   return {};
 }
 
@@ -632,29 +693,11 @@ void BlendshapeSolvePanel::loadObjDialog()
   (void)loadRig(neutral, folder);
 }
 
-void BlendshapeSolvePanel::exportCsvDialog()
+void BlendshapeSolvePanel::openLiveLinkDialog()
 {
-  const QString plain = tr("Weight curves (*.csv)"), liveLink = tr("Live Link Face CSV (*.csv)");
-  QString filter = plain;
-  QString path = QFileDialog::getSaveFileName(this, tr("Export weights"), panelFolder(kGroup), plain + QStringLiteral(";;") + liveLink,
-                                              &filter);
-  if (path.isEmpty())
-    return;
-  if (QFileInfo(path).suffix().isEmpty())
-    path += QStringLiteral(".csv");
-  rememberPanelFolder(kGroup, path);
-  (void)exportCsv(path, filter == liveLink);
-}
-
-void BlendshapeSolvePanel::exportGlbDialog()
-{
-  QString path = QFileDialog::getSaveFileName(this, tr("Export animated rig"), panelFolder(kGroup), tr("glTF binary (*.glb)"));
-  if (path.isEmpty())
-    return;
-  if (QFileInfo(path).suffix().isEmpty())
-    path += QStringLiteral(".glb");
-  rememberPanelFolder(kGroup, path);
-  (void)exportGlb(path);
+  LiveLinkOpenDialog dialog(this);
+  if (dialog.exec() == QDialog::Accepted)
+    (void)openLiveLinkRecording(dialog.recordingPath(), dialog.map());
 }
 
 } // namespace mocap::ui

@@ -119,4 +119,14 @@ void checkLiveLinkFaceSources(const RetargetMap& map)
                               "', which is not one of Live Link Face's 52 curves");
 }
 
+Eigen::MatrixXd liveLinkFaceWeightsOnRig(const Eigen::Ref<const Eigen::MatrixXd>& curves,
+                                         const std::vector<std::string>& rigShapes,
+                                         const std::optional<RetargetMap>& map)
+{
+  const RetargetMap used = map ? *map : rigMapFromLiveLinkFace(rigShapes);
+  checkLiveLinkFaceSources(used);
+  const MappedWeights mapped = applyRetargetMap(used, liveLinkFaceShapeNames(), curves);
+  return mappedWeightsOnRig(used, mapped, rigShapes);
+}
+
 } // namespace mocap

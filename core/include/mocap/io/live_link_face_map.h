@@ -2,6 +2,9 @@
 
 #include "mocap/model/retarget_map.h"
 
+#include <Eigen/Core>
+
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +33,15 @@ void checkLiveLinkFaceChannels(const RetargetMap& map);
 /// Throws InvalidArgument naming the first channel (and its line) with a source that is not one of
 /// Live Link Face's 52 curves: a map reading a recording takes only those. O(Σ #sources).
 void checkLiveLinkFaceSources(const RetargetMap& map);
+
+/// A recording's curves (#rows × 52, in liveLinkFaceShapeNames() order) as weights of a rig
+/// (#rows × #rig shapes, in the rig's order) through `map` (the 52 curves onto the rig's shapes)
+/// or, when none, rigMapFromLiveLinkFace; a shape no channel names stays 0. What `mocap convert
+/// REC.csv` and the studio's Open Live Link Recording both read. Throws InvalidArgument as
+/// rigMapFromLiveLinkFace, checkLiveLinkFaceSources, applyRetargetMap and mappedWeightsOnRig (a
+/// channel the rig lacks), naming the channel and its line. O(#rows · (Σ #sources + #shapes)).
+[[nodiscard]] Eigen::MatrixXd liveLinkFaceWeightsOnRig(const Eigen::Ref<const Eigen::MatrixXd>& curves,
+                                                       const std::vector<std::string>& rigShapes,
+                                                       const std::optional<RetargetMap>& map);
 
 } // namespace mocap
