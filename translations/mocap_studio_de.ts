@@ -487,6 +487,16 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Export Ri&amp;g…</source>
+        <translation>Ri&amp;g exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The solved rig as FBX or glTF, or its curves as CSV, through a retarget map (Blendshape Solve)</source>
+        <translation>Das gelöste Rig als FBX oder glTF oder seine Kurven als CSV, über eine Retarget-Zuordnung (Blendshape-Solve)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Save &amp;Cleaning Preset…</source>
         <translation>&amp;Bereinigungsvorgabe speichern…</translation>
     </message>
@@ -1010,7 +1020,7 @@
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
     <message>
-        <location line="-857"/>
+        <location line="-859"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>Motion-Capture (*.c3d *.trc);;Alle Dateien (*)</translation>
     </message>
@@ -1151,23 +1161,23 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+282"/>
+        <location line="+285"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-280"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+265"/>
+        <location line="+268"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="-261"/>
+        <location line="-264"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1343,7 +1353,12 @@
         <translation>Gewichtskurven als CSV: eine Spalte je Shape (einfach oder im Live-Link-Face-Layout)</translation>
     </message>
     <message>
-        <location line="+367"/>
+        <location line="+354"/>
+        <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
+        <translation>Lösen Sie zuerst die Aufnahme oder öffnen Sie eine Live-Link-Aufzeichnung: Es gibt keine Kurven zum Exportieren.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Cannot open the recording: %1</source>
         <translation>Die Aufzeichnung kann nicht geöffnet werden: %1</translation>
     </message>
@@ -1364,7 +1379,7 @@
         <translation type="vanished">Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
     </message>
     <message>
-        <location line="-275"/>
+        <location line="-277"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
     </message>
@@ -1392,7 +1407,7 @@
         <translation>Rig geladen. Binden Sie die Marker im Face-Mesh-Panel an seine Neutralform (Automatisch binden oder Bindung laden) und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-119"/>
         <source>Export Rig…</source>
         <translation>Rig exportieren…</translation>
     </message>
@@ -1402,7 +1417,7 @@
         <translation>Das Rig mit seinen Blendshapes und den Gewichten als Animationskurven, FBX oder glTF (Unreal, Maya, MotionBuilder, Blender, Unity), über eine Retarget-Zuordnung, mit reduzierten Keys</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+119"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>Rig geladen. Lösen, sobald bereit.</translation>
     </message>
@@ -1499,7 +1514,7 @@
         <translation type="vanished">Das Rig kann nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Load glTF rig</source>
         <translation>glTF-Rig laden</translation>
     </message>
@@ -4281,7 +4296,7 @@
         <translation>Dur&amp;chsuchen…</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>Retarget map</source>
         <translation>Retarget-Zuordnung</translation>
     </message>
@@ -4314,7 +4329,7 @@
         <translation>Die Zuordnung mit ihren bearbeiteten Verstärkungen als JSON, für „Rig exportieren“ und mocap solve --map</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>Channel</source>
         <translation>Kanal</translation>
     </message>
@@ -4334,7 +4349,7 @@
         <translation>Maximum</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+41"/>
         <source>Cannot read the map: %1</source>
         <translation>Die Zuordnung kann nicht gelesen werden: %1</translation>
     </message>

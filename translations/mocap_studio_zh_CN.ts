@@ -478,6 +478,16 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Export Ri&amp;g…</source>
+        <translation>导出绑定模型(&amp;G)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The solved rig as FBX or glTF, or its curves as CSV, through a retarget map (Blendshape Solve)</source>
+        <translation>将求解的绑定模型导出为 FBX 或 glTF，或将其曲线导出为 CSV，可经重定向映射（混合形状求解）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Save &amp;Cleaning Preset…</source>
         <translation>保存清理预设(&amp;C)…</translation>
     </message>
@@ -999,7 +1009,7 @@
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
     <message>
-        <location line="-857"/>
+        <location line="-859"/>
         <source>Motion capture (*.c3d *.trc);;All files (*)</source>
         <translation>动作捕捉文件 (*.c3d *.trc);;所有文件 (*)</translation>
     </message>
@@ -1140,23 +1150,23 @@
     </message>
     <message>
         <location line="+21"/>
-        <location line="+282"/>
+        <location line="+285"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-280"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+265"/>
+        <location line="+268"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="-261"/>
+        <location line="-264"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1332,7 +1342,12 @@
         <translation>权重曲线导出为 CSV：每个形状一列（普通或 Live Link Face 布局）</translation>
     </message>
     <message>
-        <location line="+367"/>
+        <location line="+354"/>
+        <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
+        <translation>请先求解拍摄或打开 Live Link 录制：没有可导出的曲线。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Cannot open the recording: %1</source>
         <translation>无法打开录制：%1</translation>
     </message>
@@ -1352,7 +1367,7 @@
         <translation type="vanished">带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
     </message>
     <message>
-        <location line="-275"/>
+        <location line="-277"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>请等待正在运行的任务，或将其取消。</translation>
     </message>
@@ -1379,7 +1394,7 @@
         <translation>绑定模型已加载。请在面部网格面板中将标记点绑定到其中性形状（自动绑定或加载绑定），然后求解。</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-119"/>
         <source>Export Rig…</source>
         <translation>导出绑定模型…</translation>
     </message>
@@ -1389,7 +1404,7 @@
         <translation>带混合形状的绑定模型及作为动画曲线的权重，FBX 或 glTF（Unreal、Maya、MotionBuilder、Blender、Unity），可经重定向映射并精简关键帧</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+119"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>绑定模型已加载。准备好后即可求解。</translation>
     </message>
@@ -1485,7 +1500,7 @@
         <translation type="vanished">无法写入绑定模型：%1</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Load glTF rig</source>
         <translation>加载 glTF 绑定模型</translation>
     </message>
@@ -4250,7 +4265,7 @@
         <translation>浏览(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>Retarget map</source>
         <translation>重定向映射</translation>
     </message>
@@ -4283,7 +4298,7 @@
         <translation>将编辑过增益的映射保存为 JSON，供导出绑定模型和 mocap solve --map 使用</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>Channel</source>
         <translation>通道</translation>
     </message>
@@ -4303,7 +4318,7 @@
         <translation>峰值</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+41"/>
         <source>Cannot read the map: %1</source>
         <translation>无法读取映射：%1</translation>
     </message>

@@ -429,6 +429,8 @@ void MainWindow::createActions()
                   &MainWindow::exportAnimation);
   file->addAction(tr("Export Re&view Video…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_E), this,
                   &MainWindow::exportReviewVideo);
+  file->addAction(tr("Export Ri&g…"), this, [this] { m_blendshapeSolve->openExportDialog(ui::RigExportFormat::Fbx); })
+      ->setToolTip(tr("The solved rig as FBX or glTF, or its curves as CSV, through a retarget map (Blendshape Solve)"));
   file->addAction(tr("Save &Cleaning Preset…"), this, &MainWindow::saveCleaningPresetDialog);
   file->addAction(tr("&Load Cleaning Preset…"), this, &MainWindow::loadCleaningPresetDialog)
       ->setObjectName(QStringLiteral("loadCleaningPresetAction"));

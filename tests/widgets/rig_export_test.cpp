@@ -23,6 +23,7 @@
 #include "mocap/io/rig_io.h"
 #include "mocap/io/weight_output.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QPushButton>
 #include <QTableWidget>
@@ -260,6 +261,21 @@ TEST_F(LiveLinkInStudioTest, TheDocksExportRigButtonOpensExportRig)
       modal->close();
   });
   button->click();
+  EXPECT_TRUE(opened);
+  // File ▸ Export Rig… opens the same dialog.
+  QAction* fileExport = nullptr;
+  for (QAction* action : window->findChildren<QAction*>())
+    if (action->text() == QStringLiteral("Export Ri&g…"))
+      fileExport = action;
+  ASSERT_NE(fileExport, nullptr);
+  opened = false;
+  QTimer::singleShot(0, [&opened] {
+    QWidget* modal = QApplication::activeModalWidget();
+    opened = qobject_cast<RigExportDialog*>(modal) != nullptr;
+    if (modal)
+      modal->close();
+  });
+  fileExport->trigger();
   EXPECT_TRUE(opened);
 }
 

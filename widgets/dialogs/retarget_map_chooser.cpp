@@ -88,9 +88,10 @@ void RetargetMapChooser::restoreSettingValue(const QString& value)
 
 void RetargetMapChooser::onChoice()
 {
+  // The file's field only when a file is chosen: a narrow dock keeps room for the choice.
   const bool file = m_choice->currentData().toString() == kFileChoice;
-  m_file->setEnabled(file);
-  m_browse->setEnabled(file);
+  m_file->setVisible(file);
+  m_browse->setVisible(file);
   emit changed();
 }
 

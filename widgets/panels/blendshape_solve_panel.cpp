@@ -285,7 +285,10 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   m_exportGlb->setToolTip(tr("The rig with its blend shapes and the weights as animation curves, FBX or glTF "
                              "(Unreal, Maya, MotionBuilder, Blender, Unity), through a retarget map, keys reduced"));
   connect(m_exportGlb, &QPushButton::clicked, this, [this] { openExportDialog(RigExportFormat::Fbx); });
-  buttons->addWidget(m_openLiveLink);
+  auto* openRow = new QHBoxLayout;  // a row of its own: three buttons overflow a narrow dock
+  openRow->addWidget(m_openLiveLink);
+  openRow->addStretch();
+  rows->addLayout(openRow);
   buttons->addWidget(m_exportCsv);
   buttons->addWidget(m_exportGlb);
   buttons->addStretch();
@@ -629,8 +632,10 @@ QString BlendshapeSolvePanel::exportGlb(const QString& path)
 
 void BlendshapeSolvePanel::openExportDialog(RigExportFormat format)
 {
-  if (!m_model.hasResult())
+  if (!m_model.hasResult()) {
+    showEditResult(tr("Solve the take, or open a Live Link recording, first: there are no curves to export."));
     return;
+  }
   RigExportDialog dialog(exportSource(), this);
   // The weights button keeps a remembered Live Link choice; otherwise each button picks its kind.
   const bool csv = format == RigExportFormat::WeightsCsv;

@@ -56,12 +56,11 @@ RetargetSection::RetargetSection(TakeDocument& document, BlendshapeSolveModel& s
     : QGroupBox(tr("Retarget"), parent), m_document(document), m_solve(solve), m_map(map)
 {
   auto* rows = new QVBoxLayout(this);
-  auto* top = new QHBoxLayout;
+  auto* top = new QHBoxLayout;  // the map row; Save Map As… below the table
   m_chooser = new RetargetMapChooser(tr("No map"), this);
   m_save = new QPushButton(tr("Save Map As…"), this);
   m_save->setToolTip(tr("The map with its edited gains as JSON, for Export Rig and mocap solve --map"));
   top->addWidget(m_chooser, 1);
-  top->addWidget(m_save);
   rows->addLayout(top);
   m_table = new QTableWidget(0, kColumns, this);
   m_table->setObjectName(QStringLiteral("retargetTable"));
@@ -77,6 +76,10 @@ RetargetSection::RetargetSection(TakeDocument& document, BlendshapeSolveModel& s
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   rows->addWidget(m_status);
+  auto* saveRow = new QHBoxLayout;
+  saveRow->addWidget(m_save);
+  saveRow->addStretch();
+  rows->addLayout(saveRow);
 
   connect(m_chooser, &RetargetMapChooser::changed, this, [this] {
     if (!m_chooser->lacksFile())
