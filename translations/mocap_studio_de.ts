@@ -165,6 +165,24 @@
     </message>
 </context>
 <context>
+    <name>LiveLinkRecordingImport</name>
+    <message>
+        <location filename="../widgets/actions/live_link_recording_import.cpp" line="+22"/>
+        <source>Load a rig first: the recording&apos;s curves animate its shapes.</source>
+        <translation>Laden Sie zuerst ein Rig: Die Kurven der Aufnahme animieren seine Shapes.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: a recording needs two rows or more with increasing timecodes.</source>
+        <translation>%1: Eine Aufzeichnung braucht zwei oder mehr Zeilen mit steigenden Timecodes.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open Live Link Recording %1</source>
+        <translation>Live-Link-Aufzeichnung %1 öffnen</translation>
+    </message>
+</context>
+<context>
     <name>MarkerMenus</name>
     <message>
         <location filename="../widgets/actions/marker_menus.cpp" line="+24"/>
@@ -481,7 +499,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+96"/>
+        <location filename="../app/studio/main_window.cpp" line="+97"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -642,6 +660,16 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Export Ri&amp;g…</source>
+        <translation>Ri&amp;g exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The solved rig as FBX or glTF, or its curves as CSV, through a retarget map (Blendshape Solve)</source>
+        <translation>Das gelöste Rig als FBX oder glTF oder seine Kurven als CSV, über eine Retarget-Zuordnung (Blendshape-Solve)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Save &amp;Cleaning Preset…</source>
         <translation>&amp;Bereinigungsvorgabe speichern…</translation>
     </message>
@@ -691,7 +719,7 @@
         <translation>&amp;Einstellungen…</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
@@ -1092,6 +1120,125 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::ActorActions</name>
+    <message>
+        <location filename="../widgets/actions/actor_actions.cpp" line="+53"/>
+        <source>&amp;Actor</source>
+        <translation>&amp;Darsteller</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New from Neutral Frame…</source>
+        <translation>&amp;Neu aus neutralem Frame…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The bound markers at the current frame as an actor&apos;s neutral (mocap actor --neutral TAKE:FRAME)</source>
+        <translation>Die gebundenen Marker im aktuellen Frame als Neutralpose eines Darstellers (mocap actor --neutral TAKE:FRAME)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Calibrate from ROM Take…</source>
+        <translation>Aus ROM-Aufnahme &amp;kalibrieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each shape&apos;s extent for the loaded actor from a range-of-motion take (mocap actor --rom)</source>
+        <translation>Der Umfang jedes Shapes für den geladenen Darsteller aus einer Bewegungsumfang-Aufnahme (mocap actor --rom)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Load Actor…</source>
+        <translation>Darsteller &amp;laden…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An actor profile for the solve (mocap solve --actor)</source>
+        <translation>Ein Darstellerprofil für den Solve (mocap solve --actor)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;lear Actor</source>
+        <translation>Darsteller &amp;entfernen</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Open a take, load a rig and bind the markers to its neutral first.</source>
+        <translation>Öffnen Sie zuerst eine Aufnahme, laden Sie ein Rig und binden Sie die Marker an seine Neutralpose.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No actor made: %1</source>
+        <translation>Kein Darsteller erstellt: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load a rig and an actor (or make one from a neutral frame) first.</source>
+        <translation>Laden Sie zuerst ein Rig und einen Darsteller (oder erstellen Sie einen aus einem neutralen Frame).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Calibrating from %1…</source>
+        <translation>Kalibrieren aus %1…</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Calibration cancelled; the actor is as it was.</source>
+        <translation>Kalibrierung abgebrochen; der Darsteller bleibt unverändert.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not calibrated: %1</source>
+        <translation>Nicht kalibriert: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot load the actor: %1</source>
+        <translation>Der Darsteller kann nicht geladen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Actor %1: the solve uses its neutral and range.</source>
+        <translation>Darsteller %1: Der Solve verwendet seine Neutralpose und seinen Umfang.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>New Actor from Neutral Frame</source>
+        <translation>Neuer Darsteller aus neutralem Frame</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+14"/>
+        <source>Actor profiles (*.json)</source>
+        <translation>Darstellerprofile (*.json)</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Range-of-Motion Take</source>
+        <translation>Bewegungsumfang-Aufnahme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Takes (*.c3d *.trc);;All files (*)</source>
+        <translation>Aufnahmen (*.c3d *.trc);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the Calibrated Actor</source>
+        <translation>Kalibrierten Darsteller speichern</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Load Actor</source>
+        <translation>Darsteller laden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Actor profiles (*.json);;All files (*)</source>
+        <translation>Darstellerprofile (*.json);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::Autosave</name>
     <message>
         <location filename="../widgets/document/autosave.cpp" line="+81"/>
@@ -1102,29 +1249,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+108"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+121"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <location line="+272"/>
+        <location line="+21"/>
+        <location line="+283"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-267"/>
+        <location line="-278"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+255"/>
+        <location line="+266"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-262"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1281,6 +1428,16 @@
     </message>
     <message>
         <location line="+8"/>
+        <source>Open Live Link Recording…</source>
+        <translation>Live-Link-Aufzeichnung öffnen…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A Live Link Face CSV as the rig&apos;s weight curves, through a map (undoable)</source>
+        <translation>Eine Live-Link-Face-CSV als Gewichtskurven des Rigs, über eine Zuordnung (rückgängig machbar)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Export Weights…</source>
         <translation>Gewichte exportieren…</translation>
     </message>
@@ -1290,17 +1447,33 @@
         <translation>Gewichtskurven als CSV: eine Spalte je Shape (einfach oder im Live-Link-Face-Layout)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+340"/>
+        <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
+        <translation>Lösen Sie zuerst die Aufnahme oder öffnen Sie eine Live-Link-Aufzeichnung: Es gibt keine Kurven zum Exportieren.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Cannot open the recording: %1</source>
+        <translation>Die Aufzeichnung kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>Opened %1: %n sample(s) at %2 Hz from %3 as the curves of %4 shapes; exports keep its rate and timecode.</source>
+        <translation>
+            <numerusform>%1 geöffnet: %n Abtastwert mit %2 Hz ab %3 als Kurven von %4 Shapes; Exporte behalten seine Rate und seinen Timecode.</numerusform>
+            <numerusform>%1 geöffnet: %n Abtastwerte mit %2 Hz ab %3 als Kurven von %4 Shapes; Exporte behalten ihre Rate und ihren Timecode.</numerusform>
+        </translation>
+    </message>
+    <message>
         <source>Export Rig GLB…</source>
-        <translation>Rig als GLB exportieren…</translation>
+        <translation type="vanished">Rig als GLB exportieren…</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)</source>
-        <translation>Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
+        <translation type="vanished">Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="-264"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
     </message>
@@ -1328,7 +1501,17 @@
         <translation>Rig geladen. Binden Sie die Marker im Face-Mesh-Panel an seine Neutralform (Automatisch binden oder Bindung laden) und lösen Sie dann.</translation>
     </message>
     <message>
+        <location line="-118"/>
+        <source>Export Rig…</source>
+        <translation>Rig exportieren…</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>The rig with its blend shapes and the weights as animation curves, FBX or glTF (Unreal, Maya, MotionBuilder, Blender, Unity), through a retarget map, keys reduced</source>
+        <translation>Das Rig mit seinen Blendshapes und den Gewichten als Animationskurven, FBX oder glTF (Unreal, Maya, MotionBuilder, Blender, Unity), über eine Retarget-Zuordnung, mit reduzierten Keys</translation>
+    </message>
+    <message>
+        <location line="+118"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>Rig geladen. Lösen, sobald bereit.</translation>
     </message>
@@ -1406,29 +1589,26 @@
         <translation>  (Spitze %1)</translation>
     </message>
     <message>
-        <location line="+64"/>
-        <location line="+22"/>
+        <location line="+83"/>
         <source>Solve the take first.</source>
         <translation>Lösen Sie zuerst die Aufnahme.</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="+4"/>
         <source>Cannot write the weights: %1</source>
         <translation>Die Gewichte können nicht geschrieben werden: %1</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+14"/>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
     </message>
     <message>
-        <location line="-3"/>
         <source>Cannot write the rig: %1</source>
-        <translation>Das Rig kann nicht geschrieben werden: %1</translation>
+        <translation type="vanished">Das Rig kann nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+62"/>
         <source>Load glTF rig</source>
         <translation>glTF-Rig laden</translation>
     </message>
@@ -1453,29 +1633,24 @@
         <translation>Der Ordner mit einem OBJ je Shape</translation>
     </message>
     <message>
-        <location line="+9"/>
         <source>Weight curves (*.csv)</source>
-        <translation>Gewichtskurven (*.csv)</translation>
+        <translation type="vanished">Gewichtskurven (*.csv)</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>Live Link Face CSV (*.csv)</source>
-        <translation>Live-Link-Face-CSV (*.csv)</translation>
+        <translation type="vanished">Live-Link-Face-CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Export weights</source>
-        <translation>Gewichte exportieren</translation>
+        <translation type="vanished">Gewichte exportieren</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Export animated rig</source>
-        <translation>Animiertes Rig exportieren</translation>
+        <translation type="vanished">Animiertes Rig exportieren</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>glTF binary (*.glb)</source>
-        <translation>glTF binär (*.glb)</translation>
+        <translation type="vanished">glTF binär (*.glb)</translation>
     </message>
 </context>
 <context>
@@ -1664,7 +1839,7 @@
     <name>mocap::ui::ExportDialog</name>
     <message>
         <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+81"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -1677,6 +1852,11 @@
         <location filename="../widgets/dialogs/export_dialog.cpp" line="+14"/>
         <source>BVH of the markers (.bvh)</source>
         <translation>BVH der Marker (.bvh)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FBX of the markers as animated nulls (.fbx)</source>
+        <translation>FBX der Marker als animierte Nulls (.fbx)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1694,7 +1874,12 @@
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
+        <source>FB&amp;X:</source>
+        <translation>FB&amp;X:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Browse…</source>
         <translation>&amp;Durchsuchen…</translation>
     </message>
@@ -1725,12 +1910,42 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+333"/>
+        <location line="+388"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-305"/>
+        <location line="-367"/>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y up</source>
+        <translation>Y oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The take&apos;s up axis, declared in the file so the importer turns the scene upright</source>
+        <translation>Die Hochachse der Aufnahme, in der Datei angegeben, damit der Import die Szene aufrecht stellt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the fewest keys within</source>
+        <translation>Die wenigsten Keys behalten innerhalb von</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each marker keeps the fewest keys whose linear interpolation stays within this distance of every frame (as mocap convert --reduce); otherwise every frame is a key</source>
+        <translation>Jeder Marker behält die wenigsten Keys, deren lineare Interpolation innerhalb dieses Abstands zu jedem Frame bleibt (wie mocap convert --reduce); sonst ist jeder Frame ein Key</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>Whole take (%1–%2)</source>
         <translation>Gesamte Aufnahme (%1–%2)</translation>
     </message>
@@ -1745,7 +1960,7 @@
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>Laden Sie zuerst ein Gesichtsnetz: Diese Formate exportieren das verformte Netz.</translation>
     </message>
@@ -1771,7 +1986,7 @@
         <translation>Dateien ersetzen?</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+18"/>
         <source>Folder for the OBJ sequence</source>
         <translation>Ordner für die OBJ-Sequenz</translation>
     </message>
@@ -1784,6 +1999,16 @@
         <location line="+0"/>
         <source>BVH (*.bvh)</source>
         <translation>BVH (*.bvh)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export FBX</source>
+        <translation>FBX exportieren</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>FBX (*.fbx)</source>
+        <translation>FBX (*.fbx)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1826,12 +2051,12 @@
         <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>Not exported: the existing files are kept.</source>
         <translation>Nicht exportiert: Die vorhandenen Dateien bleiben erhalten.</translation>
     </message>
     <message numerus="yes">
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>%n Bild wird exportiert…</numerusform>
@@ -1839,12 +2064,17 @@
         </translation>
     </message>
     <message>
-        <location line="-319"/>
+        <location line="+86"/>
+        <source>Kept %1 of %2 keys (%3 %), largest error %4 mm (tolerance %5 mm).</source>
+        <translation>%1 von %2 Keys behalten (%3 %), größter Fehler %4 mm (Toleranz %5 mm).</translation>
+    </message>
+    <message>
+        <location line="-455"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message numerus="yes">
-        <location line="+364"/>
+        <location line="+414"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>%n Bild nach %1 exportiert.</numerusform>
@@ -1852,12 +2082,12 @@
         </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Note: %1.</source>
         <translation>Hinweis: %1.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>Export abgebrochen; es wurde nichts geschrieben.</translation>
     </message>
@@ -1867,7 +2097,7 @@
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>Close</source>
         <translation>Schließen</translation>
     </message>
@@ -3502,6 +3732,45 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::LiveLinkOpenDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/live_link_open_dialog.cpp" line="+28"/>
+        <location line="+60"/>
+        <source>Open Live Link Recording</source>
+        <translation>Live-Link-Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <location line="-55"/>
+        <source>The CSV the Live Link Face app recorded</source>
+        <translation>Die CSV, die die Live-Link-Face-App aufgezeichnet hat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Recording:</source>
+        <translation>&amp;Aufzeichnung:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>By name (arkit_to_ict for ICT names)</source>
+        <translation>Nach Namen (arkit_to_ict für ICT-Namen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Map onto the rig:</source>
+        <translation>&amp;Zuordnung auf das Rig:</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Live Link Face CSV (*.csv);;All files (*)</source>
+        <translation>Live-Link-Face-CSV (*.csv);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::LiveStreamPanel</name>
     <message>
         <location filename="../widgets/panels/live_stream_panel.cpp" line="+59"/>
@@ -4381,6 +4650,159 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
     </message>
 </context>
 <context>
+    <name>mocap::ui::RetargetMapChooser</name>
+    <message>
+        <location filename="../widgets/dialogs/retarget_map_chooser.cpp" line="+30"/>
+        <source>%1 (shipped)</source>
+        <translation>%1 (mitgeliefert)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Map file…</source>
+        <translation>Zuordnungsdatei…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Our shape names onto the target rig&apos;s channels, with gains, offsets and clamps (as the command line&apos;s --map)</source>
+        <translation>Unsere Shape-Namen auf die Kanäle des Ziel-Rigs, mit Verstärkungen, Versätzen und Begrenzungen (wie --map der Kommandozeile)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Br&amp;owse…</source>
+        <translation>Dur&amp;chsuchen…</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>Retarget map</source>
+        <translation>Retarget-Zuordnung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget maps (*.json);;All files (*)</source>
+        <translation>Retarget-Zuordnungen (*.json);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::RetargetSection</name>
+    <message>
+        <location filename="../widgets/panels/retarget_section.cpp" line="+56"/>
+        <source>Retarget</source>
+        <translation>Retarget</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No map</source>
+        <translation>Keine Zuordnung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Map As…</source>
+        <translation>Zuordnung speichern unter…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The map with its edited gains as JSON, for Export Rig and mocap solve --map</source>
+        <translation>Die Zuordnung mit ihren bearbeiteten Verstärkungen als JSON, für „Rig exportieren“ und mocap solve --map</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Gain</source>
+        <translation>Verstärkung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Peak</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Cannot read the map: %1</source>
+        <translation>Die Zuordnung kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load a map first.</source>
+        <translation>Laden Sie zuerst eine Zuordnung.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot write the map: %1</source>
+        <translation>Die Zuordnung kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Saved the map to %1.</source>
+        <translation>Zuordnung in %1 gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>That row has no source to scale.</source>
+        <translation>Diese Zeile hat keine Quelle zum Skalieren.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+82"/>
+        <source>A gain must be a number.</source>
+        <translation>Eine Verstärkung muss eine Zahl sein.</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <source>Gain of %1 in %2</source>
+        <translation>Verstärkung von %1 in %2</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Load a map to see the solve under a target rig&apos;s channels.</source>
+        <translation>Laden Sie eine Zuordnung, um den Solve unter den Kanälen eines Ziel-Rigs zu sehen.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n channel(s). Load a rig to map its curves.</source>
+        <translation>
+            <numerusform>%n Kanal. Laden Sie ein Rig, um seine Kurven zuzuordnen.</numerusform>
+            <numerusform>%n Kanäle. Laden Sie ein Rig, um seine Kurven zuzuordnen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n channel(s) from the rig&apos;s shapes.</source>
+        <translation>
+            <numerusform>%n Kanal aus den Shapes des Rigs.</numerusform>
+            <numerusform>%n Kanäle aus den Shapes des Rigs.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The map does not fit the rig: %1</source>
+        <translation>Die Zuordnung passt nicht zum Rig: %1</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Save Retarget Map</source>
+        <translation>Retarget-Zuordnung speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget maps (*.json)</source>
+        <translation>Retarget-Zuordnungen (*.json)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::ReviewExportDialog</name>
     <message>
         <location filename="../widgets/actions/review_video_export.cpp" line="+34"/>
@@ -4488,6 +4910,190 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <location line="+21"/>
         <source>untitled take</source>
         <translation>unbenannte Aufnahme</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::RigExportDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/rig_export_dialog.cpp" line="+78"/>
+        <location line="+226"/>
+        <source>Export Rig</source>
+        <translation>Rig exportieren</translation>
+    </message>
+    <message>
+        <location line="-214"/>
+        <source>FBX rig with animated blend shapes (.fbx)</source>
+        <translation>FBX-Rig mit animierten Blendshapes (.fbx)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glTF rig with animated morph targets (.glb)</source>
+        <translation>glTF-Rig mit animierten Morph-Targets (.glb)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Weight curves, one column per shape (.csv)</source>
+        <translation>Gewichtskurven, eine Spalte pro Shape (.csv)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live Link Face CSV (.csv)</source>
+        <translation>Live-Link-Face-CSV (.csv)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Output:</source>
+        <translation>&amp;Ausgabe:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>None (the rig&apos;s own names)</source>
+        <translation>Keine (die eigenen Namen des Rigs)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>For Live Link Face, none means the default map for the rig&apos;s names</source>
+        <translation>Für Live Link Face bedeutet „Keine“ die Standardzuordnung für die Namen des Rigs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget &amp;map:</source>
+        <translation>Retarget-&amp;Zuordnung:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Keys:</source>
+        <translation>&amp;Keys:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Y up</source>
+        <translation>Y oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The units the rig&apos;s coordinates are in, declared in the FBX&apos;s global settings</source>
+        <translation>Die Einheit der Koordinaten des Rigs, in den globalen Einstellungen der FBX angegeben</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>FBX &amp;axes:</source>
+        <translation>FBX-&amp;Achsen:</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Keep the fewest keys within</source>
+        <translation>Die wenigsten Keys behalten innerhalb von</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each curve keeps the fewest keys whose linear interpolation stays within the tolerance of every frame (as mocap solve --reduce); otherwise every frame is a key</source>
+        <translation>Jede Kurve behält die wenigsten Keys, deren lineare Interpolation innerhalb der Toleranz zu jedem Frame bleibt (wie mocap solve --reduce); sonst ist jeder Frame ein Key</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>weight units</source>
+        <translation>Gewichtseinheiten</translation>
+    </message>
+    <message>
+        <location line="+130"/>
+        <source>FBX (*.fbx)</source>
+        <translation>FBX (*.fbx)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glTF binary (*.glb)</source>
+        <translation>glTF binär (*.glb)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Solve the take first.</source>
+        <translation>Lösen Sie zuerst die Aufnahme.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the map file.</source>
+        <translation>Wählen Sie die Zuordnungsdatei.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The map cannot be used: %1</source>
+        <translation>Die Zuordnung kann nicht verwendet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Choose where to export.</source>
+        <translation>Wählen Sie, wohin exportiert werden soll.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The folder %1 does not exist.</source>
+        <translation>Der Ordner %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Replace File?</source>
+        <translation>Datei ersetzen?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replace %1?</source>
+        <translation>%1 ersetzen?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not exported: the existing file is kept.</source>
+        <translation>Nicht exportiert: Die vorhandene Datei bleibt erhalten.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Wrote %1.</source>
+        <translation>%1 geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Every frame is a key: %1 frames.</source>
+        <translation>Jeder Frame ist ein Key: %1 Frames.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Kept %1 of %2 keys (%3 %), largest error %4 (tolerance %5).</source>
+        <translation>%1 von %2 Keys behalten (%3 %), größter Fehler %4 (Toleranz %5).</translation>
     </message>
 </context>
 <context>

@@ -158,6 +158,24 @@
     </message>
 </context>
 <context>
+    <name>LiveLinkRecordingImport</name>
+    <message>
+        <location filename="../widgets/actions/live_link_recording_import.cpp" line="+22"/>
+        <source>Load a rig first: the recording&apos;s curves animate its shapes.</source>
+        <translation>请先加载绑定模型：录制的曲线驱动其形状。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: a recording needs two rows or more with increasing timecodes.</source>
+        <translation>%1：录制需要两行或更多且时间码递增。</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Open Live Link Recording %1</source>
+        <translation>打开 Live Link 录制 %1</translation>
+    </message>
+</context>
+<context>
     <name>MarkerMenus</name>
     <message>
         <location filename="../widgets/actions/marker_menus.cpp" line="+24"/>
@@ -472,7 +490,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+96"/>
+        <location filename="../app/studio/main_window.cpp" line="+97"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -633,6 +651,16 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Export Ri&amp;g…</source>
+        <translation>导出绑定模型(&amp;G)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The solved rig as FBX or glTF, or its curves as CSV, through a retarget map (Blendshape Solve)</source>
+        <translation>将求解的绑定模型导出为 FBX 或 glTF，或将其曲线导出为 CSV，可经重定向映射（混合形状求解）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Save &amp;Cleaning Preset…</source>
         <translation>保存清理预设(&amp;C)…</translation>
     </message>
@@ -682,7 +710,7 @@
         <translation>首选项(&amp;P)…</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
     </message>
@@ -1081,6 +1109,125 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::ActorActions</name>
+    <message>
+        <location filename="../widgets/actions/actor_actions.cpp" line="+53"/>
+        <source>&amp;Actor</source>
+        <translation>演员(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New from Neutral Frame…</source>
+        <translation>从中性帧新建(&amp;N)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The bound markers at the current frame as an actor&apos;s neutral (mocap actor --neutral TAKE:FRAME)</source>
+        <translation>当前帧的已绑定标记点作为演员的中性姿态（mocap actor --neutral TAKE:FRAME）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Calibrate from ROM Take…</source>
+        <translation>从 ROM 拍摄校准(&amp;C)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each shape&apos;s extent for the loaded actor from a range-of-motion take (mocap actor --rom)</source>
+        <translation>从动作范围拍摄得到已加载演员每个形状的幅度（mocap actor --rom）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Load Actor…</source>
+        <translation>加载演员(&amp;L)…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An actor profile for the solve (mocap solve --actor)</source>
+        <translation>用于求解的演员配置（mocap solve --actor）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;lear Actor</source>
+        <translation>清除演员(&amp;L)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Open a take, load a rig and bind the markers to its neutral first.</source>
+        <translation>请先打开拍摄、加载绑定模型并将标记点绑定到其中性网格。</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No actor made: %1</source>
+        <translation>未创建演员：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load a rig and an actor (or make one from a neutral frame) first.</source>
+        <translation>请先加载绑定模型和演员（或从中性帧新建一个）。</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Calibrating from %1…</source>
+        <translation>正在从 %1 校准…</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Calibration cancelled; the actor is as it was.</source>
+        <translation>校准已取消；演员保持不变。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not calibrated: %1</source>
+        <translation>未校准：%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cannot load the actor: %1</source>
+        <translation>无法加载演员：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Actor %1: the solve uses its neutral and range.</source>
+        <translation>演员 %1：求解使用其中性姿态和幅度。</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>New Actor from Neutral Frame</source>
+        <translation>从中性帧新建演员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+14"/>
+        <source>Actor profiles (*.json)</source>
+        <translation>演员配置 (*.json)</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Range-of-Motion Take</source>
+        <translation>动作范围拍摄</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Takes (*.c3d *.trc);;All files (*)</source>
+        <translation>拍摄 (*.c3d *.trc);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the Calibrated Actor</source>
+        <translation>保存已校准的演员</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Load Actor</source>
+        <translation>加载演员</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Actor profiles (*.json);;All files (*)</source>
+        <translation>演员配置 (*.json);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::Autosave</name>
     <message>
         <location filename="../widgets/document/autosave.cpp" line="+81"/>
@@ -1091,29 +1238,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+108"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+121"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <location line="+272"/>
+        <location line="+21"/>
+        <location line="+283"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="-267"/>
+        <location line="-278"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+255"/>
+        <location line="+266"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-262"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1270,6 +1417,16 @@
     </message>
     <message>
         <location line="+8"/>
+        <source>Open Live Link Recording…</source>
+        <translation>打开 Live Link 录制…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A Live Link Face CSV as the rig&apos;s weight curves, through a map (undoable)</source>
+        <translation>将 Live Link Face CSV 通过映射作为绑定模型的权重曲线（可撤销）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Export Weights…</source>
         <translation>导出权重…</translation>
     </message>
@@ -1279,17 +1436,32 @@
         <translation>权重曲线导出为 CSV：每个形状一列（普通或 Live Link Face 布局）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+340"/>
+        <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
+        <translation>请先求解拍摄或打开 Live Link 录制：没有可导出的曲线。</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Cannot open the recording: %1</source>
+        <translation>无法打开录制：%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>Opened %1: %n sample(s) at %2 Hz from %3 as the curves of %4 shapes; exports keep its rate and timecode.</source>
+        <translation>
+            <numerusform>已打开 %1：%n 个采样，%2 Hz，起于 %3，作为 %4 个形状的曲线；导出保留其帧率和时间码。</numerusform>
+        </translation>
+    </message>
+    <message>
         <source>Export Rig GLB…</source>
-        <translation>导出绑定模型 GLB…</translation>
+        <translation type="vanished">导出绑定模型 GLB…</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)</source>
-        <translation>带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
+        <translation type="vanished">带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="-264"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>请等待正在运行的任务，或将其取消。</translation>
     </message>
@@ -1316,7 +1488,17 @@
         <translation>绑定模型已加载。请在面部网格面板中将标记点绑定到其中性形状（自动绑定或加载绑定），然后求解。</translation>
     </message>
     <message>
+        <location line="-118"/>
+        <source>Export Rig…</source>
+        <translation>导出绑定模型…</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>The rig with its blend shapes and the weights as animation curves, FBX or glTF (Unreal, Maya, MotionBuilder, Blender, Unity), through a retarget map, keys reduced</source>
+        <translation>带混合形状的绑定模型及作为动画曲线的权重，FBX 或 glTF（Unreal、Maya、MotionBuilder、Blender、Unity），可经重定向映射并精简关键帧</translation>
+    </message>
+    <message>
+        <location line="+118"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>绑定模型已加载。准备好后即可求解。</translation>
     </message>
@@ -1393,29 +1575,26 @@
         <translation>  （峰值 %1）</translation>
     </message>
     <message>
-        <location line="+64"/>
-        <location line="+22"/>
+        <location line="+83"/>
         <source>Solve the take first.</source>
         <translation>请先求解拍摄。</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="+4"/>
         <source>Cannot write the weights: %1</source>
         <translation>无法写入权重：%1</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+14"/>
         <source>Wrote %1</source>
         <translation>已写入 %1</translation>
     </message>
     <message>
-        <location line="-3"/>
         <source>Cannot write the rig: %1</source>
-        <translation>无法写入绑定模型：%1</translation>
+        <translation type="vanished">无法写入绑定模型：%1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+62"/>
         <source>Load glTF rig</source>
         <translation>加载 glTF 绑定模型</translation>
     </message>
@@ -1440,29 +1619,24 @@
         <translation>每个形状一个 OBJ 的文件夹</translation>
     </message>
     <message>
-        <location line="+9"/>
         <source>Weight curves (*.csv)</source>
-        <translation>权重曲线 (*.csv)</translation>
+        <translation type="vanished">权重曲线 (*.csv)</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>Live Link Face CSV (*.csv)</source>
-        <translation>Live Link Face CSV (*.csv)</translation>
+        <translation type="vanished">Live Link Face CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Export weights</source>
-        <translation>导出权重</translation>
+        <translation type="vanished">导出权重</translation>
     </message>
     <message>
-        <location line="+12"/>
         <source>Export animated rig</source>
-        <translation>导出动画绑定模型</translation>
+        <translation type="vanished">导出动画绑定模型</translation>
     </message>
     <message>
-        <location line="+0"/>
         <source>glTF binary (*.glb)</source>
-        <translation>glTF 二进制 (*.glb)</translation>
+        <translation type="vanished">glTF 二进制 (*.glb)</translation>
     </message>
 </context>
 <context>
@@ -1650,7 +1824,7 @@
     <name>mocap::ui::ExportDialog</name>
     <message>
         <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+74"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+81"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -1663,6 +1837,11 @@
         <location filename="../widgets/dialogs/export_dialog.cpp" line="+14"/>
         <source>BVH of the markers (.bvh)</source>
         <translation>标记点的 BVH（.bvh）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>FBX of the markers as animated nulls (.fbx)</source>
+        <translation>标记点的 FBX，作为动画空对象 (.fbx)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1680,7 +1859,12 @@
         <translation>格式(&amp;F)：</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
+        <source>FB&amp;X:</source>
+        <translation>FBX(&amp;X):</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>&amp;Browse…</source>
         <translation>浏览(&amp;B)…</translation>
     </message>
@@ -1711,12 +1895,42 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+333"/>
+        <location line="+388"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-305"/>
+        <location line="-367"/>
+        <source>Z up</source>
+        <translation>Z 向上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y up</source>
+        <translation>Y 向上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The take&apos;s up axis, declared in the file so the importer turns the scene upright</source>
+        <translation>拍摄的向上轴，写入文件以便导入程序将场景摆正</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the fewest keys within</source>
+        <translation>保留最少关键帧，误差不超过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each marker keeps the fewest keys whose linear interpolation stays within this distance of every frame (as mocap convert --reduce); otherwise every frame is a key</source>
+        <translation>每个标记点保留最少的关键帧，使其线性插值与每一帧的距离不超过此值（同 mocap convert --reduce）；否则每帧都是关键帧</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>Whole take (%1–%2)</source>
         <translation>整个拍摄数据（%1–%2）</translation>
     </message>
@@ -1731,7 +1945,7 @@
         <translation>自定义</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>请先加载面部网格：这些格式导出的是变形后的网格。</translation>
     </message>
@@ -1755,7 +1969,7 @@
         <translation>替换文件？</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+18"/>
         <source>Folder for the OBJ sequence</source>
         <translation>OBJ 序列的文件夹</translation>
     </message>
@@ -1768,6 +1982,16 @@
         <location line="+0"/>
         <source>BVH (*.bvh)</source>
         <translation>BVH (*.bvh)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Export FBX</source>
+        <translation>导出 FBX</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>FBX (*.fbx)</source>
+        <translation>FBX (*.fbx)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1810,36 +2034,41 @@
         <translation>%1 是文件夹，请选择文件名。</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>Not exported: the existing files are kept.</source>
         <translation>未导出：已保留现有文件。</translation>
     </message>
     <message numerus="yes">
-        <location line="+12"/>
+        <location line="+15"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>正在导出 %n 帧…</numerusform>
         </translation>
     </message>
     <message>
-        <location line="-319"/>
+        <location line="+86"/>
+        <source>Kept %1 of %2 keys (%3 %), largest error %4 mm (tolerance %5 mm).</source>
+        <translation>保留了 %2 个关键帧中的 %1 个（%3 %），最大误差 %4 mm（容差 %5 mm）。</translation>
+    </message>
+    <message>
+        <location line="-455"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message numerus="yes">
-        <location line="+364"/>
+        <location line="+414"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 帧导出到 %1。</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Note: %1.</source>
         <translation>注意：%1。</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Export cancelled; nothing was written.</source>
         <translation>导出已取消，未写入任何内容。</translation>
     </message>
@@ -1849,7 +2078,7 @@
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+15"/>
         <source>Close</source>
         <translation>关闭</translation>
     </message>
@@ -3476,6 +3705,45 @@
     </message>
 </context>
 <context>
+    <name>mocap::ui::LiveLinkOpenDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/live_link_open_dialog.cpp" line="+28"/>
+        <location line="+60"/>
+        <source>Open Live Link Recording</source>
+        <translation>打开 Live Link 录制</translation>
+    </message>
+    <message>
+        <location line="-55"/>
+        <source>The CSV the Live Link Face app recorded</source>
+        <translation>Live Link Face 应用录制的 CSV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Recording:</source>
+        <translation>录制(&amp;R):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>By name (arkit_to_ict for ICT names)</source>
+        <translation>按名称（ICT 名称使用 arkit_to_ict）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Map onto the rig:</source>
+        <translation>映射到绑定模型(&amp;M):</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>Live Link Face CSV (*.csv);;All files (*)</source>
+        <translation>Live Link Face CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::LiveStreamPanel</name>
     <message>
         <location filename="../widgets/panels/live_stream_panel.cpp" line="+59"/>
@@ -4349,6 +4617,157 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
     </message>
 </context>
 <context>
+    <name>mocap::ui::RetargetMapChooser</name>
+    <message>
+        <location filename="../widgets/dialogs/retarget_map_chooser.cpp" line="+30"/>
+        <source>%1 (shipped)</source>
+        <translation>%1（内置）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Map file…</source>
+        <translation>映射文件…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Our shape names onto the target rig&apos;s channels, with gains, offsets and clamps (as the command line&apos;s --map)</source>
+        <translation>将我们的形状名称映射到目标绑定模型的通道，含增益、偏移和钳位（同命令行的 --map）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Br&amp;owse…</source>
+        <translation>浏览(&amp;O)…</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>Retarget map</source>
+        <translation>重定向映射</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget maps (*.json);;All files (*)</source>
+        <translation>重定向映射 (*.json);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::RetargetSection</name>
+    <message>
+        <location filename="../widgets/panels/retarget_section.cpp" line="+56"/>
+        <source>Retarget</source>
+        <translation>重定向</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No map</source>
+        <translation>无映射</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Map As…</source>
+        <translation>映射另存为…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The map with its edited gains as JSON, for Export Rig and mocap solve --map</source>
+        <translation>将编辑过增益的映射保存为 JSON，供导出绑定模型和 mocap solve --map 使用</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Channel</source>
+        <translation>通道</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Gain</source>
+        <translation>增益</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Peak</source>
+        <translation>峰值</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Cannot read the map: %1</source>
+        <translation>无法读取映射：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Load a map first.</source>
+        <translation>请先加载映射。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot write the map: %1</source>
+        <translation>无法写入映射：%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Saved the map to %1.</source>
+        <translation>已将映射保存到 %1。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>That row has no source to scale.</source>
+        <translation>该行没有可缩放的来源。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+82"/>
+        <source>A gain must be a number.</source>
+        <translation>增益必须是数字。</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <source>Gain of %1 in %2</source>
+        <translation>%2 中 %1 的增益</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Load a map to see the solve under a target rig&apos;s channels.</source>
+        <translation>加载映射，以查看目标绑定模型通道下的求解结果。</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n channel(s). Load a rig to map its curves.</source>
+        <translation>
+            <numerusform>%n 个通道。加载绑定模型以映射其曲线。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n channel(s) from the rig&apos;s shapes.</source>
+        <translation>
+            <numerusform>%n 个通道，来自绑定模型的形状。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The map does not fit the rig: %1</source>
+        <translation>映射与绑定模型不符：%1</translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>Save Retarget Map</source>
+        <translation>保存重定向映射</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget maps (*.json)</source>
+        <translation>重定向映射 (*.json)</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::ReviewExportDialog</name>
     <message>
         <location filename="../widgets/actions/review_video_export.cpp" line="+34"/>
@@ -4456,6 +4875,190 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <location line="+21"/>
         <source>untitled take</source>
         <translation>未命名录制</translation>
+    </message>
+</context>
+<context>
+    <name>mocap::ui::RigExportDialog</name>
+    <message>
+        <location filename="../widgets/dialogs/rig_export_dialog.cpp" line="+78"/>
+        <location line="+226"/>
+        <source>Export Rig</source>
+        <translation>导出绑定模型</translation>
+    </message>
+    <message>
+        <location line="-214"/>
+        <source>FBX rig with animated blend shapes (.fbx)</source>
+        <translation>带动画混合形状的 FBX 绑定模型 (.fbx)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glTF rig with animated morph targets (.glb)</source>
+        <translation>带动画变形目标的 glTF 绑定模型 (.glb)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Weight curves, one column per shape (.csv)</source>
+        <translation>权重曲线，每个形状一列 (.csv)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Live Link Face CSV (.csv)</source>
+        <translation>Live Link Face CSV (.csv)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Format:</source>
+        <translation>格式(&amp;F):</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Output:</source>
+        <translation>输出(&amp;O):</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>None (the rig&apos;s own names)</source>
+        <translation>无（绑定模型自身的名称）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>For Live Link Face, none means the default map for the rig&apos;s names</source>
+        <translation>对 Live Link Face 而言，“无”表示按绑定模型名称的默认映射</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget &amp;map:</source>
+        <translation>重定向映射(&amp;M):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Keys:</source>
+        <translation>关键帧(&amp;K):</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Y up</source>
+        <translation>Y 向上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z up</source>
+        <translation>Z 向上</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The units the rig&apos;s coordinates are in, declared in the FBX&apos;s global settings</source>
+        <translation>绑定模型坐标所用的单位，写入 FBX 的全局设置</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>FBX &amp;axes:</source>
+        <translation>FBX 坐标轴(&amp;A):</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;E)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Keep the fewest keys within</source>
+        <translation>保留最少关键帧，误差不超过</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Each curve keeps the fewest keys whose linear interpolation stays within the tolerance of every frame (as mocap solve --reduce); otherwise every frame is a key</source>
+        <translation>每条曲线保留最少的关键帧，使其线性插值与每一帧的差不超过容差（同 mocap solve --reduce）；否则每帧都是关键帧</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>weight units</source>
+        <translation>权重单位</translation>
+    </message>
+    <message>
+        <location line="+130"/>
+        <source>FBX (*.fbx)</source>
+        <translation>FBX (*.fbx)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>glTF binary (*.glb)</source>
+        <translation>glTF 二进制 (*.glb)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Solve the take first.</source>
+        <translation>请先求解拍摄。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the map file.</source>
+        <translation>请选择映射文件。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The map cannot be used: %1</source>
+        <translation>无法使用该映射：%1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Choose where to export.</source>
+        <translation>请选择导出位置。</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The folder %1 does not exist.</source>
+        <translation>文件夹 %1 不存在。</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Replace File?</source>
+        <translation>替换文件？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replace %1?</source>
+        <translation>替换 %1？</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not exported: the existing file is kept.</source>
+        <translation>未导出：保留现有文件。</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Export failed: %1</source>
+        <translation>导出失败：%1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Wrote %1.</source>
+        <translation>已写入 %1。</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Every frame is a key: %1 frames.</source>
+        <translation>每帧都是关键帧：%1 帧。</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Kept %1 of %2 keys (%3 %), largest error %4 (tolerance %5).</source>
+        <translation>保留了 %2 个关键帧中的 %1 个（%3 %），最大误差 %4（容差 %5）。</translation>
     </message>
 </context>
 <context>

@@ -4,7 +4,6 @@
 #include "cli_error.h"
 #include "commands.h"
 #include "rig_input.h"
-#include "weight_output.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/io/fbx_writer.h"
@@ -12,6 +11,7 @@
 #include "mocap/io/live_link_face_map.h"
 #include "mocap/io/shipped_retarget_maps.h"
 #include "mocap/io/take_io.h"
+#include "mocap/io/weight_output.h"
 #include "mocap/math/key_reduction.h"
 
 #include <filesystem>
@@ -65,16 +65,13 @@ int convertRecording(const ConvertArguments& arguments)
   const double rate = liveLinkFaceRate(recording);
   if (!(rate > 0.0))
     throw UsageError(arguments.input + ": a recording needs two rows or more with increasing timecodes");
-  if (!map)
-    map = rigMapFromLiveLinkFace(rig.shapeNames());
-  checkLiveLinkFaceSources(*map);
-  const MappedWeights mapped = applyRetargetMap(*map, liveLinkFaceShapeNames(), recording.weights);
+  const Eigen::MatrixXd weights = liveLinkFaceWeightsOnRig(recording.weights, rig.shapeNames(), map);
   WeightOutput options;
   options.frameRate = rate;
   if (arguments.up)
     options.fbx.up = parseFbxUpAxis(*arguments.up).value();
   options.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
-  writeWeightOutput(arguments.output, rig, mappedWeightsOnRig(*map, mapped, rig.shapeNames()), options);
+  writeWeightOutput(arguments.output, rig, weights, options);
   std::cout << "wrote " << recording.timecodes.size() << " frames at " << rate << " Hz from "
             << recording.timecodes.front() << " onto " << rig.shapeCount() << " shapes: " << arguments.output << '\n';
   return kExitOk;

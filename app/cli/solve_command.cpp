@@ -6,11 +6,12 @@
 #include "commands.h"
 #include "leave_out_cli.h"
 #include "take_solve.h"
-#include "weight_output.h"
 
 #include "mocap/base/stopwatch.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
+#include "mocap/io/weight_output.h"
+#include "mocap/io/shipped_retarget_maps.h"
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/deform/retarget.h"
 #include "mocap/evaluation/deformation_evaluation.h"
@@ -125,7 +126,8 @@ void checkOutput(const SolveArguments& arguments)
     throw UsageError("--format livelink applies to .csv output only");
   if (arguments.map && extension == "pc2")
     throw UsageError("--map applies to weight curves and rigs (.csv, .glb, .fbx), not to a point cache");
-  checkMapArgument(arguments.map);
+  if (arguments.map)  // a wrong name or a malformed map costs no solve
+    (void)readRetargetMapByNameOrPath(*arguments.map);
 }
 
 void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,

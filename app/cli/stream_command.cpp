@@ -7,7 +7,6 @@
 #include "stop_signal.h"
 #include "take_input.h"
 #include "take_solve.h"
-#include "weight_output.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_writer.h"
@@ -185,7 +184,7 @@ void printJson(const StreamArguments& arguments, const LiveStreamer& streamer, c
 int runStream(const StreamArguments& arguments)
 {
   const StreamSettings settings = streamSettings(arguments);  // usage errors before any work
-  checkMapArgument(arguments.map);
+  (void)mapArgument(arguments);  // a wrong map fails before the take is read or solved
   const auto frames = std::make_shared<const StreamFrames>(streamFrames(arguments));
   const std::pair<Eigen::Index, Eigen::Index> range =
       parseFrameRange(arguments.frames, frames->firstFrame, frames->frameCount());

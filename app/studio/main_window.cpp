@@ -17,6 +17,7 @@
 #include "actions/transport_shortcuts.h"
 #include "actions/view_option_actions.h"
 
+#include "actions/actor_actions.h"
 #include "dialogs/job_dialog.h"
 #include "dialogs/manual_window.h"
 #include "dialogs/preferences_dialog.h"
@@ -316,6 +317,8 @@ void MainWindow::createActions()
                   [this] { ui::exportAnimation(*m_session, *this); });
   file->addAction(tr("Export Re&view Video…"), QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_E), this,
                   &MainWindow::exportReviewVideo);
+  file->addAction(tr("Export Ri&g…"), this, [this] { m_blendshapeSolve->openExportDialog(ui::RigExportFormat::Fbx); })
+      ->setToolTip(tr("The solved rig as FBX or glTF, or its curves as CSV, through a retarget map (Blendshape Solve)"));
   file->addAction(tr("Save &Cleaning Preset…"), m_cleaningPresets, &ui::CleaningPresetActions::saveWithDialog);
   file->addAction(tr("&Load Cleaning Preset…"), m_cleaningPresets, &ui::CleaningPresetActions::loadWithDialog)
       ->setObjectName(QStringLiteral("loadCleaningPresetAction"));
@@ -342,6 +345,7 @@ void MainWindow::createActions()
   ui::addMarkerMenu(*menuBar(), *m_document, *m_markerEdits, *m_referenceMarkers);
   ui::addLabelMenu(*menuBar(), *m_labelling, *m_markerEdits, *m_view3d,
                    [this](const QString& text, int timeoutMs) { statusBar()->showMessage(text, timeoutMs); });
+  menuBar()->addMenu(m_blendshapeSolve->actors().createMenu(this));
 
   m_viewMenu = menuBar()->addMenu(tr("&View"));
   ui::addViewOptionActions(*m_viewMenu, options, m_session->view());

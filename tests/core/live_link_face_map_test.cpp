@@ -106,10 +106,13 @@ TEST(LiveLinkFaceMap, ARecordingGoesOntoTheIctRigAndBackUnchanged)
 {
   const LiveLinkFaceRecording recording = readLiveLinkFaceCsv(test::dataFile("livelink_face/alex_rom_4_first200.csv"));
   const std::vector<std::string> ict = ictShapeNames();
-  const RetargetMap toRig = rigMapFromLiveLinkFace(ict);
-  const Eigen::MatrixXd onRig =
-      mappedWeightsOnRig(toRig, applyRetargetMap(toRig, liveLinkFaceShapeNames(), recording.weights), ict);
+  const Eigen::MatrixXd onRig = liveLinkFaceWeightsOnRig(recording.weights, ict, std::nullopt);  // rigMapFromLiveLinkFace
   ASSERT_EQ(onRig.cols(), 53);
+  EXPECT_EQ(onRig, liveLinkFaceWeightsOnRig(recording.weights, ict, shippedRetargetMap("arkit_to_ict")));
+  // A map that reads our shapes, not the recording's curves, is refused by its channel and line.
+  EXPECT_NE(errorOf([&] { (void)liveLinkFaceWeightsOnRig(recording.weights, ict, shippedRetargetMap("ict_to_arkit")); })
+                .find("which is not one of Live Link Face's 52 curves"),
+            std::string::npos);
   EXPECT_EQ(onRig.col(columnOf(ict, "browInnerUp_L")), recording.weights.col(columnOf(liveLinkFaceShapeNames(), "BrowInnerUp")));
   const MappedWeights back = applyRetargetMap(liveLinkFaceMapForRig(ict), ict, onRig);
   Eigen::MatrixXd expected = recording.weights;

@@ -8,6 +8,8 @@
 #include "main_window.h"
 
 #include "mocap/base/file_io.h"
+#include "mocap/io/fbx_writer.h"
+#include "mocap/model/take_slice.h"
 #include "mocap/io/obj_io.h"
 #include "mocap/io/pc2_io.h"
 
@@ -224,6 +226,35 @@ TEST(ExportDialog, MeshFormatsWaitForAMeshAndBadPathsAreExplained)
 
   dialog.setMeshSource(triangle(), [](Eigen::Index, MeshVertices& v) { v = triangle().vertices; }, {});
   EXPECT_TRUE(pc2->isEnabled());
+}
+
+TEST(ExportDialog, FbxOfTheMarkersIsWhatConvertWritesWithItsKeysReported)
+{
+  Fixture fx;
+  ExportDialog dialog(fx.document);
+  dialog.setFormat(AnimationFormat::Fbx);
+  ASSERT_EQ(dialog.format(), AnimationFormat::Fbx) << "the markers need no mesh";
+  dialog.setFbxOptions(FbxUpAxis::Y, 0.1);
+  dialog.setOutputPath(QString::fromStdString(fx.dir.file("markers").string()));
+  EXPECT_EQ(dialog.outputPath(), QString::fromStdString(fx.dir.file("markers").string()));
+  dialog.setFormat(AnimationFormat::Bvh);
+  dialog.setFormat(AnimationFormat::Fbx);  // the extension follows the format
+  ASSERT_EQ(dialog.outputPath(), QString::fromStdString(fx.dir.file("markers.fbx").string()));
+  dialog.setFrameRange(101, 120);
+  ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
+  // As `mocap convert TAKE OUT.fbx --up y --reduce 0.1` writes the 20 frames (the take is in mm).
+  KeyCount counted;
+  const std::string expected =
+      markersFbx(sliceFrames(fx.document.take(), 0, 20), FbxUpAxis::Y, FbxCurveKeys{0.1, &counted});
+  EXPECT_EQ(readFileBytes(fx.dir.file("markers.fbx")), expected);
+  EXPECT_EQ(counted.before, 3 * 3 * 20);
+  EXPECT_LT(counted.after, counted.before / 4) << "straight lines keep their ends";
+  EXPECT_TRUE(dialog.statusText().contains(QStringLiteral("Kept %1 of %2 keys").arg(counted.after).arg(counted.before)))
+      << dialog.statusText().toStdString();
+  // Remembered: the next dialog opens on FBX with the same options.
+  ExportDialog again(fx.document);
+  EXPECT_EQ(again.format(), AnimationFormat::Fbx);
 }
 
 TEST(ExportDialog, RemembersTheLastFolderAndFormat)

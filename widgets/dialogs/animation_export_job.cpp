@@ -1,6 +1,7 @@
 #include "dialogs/animation_export_job.h"
 
 #include "mocap/io/bvh_writer.h"
+#include "mocap/io/fbx_writer.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/io/mesh_sequence_writer.h"
@@ -18,6 +19,27 @@ ExportStatus writeBvhFile(const AnimationExportJob& job, const JobControl& contr
   if (control.cancelled())
     return ExportStatus::Cancelled;
   writeFileAtomically(job.output, text);
+  control.reportNow(1.0);
+  return ExportStatus::Done;
+}
+
+/// The markers as FBX, with reduceMm each curve keyed within it (in the take's units, as `mocap
+/// convert --reduce` does); the keys kept go to `keys`, their largest error in mm.
+ExportStatus writeFbxFile(const AnimationExportJob& job, const JobControl& control, std::optional<KeyCount>& keys)
+{
+  const double mmPerUnit = millimetresPer(job.markers.units());
+  KeyCount counted;
+  FbxCurveKeys reduction;
+  if (job.reduceMm)
+    reduction = {*job.reduceMm / mmPerUnit, &counted};
+  const std::string text = markersFbx(job.markers, job.up, reduction);
+  if (control.cancelled())
+    return ExportStatus::Cancelled;
+  writeFileAtomically(job.output, text);
+  if (job.reduceMm) {
+    counted.maxError *= mmPerUnit;
+    keys = counted;
+  }
   control.reportNow(1.0);
   return ExportStatus::Done;
 }
@@ -54,6 +76,7 @@ std::vector<std::filesystem::path> filesReplacedBy(const AnimationExportJob& job
   };
   switch (job.format) {
   case AnimationFormat::Bvh:
+  case AnimationFormat::Fbx:
     keepIfFile(job.output);
     break;
   case AnimationFormat::ObjPlusPc2:
@@ -77,8 +100,12 @@ ExportOutcome runAnimationExport(const AnimationExportJob& job, const JobControl
 {
   ExportOutcome outcome;
   try {
-    outcome.status =
-        job.format == AnimationFormat::Bvh ? writeBvhFile(job, control) : writeMeshFrames(job, control);
+    switch (job.format) {
+    case AnimationFormat::Bvh: outcome.status = writeBvhFile(job, control); break;
+    case AnimationFormat::Fbx: outcome.status = writeFbxFile(job, control, outcome.keys); break;
+    case AnimationFormat::ObjSequence:
+    case AnimationFormat::ObjPlusPc2: outcome.status = writeMeshFrames(job, control); break;
+    }
   } catch (const std::exception& e) {  // nothing may throw across the worker boundary
     outcome.status = ExportStatus::Failed;
     outcome.error = e.what();

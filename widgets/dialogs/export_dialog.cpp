@@ -6,7 +6,9 @@
 #include "mocap/io/take_io.h"
 #include "mocap/model/take_slice.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -14,6 +16,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
@@ -33,12 +36,17 @@ namespace {
 
 const QString kFolderKey = QStringLiteral("export/folder");
 const QString kFormatKey = QStringLiteral("export/format");
+const QString kFbxUpKey = QStringLiteral("export/fbxUp");
+const QString kFbxReduceKey = QStringLiteral("export/fbxReduce");
+const QString kFbxReduceMmKey = QStringLiteral("export/fbxReduceMm");
+constexpr double kDefaultReduceMm = 0.1;
 
 // The output file's extension for `format`; an OBJ sequence is a folder, which has none.
 QString extensionOf(AnimationFormat format)
 {
   switch (format) {
   case AnimationFormat::Bvh: return QStringLiteral(".bvh");
+  case AnimationFormat::Fbx: return QStringLiteral(".fbx");
   case AnimationFormat::ObjPlusPc2: return QStringLiteral(".pc2");
   case AnimationFormat::ObjSequence: break;
   }
@@ -49,16 +57,15 @@ QString extensionOf(AnimationFormat format)
 QString pathForFormat(const QString& path, AnimationFormat format)
 {
   const QFileInfo info(path);
-  const QString base = info.suffix().compare(QStringLiteral("bvh"), Qt::CaseInsensitive) == 0 ||
-                               info.suffix().compare(QStringLiteral("pc2"), Qt::CaseInsensitive) == 0
-                           ? info.completeBaseName()
-                           : info.fileName();
+  const QString suffix = info.suffix().toLower();
+  const bool known = suffix == QStringLiteral("bvh") || suffix == QStringLiteral("pc2") || suffix == QStringLiteral("fbx");
+  const QString base = known ? info.completeBaseName() : info.fileName();
   return QDir(info.path()).filePath(base + extensionOf(format));
 }
 
 bool meshFormat(AnimationFormat format)
 {
-  return format != AnimationFormat::Bvh;
+  return !markerFormat(format);
 }
 
 int clampToInt(qint64 value)
@@ -86,10 +93,14 @@ void ExportDialog::buildLayout()
   auto* form = new QFormLayout;
   m_format = new QComboBox(this);
   m_format->addItem(tr("BVH of the markers (.bvh)"), static_cast<int>(AnimationFormat::Bvh));
+  m_format->addItem(tr("FBX of the markers as animated nulls (.fbx)"), static_cast<int>(AnimationFormat::Fbx));
   m_format->addItem(tr("OBJ sequence of the deformed mesh (folder)"), static_cast<int>(AnimationFormat::ObjSequence));
   m_format->addItem(tr("OBJ + PC2 point cache of the deformed mesh (.pc2)"),
                     static_cast<int>(AnimationFormat::ObjPlusPc2));
   form->addRow(tr("&Format:"), m_format);
+  auto* fbxLabel = new QLabel(tr("FB&X:"), this);
+  form->addRow(fbxLabel, buildFbxRow());
+  fbxLabel->setBuddy(m_up);
 
   auto* pathRow = new QHBoxLayout;
   m_path = new QLineEdit(this);
@@ -146,6 +157,37 @@ void ExportDialog::buildLayout()
   resize(560, 220);
 }
 
+QLayout* ExportDialog::buildFbxRow()
+{
+  auto* row = new QHBoxLayout;
+  m_up = new QComboBox(this);
+  m_up->addItem(tr("Z up"), static_cast<int>(FbxUpAxis::Z));
+  m_up->addItem(tr("Y up"), static_cast<int>(FbxUpAxis::Y));
+  m_up->setToolTip(tr("The take's up axis, declared in the file so the importer turns the scene upright"));
+  m_reduce = new QCheckBox(tr("Keep the fewest keys within"), this);
+  m_reduce->setToolTip(tr("Each marker keeps the fewest keys whose linear interpolation stays within this "
+                          "distance of every frame (as mocap convert --reduce); otherwise every frame is a key"));
+  m_reduceMm = new QDoubleSpinBox(this);
+  m_reduceMm->setDecimals(3);
+  m_reduceMm->setRange(0.0, 1000.0);
+  m_reduceMm->setSingleStep(0.05);
+  m_reduceMm->setSuffix(tr(" mm"));
+  row->addWidget(m_up);
+  row->addWidget(m_reduce);
+  row->addWidget(m_reduceMm);
+  row->addStretch();
+  connect(m_reduce, &QCheckBox::toggled, this, &ExportDialog::onFormatChanged);
+  return row;
+}
+
+void ExportDialog::setFbxOptions(FbxUpAxis up, std::optional<double> reduceMm)
+{
+  m_up->setCurrentIndex(m_up->findData(static_cast<int>(up)));
+  m_reduce->setChecked(reduceMm.has_value());
+  if (reduceMm)
+    m_reduceMm->setValue(*reduceMm);
+}
+
 void ExportDialog::restoreSettings()
 {
   const QSettings settings;
@@ -173,8 +215,11 @@ void ExportDialog::restoreSettings()
   const QString base = takeFile.completeBaseName().isEmpty() ? QStringLiteral("take") : takeFile.completeBaseName();
   m_path->setText(QDir(folder).filePath(base));
   const int remembered = settings.value(kFormatKey, 0).toInt();
-  const bool known = remembered >= 0 && remembered <= static_cast<int>(AnimationFormat::ObjPlusPc2);
+  const bool known = remembered >= 0 && remembered <= static_cast<int>(AnimationFormat::Fbx);
   m_rememberedFormat = known ? static_cast<AnimationFormat>(remembered) : AnimationFormat::Bvh;
+  m_up->setCurrentIndex(std::max(0, m_up->findData(settings.value(kFbxUpKey, static_cast<int>(FbxUpAxis::Z)).toInt())));
+  m_reduce->setChecked(settings.value(kFbxReduceKey, false).toBool());
+  m_reduceMm->setValue(settings.value(kFbxReduceMmKey, kDefaultReduceMm).toDouble());
   setFormat(m_rememberedFormat);
   onFormatChanged();  // the extension, even when the format did not change
 }
@@ -192,7 +237,7 @@ void ExportDialog::setMeshSource(Mesh mesh, MeshFrameSource source, const QStrin
     item->setToolTip(available ? QString() : tr("Load a face mesh first: these formats export the deformed mesh."));
   }
   if (!available && meshFormat(format()))
-    setFormat(AnimationFormat::Bvh);
+    setFormat(markerFormat(m_rememberedFormat) ? m_rememberedFormat : AnimationFormat::Bvh);
   else if (available)
     setFormat(m_rememberedFormat);
 }
@@ -313,6 +358,10 @@ void ExportDialog::onFormatChanged()
 {
   if (!m_path->text().isEmpty())
     m_path->setText(pathForFormat(m_path->text(), format()));
+  const bool fbx = format() == AnimationFormat::Fbx;
+  m_up->setEnabled(fbx);
+  m_reduce->setEnabled(fbx);
+  m_reduceMm->setEnabled(fbx && m_reduce->isChecked());
 }
 
 void ExportDialog::browse()
@@ -322,6 +371,8 @@ void ExportDialog::browse()
     path = QFileDialog::getExistingDirectory(this, tr("Folder for the OBJ sequence"), m_path->text());
   else if (format() == AnimationFormat::Bvh)
     path = QFileDialog::getSaveFileName(this, tr("Export BVH"), m_path->text(), tr("BVH (*.bvh)"));
+  else if (format() == AnimationFormat::Fbx)
+    path = QFileDialog::getSaveFileName(this, tr("Export FBX"), m_path->text(), tr("FBX (*.fbx)"));
   else
     path = QFileDialog::getSaveFileName(this, tr("Export Point Cache"), m_path->text(), tr("PC2 point cache (*.pc2)"));
   if (!path.isEmpty())
@@ -355,8 +406,11 @@ AnimationExportJob ExportDialog::makeJob() const
   job.begin = m_first->value() - take.firstFrame();
   job.end = m_last->value() - take.firstFrame() + 1;
   job.startFrame = static_cast<float>(m_first->value());
-  if (job.format == AnimationFormat::Bvh) {
+  if (markerFormat(job.format)) {
     job.markers = sliceFrames(take, job.begin, job.end);
+    job.up = static_cast<FbxUpAxis>(m_up->currentData().toInt());
+    if (m_reduce->isChecked())
+      job.reduceMm = m_reduceMm->value();
   } else {
     job.mesh = m_mesh;
     job.source = m_source;
@@ -388,6 +442,9 @@ bool ExportDialog::startExport()
   const QFileInfo output(m_path->text().trimmed());
   settings.setValue(kFolderKey, output.absolutePath());
   settings.setValue(kFormatKey, static_cast<int>(job.format));
+  settings.setValue(kFbxUpKey, m_up->currentData().toInt());
+  settings.setValue(kFbxReduceKey, m_reduce->isChecked());
+  settings.setValue(kFbxReduceMmKey, m_reduceMm->value());
   m_rememberedFormat = job.format;
 
   m_total = job.frameCount();
@@ -439,9 +496,13 @@ void ExportDialog::onFinished(const ExportOutcome& outcome)
   case ExportStatus::Done:
   {
     QString done = tr("Exported %n frame(s) to %1.", nullptr, static_cast<int>(m_total)).arg(m_runningOutput);
-    if (format() == AnimationFormat::Bvh)
-      if (const std::string leftOut = leftOutOnWriting(m_document.take(), TakeFormat::Bvh); !leftOut.empty())
+    if (markerFormat(format()))
+      if (const std::string leftOut = leftOutOnWriting(
+              m_document.take(), format() == AnimationFormat::Fbx ? TakeFormat::Fbx : TakeFormat::Bvh);
+          !leftOut.empty())
         done += QLatin1Char(' ') + tr("Note: %1.").arg(QString::fromStdString(leftOut));
+    if (outcome.keys)
+      done += QLatin1Char(' ') + keysText(*outcome.keys);
     m_progressBar->setValue(m_progressBar->maximum());
     showStatus(done, false);
     break;
@@ -462,7 +523,23 @@ void ExportDialog::setRunning(bool running)
 {
   for (QWidget* input : std::initializer_list<QWidget*>{m_format, m_path, m_browse, m_range, m_first, m_last, m_export})
     input->setEnabled(!running);
+  if (!running)
+    onFormatChanged();  // the FBX options as the format allows
+  else
+    for (QWidget* input : std::initializer_list<QWidget*>{m_up, m_reduce, m_reduceMm})
+      input->setEnabled(false);
   m_cancel->setText(running ? tr("Cancel") : tr("Close"));
+}
+
+QString ExportDialog::keysText(const KeyCount& keys) const
+{
+  const QLocale locale;
+  const double share =
+      keys.before > 0 ? 100.0 * static_cast<double>(keys.after) / static_cast<double>(keys.before) : 100.0;
+  return tr("Kept %1 of %2 keys (%3 %), largest error %4 mm (tolerance %5 mm).")
+      .arg(locale.toString(static_cast<qlonglong>(keys.after)), locale.toString(static_cast<qlonglong>(keys.before)),
+           locale.toString(share, 'f', 1), locale.toString(keys.maxError, 'f', 3),
+           locale.toString(m_reduceMm->value(), 'f', 3));
 }
 
 void ExportDialog::showStatus(const QString& text, bool error)

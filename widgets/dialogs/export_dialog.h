@@ -4,8 +4,12 @@
 
 #include <QDialog>
 
+#include <optional>
 
+
+class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
@@ -17,12 +21,14 @@ namespace mocap::ui {
 class JobRunner;
 class TakeDocument;
 
-/// File ▸ Export Animation: the markers as BVH, or the deformed face mesh as an OBJ sequence or an
+/// File ▸ Export Animation: the markers as BVH or FBX (animated nulls, the up axis declared, keys
+/// optionally reduced within a tolerance in mm as `mocap convert --reduce`; the keys kept and the
+/// largest error are reported), or the deformed face mesh as an OBJ sequence or an
 /// OBJ + PC2 point cache, over a frame range: the whole take unless the user picks the range
 /// selected on the curves or types one. Existing files are replaced only after the user agreed
 /// (a question listing them). The export runs on a worker thread with a progress bar and Cancel;
-/// a cancelled or failed export leaves no file. The last folder and format are
-/// remembered (QSettings "export/folder", "export/format"). The mesh formats need a source of
+/// a cancelled or failed export leaves no file. The last folder, format and FBX options are
+/// remembered (QSettings "export/folder", "export/format", "export/fbx…"). The mesh formats need a source of
 /// deformed frames (setMeshSource); without one they are disabled.
 class ExportDialog final : public QDialog
 {
@@ -44,6 +50,8 @@ public:
   void setOutputPath(const QString& path);
   /// Frame numbers as the take counts them (from Take::firstFrame()), both included.
   void setFrameRange(qint64 first, qint64 last);
+  /// FBX: the up axis declared, and the key tolerance in mm (nullopt: every frame a key).
+  void setFbxOptions(FbxUpAxis up, std::optional<double> reduceMm);
   [[nodiscard]] qint64 firstFrame() const;
   [[nodiscard]] qint64 lastFrame() const;
   /// What the Range box offers: the whole take (the default), the range selected on the curves
@@ -77,6 +85,7 @@ signals:
 
 private:
   void buildLayout();
+  QLayout* buildFbxRow();
   void restoreSettings();
   void browse();
   void onFormatChanged();
@@ -88,6 +97,7 @@ private:
   /// True when the user agreed to replace what `job` would overwrite (or nothing would be).
   [[nodiscard]] bool confirmReplacing(const AnimationExportJob& job);
   void showStatus(const QString& text, bool error);
+  [[nodiscard]] QString keysText(const KeyCount& keys) const;
   [[nodiscard]] QString checkSettings() const;
   [[nodiscard]] AnimationExportJob makeJob() const;
 
@@ -100,6 +110,9 @@ private:
   QComboBox* m_format = nullptr;
   QLineEdit* m_path = nullptr;
   QPushButton* m_browse = nullptr;
+  QComboBox* m_up = nullptr;
+  QCheckBox* m_reduce = nullptr;
+  QDoubleSpinBox* m_reduceMm = nullptr;
   QComboBox* m_range = nullptr;
   QSpinBox* m_first = nullptr;
   QSpinBox* m_last = nullptr;

@@ -15,6 +15,7 @@ void BlendshapeSolveModel::setRig(std::shared_ptr<const BlendshapeRig> rig, QStr
   m_rig = std::move(rig);
   m_rigPath = std::move(path);
   m_result = {};
+  m_read.reset();
   m_selected.clear();
   ++m_generation;
   emit rigChanged();
@@ -35,6 +36,7 @@ bool BlendshapeSolveModel::setResult(BlendshapeSolveResult result, const Blendsh
     return false;
   m_result = std::move(result);
   m_options = options;
+  m_read.reset();
   ++m_generation;
   emit resultChanged();
   return true;
@@ -43,7 +45,22 @@ bool BlendshapeSolveModel::setResult(BlendshapeSolveResult result, const Blendsh
 void BlendshapeSolveModel::clearResult()
 {
   m_result = {};
+  m_read.reset();
   ++m_generation;
+  emit resultChanged();
+}
+
+void BlendshapeSolveModel::setActor(std::shared_ptr<const ActorProfile> actor, QString path)
+{
+  m_actor = std::move(actor);
+  m_actorPath = m_actor ? std::move(path) : QString();
+  emit actorChanged();
+}
+
+void BlendshapeSolveModel::swapCurves(BlendshapeSolveResult& curves, std::optional<ReadWeightCurves>& read)
+{
+  std::swap(m_result, curves);
+  std::swap(m_read, read);
   emit resultChanged();
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "document/retarget_map_model.h"
+
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/model/blendshape_rig.h"
 
@@ -9,9 +11,20 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mocap::ui {
+
+/// Weight curves read from a file rather than solved from the take (a Live Link Face recording):
+/// where from, and the rate and first time they keep in exports (row i is shown at take frame i).
+struct ReadWeightCurves
+{
+  QString path;
+  double frameRate = 0.0;
+  double startSeconds = 0.0;
+  QString firstTimecode;  ///< as the file wrote it
+};
 
 /// The blendshape rig the open take is solved to and the weights solved, beside the document:
 /// the rig (its neutral is the face mesh the binding is made on), the last solve's weights,
@@ -38,6 +51,12 @@ public:
   /// the current rig; anything else is refused and returns false).
   bool setResult(BlendshapeSolveResult result, const BlendshapeSolveOptions& options);
   void clearResult();
+  /// Swaps the curves (weights #frames × #shapes of the current rig) and where they were read
+  /// from with the model's, without starting a new generation: ReplaceWeightCurvesCommand's
+  /// undoable replacement, which keeps the edits around it on the stack in order.
+  void swapCurves(BlendshapeSolveResult& curves, std::optional<ReadWeightCurves>& read);
+  /// Where the curves were read from, or nullopt when they were solved (or there are none).
+  [[nodiscard]] const std::optional<ReadWeightCurves>& readCurves() const { return m_read; }
   [[nodiscard]] bool hasResult() const { return m_result.weights.rows() > 0; }
   [[nodiscard]] const BlendshapeSolveResult& result() const { return m_result; }
   [[nodiscard]] const Eigen::MatrixXd& weights() const { return m_result.weights; }
@@ -55,6 +74,15 @@ public:
   [[nodiscard]] Eigen::MatrixXd weightBlock(const std::vector<Eigen::Index>& shapes, Eigen::Index first,
                                             Eigen::Index last) const;
 
+  /// The actor profile the solve uses (its neutral and range, `mocap solve --actor`), or none;
+  /// `path` is the file it was read from. ActorActions loads it and remembers it with the take.
+  void setActor(std::shared_ptr<const ActorProfile> actor, QString path);
+  [[nodiscard]] const std::shared_ptr<const ActorProfile>& actor() const { return m_actor; }
+  [[nodiscard]] const QString& actorPath() const { return m_actorPath; }
+
+  /// The map the Retarget section shows the curves through (kept when the rig or take changes).
+  [[nodiscard]] RetargetMapModel& retargetMap() { return m_retargetMap; }
+
   /// The shapes shown as curves and edited, ascending.
   void setSelectedShapes(std::vector<Eigen::Index> shapes);
   [[nodiscard]] const std::vector<Eigen::Index>& selectedShapes() const { return m_selected; }
@@ -70,14 +98,19 @@ signals:
   /// Weight edits changed frames first … last.
   void weightsEdited(Eigen::Index first, Eigen::Index last);
   void selectedShapesChanged();
+  void actorChanged();
 
 private:
   std::shared_ptr<const BlendshapeRig> m_rig;
   QString m_rigPath;
   BlendshapeSolveResult m_result;
   BlendshapeSolveOptions m_options;
+  std::optional<ReadWeightCurves> m_read;
   int m_generation = 0;
   std::vector<Eigen::Index> m_selected;
+  RetargetMapModel m_retargetMap;
+  std::shared_ptr<const ActorProfile> m_actor;
+  QString m_actorPath;
 };
 
 } // namespace mocap::ui

@@ -1,6 +1,9 @@
 #include "panels/blendshape_solve_panel.h"
 
+#include "actions/actor_actions.h"
+#include "actions/live_link_recording_import.h"
 #include "actions/weight_edit_actions.h"
+#include "dialogs/live_link_open_dialog.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/job_runner.h"
@@ -10,14 +13,13 @@
 #include "panels/job_progress_row.h"
 #include "panels/flow_layout.h"
 #include "panels/panel_folder.h"
+#include "panels/retarget_section.h"
 #include "panels/status_line.h"
 #include "views/blendshape_scene.h"
 #include "views/status_timeout.h"
 
-#include "mocap/io/gltf_writer.h"
-#include "mocap/io/live_link_face_csv.h"
 #include "mocap/io/rig_io.h"
-#include "mocap/io/weights_csv_writer.h"
+#include "mocap/io/weight_output.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -67,8 +69,14 @@ SolveRun solveInBackground(const std::shared_ptr<const BlendshapeRig>& rig, cons
   SolveRun run;
   run.options = options;
   try {
-    const BlendshapeSolver solver(*rig, binding, take, options);
-    run.result = solver.solve(take, {}, control);
+    std::optional<Take> inActorUnits;  // an actor's neutral is in its own units, as `mocap solve --actor` converts
+    if (options.actor && take.units() != options.actor->units) {
+      inActorUnits = take;
+      inActorUnits->convertUnits(options.actor->units);
+    }
+    const Take& solved = inActorUnits ? *inActorUnits : take;
+    const BlendshapeSolver solver(*rig, binding, solved, options);
+    run.result = solver.solve(solved, {}, control);
     run.markers = solver.markers().size();
     run.setupSeconds = solver.setupSeconds();
   } catch (const JobCancelled&) {
@@ -92,7 +100,8 @@ BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d&
     : QWidget(parent), m_session(session), m_document(session.document()), m_faceMesh(session.faceMesh()),
       m_model(session.blendshapes()),
       m_scene(new BlendshapeScene(m_model, m_faceMesh, view, this)),
-      m_edits(new WeightEditActions(m_document, m_model, this)), m_jobs(new JobRunner(this))
+      m_edits(new WeightEditActions(m_document, m_model, this)), m_actors(new ActorActions(session, *this, this)),
+      m_jobs(new JobRunner(this))
 {
   TakeDocument& document = m_document;
   buildUi();
@@ -102,6 +111,10 @@ BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d&
   connect(&m_model, &BlendshapeSolveModel::selectedShapesChanged, this, &BlendshapeSolvePanel::onModelSelectionChanged);
   connect(&m_model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeSolvePanel::fillShapeList);
   connect(&document, &TakeDocument::takeReset, &m_model, &BlendshapeSolveModel::clearResult);
+  connect(m_actors, &ActorActions::message, this, [this](const QString& text, int timeoutMs) {
+    showStatus(text);
+    emit message(text, timeoutMs);
+  });
   // Weights solved before an edit of the take no longer follow it: say so (they stay, as a product).
   const auto stale = [this] {
     if (m_model.hasResult() && !busy())
@@ -120,6 +133,8 @@ void BlendshapeSolvePanel::buildUi()
   layout->addWidget(buildSolveBox());
   layout->addWidget(buildShapesBox(), 1);
   layout->addWidget(buildDisplayBox());
+  m_retarget = new RetargetSection(m_document, m_model, m_model.retargetMap(), this);
+  layout->addWidget(m_retarget);
   m_status = new QLabel(this);
   m_status->setWordWrap(true);
   m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -261,12 +276,20 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   rows->addWidget(m_show);
   rows->addWidget(m_beside);
   auto* buttons = new FlowLayout;
+  m_openLiveLink = new QPushButton(tr("Open Live Link Recording…"), box);
+  m_openLiveLink->setToolTip(tr("A Live Link Face CSV as the rig's weight curves, through a map (undoable)"));
+  connect(m_openLiveLink, &QPushButton::clicked, this, &BlendshapeSolvePanel::openLiveLinkDialog);
   m_exportCsv = new QPushButton(tr("Export Weights…"), box);
   m_exportCsv->setToolTip(tr("Weight curves as CSV: one column per shape (plain or Live Link Face layout)"));
-  connect(m_exportCsv, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportCsvDialog);
-  m_exportGlb = new QPushButton(tr("Export Rig GLB…"), box);
-  m_exportGlb->setToolTip(tr("The rig with its morph targets and the weights as an animation (Blender, Unity, three.js)"));
-  connect(m_exportGlb, &QPushButton::clicked, this, &BlendshapeSolvePanel::exportGlbDialog);
+  connect(m_exportCsv, &QPushButton::clicked, this, [this] { openExportDialog(RigExportFormat::WeightsCsv); });
+  m_exportGlb = new QPushButton(tr("Export Rig…"), box);
+  m_exportGlb->setToolTip(tr("The rig with its blend shapes and the weights as animation curves, FBX or glTF "
+                             "(Unreal, Maya, MotionBuilder, Blender, Unity), through a retarget map, keys reduced"));
+  connect(m_exportGlb, &QPushButton::clicked, this, [this] { openExportDialog(RigExportFormat::Fbx); });
+  auto* openRow = new QHBoxLayout;  // a row of its own: three buttons overflow a narrow dock
+  openRow->addWidget(m_openLiveLink);
+  openRow->addStretch();
+  rows->addLayout(openRow);
   buttons->addWidget(m_exportCsv);
   buttons->addWidget(m_exportGlb);
   rows->addLayout(buttons);
@@ -274,8 +297,10 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
     m_exportCsv->setEnabled(m_model.hasResult());
     m_exportGlb->setEnabled(m_model.hasResult());
   });
+  connect(&m_model, &BlendshapeSolveModel::rigChanged, this, [this] { m_openLiveLink->setEnabled(m_model.hasRig()); });
   m_exportCsv->setEnabled(false);
   m_exportGlb->setEnabled(false);
+  m_openLiveLink->setEnabled(false);
   return box;
 }
 
@@ -336,6 +361,7 @@ BlendshapeSolveOptions BlendshapeSolvePanel::optionsFromUi() const
   // The neutral frame is the face mesh's: the binding was made on it.
   options.neutralFrame = m_faceMesh.options().neutralFrame;
   options.scale = m_faceMesh.options().scale;
+  options.actor = m_model.actor();
   return options;
 }
 
@@ -546,20 +572,31 @@ void BlendshapeSolvePanel::showEditResult(const QString& why)
   emit message(why, kStatusMessageMs);
 }
 
-QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
+RigExportSource BlendshapeSolvePanel::exportSource() const
+{
+  const Take& take = m_document.take();
+  RigExportSource source;
+  source.rig = m_model.rig();
+  source.weights = m_model.weights();
+  source.baseName = QFileInfo(m_document.filePath()).completeBaseName();
+  if (const std::optional<ReadWeightCurves>& read = m_model.readCurves()) {
+    source.frameRate = read->frameRate;  // the recording's own timing, timecode kept
+    source.startSeconds = read->startSeconds;
+    source.baseName = QFileInfo(read->path).completeBaseName();
+  } else {
+    source.frameRate = take.frameRate();
+    source.firstFrame = take.firstFrame();
+    source.headRotation = solvedHeadRotation(m_session);
+  }
+  return source;
+}
+
+QString BlendshapeSolvePanel::writeCurves(const QString& path, const WeightOutput& options)
 {
   if (!m_model.hasResult())
     return tr("Solve the take first.");
   try {
-    const Take& take = m_document.take();
-    const std::vector<std::string> names = m_model.rig()->shapeNames();
-    if (liveLink) {
-      // Live Link Face's own layout: the rig's shapes onto its 52 ARKit curves (ICT FaceKit names by
-      // the shipped map), the head's turn when the take is stabilized, timecode at the take's rate.
-      writeLiveLinkFaceCsv(path.toStdString(), sessionLiveLinkRecording(m_session));
-    } else {
-      writeWeightsCsv(path.toStdString(), names, m_model.weights(), take.firstFrame(), take.frameRate());
-    }
+    (void)writeWeightOutput(path.toStdString(), *m_model.rig(), m_model.weights(), options);
   } catch (const std::exception& e) {
     showStatus(tr("Cannot write the weights: %1").arg(QString::fromStdString(e.what())), true);
     return m_status->text();
@@ -568,17 +605,49 @@ QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
   return {};
 }
 
+QString BlendshapeSolvePanel::exportCsv(const QString& path, bool liveLink)
+{
+  WeightOutput options = rigExportOptions(exportSource());
+  options.liveLink = liveLink;
+  return writeCurves(path, options);
+}
+
 QString BlendshapeSolvePanel::exportGlb(const QString& path)
 {
-  if (!m_model.hasResult())
-    return tr("Solve the take first.");
-  try {
-    writeRigGlb(path.toStdString(), *m_model.rig(), m_model.weights(), m_document.take().frameRate());
-  } catch (const std::exception& e) {
-    showStatus(tr("Cannot write the rig: %1").arg(QString::fromStdString(e.what())), true);
+  return writeCurves(path, rigExportOptions(exportSource()));
+}
+
+void BlendshapeSolvePanel::openExportDialog(RigExportFormat format)
+{
+  if (!m_model.hasResult()) {
+    showEditResult(tr("Solve the take, or open a Live Link recording, first: there are no curves to export."));
+    return;
+  }
+  RigExportDialog dialog(exportSource(), this);
+  // The weights button keeps a remembered Live Link choice; otherwise each button picks its kind.
+  const bool csv = format == RigExportFormat::WeightsCsv;
+  const bool rememberedCsv = dialog.format() == RigExportFormat::WeightsCsv || dialog.format() == RigExportFormat::LiveLinkCsv;
+  if (csv != rememberedCsv)
+    dialog.setFormat(format);
+  dialog.exec();
+  if (!dialog.statusText().isEmpty())
+    showStatus(dialog.statusText());
+}
+
+QString BlendshapeSolvePanel::openLiveLinkRecording(const QString& path, const std::optional<std::string>& map)
+{
+  const QString error = ui::openLiveLinkRecording(m_document, m_model, path, map);
+  if (!error.isEmpty()) {
+    showStatus(tr("Cannot open the recording: %1").arg(error), true);
     return m_status->text();
   }
-  showStatus(tr("Wrote %1").arg(QFileInfo(path).fileName()));
+  const ReadWeightCurves& read = *m_model.readCurves();
+  showStatus(tr("Opened %1: %n sample(s) at %2 Hz from %3 as the curves of %4 shapes; exports keep its rate and timecode.",
+                nullptr, static_cast<int>(m_model.weights().rows()))
+                 .arg(QFileInfo(path).fileName())
+                 .arg(read.frameRate, 0, 'g', 6)
+                 .arg(read.firstTimecode)
+                 .arg(m_model.weights().cols()));
   return {};
 }
 
@@ -616,29 +685,11 @@ void BlendshapeSolvePanel::loadObjDialog()
   (void)loadRig(neutral, folder);
 }
 
-void BlendshapeSolvePanel::exportCsvDialog()
+void BlendshapeSolvePanel::openLiveLinkDialog()
 {
-  const QString plain = tr("Weight curves (*.csv)"), liveLink = tr("Live Link Face CSV (*.csv)");
-  QString filter = plain;
-  QString path = QFileDialog::getSaveFileName(this, tr("Export weights"), panelFolder(kGroup), plain + QStringLiteral(";;") + liveLink,
-                                              &filter);
-  if (path.isEmpty())
-    return;
-  if (QFileInfo(path).suffix().isEmpty())
-    path += QStringLiteral(".csv");
-  rememberPanelFolder(kGroup, path);
-  (void)exportCsv(path, filter == liveLink);
-}
-
-void BlendshapeSolvePanel::exportGlbDialog()
-{
-  QString path = QFileDialog::getSaveFileName(this, tr("Export animated rig"), panelFolder(kGroup), tr("glTF binary (*.glb)"));
-  if (path.isEmpty())
-    return;
-  if (QFileInfo(path).suffix().isEmpty())
-    path += QStringLiteral(".glb");
-  rememberPanelFolder(kGroup, path);
-  (void)exportGlb(path);
+  LiveLinkOpenDialog dialog(this);
+  if (dialog.exec() == QDialog::Accepted)
+    (void)openLiveLinkRecording(dialog.recordingPath(), dialog.map());
 }
 
 } // namespace mocap::ui

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "dialogs/rig_export_dialog.h"
+
 #include "mocap/deform/blendshape_solver.h"
 #include "mocap/model/blendshape_rig.h"
 
@@ -7,6 +9,8 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
+#include <string>
 
 class QCheckBox;
 class QComboBox;
@@ -18,11 +22,13 @@ class QPushButton;
 
 namespace mocap::ui {
 
+class ActorActions;
 class BlendshapeScene;
 class BlendshapeSolveModel;
 class FaceMeshModel;
 class JobRunner;
 class MarkerView3d;
+class RetargetSection;
 class StudioSession;
 class TakeDocument;
 class WeightEditActions;
@@ -53,9 +59,12 @@ struct SolveRun
 /// the take the face mesh sees (head motion removed). Then: the rig posed by the weights in the
 /// 3D view (BlendshapeScene), the shapes with their peak weights (selecting them shows their
 /// curves in the Weights view), the marker residual and held frames in the status, undoable
-/// edits of the selected shapes over the selected frame range (scale, zero, smooth), and export
-/// of the weights as CSV (plain or Live Link Face) or of the animated rig as GLB. Settings are
-/// remembered (QSettings, "blendshapeSolve/…").
+/// edits of the selected shapes over the selected frame range (scale, zero, smooth), a Live Link
+/// Face recording opened as the rig's curves (undoable), and Export Rig (RigExportDialog: the
+/// animated rig as FBX or GLB, the weights as CSV, plain or Live Link Face, with a retarget map
+/// and key reduction as the command line has them). Settings are remembered (QSettings,
+/// "blendshapeSolve/…"). Below them the Retarget section (RetargetSection) shows the curves
+/// through a retarget map whose gains are edited in place.
 class BlendshapeSolvePanel final : public QWidget
 {
   Q_OBJECT
@@ -67,6 +76,9 @@ public:
   [[nodiscard]] BlendshapeSolveModel& model() const { return m_model; }
   [[nodiscard]] BlendshapeScene& scene() const { return *m_scene; }
   [[nodiscard]] WeightEditActions& edits() const { return *m_edits; }
+  [[nodiscard]] RetargetSection* retargetSection() const { return m_retarget; }
+  /// The Actor menu's actions; the solve uses the actor they load.
+  [[nodiscard]] ActorActions& actors() const { return *m_actors; }
 
   /// Starts reading a rig: `path` a .glb/.gltf (no folder) or a neutral .obj/.ply with
   /// `shapeFolder`. rigLoaded() tells the outcome. Returns "" or why nothing was started.
@@ -84,9 +96,18 @@ public:
 
   [[nodiscard]] BlendshapeSolveOptions optionsFromUi() const;
   /// Each returns "" or the error shown. exportCsv writes Frame,Time,<shape>,…, or with `liveLink`
-  /// Live Link Face's own layout (live_link_face_csv.h, through liveLinkFaceMapForRig).
+  /// Live Link Face's own layout (live_link_face_csv.h, through liveLinkFaceMapForRig); both
+  /// write as Export Rig does with no map and every frame keyed.
   QString exportCsv(const QString& path, bool liveLink);
   QString exportGlb(const QString& path);
+  /// What Export Rig writes: the rig and its curves, timed as the take is, or as the recording
+  /// was when the curves were read from one.
+  [[nodiscard]] RigExportSource exportSource() const;
+  /// Opens Export Rig with `format` chosen (the dock's Export buttons).
+  void openExportDialog(RigExportFormat format);
+  /// Opens a Live Link Face recording as the rig's curves (openLiveLinkRecording). Returns "" or
+  /// the error shown.
+  QString openLiveLinkRecording(const QString& path, const std::optional<std::string>& map = std::nullopt);
 
   [[nodiscard]] QString statusText() const;
   [[nodiscard]] QListWidget* shapeList() const { return m_shapes; }
@@ -120,8 +141,9 @@ private:
   void showEditResult(const QString& why);
   void loadGltfDialog();
   void loadObjDialog();
-  void exportCsvDialog();
-  void exportGlbDialog();
+  void openLiveLinkDialog();
+  /// Writes the curves as Export Rig would with `options` (no map, every frame keyed for the dock's own exports).
+  QString writeCurves(const QString& path, const WeightOutput& options);
 
   StudioSession& m_session;
   TakeDocument& m_document;
@@ -129,6 +151,7 @@ private:
   BlendshapeSolveModel& m_model;
   BlendshapeScene* m_scene = nullptr;
   WeightEditActions* m_edits = nullptr;
+  ActorActions* m_actors = nullptr;
   JobRunner* m_jobs = nullptr;  // one job at a time: a rig load or a solve
   bool m_loadingSettings = false;
   bool m_syncingSelection = false;
@@ -149,6 +172,8 @@ private:
   QCheckBox* m_beside = nullptr;
   QPushButton* m_exportCsv = nullptr;
   QPushButton* m_exportGlb = nullptr;
+  QPushButton* m_openLiveLink = nullptr;
+  RetargetSection* m_retarget = nullptr;
 };
 
 } // namespace mocap::ui

@@ -135,4 +135,14 @@ LiveLinkFaceRecording liveLinkFaceRecordingOfRig(const std::vector<std::string>&
   return liveLinkFaceRecording(mapped.names, mapped.weights, frameRate, headRotation);
 }
 
+Eigen::MatrixXd liveLinkFaceWeightsOnRig(const Eigen::Ref<const Eigen::MatrixXd>& curves,
+                                         const std::vector<std::string>& rigShapes,
+                                         const std::optional<RetargetMap>& map)
+{
+  const RetargetMap used = map ? *map : rigMapFromLiveLinkFace(rigShapes);
+  checkLiveLinkFaceSources(used);
+  const MappedWeights mapped = applyRetargetMap(used, liveLinkFaceShapeNames(), curves);
+  return mappedWeightsOnRig(used, mapped, rigShapes);
+}
+
 } // namespace mocap

@@ -3,6 +3,8 @@
 #include "mocap/io/live_link_face_csv.h"
 #include "mocap/model/retarget_map.h"
 
+#include <Eigen/Core>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,5 +48,14 @@ void checkLiveLinkFaceSources(const RetargetMap& map);
                                                                const Eigen::Ref<const Eigen::MatrixXd>& weights,
                                                                const std::optional<RetargetMap>& map, double frameRate,
                                                                const Eigen::Ref<const Eigen::MatrixXd>& headRotation);
+/// A recording's curves (#rows × 52, in liveLinkFaceShapeNames() order) as weights of a rig
+/// (#rows × #rig shapes, in the rig's order) through `map` (the 52 curves onto the rig's shapes)
+/// or, when none, rigMapFromLiveLinkFace; a shape no channel names stays 0. What `mocap convert
+/// REC.csv` and the studio's Open Live Link Recording both read. Throws InvalidArgument as
+/// rigMapFromLiveLinkFace, checkLiveLinkFaceSources, applyRetargetMap and mappedWeightsOnRig (a
+/// channel the rig lacks), naming the channel and its line. O(#rows · (Σ #sources + #shapes)).
+[[nodiscard]] Eigen::MatrixXd liveLinkFaceWeightsOnRig(const Eigen::Ref<const Eigen::MatrixXd>& curves,
+                                                       const std::vector<std::string>& rigShapes,
+                                                       const std::optional<RetargetMap>& map);
 
 } // namespace mocap

@@ -1,7 +1,6 @@
-#include "weight_output.h"
+#include "mocap/io/weight_output.h"
 
-#include "cli_error.h"
-
+#include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/io/gltf_writer.h"
 #include "mocap/io/live_link_face_csv.h"
@@ -9,7 +8,7 @@
 #include "mocap/io/shipped_retarget_maps.h"
 #include "mocap/io/weights_csv_writer.h"
 
-namespace mocap::cli {
+namespace mocap {
 
 namespace {
 
@@ -51,7 +50,7 @@ std::optional<KeyCount> writeMapped(const std::filesystem::path& out, const std:
       fbx.keys = {options.reduce, &count};
     writeRigFbx(out, rig, weights, options.frameRate, fbx);
   } else {
-    throw UsageError("weights are written to .csv, .glb or .fbx, not '" + out.string() + "'");
+    throw InvalidArgument("weights are written to .csv, .glb or .fbx, not '" + out.string() + "'");
   }
   return reduce ? std::optional<KeyCount>(count) : std::nullopt;
 }
@@ -83,10 +82,4 @@ void checkWeightOutput(const BlendshapeRig& rig, const WeightOutput& options)
     (void)applyRetargetMap(readRetargetMapByNameOrPath(*options.map), rig.shapeNames(), noFrames);
 }
 
-void checkMapArgument(const std::optional<std::string>& map)
-{
-  if (map)
-    (void)readRetargetMapByNameOrPath(*map);
-}
-
-} // namespace mocap::cli
+} // namespace mocap

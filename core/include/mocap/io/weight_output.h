@@ -9,14 +9,15 @@
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <vector>
 
-namespace mocap::cli {
+namespace mocap {
 
-/// How solved (or read) weight curves are written, shared by `mocap solve` and `mocap convert`.
+/// How solved (or read) weight curves are written: `mocap solve`, `mocap convert` and the
+/// studio's Export Rig all write through writeWeightOutput, so each gets the same map and key
+/// reduction.
 struct WeightOutput
 {
-  std::optional<std::string> map;     ///< --map: a shipped map's name or a map file
+  std::optional<std::string> map;     ///< a shipped map's name or a map file (readRetargetMapByNameOrPath)
   bool liveLink = false;              ///< .csv in Live Link Face's layout (else Frame,Time,<shape>,…)
   long long firstFrame = 0;           ///< the plain CSV's first frame number
   double frameRate = 0.0;
@@ -34,18 +35,15 @@ struct WeightOutput
 /// plain or Live Link Face), or the rig with its animated weights (.glb, .fbx), each through the
 /// map when one is given (the Live Link CSV through liveLinkFaceMapForRig when not). Every check
 /// runs before the file is written, and the write is atomic. Returns the keys kept when
-/// options.reduce applied (.glb, .fbx). Throws InvalidArgument naming the map's channel and line,
-/// IoError, and UsageError for another extension. O(#frames · #shapes + the file's size).
+/// options.reduce applied (.glb, .fbx). Throws InvalidArgument naming the map's channel and line
+/// or another extension, and IoError. O(#frames · #shapes + the file's size).
 std::optional<KeyCount> writeWeightOutput(const std::filesystem::path& out, const BlendshapeRig& rig,
-                       const Eigen::Ref<const Eigen::MatrixXd>& weights, const WeightOutput& options);
+                                          const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                          const WeightOutput& options);
 
 /// The checks writeWeightOutput makes of the map against the rig (a shape the rig lacks, a curve
-/// Live Link Face does not have, a rig whose names need a map), made before the solve so they cost
+/// Live Link Face does not have, a rig whose names need a map), made before a solve so they cost
 /// none. Throws as writeWeightOutput. O(the map's size + #shapes).
 void checkWeightOutput(const BlendshapeRig& rig, const WeightOutput& options);
 
-/// Reads the retarget map `--map` names (readRetargetMapByNameOrPath) when given, before any work,
-/// so a wrong name or a malformed map costs no solve. Throws as readRetargetMapByNameOrPath.
-void checkMapArgument(const std::optional<std::string>& map);
-
-} // namespace mocap::cli
+} // namespace mocap

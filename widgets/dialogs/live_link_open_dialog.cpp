@@ -1,0 +1,95 @@
+#include "dialogs/live_link_open_dialog.h"
+
+#include "dialogs/retarget_map_chooser.h"
+
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QVBoxLayout>
+
+namespace mocap::ui {
+
+namespace {
+
+const QString kFolderKey = QStringLiteral("liveLinkOpen/folder");
+const QString kMapKey = QStringLiteral("liveLinkOpen/map");
+
+} // namespace
+
+LiveLinkOpenDialog::LiveLinkOpenDialog(QWidget* parent) : QDialog(parent)
+{
+  setWindowTitle(tr("Open Live Link Recording"));
+  auto* layout = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  auto* pathRow = new QHBoxLayout;
+  m_path = new QLineEdit(this);
+  m_path->setPlaceholderText(tr("The CSV the Live Link Face app recorded"));
+  auto* browseButton = new QPushButton(tr("&Browse…"), this);
+  pathRow->addWidget(m_path, 1);
+  pathRow->addWidget(browseButton);
+  auto* pathLabel = new QLabel(tr("&Recording:"), this);
+  pathLabel->setBuddy(m_path);
+  form->addRow(pathLabel, pathRow);
+  m_map = new RetargetMapChooser(tr("By name (arkit_to_ict for ICT names)"), this);
+  auto* mapLabel = new QLabel(tr("&Map onto the rig:"), this);
+  mapLabel->setBuddy(m_map);
+  form->addRow(mapLabel, m_map);
+  layout->addLayout(form);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Open | QDialogButtonBox::Cancel, this);
+  layout->addWidget(buttons);
+  connect(buttons, &QDialogButtonBox::accepted, this, &LiveLinkOpenDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  connect(browseButton, &QPushButton::clicked, this, &LiveLinkOpenDialog::browse);
+  const QSettings settings;
+  m_map->restoreSettingValue(settings.value(kMapKey).toString());
+  resize(560, 120);
+}
+
+QString LiveLinkOpenDialog::recordingPath() const
+{
+  return m_path->text().trimmed();
+}
+
+void LiveLinkOpenDialog::setRecordingPath(const QString& path)
+{
+  m_path->setText(path);
+}
+
+std::optional<std::string> LiveLinkOpenDialog::map() const
+{
+  return m_map->map();
+}
+
+void LiveLinkOpenDialog::setMap(const QString& nameOrPath)
+{
+  m_map->setMap(nameOrPath);
+}
+
+void LiveLinkOpenDialog::accept()
+{
+  if (recordingPath().isEmpty() || m_map->lacksFile())
+    return;
+  QSettings settings;
+  settings.setValue(kFolderKey, QFileInfo(recordingPath()).absolutePath());
+  settings.setValue(kMapKey, m_map->settingValue());
+  QDialog::accept();
+}
+
+void LiveLinkOpenDialog::browse()
+{
+  const QString folder = QSettings().value(kFolderKey, QDir::homePath()).toString();
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open Live Link Recording"),
+                                                    recordingPath().isEmpty() ? folder : recordingPath(),
+                                                    tr("Live Link Face CSV (*.csv);;All files (*)"));
+  if (!path.isEmpty())
+    m_path->setText(path);
+}
+
+} // namespace mocap::ui
