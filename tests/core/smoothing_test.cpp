@@ -186,10 +186,11 @@ TEST(Smoothing, InPlaceLeavesTheTakeAsApplyingThePatches)
   }
   for (const SmoothOptions& options : everyMethod()) {
     Take patched = original;
+    const std::vector<SamplePatch> patches = smoothTake(original, options);
     Eigen::Index patchedCount = 0;
-    for (const SamplePatch& patch : smoothTake(original, options))
+    for (const SamplePatch& patch : patches)
       patchedCount += static_cast<Eigen::Index>(patch.size());
-    applyPatches(patched, smoothTake(original, options));
+    applyPatches(patched, patches);
     Take inPlace = original;
     EXPECT_EQ(smoothTakeInPlace(inPlace, options), patchedCount) << describeSmoothOptions(options);
     EXPECT_GT(patchedCount, 0);
