@@ -11,10 +11,10 @@ namespace mocap {
 /// Appends `value` in network (big-endian) byte order, as Live Link Face and OSC send numbers. O(1).
 inline void appendBigEndian32(std::vector<std::uint8_t>& out, std::uint32_t value)
 {
-  out.push_back(static_cast<std::uint8_t>(value >> 24));
-  out.push_back(static_cast<std::uint8_t>(value >> 16));
-  out.push_back(static_cast<std::uint8_t>(value >> 8));
-  out.push_back(static_cast<std::uint8_t>(value));
+  // One range insert, not four push_backs: a VMC frame with markers is ~1 400 such words.
+  const std::uint8_t bytes[4] = {static_cast<std::uint8_t>(value >> 24), static_cast<std::uint8_t>(value >> 16),
+                                 static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
+  out.insert(out.end(), bytes, bytes + 4);
 }
 
 /// An IEEE single's bits in network byte order. O(1).
