@@ -19,6 +19,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -165,12 +166,14 @@ double rms(const std::vector<double>& values)
 }
 
 /// The calibration the issue warns about: each extent the shape's maximum in the usual (temporal,
-/// GCV) solve of the range-of-motion take, i.e. a gain of 1 / that maximum.
+/// GCV) solve of the range-of-motion take, i.e. a gain of 1 / that maximum and nothing else (no
+/// range-of-motion source, so the solve does not also undo its shrinkage).
 ActorProfile naiveProfile(const Actor& actor, ActorProfile profile)
 {
   const BlendshapeRig& rig = ictRig();
   const Take rom = actorTake(actor, rangeOfMotion(rig.shapeCount()), 8, -3.0, Eigen::Vector3d(-4.0, 6.0, 2.0));
   profile.extent.setOnes();
+  profile.romSource.clear();
   BlendshapeSolveOptions options;
   options.actor = std::make_shared<const ActorProfile>(profile);
   const Eigen::MatrixXd w = BlendshapeSolver(rig, sampleBinding(), rom, options).solve(rom).weights;
@@ -213,7 +216,8 @@ TEST(ActorProfile, OnADifferentActorTheCalibrationCutsTheRangeError)
   naive.actor = std::make_shared<const ActorProfile>(naiveProfile(actor, *profile));
   const BlendshapeSolveResult withNaive = BlendshapeSolver(rig, sampleBinding(), take, naive).solve(take);
 
-  std::vector<double> logGainFactor, logFactor, logSlopeWith, logSlopeWithout, logNaiveGainFactor;
+  std::vector<double> logGainFactor, logFactor, logSlopeWith, logSlopeWithout, logNaiveGainFactor, logNaiveSlope,
+      logExtentFactor;
   int unreached = 0;
   std::cout << "shape              factor  extent   slope without  slope with\n";
   for (Eigen::Index s = 0; s < rig.shapeCount(); ++s) {
@@ -225,6 +229,8 @@ TEST(ActorProfile, OnADifferentActorTheCalibrationCutsTheRangeError)
     const double gain = slopeWith / slopeWithout;
     logGainFactor.push_back(std::log(gain * actor.factor(s)));
     logNaiveGainFactor.push_back(std::log(slope(withNaive.weights.col(s), truth.col(s)) / slopeWithout * actor.factor(s)));
+    logNaiveSlope.push_back(std::log(slope(withNaive.weights.col(s), truth.col(s))));
+    logExtentFactor.push_back(std::log(profile->extent(s) / actor.factor(s)));
     logFactor.push_back(std::log(actor.factor(s)));
     logSlopeWith.push_back(std::log(slopeWith));
     logSlopeWithout.push_back(std::log(slopeWithout));
@@ -236,31 +242,68 @@ TEST(ActorProfile, OnADifferentActorTheCalibrationCutsTheRangeError)
   };
   std::cout << logFactor.size() << " of " << rig.shapeCount() << " shapes seen (correlation > 0.9); " << unreached
             << " not reached in the range-of-motion take\n"
-            << "RMS log(gain × factor) " << rms(logGainFactor) << " (no profile: RMS log(factor) " << rms(logFactor)
+            << "RMS log(extent / factor) " << rms(logExtentFactor) << "\nRMS log(gain × factor) " << rms(logGainFactor)
+            << " (no profile: RMS log(factor) " << rms(logFactor)
             << "; gain 1 / the ROM maximum of the usual solve: " << rms(logNaiveGainFactor)
             << ")\nRMS log(slope) with the profile " << rms(logSlopeWith) << ", without " << rms(logSlopeWithout)
+            << " (ratio " << rms(logSlopeWith) / rms(logSlopeWithout) << "; 1 / the ROM maximum of the usual solve: "
+            << rms(logNaiveSlope) << ")"
             << "\nweight RMS error with the profile " << weightRms(with.weights) << ", without "
             << weightRms(without.weights) << "\n";
-  // Measured with g++: RMS log(slope) 0.175 against 0.370 (0.47×), RMS log(gain × factor) 0.125
-  // against 0.260 (0.48×), weight RMS error 0.032 against 0.052; 1 / the usual solve's ROM
-  // maximum: 0.356, worse than none. Clang's sanitizer build (45 shapes seen): RMS log(slope) 0.184
-  // against 0.361 (0.51×), gain × factor 0.133 against 0.255 (0.52×): the issue's 0.5× is not
-  // reached robustly, so this asserts the 0.55× and 0.6× both builds reach. The gain is over the
-  // slope without the profile, which is also lowered where that solve clips a shape the actor
-  // exaggerates at the rig's 1 (gain × factor ≈ 1.18 for the brow and sneer at 1.5) or measures
-  // from one noisy neutral frame. Before the solve kept the rig's units (it weighed λ and μ by
-  // 1 / extent² in effect) RMS log(slope) was 0.199 against 0.370 (0.54×).
+  // Measured with g++ (46 shapes seen): RMS log(slope) 0.075 against 0.370 (0.20×), the extents
+  // within RMS log 0.042 of the true factors (0.16× RMS log(factor) 0.260), weight RMS error 0.035
+  // against 0.052; clang (45 shapes seen): 0.070 against 0.361 (0.19×), extents within RMS log
+  // 0.048, weight RMS error 0.034 against 0.050. The gain × factor measure is
+  // no longer the one to meet: undoing the solver's shrinkage makes the gain 1 / the slope without
+  // the profile, so gain × factor is 1 / that solve's own shrinkage (0.258, about RMS log(factor));
+  // the calibration is checked directly by its extents instead. Before the solve undid its
+  // shrinkage (extents alone, the rig's λ kept), RMS log(slope) was 0.175 against 0.370 (0.47×;
+  // clang's sanitizer build 0.51×): the true factors as extents gave 0.171, as the ridge's
+  // shrinkage (GCV's λ) stays; and gain × factor 0.125 (0.48×, clang 0.52×) could not go below
+  // 0.117 with the true factors either, since the solve without a profile measures from one noisy
+  // frame, which moves GCV's λ (0.0063 against 0.0040) and each shape's shrinkage with it.
+  // 1 / the usual solve's ROM maximum, the calibration the issue warns about: RMS log(slope) 0.132,
+  // gain × factor 0.356 (worse than none).
   ASSERT_GE(logFactor.size(), 10u);
-  EXPECT_LE(rms(logSlopeWith), 0.55 * rms(logSlopeWithout));
-  EXPECT_LE(rms(logGainFactor), 0.6 * rms(logFactor));
+  EXPECT_LE(rms(logSlopeWith), 0.5 * rms(logSlopeWithout));
+  EXPECT_LE(rms(logExtentFactor), 0.25 * rms(logFactor));
+  EXPECT_LT(rms(logSlopeWith), rms(logNaiveSlope));
   EXPECT_LT(rms(logGainFactor), rms(logNaiveGainFactor));
   EXPECT_LT(weightRms(with.weights), weightRms(without.weights));
 }
 
+TEST(ActorProfile, ACalibratedProfileReportsTheActorsFullExpressionAsOne)
+{
+  // The actor holds one shape the ridge shrinks (mouthPress_L: the solve reports about 0.8 of it
+  // alone) at its full extent: with the range-of-motion calibration the weight is 1, the solve's
+  // own shrinkage undone; the same extents without a range-of-motion source keep it.
+  const BlendshapeRig& rig = ictRig();
+  const Actor actor = differentActor();
+  const std::vector<std::string> names = rig.shapeNames();
+  const auto press = static_cast<Eigen::Index>(std::find(names.begin(), names.end(), "mouthPress_L") - names.begin());
+  ASSERT_LT(press, rig.shapeCount());
+  Eigen::MatrixXd held = Eigen::MatrixXd::Zero(300, rig.shapeCount());
+  held.block(50, press, 250, 1).setOnes();
+  const Take take = actorTake(actor, held, 11, 2.0);
+  BlendshapeSolveOptions calibrated;
+  calibrated.actor = std::make_shared<const ActorProfile>(calibratedProfile(actor));
+  ActorProfile extentsOnly = *calibrated.actor;
+  extentsOnly.romSource.clear();
+  BlendshapeSolveOptions plain;
+  plain.actor = std::make_shared<const ActorProfile>(extentsOnly);
+  const auto meanHeld = [&](const BlendshapeSolveOptions& options) {
+    const Eigen::MatrixXd w = BlendshapeSolver(rig, sampleBinding(), take, options).solve(take).weights;
+    return w.block(100, press, 200, 1).mean();
+  };
+  EXPECT_NEAR(meanHeld(calibrated), 1.0, 0.06);
+  EXPECT_LT(meanHeld(plain), 0.9);
+}
+
 TEST(ActorProfile, TheProfileChangesTheWeightsUnitNotTheirShrinkage)
 {
-  // The actor's neutral is the take's first frame, as the solve without a profile takes it, and no
-  // weight comes near either bound: the weights with the profile times the extents are then the
+  // The actor's neutral is the take's first frame, as the solve without a profile takes it, the
+  // profile has no range-of-motion take (so the solve keeps its shrinkage) and no weight comes
+  // near either bound: the weights with the profile times the extents are then the
   // weights without it (λ by GCV, the ridge solve being exact). Scaling the shape matrix by the
   // extents instead weighs each shape's ridge by 1 / extent² and moves GCV's λ.
   const BlendshapeRig& rig = ictRig();

@@ -1,4 +1,5 @@
 #include "mocap/io/live_link_face_csv.h"
+#include "mocap/io/live_link_face_resample.h"
 
 #include "error_text.h"
 #include "test_support.h"
@@ -7,6 +8,9 @@
 #include "mocap/base/file_io.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace mocap {
 namespace {
@@ -88,5 +92,78 @@ TEST(LiveLinkFaceCsv, ABrokenRecordingIsAClearErrorNamingTheLine)
   EXPECT_NE(errorOf([&] { (void)parseLiveLinkFaceCsv("", "r.csv"); }).find("empty"), std::string::npos);
 }
 
+/// One second at 30 Hz: JawOpen rising by 0.01 a row, EyeBlinkLeft held at 0.5, the head yawing
+/// by 0.002 rad a row, so linear interpolation in time is exact.
+LiveLinkFaceRecording resampleRampAt30Hz()
+{
+  Eigen::MatrixXd weights(31, 2), head = Eigen::MatrixXd::Zero(31, 3);
+  for (Eigen::Index f = 0; f < 31; ++f) {
+    weights(f, 0) = 0.01 * static_cast<double>(f);
+    weights(f, 1) = 0.5;
+    head(f, 0) = 0.002 * static_cast<double>(f);
+  }
+  return liveLinkFaceRecording({"JawOpen", "EyeBlinkLeft"}, weights, 30.0, head);
+}
+
+Eigen::Index liveLinkColumnOf(const std::string& name)
+{
+  const auto& names = liveLinkFaceShapeNames();
+  return std::find(names.begin(), names.end(), name) - names.begin();
+}
+
+TEST(LiveLinkFaceResample, MeetsATakesFramesByTimecodeAndADroppedRowLeavesNoShift)
+{
+  const LiveLinkFaceRecording ramp = resampleRampAt30Hz();
+  const Eigen::Index jaw = liveLinkColumnOf("JawOpen"), blink = liveLinkColumnOf("EyeBlinkLeft");
+  // At a 100 Hz take's rate: 101 rows over the second, each on the straight line at k / 100 s.
+  const LiveLinkFaceRecording take = resampleLiveLinkFace(ramp, 100.0);
+  ASSERT_EQ(take.timecodes.size(), 101u);
+  EXPECT_EQ(take.timecodes.front(), ramp.timecodes.front());
+  EXPECT_EQ(take.timecodes.back(), ramp.timecodes.back());
+  EXPECT_EQ(liveLinkFaceRate(take), 100.0);
+  for (Eigen::Index k = 0; k < 101; ++k) {
+    const double t = static_cast<double>(k) / 100.0;
+    ASSERT_NEAR(take.weights(k, jaw), 0.3 * t, 1e-9) << "row " << k;
+    ASSERT_NEAR(take.weights(k, blink), 0.5, 1e-12);
+    ASSERT_NEAR(take.rotations(k, 0), 0.06 * t, 1e-9) << "HeadYaw, row " << k;
+  }
+  // At its own rate: the rows back.
+  const LiveLinkFaceRecording same = resampleLiveLinkFace(ramp, 30.0);
+  EXPECT_EQ(same.timecodes, ramp.timecodes);
+  EXPECT_LT((same.weights - ramp.weights).cwiseAbs().maxCoeff(), 1e-12);
+
+  // A row the app dropped is filled from its neighbours; the rows after it stay at their times.
+  LiveLinkFaceRecording dropped = ramp;
+  dropped.timecodes.erase(dropped.timecodes.begin() + 5);
+  dropped.weights = Eigen::MatrixXd(30, ramp.weights.cols());
+  dropped.weights << ramp.weights.topRows(5), ramp.weights.bottomRows(25);
+  dropped.rotations = Eigen::MatrixXd(30, ramp.rotations.cols());
+  dropped.rotations << ramp.rotations.topRows(5), ramp.rotations.bottomRows(25);
+  const LiveLinkFaceRecording filled = resampleLiveLinkFace(dropped, 30.0);
+  ASSERT_EQ(filled.timecodes, ramp.timecodes);
+  EXPECT_LT((filled.weights - ramp.weights).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((filled.rotations - ramp.rotations).cwiseAbs().maxCoeff(), 1e-9);
+
+  // A real recording (30 Hz, drifting by a thousandth of a frame now and then) at 100 Hz.
+  const LiveLinkFaceRecording recording = parseLiveLinkFaceCsv(recordingText(), "alex_rom_4");
+  const LiveLinkFaceRecording real = resampleLiveLinkFace(recording, 100.0);
+  const double span = liveLinkFaceSeconds(recording.timecodes.back()) - liveLinkFaceSeconds(recording.timecodes.front());
+  EXPECT_EQ(static_cast<double>(real.timecodes.size()), std::floor(span * 100.0) + 1.0);
+  EXPECT_EQ(real.timecodes.front(), recording.timecodes.front());
+  EXPECT_LT((real.weights.row(0) - recording.weights.row(0)).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_GE(real.weights.minCoeff(), recording.weights.minCoeff());
+  EXPECT_LE(real.weights.maxCoeff(), recording.weights.maxCoeff());
+
+  // Bad input: a clear error naming what is wrong.
+  EXPECT_NE(errorOf([&] { (void)resampleLiveLinkFace(ramp, 0.0); }).find("rate"), std::string::npos);
+  LiveLinkFaceRecording one = ramp;
+  one.timecodes.resize(1);
+  one.weights.conservativeResize(1, Eigen::NoChange);
+  one.rotations.conservativeResize(1, Eigen::NoChange);
+  EXPECT_NE(errorOf([&] { (void)resampleLiveLinkFace(one, 30.0); }).find("two rows"), std::string::npos);
+  LiveLinkFaceRecording backwards = ramp;
+  std::swap(backwards.timecodes[3], backwards.timecodes[4]);
+  EXPECT_NE(errorOf([&] { (void)resampleLiveLinkFace(backwards, 30.0); }).find("row 5"), std::string::npos);
+}
 } // namespace
 } // namespace mocap

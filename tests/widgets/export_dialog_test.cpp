@@ -1,9 +1,12 @@
 // Export Animation dialog: a PC2 export holds exactly the source's frames, a BVH export parses with
-// every marker and frame, a cancelled export leaves nothing, and the mesh formats wait for a mesh.
+// every marker and frame, a cancelled export leaves nothing, and the mesh formats wait for a mesh;
+// File ▸ Export… to .fbx goes through it, so its FBX gets the same options as the command line's.
 #include "job_waits.h"
 #include "../core/test_support.h"
 
+#include "actions/take_file_actions.h"
 #include "dialogs/export_dialog.h"
+#include "document/studio_options.h"
 #include "document/take_document.h"
 #include "main_window.h"
 
@@ -302,6 +305,40 @@ TEST(ExportDialog, FileMenuExportAnimationOpensItWithItsOwnShortcut)
   exportAnimation->trigger();
   EXPECT_TRUE(opened);
   QSettings().clear();
+}
+
+TEST(ExportDialog, FileExportToFbxOpensItOnFbxSoTheKeysCanBeReducedAndAreReported)
+{
+  Fixture fx;
+  ui::StudioOptions options;
+  QWidget parent;
+  ui::TakeFileActions files(fx.document, options, parent);
+  // Another format is written at once, as before.
+  files.exportTo(QString::fromStdString(fx.dir.file("copy.trc").string()));
+  EXPECT_TRUE(fs::exists(fx.dir.file("copy.trc")));
+
+  const QString path = QString::fromStdString(fx.dir.file("chosen.fbx").string());
+  bool onFbx = false;
+  QString status;
+  QTimer::singleShot(0, [&] {  // runs inside the dialog's exec()
+    auto* dialog = qobject_cast<ExportDialog*>(QApplication::activeModalWidget());
+    if (dialog == nullptr)
+      return;
+    onFbx = dialog->format() == AnimationFormat::Fbx && dialog->outputPath() == path;
+    dialog->setFbxOptions(FbxUpAxis::Z, 0.1);
+    if (dialog->startExport() && test::waitForJob(dialog->jobs()))
+      status = dialog->statusText();
+    dialog->close();
+  });
+  files.exportTo(path);
+  EXPECT_TRUE(onFbx) << "File > Export... to .fbx opens Export Animation on FBX with the chosen file";
+  // As `mocap convert TAKE OUT.fbx --up z --reduce 0.1` writes it, the keys kept said.
+  KeyCount counted;
+  EXPECT_EQ(readFileBytes(fx.dir.file("chosen.fbx")),
+            markersFbx(fx.document.take(), FbxUpAxis::Z, FbxCurveKeys{0.1, &counted}));
+  EXPECT_LT(counted.after, counted.before);
+  EXPECT_TRUE(status.contains(QStringLiteral("Kept %1 of %2 keys").arg(counted.after).arg(counted.before)))
+      << status.toStdString();
 }
 
 } // namespace

@@ -15,10 +15,12 @@
 #include "panels/blendshape_solve_panel.h"
 #include "panels/retarget_section.h"
 #include "views/mapped_curve_plot.h"
+#include "views/weight_curve_view.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/io/live_link_face_csv.h"
 #include "mocap/io/live_link_face_map.h"
+#include "mocap/io/live_link_face_resample.h"
 #include "mocap/io/retarget_map_io.h"
 #include "mocap/io/rig_io.h"
 #include "mocap/io/weight_output.h"
@@ -27,6 +29,7 @@
 #include <QApplication>
 #include <QPushButton>
 #include <QTableWidget>
+#include <QTest>
 #include <QSettings>
 #include <QTimer>
 #include <QUndoStack>
@@ -162,6 +165,49 @@ TEST(RigExport, RemembersFormatMapReductionAndFolder)
   EXPECT_EQ(again.outputPath(), fx.path("out/take.csv"));
 }
 
+TEST(RigExport, OffersTheRetargetSectionsMapAsEditedAndWritesThroughIt)
+{
+  RigFixture fx;
+  const std::string file = writeTwoChannelMap(fx.dir);
+  RetargetMap edited = readRetargetMap(file);
+  edited.channels[0].sources[0].gain = 2.0;  // as typed in the section's table, not saved
+  fx.source.sectionMap = edited;
+  fx.source.sectionMapName = QString::fromStdString(file);
+  fx.source.sectionMapEdited = true;
+  {
+    RigExportDialog dialog(fx.source);
+    EXPECT_TRUE(dialog.sectionMapChosen()) << "the section's map is chosen when there is one";
+    EXPECT_EQ(dialog.map(), std::nullopt);
+    dialog.setFormat(RigExportFormat::WeightsCsv);
+    dialog.setOutputPath(fx.path("studio.csv"));
+    ASSERT_EQ(dialog.exportNow(), QString()) << dialog.statusText().toStdString();
+    // As `mocap solve --map EDITED.json -o OUT.csv` writes it once the edited map is saved.
+    writeRetargetMap(fx.dir.file("edited.json"), edited);
+    WeightOutput cli;
+    cli.map = fx.dir.file("edited.json").string();
+    cli.frameRate = 60.0;
+    cli.firstFrame = 1;
+    (void)writeWeightOutput(fx.dir.file("cli.csv"), *fx.source.rig, fx.source.weights, cli);
+    EXPECT_EQ(readFileBytes(fx.dir.file("studio.csv")), readFileBytes(fx.dir.file("cli.csv")));
+    cli.map = file;  // the gains as read: another file
+    (void)writeWeightOutput(fx.dir.file("unedited.csv"), *fx.source.rig, fx.source.weights, cli);
+    EXPECT_NE(readFileBytes(fx.dir.file("studio.csv")), readFileBytes(fx.dir.file("unedited.csv")));
+    // The section's map does not fit a Live Link Face CSV (its names are not the app's): said at once.
+    dialog.setFormat(RigExportFormat::LiveLinkCsv);
+    EXPECT_TRUE(dialog.statusText().contains(QStringLiteral("cannot be used"))) << dialog.statusText().toStdString();
+    dialog.setFormat(RigExportFormat::WeightsCsv);
+    dialog.setMap(QStringLiteral("ict_identity"));
+    EXPECT_FALSE(dialog.sectionMapChosen());
+    dialog.chooseSectionMap();
+    EXPECT_TRUE(dialog.sectionMapChosen());
+  }
+  // The section's map is not remembered as the choice: without one, the last other choice is back.
+  fx.source.sectionMap.reset();
+  RigExportDialog again(fx.source);
+  EXPECT_FALSE(again.sectionMapChosen());
+  EXPECT_EQ(again.map(), std::nullopt);
+}
+
 class LiveLinkInStudioTest : public ::testing::Test
 {
 protected:
@@ -184,25 +230,33 @@ protected:
   ui::BlendshapeSolvePanel* panel = nullptr;
 };
 
-TEST_F(LiveLinkInStudioTest, ARecordingOpensAsTheRigsCurvesUndoablyAndExportsWithItsTimecode)
+TEST_F(LiveLinkInStudioTest, ARecordingOpensAsTheRigsCurvesAtTheTakesRateUndoablyAndExportsWithItsTimecode)
 {
   const std::filesystem::path csv = test::dataFile("livelink_face/alex_rom_4_first200.csv");
-  const LiveLinkFaceRecording recording = readLiveLinkFaceCsv(csv);
+  const LiveLinkFaceRecording recorded = readLiveLinkFaceCsv(csv);
+  const double takeRate = window->document().take().frameRate();
+  ASSERT_NE(liveLinkFaceRate(recorded), takeRate) << "the sample take is not at the recording's 30 Hz";
+  // Its rows meet the take's frames: resampled to the take's rate by its timecodes.
+  const LiveLinkFaceRecording recording = resampleLiveLinkFace(recorded, takeRate);
   ASSERT_EQ(panel->openLiveLinkRecording(QString::fromStdString(csv.string())), QString())
       << panel->statusText().toStdString();
   ASSERT_TRUE(model().hasResult());
-  ASSERT_EQ(model().weights().rows(), recording.weights.rows());
+  ASSERT_EQ(model().weights().rows(), static_cast<Eigen::Index>(recording.timecodes.size()));
   // The rig's jawOpen is the recording's JawOpen (arkit_to_ict by name), sample by sample.
   const auto& names = liveLinkFaceShapeNames();
   const auto jaw = std::find(names.begin(), names.end(), "JawOpen") - names.begin();
   EXPECT_LT((model().weights().col(1) - recording.weights.col(jaw)).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_GT(model().weights().col(1).maxCoeff(), model().weights().col(1).minCoeff()) << "the jaw moves";
-  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("200 sample"))) << panel->statusText().toStdString();
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("%1 sample").arg(recording.timecodes.size())))
+      << panel->statusText().toStdString();
+  EXPECT_TRUE(panel->statusText().contains(QStringLiteral("Recorded at 30 Hz: resampled"))) << panel->statusText().toStdString();
 
-  // Exports keep the recording's rate and first timecode: the FBX `mocap convert` writes.
+  // Exports are at the take's rate from the recording's first timecode: the FBX `mocap convert`
+  // writes of the resampled recording.
   const ui::RigExportSource source = panel->exportSource();
-  EXPECT_DOUBLE_EQ(source.frameRate, liveLinkFaceRate(recording));
-  EXPECT_DOUBLE_EQ(source.startSeconds, liveLinkFaceSeconds(recording.timecodes.front()));
+  EXPECT_DOUBLE_EQ(source.frameRate, takeRate);
+  ASSERT_TRUE(source.startSeconds.has_value());
+  EXPECT_DOUBLE_EQ(*source.startSeconds, liveLinkFaceSeconds(recorded.timecodes.front()));
   RigExportDialog dialog(source);
   dialog.setFormat(RigExportFormat::Fbx);
   dialog.setMap({});
@@ -211,12 +265,16 @@ TEST_F(LiveLinkInStudioTest, ARecordingOpensAsTheRigsCurvesUndoablyAndExportsWit
   dialog.setUnits(LengthUnit::Centimetre);
   dialog.setOutputPath(QString::fromStdString(dir.file("studio.fbx").string()));
   ASSERT_EQ(dialog.exportNow(), QString()) << dialog.statusText().toStdString();
-  WeightOutput cli;
-  cli.frameRate = liveLinkFaceRate(recording);
-  cli.fbx.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
+  WeightOutput cli;  // as convertRecording sets it
+  cli.frameRate = takeRate;
+  cli.startSeconds = liveLinkFaceSeconds(recorded.timecodes.front());
   (void)writeWeightOutput(dir.file("cli.fbx"), *model().rig(),
                           liveLinkFaceWeightsOnRig(recording.weights, model().rig()->shapeNames(), std::nullopt), cli);
   EXPECT_EQ(readFileBytes(dir.file("studio.fbx")), readFileBytes(dir.file("cli.fbx")));
+  cli.startSeconds.reset();
+  (void)writeWeightOutput(dir.file("from0.fbx"), *model().rig(),
+                          liveLinkFaceWeightsOnRig(recording.weights, model().rig()->shapeNames(), std::nullopt), cli);
+  EXPECT_NE(readFileBytes(dir.file("studio.fbx")), readFileBytes(dir.file("from0.fbx"))) << "the timecode is kept";
 
   // Undo puts back no curves, redo the recording's.
   QUndoStack* stack = window->document().undoStack();
@@ -224,8 +282,31 @@ TEST_F(LiveLinkInStudioTest, ARecordingOpensAsTheRigsCurvesUndoablyAndExportsWit
   EXPECT_FALSE(model().hasResult());
   EXPECT_FALSE(model().readCurves().has_value());
   stack->redo();
-  ASSERT_EQ(model().weights().rows(), recording.weights.rows());
+  ASSERT_EQ(model().weights().rows(), static_cast<Eigen::Index>(recording.timecodes.size()));
   EXPECT_TRUE(model().readCurves().has_value());
+}
+
+TEST_F(LiveLinkInStudioTest, ARecordingKeepsItsHeadTurnInTheLiveLinkExport)
+{
+  // The sample recording holds its head still: give it a turn, at the take's own rate.
+  LiveLinkFaceRecording recording = readLiveLinkFaceCsv(test::dataFile("livelink_face/alex_rom_4_first200.csv"));
+  recording = resampleLiveLinkFace(recording, window->document().take().frameRate());
+  for (Eigen::Index r = 0; r < recording.rotations.rows(); ++r)
+    recording.rotations.row(r).head<3>() << 0.001 * static_cast<double>(r), -0.2, 0.05 * std::sin(0.1 * static_cast<double>(r));
+  const std::string csv = dir.file("turning.csv").string();
+  writeLiveLinkFaceCsv(csv, recording);
+  ASSERT_EQ(panel->openLiveLinkRecording(QString::fromStdString(csv)), QString()) << panel->statusText().toStdString();
+  EXPECT_FALSE(panel->statusText().contains(QStringLiteral("resampled"))) << "already at the take's rate";
+
+  RigExportDialog dialog(panel->exportSource());
+  dialog.setFormat(RigExportFormat::LiveLinkCsv);
+  dialog.setMap({});
+  dialog.setOutputPath(QString::fromStdString(dir.file("out.csv").string()));
+  ASSERT_EQ(dialog.exportNow(), QString()) << dialog.statusText().toStdString();
+  const LiveLinkFaceRecording written = readLiveLinkFaceCsv(dir.file("out.csv"));
+  ASSERT_EQ(written.rotations.rows(), recording.rotations.rows());
+  EXPECT_LT((written.rotations.leftCols(3) - recording.rotations.leftCols(3)).cwiseAbs().maxCoeff(), 1e-9)
+      << "HeadYaw, HeadPitch, HeadRoll as recorded";
 }
 
 TEST_F(LiveLinkInStudioTest, AMapOrFileThatDoesNotFitChangesNothing)
@@ -310,10 +391,63 @@ TEST_F(LiveLinkInStudioTest, RetargetSectionEditsGainsUndoablyAndShowsTheMappedC
   EXPECT_LT((section->mapped()->weights.col(0) - 0.5 * jaw).cwiseAbs().maxCoeff(), 1e-12);
   stack->redo();
 
+  // Export Rig offers the map as edited, before it is saved.
+  const ui::RigExportSource source = panel->exportSource();
+  ASSERT_TRUE(source.sectionMap.has_value());
+  EXPECT_DOUBLE_EQ(source.sectionMap->channels[0].sources[0].gain, 2.0);
+  EXPECT_TRUE(source.sectionMapEdited);
+  EXPECT_TRUE(RigExportDialog(source).sectionMapChosen());
+
   // Saved with the edited gain, for Export Rig and mocap solve --map.
   const std::string saved = dir.file("edited.json").string();
   ASSERT_EQ(section->saveMap(QString::fromStdString(saved)), QString());
   EXPECT_DOUBLE_EQ(readRetargetMap(saved).channels[0].sources[0].gain, 2.0);
+  EXPECT_FALSE(panel->exportSource().sectionMapEdited);
+}
+
+TEST_F(LiveLinkInStudioTest, TheWeightsViewDrawsTheMapsChannelsWhileAMapIsLoaded)
+{
+  const QString csv = QString::fromStdString(test::dataFile("livelink_face/alex_rom_4_first200.csv").string());
+  ASSERT_EQ(panel->openLiveLinkRecording(csv), QString());
+  ui::WeightCurveView* view = window->weightView();
+  ASSERT_NE(view, nullptr);
+  ASSERT_TRUE(window->showDock(QStringLiteral("weightsDock")));
+  view->resize(1000, 300);
+  view->repaint();
+  EXPECT_FALSE(view->showsMappedCurves());
+  ui::RetargetSection* section = panel->retargetSection();
+  ASSERT_EQ(section->loadMap(std::string("ict_to_arkit")), QString());
+  EXPECT_FALSE(view->showsMappedCurves()) << "a map that does not fit the rig: its shapes are drawn";
+
+  ASSERT_EQ(section->loadMap(writeTwoChannelMap(dir)), QString());
+  ASSERT_TRUE(view->showsMappedCurves());
+  view->repaint();
+  // JawOpen (half the rig's jaw) where it stands furthest from BrowUp.
+  const Eigen::MatrixXd mapped = section->mapped()->weights;
+  Eigen::Index frame = 0;
+  (void)(mapped.col(0) - mapped.col(1)).cwiseAbs().maxCoeff(&frame);
+  ASSERT_GT(std::abs(mapped(frame, 0) - mapped(frame, 1)), 0.1);
+  const std::optional<QPointF> point = view->pointOf(0, frame);
+  ASSERT_TRUE(point.has_value());
+  EXPECT_EQ(view->shapeAt(*point), 0);
+  EXPECT_TRUE(view->readoutAt(*point).startsWith(QStringLiteral("JawOpen"))) << view->readoutAt(*point).toStdString();
+  EXPECT_TRUE(view->readoutAt(*point).endsWith(QString::number(mapped(frame, 0), 'f', 3)))
+      << view->readoutAt(*point).toStdString();
+  // A click on the channel selects the shape it takes, so the weight edits act on it.
+  QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, point->toPoint());
+  EXPECT_EQ(model().selectedShapes(), std::vector<Eigen::Index>{1}) << "jawOpen feeds JawOpen";
+
+  // A gain edited in the section moves the channel's curve; no map: the shapes again.
+  Eigen::Index open = 0;
+  (void)mapped.col(0).maxCoeff(&open);
+  ASSERT_GT(mapped(open, 0), 0.02);  // the recording opens the jaw a little: 0.036 after the map
+  const std::optional<QPointF> before = view->pointOf(0, open);
+  ASSERT_EQ(section->setGain(0, 1.5), QString());
+  const std::optional<QPointF> moved = view->pointOf(0, open);
+  ASSERT_TRUE(before.has_value() && moved.has_value());
+  EXPECT_LT(moved->y(), before->y() - 1.0) << "three times as high: drawn higher";
+  ASSERT_EQ(section->loadMap(std::nullopt), QString());
+  EXPECT_FALSE(view->showsMappedCurves());
 }
 
 } // namespace

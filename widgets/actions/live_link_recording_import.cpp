@@ -6,14 +6,21 @@
 
 #include "mocap/io/live_link_face_csv.h"
 #include "mocap/io/live_link_face_map.h"
+#include "mocap/io/live_link_face_resample.h"
 #include "mocap/io/shipped_retarget_maps.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
 
+#include <cmath>
 #include <limits>
 
 namespace mocap::ui {
+
+namespace {
+/// Rates closer than this share are the same (liveLinkFaceRate rounds a drifting one within it).
+constexpr double kSameRate = 0.005;
+} // namespace
 
 QString openLiveLinkRecording(TakeDocument& document, BlendshapeSolveModel& model, const QString& path,
                               const std::optional<std::string>& map)
@@ -26,12 +33,18 @@ QString openLiveLinkRecording(TakeDocument& document, BlendshapeSolveModel& mode
   try {
     const std::optional<RetargetMap> chosen =
         map ? std::optional<RetargetMap>(readRetargetMapByNameOrPath(*map)) : std::nullopt;
-    const LiveLinkFaceRecording recording = readLiveLinkFaceCsv(path.toStdString());
-    read.frameRate = liveLinkFaceRate(recording);
-    if (!(read.frameRate > 0.0))
+    LiveLinkFaceRecording recording = readLiveLinkFaceCsv(path.toStdString());
+    read.recordedRate = liveLinkFaceRate(recording);
+    if (!(read.recordedRate > 0.0))
       return QCoreApplication::translate("LiveLinkRecordingImport", "%1: a recording needs two rows or more with increasing timecodes.").arg(QFileInfo(path).fileName());
+    // At another rate than the take's, its rows would not meet the take's frames: resampled in time.
+    const double takeRate = document.take().frameRate();
+    if (std::isfinite(takeRate) && takeRate > 0.0 && std::abs(read.recordedRate - takeRate) > kSameRate * takeRate)
+      recording = resampleLiveLinkFace(recording, takeRate);
+    read.frameRate = liveLinkFaceRate(recording);
     read.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
     read.firstTimecode = QString::fromStdString(recording.timecodes.front());
+    read.headRotation = recording.rotations.leftCols(3);
     curves.weights = liveLinkFaceWeightsOnRig(recording.weights, model.rig()->shapeNames(), chosen);
   } catch (const std::exception& e) {  // a malformed file or a map that does not fit: nothing changes
     return QString::fromStdString(e.what());

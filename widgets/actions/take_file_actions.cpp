@@ -1,5 +1,6 @@
 #include "actions/take_file_actions.h"
 
+#include "dialogs/export_dialog.h"
 #include "dialogs/job_dialog.h"
 #include "document/studio_options.h"
 #include "document/take_document.h"
@@ -103,8 +104,19 @@ void TakeFileActions::exportWithDialog()
   const QString path =
       QFileDialog::getSaveFileName(&m_dialogParent, tr("Export"), QFileInfo(m_document.filePath()).absolutePath(),
                                    tr("C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX markers (*.fbx)"));
-  if (path.isEmpty())
+  if (!path.isEmpty())
+    exportTo(path);
+}
+
+void TakeFileActions::exportTo(const QString& path)
+{
+  if (QFileInfo(path).suffix().compare(QStringLiteral("fbx"), Qt::CaseInsensitive) == 0) {
+    ExportDialog dialog(m_document, &m_dialogParent);
+    dialog.setFormat(AnimationFormat::Fbx);
+    dialog.setOutputPath(path);
+    dialog.exec();  // it says what it wrote and the keys it kept
     return;
+  }
   const QString error = m_document.save(path, false);
   if (!error.isEmpty())
     QMessageBox::critical(&m_dialogParent, tr("Cannot export"), error);

@@ -32,8 +32,12 @@ public:
   bool save();
   /// File ▸ Save As…: asks for the file, saves, adds it to the recent files.
   bool saveAs();
-  /// File ▸ Export…: writes a copy in another format; the take keeps its file.
+  /// File ▸ Export…: asks for the file, then exportTo().
   void exportWithDialog();
+  /// Writes a copy in the format of `path`'s extension; the take keeps its file. An .fbx opens
+  /// the Export Animation dialog on FBX with `path` instead, so the file gets the up axis and key
+  /// reduction `mocap convert --up --reduce` give, and the keys kept are reported.
+  void exportTo(const QString& path);
   /// Asks to save unsaved edits: true when the caller may go on (saved or discarded).
   bool confirmDiscard();
   /// A recovered take has not been confirmed to overwrite its original.

@@ -16,6 +16,7 @@ namespace {
 
 const QString kFileChoice = QStringLiteral("\x01file");  // the "Map file…" entry's data
 const QString kFilePrefix = QStringLiteral("file:");     // a map file in settingValue()
+const QString kLoadedChoice = QStringLiteral("\x01loaded");  // the caller's map in memory
 
 } // namespace
 
@@ -47,9 +48,29 @@ RetargetMapChooser::RetargetMapChooser(const QString& noneText, QWidget* parent)
 std::optional<std::string> RetargetMapChooser::map() const
 {
   const QString choice = m_choice->currentData().toString();
-  if (choice.isEmpty())
+  if (choice.isEmpty() || choice == kLoadedChoice)
     return std::nullopt;
   return (choice == kFileChoice ? m_file->text().trimmed() : choice).toStdString();
+}
+
+void RetargetMapChooser::offerLoadedMap(const QString& text)
+{
+  int index = m_choice->findData(kLoadedChoice);
+  if (index < 0) {
+    index = 1;
+    m_choice->insertItem(index, text, kLoadedChoice);
+  } else {
+    m_choice->setItemText(index, text);
+  }
+  if (index == m_choice->currentIndex())
+    emit changed();
+  else
+    m_choice->setCurrentIndex(index);
+}
+
+bool RetargetMapChooser::loadedMapChosen() const
+{
+  return m_choice->currentData().toString() == kLoadedChoice;
 }
 
 void RetargetMapChooser::setMap(const QString& nameOrPath)

@@ -68,7 +68,7 @@ WeightOutput rigExportOptions(const RigExportSource& source)
   WeightOutput options;
   options.firstFrame = source.firstFrame;
   options.frameRate = source.frameRate;
-  options.fbx.startSeconds = source.startSeconds;
+  options.startSeconds = source.startSeconds;  // writeWeightOutput sets the FBX's from it
   options.headRotation = source.headRotation;
   return options;
 }
@@ -78,6 +78,7 @@ RigExportDialog::RigExportDialog(RigExportSource source, QWidget* parent) : QDia
   setWindowTitle(tr("Export Rig"));
   buildLayout();
   restoreSettings();
+  chooseSectionMap();  // the map the user is working on in the session comes first
 }
 
 RigExportDialog::~RigExportDialog() = default;
@@ -197,7 +198,8 @@ void RigExportDialog::writeSettings() const
   QSettings settings;
   settings.setValue(key("folder"), QFileInfo(m_path->text().trimmed()).absolutePath());
   settings.setValue(key("format"), static_cast<int>(format()));
-  settings.setValue(key("map"), m_map->settingValue());
+  if (!m_map->loadedMapChosen())  // the section's map is chosen anew whenever there is one
+    settings.setValue(key("map"), m_map->settingValue());
   settings.setValue(key("reduce"), m_reduce->isChecked());
   settings.setValue(key("tolerance"), m_tolerance->value());
   settings.setValue(key("up"), m_up->currentData().toInt());
@@ -238,6 +240,20 @@ void RigExportDialog::setMap(const QString& nameOrPath)
   m_map->setMap(nameOrPath);
 }
 
+bool RigExportDialog::sectionMapChosen() const
+{
+  return m_map->loadedMapChosen();
+}
+
+void RigExportDialog::chooseSectionMap()
+{
+  if (!m_source.sectionMap)
+    return;
+  const QString name = QFileInfo(m_source.sectionMapName).fileName();
+  m_map->offerLoadedMap(m_source.sectionMapEdited ? tr("Retarget section's: %1, gains edited").arg(name)
+                                                  : tr("Retarget section's: %1").arg(name));
+}
+
 std::optional<double> RigExportDialog::reduction() const
 {
   if (!m_reduce->isChecked() || !hasKeys(format()))
@@ -266,6 +282,8 @@ WeightOutput RigExportDialog::options() const
 {
   WeightOutput options = rigExportOptions(m_source);
   options.map = map();
+  if (m_map->loadedMapChosen())
+    options.loadedMap = m_source.sectionMap;
   options.liveLink = format() == RigExportFormat::LiveLinkCsv;
   options.fbx.up = static_cast<FbxUpAxis>(m_up->currentData().toInt());
   options.fbx.unit = static_cast<LengthUnit>(m_units->currentData().toInt());

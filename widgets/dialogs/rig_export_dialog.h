@@ -3,6 +3,7 @@
 #include "mocap/io/weight_output.h"
 #include "mocap/math/key_reduction.h"
 #include "mocap/model/blendshape_rig.h"
+#include "mocap/model/retarget_map.h"
 
 #include <QDialog>
 #include <QString>
@@ -30,9 +31,16 @@ struct RigExportSource
   Eigen::MatrixXd weights;     ///< #frames × the rig's shapes
   double frameRate = 0.0;
   long long firstFrame = 0;    ///< the plain CSV's first frame number
-  double startSeconds = 0.0;   ///< FBX: the first frame's time (a recording's timecode), 0 for a solve
+  /// A recording's first timecode (seconds): the FBX's first key and time span, the glTF's
+  /// extras.startSeconds, as `mocap convert REC.csv` writes them; none for a solve (from 0).
+  std::optional<double> startSeconds;
   Eigen::MatrixXd headRotation;  ///< Live Link's head yaw, pitch, roll per frame, or empty (zeros)
   QString baseName;            ///< the output's default file name without extension (the take's)
+  /// The Retarget section's map with its gains as edited there, offered (and chosen) as a map of
+  /// its own; nullopt when the section has none.
+  std::optional<RetargetMap> sectionMap;
+  QString sectionMapName;      ///< what the section read it from (a shipped name or a path)
+  bool sectionMapEdited = false;
 };
 
 /// writeWeightOutput's options for `source` as it is: its timing and head turn, no map, FBX Y up
@@ -49,7 +57,8 @@ enum class RigExportFormat
 };
 
 /// The Blendshape Solve dock's Export Rig dialog: the solved rig as FBX or glTF, or its curves as
-/// CSV (plain or Live Link Face), through a retarget map (none, a shipped map, a map file) and,
+/// CSV (plain or Live Link Face), through a retarget map (none, a shipped map, a map file, or the
+/// Retarget section's map as edited there, chosen when the section has one) and,
 /// for FBX and glTF, with keys reduced within a tolerance in weight units; FBX declares its up
 /// axis and units. It writes through writeWeightOutput, as `mocap solve -o` and `mocap convert`
 /// do, so the options mean what --map, --reduce, --up and --units mean there. The map is checked
@@ -69,10 +78,15 @@ public:
   [[nodiscard]] QString outputPath() const;
   void setOutputPath(const QString& path);
 
-  /// The map as writeWeightOutput takes it: nullopt for none, a shipped map's name or a file.
+  /// The map as writeWeightOutput takes it: nullopt for none (or the section's map), a shipped
+  /// map's name or a file.
   [[nodiscard]] std::optional<std::string> map() const;
+  /// True when the Retarget section's map is chosen.
+  [[nodiscard]] bool sectionMapChosen() const;
   /// Selects no map (""), a shipped map by name, or else a map file at `nameOrPath`.
   void setMap(const QString& nameOrPath);
+  /// Selects the Retarget section's map (when the source has one).
+  void chooseSectionMap();
   /// nullopt: every frame keyed; else the tolerance in weight units (FBX, glTF).
   [[nodiscard]] std::optional<double> reduction() const;
   void setReduction(std::optional<double> tolerance);

@@ -17,13 +17,16 @@
 namespace mocap::ui {
 
 /// Weight curves read from a file rather than solved from the take (a Live Link Face recording):
-/// where from, and the rate and first time they keep in exports (row i is shown at take frame i).
+/// where from, and the rate, first time and head turn they keep in exports (row i is shown at
+/// take frame i).
 struct ReadWeightCurves
 {
   QString path;
-  double frameRate = 0.0;
+  double frameRate = 0.0;     ///< of the curves: the take's when the recording was resampled to it
+  double recordedRate = 0.0;  ///< the recording's own
   double startSeconds = 0.0;
   QString firstTimecode;  ///< as the file wrote it
+  Eigen::MatrixXd headRotation;  ///< per row the recording's HeadYaw, HeadPitch, HeadRoll (radians)
 };
 
 /// The blendshape rig the open take is solved to and the weights solved, beside the document:
@@ -82,6 +85,7 @@ public:
 
   /// The map the Retarget section shows the curves through (kept when the rig or take changes).
   [[nodiscard]] RetargetMapModel& retargetMap() { return m_retargetMap; }
+  [[nodiscard]] const RetargetMapModel& retargetMap() const { return m_retargetMap; }
 
   /// The shapes shown as curves and edited, ascending.
   void setSelectedShapes(std::vector<Eigen::Index> shapes);

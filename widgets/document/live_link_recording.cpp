@@ -31,8 +31,11 @@ LiveLinkFaceRecording sessionLiveLinkRecording(const StudioSession& session, con
   const BlendshapeSolveModel& solve = session.blendshapes();
   if (!solve.hasResult() || !solve.rig())
     throw InvalidArgument("solve the take to a rig first (Blendshape Solve dock)");
+  // Curves read from a recording keep its head turn; a solve's comes from the stabilization.
+  const std::optional<ReadWeightCurves>& read = solve.readCurves();
   return liveLinkFaceRecordingOfRig(solve.rig()->shapeNames(), solve.weights(), map,
-                                    session.document().take().frameRate(), solvedHeadRotation(session));
+                                    session.document().take().frameRate(),
+                                    read ? read->headRotation : solvedHeadRotation(session));
 }
 
 } // namespace mocap::ui

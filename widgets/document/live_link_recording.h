@@ -18,8 +18,8 @@ class StudioSession;
 [[nodiscard]] Eigen::MatrixXd solvedHeadRotation(const StudioSession& session);
 
 /// The session's solved weights as a Live Link Face recording at the take's rate (through `map`,
-/// else the default map for the rig's names) with solvedHeadRotation: what the Live Link CSV
-/// export writes and the live stream sends. Throws InvalidArgument without a solve, or as
+/// else the default map for the rig's names) with solvedHeadRotation, or the head turn of the
+/// recording the curves were read from: what the live stream sends. Throws InvalidArgument without a solve, or as
 /// liveLinkFaceRecordingOfRig. O(#frames · 61).
 [[nodiscard]] LiveLinkFaceRecording sessionLiveLinkRecording(const StudioSession& session,
                                                              const std::optional<RetargetMap>& map = std::nullopt);

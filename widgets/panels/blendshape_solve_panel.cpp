@@ -582,11 +582,18 @@ RigExportSource BlendshapeSolvePanel::exportSource() const
   if (const std::optional<ReadWeightCurves>& read = m_model.readCurves()) {
     source.frameRate = read->frameRate;  // the recording's own timing, timecode kept
     source.startSeconds = read->startSeconds;
+    source.headRotation = read->headRotation;
     source.baseName = QFileInfo(read->path).completeBaseName();
   } else {
     source.frameRate = take.frameRate();
     source.firstFrame = take.firstFrame();
     source.headRotation = solvedHeadRotation(m_session);
+  }
+  const RetargetMapModel& map = m_model.retargetMap();
+  if (map.map()) {
+    source.sectionMap = map.map();
+    source.sectionMapName = map.name();
+    source.sectionMapEdited = map.edited();
   }
   return source;
 }
@@ -642,12 +649,15 @@ QString BlendshapeSolvePanel::openLiveLinkRecording(const QString& path, const s
     return m_status->text();
   }
   const ReadWeightCurves& read = *m_model.readCurves();
-  showStatus(tr("Opened %1: %n sample(s) at %2 Hz from %3 as the curves of %4 shapes; exports keep its rate and timecode.",
-                nullptr, static_cast<int>(m_model.weights().rows()))
-                 .arg(QFileInfo(path).fileName())
-                 .arg(read.frameRate, 0, 'g', 6)
-                 .arg(read.firstTimecode)
-                 .arg(m_model.weights().cols()));
+  QString text = tr("Opened %1: %n sample(s) at %2 Hz from %3 as the curves of %4 shapes; exports keep its rate and timecode.",
+                    nullptr, static_cast<int>(m_model.weights().rows()))
+                     .arg(QFileInfo(path).fileName())
+                     .arg(read.frameRate, 0, 'g', 6)
+                     .arg(read.firstTimecode)
+                     .arg(m_model.weights().cols());
+  if (read.recordedRate != read.frameRate)
+    text += QLatin1Char(' ') + tr("Recorded at %1 Hz: resampled to the take's rate.").arg(read.recordedRate, 0, 'g', 6);
+  showStatus(text);
   return {};
 }
 

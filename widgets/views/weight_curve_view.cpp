@@ -5,6 +5,7 @@
 #include "views/display_units.h"
 #include "views/selection_palette.h"
 
+#include <QFileInfo>
 #include <QGuiApplication>
 #include <QMouseEvent>
 #include <QPainter>
@@ -25,10 +26,88 @@ WeightCurveView::WeightCurveView(TakeDocument& document, BlendshapeSolveModel& m
 {
   setMinimumHeight(150);
   setMouseTracking(true);  // the hover read-out
-  for (const auto signal : {&BlendshapeSolveModel::resultChanged, &BlendshapeSolveModel::selectedShapesChanged,
-                            &BlendshapeSolveModel::rigChanged})
-    connect(&model, signal, this, qOverload<>(&WeightCurveView::update));
-  connect(&model, &BlendshapeSolveModel::weightsEdited, this, qOverload<>(&WeightCurveView::update));
+  connect(&model, &BlendshapeSolveModel::selectedShapesChanged, this, qOverload<>(&WeightCurveView::update));
+  for (const auto signal : {&BlendshapeSolveModel::resultChanged, &BlendshapeSolveModel::rigChanged})
+    connect(&model, signal, this, &WeightCurveView::onCurvesChanged);
+  connect(&model, &BlendshapeSolveModel::weightsEdited, this, &WeightCurveView::onCurvesChanged);
+  connect(&model.retargetMap(), &RetargetMapModel::mapChanged, this, &WeightCurveView::onCurvesChanged);
+  connect(&model.retargetMap(), &RetargetMapModel::gainChanged, this, &WeightCurveView::onCurvesChanged);
+}
+
+void WeightCurveView::onCurvesChanged()
+{
+  m_mappedStale = true;
+  update();
+}
+
+void WeightCurveView::refreshMapped() const
+{
+  if (!m_mappedStale)
+    return;
+  m_mappedStale = false;
+  m_mapped.reset();
+  m_feeds.clear();
+  m_low = 0.0;
+  m_high = 1.0;
+  const std::optional<RetargetMap>& map = m_model.retargetMap().map();
+  if (!map || !m_model.hasResult() || !m_model.rig())
+    return;
+  const std::vector<std::string> names = m_model.rig()->shapeNames();
+  try {
+    m_mapped = applyRetargetMap(*map, names, m_model.weights());
+  } catch (const std::exception&) {
+    return;  // a map that does not fit the rig: the Retarget section says why; the shapes are drawn
+  }
+  for (const RetargetChannel& channel : map->channels) {
+    std::vector<Eigen::Index> feeds;
+    for (const RetargetSource& source : channel.sources)
+      feeds.push_back(std::find(names.begin(), names.end(), source.shape) - names.begin());
+    std::sort(feeds.begin(), feeds.end());
+    feeds.erase(std::unique(feeds.begin(), feeds.end()), feeds.end());
+    m_feeds.push_back(std::move(feeds));
+  }
+  // Gains and offsets may take a channel outside [0, 1]: the strip spans what is drawn.
+  const Eigen::MatrixXd& values = m_mapped->weights;
+  if (values.size() > 0 && values.allFinite()) {
+    m_low = std::min(0.0, values.minCoeff());
+    m_high = std::max(1.0, values.maxCoeff());
+  }
+}
+
+bool WeightCurveView::showsMappedCurves() const
+{
+  refreshMapped();
+  return m_mapped.has_value();
+}
+
+const Eigen::MatrixXd& WeightCurveView::curves() const
+{
+  refreshMapped();
+  return m_mapped ? m_mapped->weights : m_model.weights();
+}
+
+QString WeightCurveView::curveName(Eigen::Index curve) const
+{
+  return showsMappedCurves() ? QString::fromStdString(m_mapped->names[static_cast<std::size_t>(curve)])
+                             : m_model.shapeName(curve);
+}
+
+std::vector<Eigen::Index> WeightCurveView::highlightedCurves() const
+{
+  const std::vector<Eigen::Index>& selected = m_model.selectedShapes();
+  if (!showsMappedCurves())
+    return selected;
+  std::vector<Eigen::Index> channels;
+  for (std::size_t c = 0; c < m_feeds.size(); ++c)
+    if (std::any_of(m_feeds[c].begin(), m_feeds[c].end(),
+                    [&](Eigen::Index shape) { return std::binary_search(selected.begin(), selected.end(), shape); }))
+      channels.push_back(static_cast<Eigen::Index>(c));
+  return channels;
+}
+
+std::vector<Eigen::Index> WeightCurveView::shapesOfCurve(Eigen::Index curve) const
+{
+  return showsMappedCurves() ? m_feeds[static_cast<std::size_t>(curve)] : std::vector<Eigen::Index>{curve};
 }
 
 void WeightCurveView::paintEvent(QPaintEvent*)
@@ -53,9 +132,9 @@ void WeightCurveView::paintEvent(QPaintEvent*)
 
   std::vector<QString> labels;
   std::vector<QColor> colors;
-  const auto& selected = m_model.selectedShapes();
-  for (std::size_t i = 0; i < selected.size(); ++i) {
-    labels.push_back(m_model.shapeName(selected[i]));
+  const std::vector<Eigen::Index> highlighted = highlightedCurves();
+  for (std::size_t i = 0; i < highlighted.size(); ++i) {
+    labels.push_back(curveName(highlighted[i]));
     colors.push_back(selectionPaletteColor(i));
   }
   if (labels.empty()) {
@@ -96,18 +175,21 @@ void WeightCurveView::paintWeights(QPainter& painter, const QRectF& strip) const
   painter.fillRect(strip, QColor(38, 41, 46));
   m_weightStrip = strip;
   paintHeld(painter, strip);
-  paintValueTicks(painter, strip, 0.0, 1.0);
+  const Eigen::MatrixXd& weights = curves();
+  paintValueTicks(painter, strip, m_low, m_high);
   painter.save();
   painter.setClipRect(strip.adjusted(0.0, -2.0, 0.0, 2.0));
-  const Eigen::MatrixXd& weights = m_model.weights();
-  const auto& selected = m_model.selectedShapes();
+  const std::vector<Eigen::Index> highlighted = highlightedCurves();
   for (Eigen::Index s = 0; s < weights.cols(); ++s)
-    if (!std::binary_search(selected.begin(), selected.end(), s))
-      paintSeries(painter, strip, weights.col(s), 0.0, 1.0, QPen(kFaint, 1.0));
-  for (std::size_t i = 0; i < selected.size(); ++i)
-    paintSeries(painter, strip, weights.col(selected[i]), 0.0, 1.0, QPen(selectionPaletteColor(i), 1.8));
+    if (!std::binary_search(highlighted.begin(), highlighted.end(), s))
+      paintSeries(painter, strip, weights.col(s), m_low, m_high, QPen(kFaint, 1.0));
+  for (std::size_t i = 0; i < highlighted.size(); ++i)
+    paintSeries(painter, strip, weights.col(highlighted[i]), m_low, m_high, QPen(selectionPaletteColor(i), 1.8));
   painter.restore();
-  paintStripName(painter, strip, tr("Weights"));
+  paintStripName(painter, strip,
+                 showsMappedCurves()
+                     ? tr("Weights through the map %1").arg(QFileInfo(m_model.retargetMap().name()).fileName())
+                     : tr("Weights"));
 }
 
 void WeightCurveView::paintResidual(QPainter& painter, const QRectF& strip) const
@@ -176,11 +258,12 @@ void WeightCurveView::paintSeries(QPainter& painter, const QRectF& strip,
 
 std::optional<QPointF> WeightCurveView::pointOf(Eigen::Index shape, Eigen::Index frame) const
 {
-  if (m_weightStrip.isNull() || shape < 0 || shape >= m_model.weights().cols() || frame < 0 ||
-      frame >= m_model.weights().rows())
+  const Eigen::MatrixXd& values = curves();
+  if (m_weightStrip.isNull() || shape < 0 || shape >= values.cols() || frame < 0 || frame >= values.rows())
     return std::nullopt;
-  const double w = m_model.weights()(frame, shape);
-  return QPointF(xOf(static_cast<double>(frame)), m_weightStrip.bottom() - w * m_weightStrip.height());
+  const double w = values(frame, shape);
+  return QPointF(xOf(static_cast<double>(frame)),
+                 m_weightStrip.bottom() - (w - m_low) / (m_high - m_low) * m_weightStrip.height());
 }
 
 Eigen::Index WeightCurveView::shapeAt(const QPointF& position) const
@@ -188,13 +271,13 @@ Eigen::Index WeightCurveView::shapeAt(const QPointF& position) const
   if (m_weightStrip.isNull() || !m_weightStrip.adjusted(0.0, -kHitPixels, 0.0, kHitPixels).contains(position))
     return -1;
   const Eigen::Index frame = frameUnder(position.x());
-  const auto& selected = m_model.selectedShapes();
+  const std::vector<Eigen::Index> highlighted = highlightedCurves();
   Eigen::Index best = -1;
   double bestDistance = kHitPixels;
-  // Selected shapes win ties: they are drawn on top.
+  // Highlighted curves win ties: they are drawn on top.
   for (int pass = 0; pass < 2; ++pass)
-    for (Eigen::Index s = 0; s < m_model.weights().cols(); ++s) {
-      if (std::binary_search(selected.begin(), selected.end(), s) != (pass == 0))
+    for (Eigen::Index s = 0; s < curves().cols(); ++s) {
+      if (std::binary_search(highlighted.begin(), highlighted.end(), s) != (pass == 0))
         continue;
       const std::optional<QPointF> point = pointOf(s, frame);
       const double distance = point ? std::abs(point->y() - position.y()) : kHitPixels;
@@ -213,25 +296,34 @@ QString WeightCurveView::readoutAt(const QPointF& position) const
     return {};
   const Eigen::Index frame = frameUnder(position.x());
   return tr("%1 · frame %2 · %3")
-      .arg(m_model.shapeName(shape))
+      .arg(curveName(shape))
       .arg(static_cast<qlonglong>(document().take().firstFrame() + frame))
-      .arg(m_model.weights()(frame, shape), 0, 'f', 3);
+      .arg(curves()(frame, shape), 0, 'f', 3);
 }
 
 bool WeightCurveView::pressItem(const QPointF& position)
 {
-  const Eigen::Index shape = shapeAt(position);
-  if (shape < 0)
+  const Eigen::Index curve = shapeAt(position);
+  if (curve < 0)
     return false;
+  const std::vector<Eigen::Index> shapes = shapesOfCurve(curve);
+  if (shapes.empty())
+    return false;  // a channel holding its offset: no shape to select
   std::vector<Eigen::Index> selected = m_model.selectedShapes();
   if (QGuiApplication::keyboardModifiers() & Qt::ControlModifier) {
-    const auto it = std::find(selected.begin(), selected.end(), shape);
-    if (it != selected.end())
-      selected.erase(it);
-    else
-      selected.push_back(shape);
+    // Ctrl: the curve's shapes leave the selection when all were in it, else join it.
+    const bool all = std::all_of(shapes.begin(), shapes.end(), [&](Eigen::Index shape) {
+      return std::find(selected.begin(), selected.end(), shape) != selected.end();
+    });
+    for (const Eigen::Index shape : shapes) {
+      const auto it = std::find(selected.begin(), selected.end(), shape);
+      if (all)
+        selected.erase(it);
+      else if (it == selected.end())
+        selected.push_back(shape);
+    }
   } else {
-    selected = {shape};
+    selected = shapes;
   }
   m_model.setSelectedShapes(std::move(selected));
   return true;

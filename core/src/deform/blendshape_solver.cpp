@@ -171,6 +171,29 @@ void solvePerFrame(const Eigen::MatrixXd& a, const Observations& o, double ridge
   }
 }
 
+/// The least share of an isolated expression a shape's weight is scaled back up from: a shape the
+/// markers barely see is shrunk hard by the ridge, and undoing more would blow its noise up.
+constexpr double kMinimumResponse = 0.5;
+
+/// Per shape, what the per-frame bounded ridge solve reports for the actor's full expression of
+/// that shape alone (b = A·e_s·extent_s, noise-free, box [0, upper]) over what it should
+/// (extent_s), clamped to [kMinimumResponse, 1]; 1 for a shape that moves no bound point. A held
+/// expression is also the temporal solve's answer (its second differences vanish). The whole take
+/// of an actor is shrunk less than this where shapes overlap, yet far more nearly so than a
+/// range-of-motion take's usual solve (short peaks smoothed, GCV's λ of a sparse take). Not a
+/// paper equation. O(#shapes · the bounded solve).
+Eigen::VectorXd isolatedResponse(const Eigen::MatrixXd& a, const Eigen::VectorXd& extent, const Eigen::VectorXd& upper,
+                                 double ridge)
+{
+  const Eigen::Index shapes = a.cols();
+  Eigen::VectorXd response = Eigen::VectorXd::Ones(shapes);
+  const BoundedLeastSquares solver(a, Eigen::VectorXd::Zero(shapes), upper, ridge);
+  for (Eigen::Index s = 0; s < shapes; ++s)
+    if (a.col(s).squaredNorm() > 0.0)
+      response(s) = std::clamp(solver.solve(a.col(s) * extent(s))(s) / extent(s), kMinimumResponse, 1.0);
+  return response;
+}
+
 /// μ given at 100 Hz for a take at `rate`: second differences shrink with the square of the
 /// sample interval while the data term grows with the sample count, so μ scales with rate⁴.
 double temporalWeight(double muAt100Hz, double rate)
@@ -399,13 +422,21 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
     result.lambda = result.lambdaChosen ? chooseRidgeLambda(a, complete, m_termScale) : 1e-3;
   }
   const double ridge = result.lambda * m_termScale, sparsity = m_options.sparsity * m_termScale;
+  // An actor calibrated from a range-of-motion take: 1 is the actor's full expression as this
+  // solve reports it, so the ridge's shrinkage of an expression is undone in the actor's units
+  // (and the box follows, keeping the weights within maximumWeight).
+  const Eigen::VectorXd unit =
+      m_options.actor && !m_options.actor->romSource.empty() && ridge > 0.0
+          ? Eigen::VectorXd(m_extent.cwiseProduct(isolatedResponse(a, m_extent, upper, ridge)))
+          : m_extent;
+  const Eigen::VectorXd box = m_options.maximumWeight * unit;
   result.weights.resize(take.frameCount(), m_a.cols());
   if (m_options.method == BlendshapeSolveMethod::Temporal)
     result.iterations =
         solveTemporal(a, o, ridge, temporalWeight(m_options.smoothness * m_termScale, take.frameRate()), sparsity,
-                      upper, control, result.weights);
+                      box, control, result.weights);
   else
-    solvePerFrame(a, o, ridge, sparsity, upper, control, result.weights);
+    solvePerFrame(a, o, ridge, sparsity, box, control, result.weights);
 
   result.held.resize(o.solvable.size());
   result.residual.resize(take.frameCount());
@@ -421,7 +452,7 @@ BlendshapeSolveResult BlendshapeSolver::solve(const Take& take, const std::vecto
                                          m_bound.retarget.uniformScale);
     }
   }
-  result.weights *= m_extent.cwiseInverse().asDiagonal();  // the actor's units
+  result.weights *= unit.cwiseInverse().asDiagonal();  // the actor's units
   result.solveSeconds = solveTime.seconds();
   return result;
 }

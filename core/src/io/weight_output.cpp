@@ -12,9 +12,11 @@ namespace mocap {
 
 namespace {
 
-/// --map's map when given.
+/// The map in memory, else --map's map when given.
 std::optional<RetargetMap> mapArgument(const WeightOutput& options)
 {
+  if (options.loadedMap)
+    return options.loadedMap;
   return options.map ? std::optional<RetargetMap>(readRetargetMapByNameOrPath(*options.map)) : std::nullopt;
 }
 
@@ -66,11 +68,11 @@ std::optional<KeyCount> writeWeightOutput(const std::filesystem::path& out, cons
     writeLiveLink(out, rig, weights, options);
     return std::nullopt;
   }
-  if (!options.map)
+  const std::optional<RetargetMap> map = mapArgument(options);
+  if (!map)
     return writeMapped(out, extension, rig, weights, options);
-  const RetargetMap map = readRetargetMapByNameOrPath(*options.map);
-  const MappedWeights mapped = applyRetargetMap(map, rig.shapeNames(), weights);
-  return writeMapped(out, extension, retargetedRig(map, rig), mapped.weights, options);
+  const MappedWeights mapped = applyRetargetMap(*map, rig.shapeNames(), weights);
+  return writeMapped(out, extension, retargetedRig(*map, rig), mapped.weights, options);
 }
 
 void checkWeightOutput(const BlendshapeRig& rig, const WeightOutput& options)
@@ -78,8 +80,8 @@ void checkWeightOutput(const BlendshapeRig& rig, const WeightOutput& options)
   const Eigen::MatrixXd noFrames(0, rig.shapeCount());
   if (options.liveLink)
     (void)applyRetargetMap(liveLinkFaceMap(rig.shapeNames(), mapArgument(options)), rig.shapeNames(), noFrames);
-  else if (options.map)
-    (void)applyRetargetMap(readRetargetMapByNameOrPath(*options.map), rig.shapeNames(), noFrames);
+  else if (const std::optional<RetargetMap> map = mapArgument(options))
+    (void)applyRetargetMap(*map, rig.shapeNames(), noFrames);
 }
 
 } // namespace mocap

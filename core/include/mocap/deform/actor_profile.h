@@ -16,9 +16,10 @@ namespace mocap {
 /// frame and Shōgun's subject calibration do it): the actor's neutral marker positions, the
 /// binding, and per rig shape the actor's own range. A shape's extent is the actor's full
 /// expression as a fraction of the rig's delta at the bound points (1 = as the rig, 0.7 = a jaw
-/// that opens to 0.7 of the rig's): solving with the profile scales each shape's column of the
-/// shape matrix by its extent, so weights come out in the actor's range (1 = the actor's maximum),
-/// the equivalent of a gain 1/extent on the rig's weight.
+/// that opens to 0.7 of the rig's): solving with the profile reports each rig weight over its
+/// extent, so weights come out in the actor's range (1 = the actor's maximum), the equivalent of a
+/// gain 1/extent on the rig's weight; with a range-of-motion calibration the solve also undoes its
+/// own shrinkage of each expression (BlendshapeSolveOptions::actor).
 struct ActorProfile
 {
   std::string name;

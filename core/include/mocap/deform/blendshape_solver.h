@@ -52,8 +52,11 @@ struct BlendshapeSolveOptions
   /// placeActorNeutral) replace the neutral frame, and the weights are in the actor's range
   /// (1 = the actor's maximum): each is the rig's weight over the shape's extent. The solve itself
   /// stays in the rig's units (λ, GCV, μ and the sparsity shrink each shape as without a profile),
-  /// only its upper bound becomes maximumWeight · extent. None: the take's neutral frame and the
-  /// rig's range.
+  /// only its upper bound becomes maximumWeight · extent. A profile calibrated from a
+  /// range-of-motion take also undoes the shrinkage: 1 is the actor's full expression as this
+  /// solve reports it (each weight is also divided by the shape's response to its full expression
+  /// alone under the take's λ, at least 0.5, and the bound follows). None: the take's neutral
+  /// frame and the rig's range.
   std::shared_ptr<const ActorProfile> actor;
   /// The weights' upper bound: 1, the rig's (or the actor's) full expression; calibration solves
   /// a range-of-motion take with more so that an exaggerated shape is not clipped.

@@ -3,6 +3,7 @@
 #include "mocap/io/fbx_writer.h"
 #include "mocap/math/key_reduction.h"
 #include "mocap/model/blendshape_rig.h"
+#include "mocap/model/retarget_map.h"
 
 #include <Eigen/Core>
 
@@ -18,6 +19,8 @@ namespace mocap {
 struct WeightOutput
 {
   std::optional<std::string> map;     ///< a shipped map's name or a map file (readRetargetMapByNameOrPath)
+  /// A map already in memory (the studio's Retarget section, its gains edited), used instead of `map`.
+  std::optional<RetargetMap> loadedMap;
   bool liveLink = false;              ///< .csv in Live Link Face's layout (else Frame,Time,<shape>,…)
   long long firstFrame = 0;           ///< the plain CSV's first frame number
   double frameRate = 0.0;
