@@ -138,7 +138,7 @@ def test_reading_a_thousand_times_leaks_nothing():
     assert resident_kb() - before < 2048, "RSS grew by more than 2 MB over 1 000 reads"
 
 
-def test_analog_channels_are_the_files():
+def test_analog_channels_and_events_are_the_files():
     path = SOURCE / "tests" / "data" / "c3d" / "sample01" / "Eb015pr.c3d"
     cli = os.environ.get("MOCAP_CLI")
     if not cli:
@@ -153,3 +153,6 @@ def test_analog_channels_are_the_files():
     np.testing.assert_allclose(analog["physical"][:, 2],
                                (analog["stored"][:, 2] - c["offset"]) * c["scale"] * analog["general_scale"])
     assert mocap.read(SAMPLE).analog["stored"].shape[1] == 0
+    events = mocap.read(path).events
+    assert [{k: e[k] for k in ("label", "context", "time")} for e in events] == info["events"]
+    assert [e["label"] for e in events] == ["RIC", "RHS", "RTO"]
