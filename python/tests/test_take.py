@@ -70,6 +70,16 @@ def test_c3d_written_from_python_is_byte_identical_to_mocap_convert(tmp_path):
     assert ours.read_bytes() == theirs.read_bytes()
 
 
+@pytest.mark.parametrize("suffix", [".trc", ".csv", ".bvh", ".fbx"])
+def test_every_written_format_is_byte_identical_to_mocap_convert(tmp_path, suffix):
+    (tmp_path / "py").mkdir()
+    (tmp_path / "cli").mkdir()
+    ours, theirs = tmp_path / "py" / ("take" + suffix), tmp_path / "cli" / ("take" + suffix)  # a TRC names its file
+    mocap.read(SAMPLE).write(ours)
+    subprocess.run([cli(), "convert", str(SAMPLE), str(theirs)], check=True, capture_output=True)
+    assert ours.read_bytes() == theirs.read_bytes()
+
+
 def test_arrays_round_trip_exactly_through_c3d_and_trc(tmp_path):
     take = mocap.read(SAMPLE)
     for name in ("round.c3d", "round.trc"):
