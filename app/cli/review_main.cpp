@@ -108,8 +108,10 @@ void printOutcome(const ui::ReviewOutcome& outcome, const ui::ReviewRequest& req
   std::cout << out.str() << '\n';
 }
 
-/// `clock` runs since the program started: the time to the first frame is read on it.
-int review(const ReviewArguments& a, const QElapsedTimer& clock)
+/// `clock` runs since the program started: the time to the first frame is read on it. `stop` is
+/// set by SIGINT or SIGTERM: the export then stops at its next frame (one that came while the
+/// session loaded stops it at the first).
+int review(const ReviewArguments& a, const QElapsedTimer& clock, const std::atomic<bool>& stop)
 {
   const auto [width, height] = parseReviewSize(a.size);
   ui::StudioSession session;
@@ -132,7 +134,6 @@ int review(const ReviewArguments& a, const QElapsedTimer& clock)
   source.settings.trailFrames = a.trails;
   source.resetCamera = true;  // framed on the reviewed frames
   double firstFrameSeconds = 0.0;
-  const std::atomic<bool>& stop = installStopSignals();
   const ui::ReviewOutcome outcome = ui::exportReview(source, request, [&](long long done, long long total) {
     if (done == 1)
       firstFrameSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
@@ -158,6 +159,7 @@ int main(int argc, char** argv)
 {
   QElapsedTimer clock;
   clock.start();
+  const std::atomic<bool>& stop = installStopSignals();
   // Parsed as `mocap review`, so the usage and errors read as mocap's own.
   CLI::App mocap("the batch command line of Mocap Studio", "mocap");
   mocap.formatter(std::make_shared<UsageFormatter>());
@@ -181,7 +183,7 @@ int main(int argc, char** argv)
   QSurfaceFormat::setDefaultFormat(ui::VtkViewport::defaultFormat());  // before QApplication
   QApplication application(argc, argv);
   try {
-    return review(arguments, clock);
+    return review(arguments, clock, stop);
   } catch (const UsageError& e) {
     std::cerr << "mocap review: " << e.what() << '\n' << usageHint(command) << '\n';
     return kExitBadUsage;

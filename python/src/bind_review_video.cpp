@@ -124,12 +124,38 @@ std::string sizeText(const py::object& size)
   return std::to_string(width) + "x" + std::to_string(height);
 }
 
-std::string joined(const std::vector<std::string>& labels)
+std::string joined(const std::vector<std::string>& parts, const char* separator = ",")
 {
   std::string text;
-  for (const std::string& label : labels)
-    text += (text.empty() ? "" : ",") + label;
+  for (const std::string& part : parts)
+    text += (text.empty() ? "" : separator) + part;
   return text;
+}
+
+/// What `mocap review` said on stderr besides its progress: its own lines ("mocap review: …",
+/// given without that prefix), whether it printed its usage line (a usage error), and every line
+/// (with Qt's and xvfb-run's remarks).
+struct ReviewMessages
+{
+  std::vector<std::string> ours;
+  std::vector<std::string> lines;
+  bool usage = false;
+};
+
+ReviewMessages reviewMessages(const std::string& text)
+{
+  static const std::string prefix = "mocap review: ";
+  ReviewMessages said;
+  std::istringstream stream(text);
+  for (std::string line; std::getline(stream, line);) {
+    if (line.empty())
+      continue;
+    said.lines.push_back(line);
+    if (line.rfind(prefix, 0) == 0)
+      said.ours.push_back(line.substr(prefix.size()));
+    said.usage = said.usage || line.rfind("usage: mocap review", 0) == 0;
+  }
+  return said;
 }
 
 /// The processes called `name` in process group `group`, from /proc/PID/stat ("PID (NAME) STATE
@@ -159,14 +185,15 @@ std::vector<pid_t> processesNamed(pid_t group, const std::string& name)
 
 /// Stops the review as Ctrl+C would: SIGINT to mocap-review, which stops at its next frame and
 /// removes its partial video, and only to it: without a display it runs under xvfb-run in the
-/// same process group, and an X server stopped with it could end it mid-frame. Before
-/// mocap-review runs, the whole group is interrupted. Waits for the review to end.
+/// same process group, and an X server stopped with it (Xvfb ends on SIGINT too) would end it
+/// mid-frame, leaving its partial video. Before mocap-review runs, the whole group is ended (SIGTERM): nothing
+/// is written yet. Waits for the review to end.
 void interrupt(const py::object& process)
 {
   const auto group = process.attr("pid").cast<pid_t>();  // start_new_session: the child leads its group
   const std::vector<pid_t> reviews = processesNamed(group, "mocap-review");
   if (reviews.empty())
-    ::killpg(group, SIGINT);
+    ::killpg(group, SIGTERM);
   for (const pid_t review : reviews)
     ::kill(review, SIGINT);
   try {
@@ -252,17 +279,19 @@ py::dict writeReviewVideo(const py::object& output, const py::object& take, cons
   if (select)
     option("--select", joined(*select));
   const ReviewRun run = runReview(arguments, progress);
-  // mocap's exit codes: 2 bad usage (an option out of range), 1 bad input (a missing or bad file).
-  std::string message = run.messages;
-  while (!message.empty() && message.back() == '\n')
-    message.pop_back();
-  if (run.exitCode == 2)
-    throw InvalidArgument(message);
-  if (run.exitCode != 0)
-    throw IoError(message.empty() ? "mocap review ended with exit code " + std::to_string(run.exitCode) : message);
-  py::dict summary = py::module_::import("json").attr("loads")(run.out);
-  summary["warnings"] = message;  // e.g. no MP4 encoder here: Motion JPEG AVI written instead
-  return summary;
+  const ReviewMessages said = reviewMessages(run.messages);
+  // A summary on stdout means the video was written, whatever the exit code: xvfb-run now and then
+  // fails to remove its own temporary folder after the review and then exits 5.
+  if (run.out.find('{') != std::string::npos) {
+    py::dict summary = py::module_::import("json").attr("loads")(run.out);
+    summary["warnings"] = said.lines;  // e.g. no MP4 encoder here: Motion JPEG AVI written instead
+    return summary;
+  }
+  // mocap's exit codes: 2 bad usage (an option out of range, with the usage line), 1 bad input.
+  const std::string what = said.ours.empty() ? joined(said.lines, "\n") : joined(said.ours, "\n");
+  if (run.exitCode == 2 || said.usage)
+    throw InvalidArgument(what);
+  throw IoError(what.empty() ? "mocap review ended with exit code " + std::to_string(run.exitCode) : what);
 }
 
 } // namespace
@@ -284,7 +313,7 @@ void bindReviewVideo(py::module_& m)
         "$MOCAP_CLI, else the build's bin/mocap beside this module's folder, else `mocap` on the PATH) and "
         "its mocap-review, under xvfb-run when there is no display, and raises IoError when they are "
         "missing. Returns `mocap review --json`'s summary (output, codec, container, frames, width, height, "
-        "frame_rate, seconds, ...) plus 'warnings'. progress(fraction) after every tenth of the frames; "
+        "frame_rate, seconds, ...) plus 'warnings' (what it printed on stderr). progress(fraction) after every tenth of the frames; "
         "returning False (mocap.Cancelled) or Ctrl+C (KeyboardInterrupt) stops the review, which leaves no "
         "partial file. Errors: InvalidArgument for an option mocap review refuses, IoError for a file it "
         "cannot read or write, with its message.");
