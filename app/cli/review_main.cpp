@@ -7,6 +7,7 @@
 #include "cli_error.h"
 #include "frame_range.h"
 #include "review_arguments.h"
+#include "stop_signal.h"
 #include "usage.h"
 
 #include "dialogs/review_export.h"
@@ -24,6 +25,7 @@
 #include <QSurfaceFormat>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -61,8 +63,10 @@ QString setUp(ui::StudioSession& session, const ReviewArguments& a)
   return {};
 }
 
-/// Progress on stderr: one updating line on a terminal, a line per tenth otherwise.
-bool reportProgress(long long done, long long total)
+/// Progress on stderr: one updating line on a terminal, a line per tenth otherwise (which
+/// mocap.write_review_video reads). False once SIGINT or SIGTERM came: the export then stops at
+/// this frame and removes its partial video.
+bool reportProgress(long long done, long long total, const std::atomic<bool>& stop)
 {
   QCoreApplication::processEvents();
   static const bool terminal = ::isatty(STDERR_FILENO) != 0;
@@ -72,7 +76,7 @@ bool reportProgress(long long done, long long total)
     std::fprintf(stderr, "mocap review: %lld of %lld frames\n", done, total);
   if (terminal && done == total)
     std::fputc('\n', stderr);
-  return true;
+  return !stop.load();
 }
 
 void printOutcome(const ui::ReviewOutcome& outcome, const ui::ReviewRequest& request, double rate, bool json,
@@ -104,8 +108,10 @@ void printOutcome(const ui::ReviewOutcome& outcome, const ui::ReviewRequest& req
   std::cout << out.str() << '\n';
 }
 
-/// `clock` runs since the program started: the time to the first frame is read on it.
-int review(const ReviewArguments& a, const QElapsedTimer& clock)
+/// `clock` runs since the program started: the time to the first frame is read on it. `stop` is
+/// set by SIGINT or SIGTERM: the export then stops at its next frame (one that came while the
+/// session loaded stops it at the first).
+int review(const ReviewArguments& a, const QElapsedTimer& clock, const std::atomic<bool>& stop)
 {
   const auto [width, height] = parseReviewSize(a.size);
   ui::StudioSession session;
@@ -131,8 +137,12 @@ int review(const ReviewArguments& a, const QElapsedTimer& clock)
   const ui::ReviewOutcome outcome = ui::exportReview(source, request, [&](long long done, long long total) {
     if (done == 1)
       firstFrameSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
-    return reportProgress(done, total);
+    return reportProgress(done, total, stop);
   });
+  if (outcome.cancelled) {
+    std::cerr << "\nmocap review: interrupted; no video written\n";
+    return kExitInterrupted;
+  }
   if (!outcome.done) {
     std::cerr << "mocap review: " << outcome.error.toStdString() << '\n';
     return kExitBadInput;
@@ -149,6 +159,7 @@ int main(int argc, char** argv)
 {
   QElapsedTimer clock;
   clock.start();
+  const std::atomic<bool>& stop = installStopSignals();
   // Parsed as `mocap review`, so the usage and errors read as mocap's own.
   CLI::App mocap("the batch command line of Mocap Studio", "mocap");
   mocap.formatter(std::make_shared<UsageFormatter>());
@@ -172,7 +183,7 @@ int main(int argc, char** argv)
   QSurfaceFormat::setDefaultFormat(ui::VtkViewport::defaultFormat());  // before QApplication
   QApplication application(argc, argv);
   try {
-    return review(arguments, clock);
+    return review(arguments, clock, stop);
   } catch (const UsageError& e) {
     std::cerr << "mocap review: " << e.what() << '\n' << usageHint(command) << '\n';
     return kExitBadUsage;

@@ -1,6 +1,7 @@
 // Rigs, bindings and the blendshape solve: mocap.load_rig, mocap.read_binding, mocap.solve.
 
 #include "bindings.h"
+#include "finite_weights.h"
 #include "mesh_source.h"
 #include "python_job.h"
 
@@ -39,6 +40,7 @@ void bindRig(py::module_& m)
       .def(
           "evaluate",
           [](const BlendshapeRig& r, const Eigen::VectorXd& weights) {
+            checkFiniteWeights(weights.transpose());
             MeshVertices posed;
             r.evaluate(weights, posed);
             return posed;

@@ -12,6 +12,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -56,8 +57,21 @@ py::array_t<double> positionsWithGaps(const Take& take)
   return out;
 }
 
+/// Throws ValueError naming the first infinite coordinate: NaN marks a missing sample, but an
+/// inf is a broken number, not a gap.
+void checkNoInfinity(const py::detail::unchecked_reference<double, 3>& v)
+{
+  for (py::ssize_t f = 0; f < v.shape(0); ++f)
+    for (py::ssize_t m = 0; m < v.shape(1); ++m)
+      for (py::ssize_t a = 0; a < 3; ++a)
+        if (std::isinf(v(f, m, a)))
+          throw py::value_error("positions[" + std::to_string(f) + ", " + std::to_string(m) + ", " +
+                                std::to_string(a) + "] is infinite (NaN marks a missing sample)");
+}
+
 /// Sets every sample from a float64 array of frames × markers × 3 (any strides); a sample with
-/// a non-finite coordinate becomes a gap. States are left as they are.
+/// a NaN coordinate becomes a gap. Raises, changing nothing, for an infinite one. States are
+/// left as they are.
 void setPositions(Take& take, const py::array& values)
 {
   if (!py::isinstance<py::array_t<double>>(values) || values.dtype().kind() != 'f' || values.itemsize() != 8)
@@ -67,6 +81,7 @@ void setPositions(Take& take, const py::array& values)
     throw py::value_error("positions must have the shape (" + std::to_string(take.frameCount()) + ", " +
                           std::to_string(take.markerCount()) + ", 3)");
   const auto v = values.unchecked<double, 3>();
+  checkNoInfinity(v);
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
       const Eigen::Vector3d p(v(f, m, 0), v(f, m, 1), v(f, m, 2));
@@ -201,7 +216,7 @@ void bindTake(py::module_& m)
            py::arg("unit"), "Rescales the positions to 'mm', 'cm' or 'm'.")
       .def_property("positions", &positionsWithGaps, &setPositions,
                     "frames × markers × 3 float64, a copy with NaN where a sample is missing; assigning an "
-                    "array of that shape sets every sample (NaN: missing)")
+                    "array of that shape (any strides) sets every sample (NaN: missing; inf raises ValueError)")
       .def_property_readonly(
           "raw_positions", [](py::object self) { return positionView(self.cast<Take&>(), self); },
           "frames × markers × 3 float64 over the take's own storage (no copy; values in gaps are "

@@ -4,6 +4,7 @@
 // applied on its own (the Blender add-on's Import Solved Weights).
 
 #include "bindings.h"
+#include "finite_weights.h"
 
 #include "mocap/base/error.h"
 #include "mocap/io/live_link_face_csv.h"
@@ -16,7 +17,6 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,15 +27,6 @@ namespace py = pybind11;
 namespace mocap::python {
 
 namespace {
-
-/// Weight curves must be numbers: a NaN or inf would be written as text no tool reads back.
-void checkFinite(const Eigen::MatrixXd& weights)
-{
-  for (Eigen::Index f = 0; f < weights.rows(); ++f)
-    for (Eigen::Index s = 0; s < weights.cols(); ++s)
-      if (!std::isfinite(weights(f, s)))
-        throw InvalidArgument("weights[" + std::to_string(f) + ", " + std::to_string(s) + "] is not finite");
-}
 
 /// `map` as --map takes it: a shipped map's name or a map file (str or os.PathLike), or None.
 std::optional<RetargetMap> retargetMap(const py::object& map)
@@ -48,7 +39,7 @@ std::optional<RetargetMap> retargetMap(const py::object& map)
 void writeWeights(const std::filesystem::path& path, const std::vector<std::string>& names,
                   const Eigen::MatrixXd& weights, double rate, long long firstFrame, const py::object& map)
 {
-  checkFinite(weights);
+  checkFiniteWeights(weights);
   const std::optional<RetargetMap> retarget = retargetMap(map);
   const py::gil_scoped_release release;
   if (!retarget) {
@@ -63,7 +54,7 @@ void writeLiveLink(const std::filesystem::path& path, const std::vector<std::str
                    const Eigen::MatrixXd& weights, double rate, const py::object& map,
                    const std::optional<Eigen::MatrixXd>& headRotation)
 {
-  checkFinite(weights);
+  checkFiniteWeights(weights);
   if (headRotation && (headRotation->rows() != weights.rows() || headRotation->cols() != 3))
     throw InvalidArgument("head_rotation must be frames × 3 (" + std::to_string(weights.rows()) +
                           " × 3: yaw, pitch, roll in radians), not " + std::to_string(headRotation->rows()) +
@@ -81,7 +72,7 @@ void bindWeightCurves(py::module_& m)
   m.def(
       "retarget_weights",
       [](const std::vector<std::string>& names, const Eigen::MatrixXd& weights, const py::object& map) {
-        checkFinite(weights);
+        checkFiniteWeights(weights);
         if (map.is_none())
           throw InvalidArgument("retarget_weights needs a map: a shipped map's name or a map file");
         const RetargetMap retarget = *retargetMap(map);

@@ -2,6 +2,7 @@
 // markers as FBX, and the posed mesh as an OBJ + PC2 point cache (Blender's Mesh Cache).
 
 #include "bindings.h"
+#include "finite_weights.h"
 
 #include "mocap/base/error.h"
 #include "mocap/io/fbx_writer.h"
@@ -118,6 +119,10 @@ void bindWriters(py::module_& m)
       "write_pc2",
       [](const std::filesystem::path& path, const BlendshapeRig& rig, const Eigen::MatrixXd& weights,
          double firstFrame) {
+        checkFiniteWeights(weights);  // the glTF and FBX writers check theirs; a point cache would keep NaN
+        if (weights.cols() != rig.shapeCount())
+          throw InvalidArgument("weights has " + std::to_string(weights.cols()) + " columns for the rig's " +
+                                std::to_string(rig.shapeCount()) + " shapes");
         const py::gil_scoped_release release;
         MeshSequenceWriter sink(path, rig.neutral, MeshSequenceFormat::ObjPlusPc2, path.stem().string(),
                                 static_cast<float>(firstFrame));

@@ -28,5 +28,7 @@ void bindLayout(pybind11::module_& m);
 void bindWriters(pybind11::module_& m);
 /// mocap.write_weights_csv, write_live_link_csv, retarget_weights.
 void bindWeightCurves(pybind11::module_& m);
+/// mocap.write_review_video: `mocap review`'s video, rendered by the command line (no Qt here).
+void bindReviewVideo(pybind11::module_& m);
 
 } // namespace mocap::python

@@ -16,4 +16,5 @@ PYBIND11_MODULE(mocap, m)
   mocap::python::bindLayout(m);
   mocap::python::bindWriters(m);
   mocap::python::bindWeightCurves(m);
+  mocap::python::bindReviewVideo(m);
 }

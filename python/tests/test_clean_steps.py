@@ -90,6 +90,69 @@ def test_fill_gaps_on_a_selection_changes_only_those_samples_as_the_whole_fill_w
     assert (step["markers"], step["first_frame"], step["last_frame"]) == (["section4-2"], 1100 + first, 1130 + first)
 
 
+def changed_samples(take, before):
+    return np.argwhere(np.any(take.raw_positions != before, axis=2))
+
+
+def test_smooth_on_a_selection_changes_only_those_samples_as_the_whole_smooth_would():
+    whole, take = mocap.read(SAMPLE), mocap.read(SAMPLE)
+    before, states_before = take.raw_positions.copy(), take.states.copy()
+    mocap.smooth(whole, method="butterworth", cutoff_hz=6)
+    first = take.first_frame
+    markers = ["section4-2", "section7-1"]
+    report = mocap.smooth(take, method="butterworth", cutoff_hz=6, markers=markers,
+                          frames=(500 + first, 899 + first))
+    changed = changed_samples(take, before)
+    assert len(changed) == report["smoothed_samples"] > 0
+    assert {take.labels[m] for m in changed[:, 1]} == set(markers)
+    assert changed[:, 0].min() >= 500 and changed[:, 0].max() <= 899
+    frames, markers_at = changed[:, 0], changed[:, 1]
+    np.testing.assert_array_equal(take.raw_positions[frames, markers_at], whole.raw_positions[frames, markers_at])
+    inside = np.zeros(take.valid.shape, bool)
+    inside[500:900, [take.labels.index(m) for m in markers]] = True
+    assert np.array_equal(take.states[~inside], states_before[~inside]), "no state changes outside"
+    assert np.array_equal(take.states[inside], whole.states[inside])
+    step = take.history[-1]
+    assert step["operation"] == "smooth" and step["samples"] == report["smoothed_samples"]
+    assert (step["markers"], step["first_frame"], step["last_frame"]) == (markers, 500 + first, 899 + first)
+
+
+def test_detect_spikes_on_a_selection_flags_and_repairs_only_there():
+    whole, take = mocap.read(SAMPLE), mocap.read(SAMPLE)
+    everywhere = mocap.detect_spikes(whole, threshold=3)
+    flagged = everywhere["flagged"]
+    assert len({f["marker"] for f in flagged}) >= 2, "the sample has spikes on several markers"
+    marker = flagged[0]["marker"]
+    mine = [f for f in flagged if f["marker"] == marker]
+    frames = (min(f["frame"] for f in mine), max(f["frame"] for f in mine))
+    before = take.raw_positions.copy()
+    found = mocap.detect_spikes(take, threshold=3, repair=False, markers=[marker], frames=frames)
+    assert found["flagged"] == mine and found["count"] == len(mine)
+    assert np.array_equal(take.raw_positions, before) and take.history == []
+    report = mocap.detect_spikes(take, threshold=3, markers=[marker], frames=frames)
+    assert report["flagged"] == mine
+    changed = changed_samples(take, before)
+    assert len(changed) == report["repaired_samples"] > 0
+    assert {take.labels[m] for m in changed[:, 1]} == {marker}
+    first = take.first_frame
+    assert frames[0] - first <= changed[:, 0].min() and changed[:, 0].max() <= frames[1] - first
+    np.testing.assert_array_equal(take.raw_positions[changed[:, 0], changed[:, 1]],
+                                  whole.raw_positions[changed[:, 0], changed[:, 1]])
+    step = take.history[-1]
+    assert (step["operation"], step["markers"], step["first_frame"], step["last_frame"]) == \
+        ("repair spikes", [marker], frames[0], frames[1])
+
+
+def test_a_stopped_step_on_a_selection_leaves_the_take_as_it_was():
+    take = mocap.read(SAMPLE)
+    before = take.raw_positions.copy()
+    with pytest.raises(mocap.Cancelled):
+        mocap.smooth(take, markers=["section4-2"], progress=lambda f: False)
+    with pytest.raises(mocap.Cancelled):
+        mocap.fill_gaps(take, frames=(take.first_frame, take.first_frame + 2999), progress=lambda f: False)
+    assert np.array_equal(take.raw_positions, before) and take.history == []
+
+
 def test_bad_step_arguments_are_clear_errors():
     take = mocap.read(SAMPLE)
     with pytest.raises(mocap.InvalidArgument, match="factr"):
@@ -110,4 +173,10 @@ def test_bad_step_arguments_are_clear_errors():
         mocap.clean(take, fill={"max_gap_seconds": float("inf")})
     with pytest.raises(TypeError):
         mocap.fill_gaps(take, frames="all")
+    with pytest.raises(mocap.InvalidArgument, match="nosuchmarker"):
+        mocap.smooth(take, markers=["nosuchmarker"])
+    with pytest.raises(mocap.InvalidArgument, match="frames"):
+        mocap.detect_spikes(take, frames=(5, 1))
+    with pytest.raises(mocap.InvalidArgument, match="frames"):
+        mocap.smooth(take, frames=(0, 10**6))
     assert take.history == []

@@ -1,7 +1,6 @@
 """mocap.plan_layout: marker layout planning as `mocap pfa` runs it (ctest `python_module`)."""
 
 import json
-import math
 import os
 import pathlib
 import subprocess
@@ -12,6 +11,8 @@ import mocap
 
 SOURCE = pathlib.Path(os.environ.get("MOCAP_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 TAKE = SOURCE / "resources" / "sample" / "Facial-Sing.c3d"
+RIG = SOURCE / "resources" / "sample" / "ict_face_rig.glb"
+BINDING = SOURCE / "resources" / "sample" / "Facial-Sing.ict_face_rig.binding.json"
 HEAD = ["root-%d" % i for i in range(1, 7)]
 
 
@@ -45,10 +46,59 @@ def test_plan_layout_reports_what_mocap_pfa_reports(method):
         if cli["random"]["count"]:
             assert mine["random"]["blendshape_mse"] == cli["random"]["blendshape_mse"]
         else:
-            assert mine["random"]["blendshape_mse"] is None and math.isnan(cli["random"]["blendshape_mse"])
+            assert mine["random"]["blendshape_mse"] is None and cli["random"]["blendshape_mse"] is None
     rec = ours["recommended"]
     assert {k: rec[k] for k in ("markers", "rule", "labels")} == theirs["recommended"]
     assert set(rec["capture_labels"]) == set(rec["labels"]) | set(HEAD)
+
+
+def test_plan_layout_judges_on_a_rig_as_mocap_pfa_rig_does():
+    shapes = mocap.load_rig(RIG).names[:12]
+    plan = ("--stabilize", ",".join(HEAD), "--markers", "section*", "--restarts", 10, "--random", 2)
+    theirs = pfa_cli(*plan, "--rig", RIG, "--binding", BINDING, "--rig-only", ",".join(shapes), "--rig-frames", 120)
+    rig = mocap.load_rig(RIG, only=shapes)
+    seen = []
+    ours = mocap.plan_layout(mocap.read(TAKE), stabilize=HEAD, markers=["section*"], restarts=10, random=2, rig=rig,
+                             binding=mocap.read_binding(BINDING, rig), rig_frames=120, progress=seen.append)
+    summary = {k: v for k, v in theirs["rig"].items() if k not in ("path", "seconds")}
+    assert {k: v for k, v in ours["rig"].items() if k != "seconds"} == summary
+    assert ours["rig"]["method"] == "bvls" and ours["rig"]["bound_markers"] > 20
+    judged = 0
+    for mine, cli in zip(ours["sizes"], theirs["sizes"]):
+        for which in ("selected", "pfa", "greedy"):
+            if cli[which] is not None:
+                assert mine[which]["rig_weight_mse"] == cli[which]["rig_weight_mse"], (mine["markers"], which)
+                judged += mine[which]["rig_weight_mse"] is not None
+        assert mine["random"]["rig_weight_mse"] == cli["random"]["rig_weight_mse"]
+        assert mine["random"]["rig_count"] == cli["random"]["rig_count"]
+    assert judged > 20
+    greedy = [s["greedy"]["rig_weight_mse"] for s in ours["sizes"] if s["greedy"] and s["greedy"]["rig_weight_mse"]]
+    assert greedy[0] > greedy[-1], "three markers judge worse than thirty"
+    assert seen == sorted(seen) and seen[-1] > 0.5, "the rig measure reports the second half"
+    without = mocap.plan_layout(mocap.read(TAKE), stabilize=HEAD, markers=["section*"], restarts=10, random=2)
+    assert without["rig"] is None and without["sizes"][-1]["pfa"]["rig_weight_mse"] is None
+
+
+def test_bad_rig_requests_are_clear_errors_before_any_planning():
+    take = mocap.read(TAKE)
+    rig = mocap.load_rig(RIG)
+    binding = mocap.read_binding(BINDING, rig)
+    face_binding = mocap.read_binding(SOURCE / "resources" / "sample" / "Facial-Sing.binding.json",
+                                      SOURCE / "resources" / "sample" / "canonical_face_model.obj")
+    with pytest.raises(mocap.InvalidArgument, match="needs binding="):
+        mocap.plan_layout(take, rig=rig)
+    with pytest.raises(mocap.InvalidArgument, match="binding needs rig="):
+        mocap.plan_layout(take, binding=binding)
+    with pytest.raises(mocap.InvalidArgument, match="rig_frames needs rig="):
+        mocap.plan_layout(take, rig_frames=10)
+    with pytest.raises(mocap.InvalidArgument, match="468 vertices"):
+        mocap.plan_layout(take, rig=rig, binding=face_binding)
+    with pytest.raises(mocap.InvalidArgument, match="rig_method 'magic'"):
+        mocap.plan_layout(take, rig=rig, binding=binding, rig_method="magic")
+    with pytest.raises(mocap.InvalidArgument, match="rig_frames"):
+        mocap.plan_layout(take, rig=rig, binding=binding, rig_frames=-1)
+    with pytest.raises(TypeError, match="mocap.Rig"):
+        mocap.plan_layout(take, rig=str(RIG), binding=binding)
 
 
 def test_plan_layout_progress_and_cancel():

@@ -103,3 +103,20 @@ def test_bad_input_raises_clear_errors(scene, tmp_path):
     with pytest.raises(mocap.InvalidArgument, match="53 shapes"):
         rig.evaluate(np.zeros(3))
     assert rig.evaluate(np.zeros(53)).shape == (rig.vertex_count, 3)
+
+
+def test_long_calls_let_other_python_threads_run(scene):
+    take, rig, binding = scene
+
+    def spins_while(work):
+        worker = threading.Thread(target=work)
+        start = time.monotonic()
+        worker.start()
+        spins = 0
+        while worker.is_alive():
+            spins += 1
+        return spins / (time.monotonic() - start)
+
+    # Holding the GIL, the core would leave this thread a switch interval (5 ms) now and then at best.
+    assert spins_while(lambda: mocap.solve(take, rig, binding, method="bvls")) > 100000
+    assert spins_while(lambda: mocap.clean(mocap.read(TAKE))) > 100000

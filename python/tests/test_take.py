@@ -70,6 +70,16 @@ def test_c3d_written_from_python_is_byte_identical_to_mocap_convert(tmp_path):
     assert ours.read_bytes() == theirs.read_bytes()
 
 
+@pytest.mark.parametrize("suffix", [".trc", ".csv", ".bvh", ".fbx"])
+def test_every_written_format_is_byte_identical_to_mocap_convert(tmp_path, suffix):
+    (tmp_path / "py").mkdir()
+    (tmp_path / "cli").mkdir()
+    ours, theirs = tmp_path / "py" / ("take" + suffix), tmp_path / "cli" / ("take" + suffix)  # a TRC names its file
+    mocap.read(SAMPLE).write(ours)
+    subprocess.run([cli(), "convert", str(SAMPLE), str(theirs)], check=True, capture_output=True)
+    assert ours.read_bytes() == theirs.read_bytes()
+
+
 def test_arrays_round_trip_exactly_through_c3d_and_trc(tmp_path):
     take = mocap.read(SAMPLE)
     for name in ("round.c3d", "round.trc"):
@@ -138,7 +148,7 @@ def test_reading_a_thousand_times_leaks_nothing():
     assert resident_kb() - before < 2048, "RSS grew by more than 2 MB over 1 000 reads"
 
 
-def test_analog_channels_are_the_files():
+def test_analog_channels_and_events_are_the_files():
     path = SOURCE / "tests" / "data" / "c3d" / "sample01" / "Eb015pr.c3d"
     cli = os.environ.get("MOCAP_CLI")
     if not cli:
@@ -153,3 +163,6 @@ def test_analog_channels_are_the_files():
     np.testing.assert_allclose(analog["physical"][:, 2],
                                (analog["stored"][:, 2] - c["offset"]) * c["scale"] * analog["general_scale"])
     assert mocap.read(SAMPLE).analog["stored"].shape[1] == 0
+    events = mocap.read(path).events
+    assert [{k: e[k] for k in ("label", "context", "time")} for e in events] == info["events"]
+    assert [e["label"] for e in events] == ["RIC", "RHS", "RTO"]

@@ -2,7 +2,8 @@
 gaps as hidden keys and each sample's state (measured, filled, edited) as a custom property;
 File ▸ Import ▸ Mocap Solved Weights (weight or Live Link Face CSV onto the active mesh's shape
 keys) and the 3D view's Mocap tab, which solves a take onto them. Uses the `mocap` Python module
-when Blender's Python can import it, else the `mocap` command line (takes only)."""
+when Blender's Python can import it, else the `mocap` command line (takes only). Enabling it also
+lets Debian's Blender 3.4 import glTF rigs again (numpy_compat.py)."""
 
 bl_info = {
     "name": "Mocap Studio",
@@ -20,7 +21,7 @@ import bpy
 from bpy.props import StringProperty
 from bpy_extras.io_utils import ImportHelper
 
-from . import take_empties, take_source, weights_ops
+from . import numpy_compat, take_empties, take_source, weights_ops
 
 
 class MocapStudioPreferences(bpy.types.AddonPreferences):
@@ -73,6 +74,7 @@ _classes = (MocapStudioPreferences, IMPORT_SCENE_OT_mocap_take) + weights_ops.cl
 
 
 def register():
+    numpy_compat.restore_numpy_bool()  # for Debian's Blender 3.4 glTF importer (numpy_compat.py)
     for cls in _classes:
         bpy.utils.register_class(cls)
     weights_ops.register_properties()

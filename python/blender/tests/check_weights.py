@@ -59,9 +59,9 @@ def main(zip_path, rig_path, weights_path, live_link_path, take_path, binding_pa
     bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
     bpy.ops.preferences.addon_enable(module="mocap_studio")
     import numpy
-    if "bool" not in vars(numpy):
-        # Debian's Blender 3.4 glTF importer still uses numpy.bool, which Debian's NumPy 1.24 removed.
-        numpy.bool = numpy.bool_
+    # Debian's Blender 3.4 glTF importer still uses numpy.bool, which Debian's NumPy 1.24 removed:
+    # the enabled add-on puts it back (mocap_studio/numpy_compat.py), so the import below works.
+    require(hasattr(numpy, "bool"), "numpy.bool is missing with the add-on enabled: the glTF import would fail")
     bpy.ops.import_scene.gltf(filepath=rig_path)
     meshes = [o for o in bpy.data.objects if o.type == "MESH" and o.data.shape_keys]
     require(len(meshes) == 1, "%d meshes with shape keys in %s" % (len(meshes), rig_path))
