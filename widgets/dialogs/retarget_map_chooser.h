@@ -31,7 +31,7 @@ public:
   /// True when "Map file…" is chosen and no file is given yet.
   [[nodiscard]] bool lacksFile() const;
 
-  /// The choice as one string for QSettings ("", a shipped name, "file:" + path) and back.
+  /// The choice as one string for a remembered option ("", a shipped name, "file:" + path) and back.
   [[nodiscard]] QString settingValue() const;
   void restoreSettingValue(const QString& value);
 

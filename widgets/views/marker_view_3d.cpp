@@ -257,6 +257,8 @@ void MarkerView3d::observe(const ViewState& state)
   refreshColors();
   setLinksVisible(state.linksVisible());
   setFollowHead(state.followHead());
+  if (!state.headReference().empty())
+    (void)setHeadReference(state.headReference());
   setLayoutHighlight(state.layoutKept(), state.layoutReference());
   connect(&state, &ViewState::markerScaleChanged, this, &MarkerView3d::setMarkerScale);
   connect(&state, &ViewState::trailFramesChanged, this, &MarkerView3d::setTrailFrames);
@@ -265,6 +267,9 @@ void MarkerView3d::observe(const ViewState& state)
   connect(&state, &ViewState::colorsChanged, this, &MarkerView3d::refreshColors);
   connect(&state, &ViewState::linksVisibleChanged, this, &MarkerView3d::setLinksVisible);
   connect(&state, &ViewState::followHeadChanged, this, &MarkerView3d::setFollowHead);
+  // The head-stabilized view's set is checked by whoever sets it (HeadStabilizedViewAction).
+  connect(&state, &ViewState::headReferenceChanged, this,
+          [this, &state] { (void)setHeadReference(state.headReference()); });
   connect(&state, &ViewState::layoutHighlightChanged, this,
           [this, &state] { setLayoutHighlight(state.layoutKept(), state.layoutReference()); });
   connect(&state, &ViewState::cameraResetRequested, this, &MarkerView3d::resetCamera);
