@@ -437,13 +437,7 @@ bool MainWindow::showDock(const QString& name)
 
 int MainWindow::selectLabels(const QStringList& labels)
 {
-  std::vector<Eigen::Index> markers;
-  for (const QString& label : labels)
-    if (const auto index = m_document->take().markerIndex(label.toStdString()))
-      markers.push_back(*index);
-  const int found = static_cast<int>(markers.size());
-  m_document->setSelection(std::move(markers));
-  return found;
+  return m_document->selectLabels(labels);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -406,6 +406,15 @@ TEST(SessionViewState, TheLayersLookIsTheSessionsAndWhatIsShownIsReadFromIt)
   QSettings().clear();
 }
 
+TEST(SessionDocument, SelectsMarkersByLabelAndCountsTheOnesFound)
+{
+  test::TempDir dir;
+  ui::StudioSession session;
+  openOptionsTestTake(session, dir.file("take.c3d"));
+  EXPECT_EQ(session.document().selectLabels({QStringLiteral(" d"), QStringLiteral("b"), QStringLiteral("zz")}), 2);
+  EXPECT_EQ(session.document().selection(), (std::vector<Eigen::Index>{1, 3})) << "trimmed, sorted, unknown left out";
+}
+
 TEST(SessionActionsLanguage, TextsMovedOutOfTheWindowKeepTheirTranslations)
 {
   auto& app = *QCoreApplication::instance();
