@@ -1,6 +1,7 @@
 #include "actions/actor_actions.h"
 
 #include "dialogs/job_dialog.h"
+#include "dialogs/remembered_file_dialog.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/remembered_folder.h"
@@ -173,11 +174,10 @@ void ActorActions::rememberForTake(const QString& actorPath) const
 
 void ActorActions::newDialog()
 {
-  const QString path = QFileDialog::getSaveFileName(&m_dialogParent, tr("New Actor from Neutral Frame"),
-                                                    rememberedFolder(kFolderGroup), tr("Actor profiles (*.json)"));
+  const QString path =
+      saveFileOfGroup(&m_dialogParent, tr("New Actor from Neutral Frame"), kFolderGroup, tr("Actor profiles (*.json)"));
   if (path.isEmpty())
     return;
-  rememberFolder(kFolderGroup, path);
   (void)newFromNeutralFrame(path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) ? path : path + QStringLiteral(".json"));
 }
 
@@ -195,12 +195,10 @@ void ActorActions::calibrateDialog()
 
 void ActorActions::loadDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(&m_dialogParent, tr("Load Actor"), rememberedFolder(kFolderGroup),
-                                                    tr("Actor profiles (*.json);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberFolder(kFolderGroup, path);
-  (void)loadActor(path);
+  const QString path =
+      openFileOfGroup(&m_dialogParent, tr("Load Actor"), kFolderGroup, tr("Actor profiles (*.json);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadActor(path);
 }
 
 } // namespace mocap::ui

@@ -4,11 +4,11 @@
 #include "actions/live_link_recording_import.h"
 #include "actions/weight_edit_actions.h"
 #include "dialogs/live_link_open_dialog.h"
+#include "dialogs/remembered_file_dialog.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/job_runner.h"
 #include "document/live_link_recording.h"
-#include "document/remembered_folder.h"
 #include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
@@ -677,21 +677,18 @@ void BlendshapeSolvePanel::showStatus(const QString& text, bool error)
 
 void BlendshapeSolvePanel::loadGltfDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load glTF rig"), rememberedFolder(kGroup),
-                                                    tr("glTF rigs (*.glb *.gltf);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberFolder(kGroup, path);
-  (void)loadRig(path);
+  const QString path =
+      openFileOfGroup(this, tr("Load glTF rig"), kGroup, tr("glTF rigs (*.glb *.gltf);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadRig(path);
 }
 
 void BlendshapeSolvePanel::loadObjDialog()
 {
-  const QString neutral = QFileDialog::getOpenFileName(this, tr("Load the rig's neutral mesh"), rememberedFolder(kGroup),
-                                                       tr("Meshes (*.obj *.ply);;All files (*)"));
+  const QString neutral =
+      openFileOfGroup(this, tr("Load the rig's neutral mesh"), kGroup, tr("Meshes (*.obj *.ply);;All files (*)"));
   if (neutral.isEmpty())
     return;
-  rememberFolder(kGroup, neutral);
   const QString folder = QFileDialog::getExistingDirectory(this, tr("The folder with one OBJ per shape"),
                                                            QFileInfo(neutral).absolutePath());
   if (folder.isEmpty())

@@ -1,8 +1,8 @@
 #include "panels/face_mesh_panel.h"
 
 #include "commands/rebind_marker_command.h"
+#include "dialogs/remembered_file_dialog.h"
 #include "document/face_mesh_model.h"
-#include "document/remembered_folder.h"
 #include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
@@ -23,7 +23,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -539,32 +538,24 @@ void FaceMeshPanel::showError(const QString& message)
 
 void FaceMeshPanel::loadMeshDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load face mesh"), rememberedFolder(kGroup),
-                                                    tr("Meshes (*.obj *.ply *.glb *.gltf);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberFolder(kGroup, path);
-  (void)loadMesh(path);
+  const QString path =
+      openFileOfGroup(this, tr("Load face mesh"), kGroup, tr("Meshes (*.obj *.ply *.glb *.gltf);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadMesh(path);
 }
 
 void FaceMeshPanel::loadBindingDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load marker binding"), rememberedFolder(kGroup),
-                                                    tr("Bindings (*.json);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberFolder(kGroup, path);
-  (void)loadBinding(path);
+  const QString path = openFileOfGroup(this, tr("Load marker binding"), kGroup, tr("Bindings (*.json);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadBinding(path);
 }
 
 void FaceMeshPanel::saveBindingDialog()
 {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save marker binding"), rememberedFolder(kGroup),
-                                                    tr("Bindings (*.json)"));
-  if (path.isEmpty())
-    return;
-  rememberFolder(kGroup, path);
-  (void)saveBinding(path);
+  const QString path = saveFileOfGroup(this, tr("Save marker binding"), kGroup, tr("Bindings (*.json)"));
+  if (!path.isEmpty())
+    (void)saveBinding(path);
 }
 
 } // namespace mocap::ui

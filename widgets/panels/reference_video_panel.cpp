@@ -1,5 +1,6 @@
 #include "panels/reference_video_panel.h"
 
+#include "dialogs/remembered_file_dialog.h"
 #include "document/reference_video.h"
 #include "document/reference_videos.h"
 #include "document/remembered_folder.h"
@@ -383,13 +384,10 @@ void ReferenceVideoPanel::restored(int /*count*/, int missing, const QString& pr
 
 void ReferenceVideoPanel::openDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(
-      this, tr("Add reference video"), rememberedFolder(kGroup),
-      tr("Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberFolder(kGroup, path);
-  (void)openVideo(path);
+  const QString path = openFileOfGroup(this, tr("Add reference video"), kGroup,
+                                       tr("Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)"));
+  if (!path.isEmpty())
+    (void)openVideo(path);
 }
 
 void ReferenceVideoPanel::locateDialog()

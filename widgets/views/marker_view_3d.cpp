@@ -197,15 +197,7 @@ m_status->setAttribute(Qt::WA_NativeWindow);
   });
 
   connect(&document, &TakeDocument::takeReset, this, [this] {
-    m_layoutKept.clear();
-    m_layoutReference.clear();
-    m_headReference.clear();  // a new take
-    m_headMotion.reset();
-    m_followMarkers = markersToFollow();
-    updateStatus();
-    m_links.clear();
-    if (m_linksVisible)
-      computeLinks();
+    forgetMarkerIndices();  // a new take
     rebuildScene();
   });
   connect(&document, &TakeDocument::referenceMarkersChanged, this, [this] {
@@ -217,15 +209,7 @@ m_status->setAttribute(Qt::WA_NativeWindow);
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markersChanged, this, [this] {
-    m_layoutKept.clear();
-    m_layoutReference.clear();
-    m_headReference.clear();  // indices shifted
-    m_headMotion.reset();
-    m_followMarkers = markersToFollow();
-    updateStatus();
-    m_links.clear();
-    if (m_linksVisible)
-      computeLinks();
+    forgetMarkerIndices();  // indices shifted
     updateFrame();
   });
   connect(&document, &TakeDocument::samplesChanged, this, [this](const std::vector<Eigen::Index>& markers) {
@@ -242,6 +226,19 @@ m_status->setAttribute(Qt::WA_NativeWindow);
 }
 
 MarkerView3d::~MarkerView3d() = default;
+
+void MarkerView3d::forgetMarkerIndices()
+{
+  m_layoutKept.clear();
+  m_layoutReference.clear();
+  m_headReference.clear();
+  m_headMotion.reset();
+  m_followMarkers = markersToFollow();
+  updateStatus();
+  m_links.clear();
+  if (m_linksVisible)
+    computeLinks();
+}
 
 double MarkerView3d::takeSize() const
 {
