@@ -52,13 +52,8 @@ QString setUp(ui::StudioSession& session, const ReviewArguments& a)
     return error;
   if (a.select) {
     const QStringList labels = QString::fromStdString(*a.select).split(QLatin1Char(','), Qt::SkipEmptyParts);
-    std::vector<Eigen::Index> markers;
-    for (const QString& label : labels)
-      if (const auto marker = session.document().take().markerIndex(label.trimmed().toStdString()))
-        markers.push_back(*marker);
-    if (markers.size() != static_cast<std::size_t>(labels.size()))
+    if (session.document().selectLabels(labels) != labels.size())
       return QStringLiteral("--select: not every label is a marker of the take");
-    session.document().setSelection(std::move(markers));
   }
   return {};
 }

@@ -5,13 +5,13 @@
 #include "studio_profile.h"
 #include "ui_stall_meter.h"
 
+#include "document/studio_options.h"
 #include "document/take_document.h"
 #include "views/redraw_memory.h"
 #include "views/vtk_viewport.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QSettings>
 #include <QSurfaceFormat>
 #include <QElapsedTimer>
 #include <QTimer>
@@ -48,8 +48,9 @@ int main(int argc, char** argv)
   QApplication::setOrganizationName(QStringLiteral("MocapStudio"));
   QApplication::setApplicationName(QStringLiteral("Mocap Studio"));
   QApplication::setApplicationVersion(QStringLiteral(MOCAP_VERSION));
-  const QString language =
-      QSettings().value(QStringLiteral("language"), mocap::studio::defaultLanguage()).toString();
+  QString language = mocap::ui::StudioOptions().language;  // empty: the system's
+  if (language.isEmpty())
+    language = mocap::studio::defaultLanguage();
   if (!mocap::studio::installLanguage(app, language))
     mocap::studio::installLanguage(app, QStringLiteral("en"));
 

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "dock_layout.h"
 #include "language.h"
 
 #include "actions/animation_export.h"
@@ -52,13 +53,9 @@
 #include "views/frame_status_label.h"
 #include "views/model_outputs_note.h"
 #include "views/status_timeout.h"
-#include "views/blendshape_scene.h"
-#include "views/face_mesh_scene.h"
-#include "views/mesh_layer.h"
 #include "views/review_scene.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
-#include "panels/form_wrapping.h"
 
 #include <QAction>
 #include <QApplication>
@@ -69,13 +66,9 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QScreen>
-#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QSettings>
 #include <QStatusBar>
-#include <QTabBar>
 #include <QToolBar>
 #include <QUndoStack>
 
@@ -147,12 +140,12 @@ MainWindow::~MainWindow() = default;
 void MainWindow::createDocks()
 {
   m_table = new ui::MarkerTablePanel(*m_document, this);
-  addDock(tr("Markers"), QStringLiteral("markersDock"), m_table, Qt::LeftDockWidgetArea, DockContent::Fixed);
+  addDock(*this, tr("Markers"), QStringLiteral("markersDock"), m_table, Qt::LeftDockWidgetArea, DockContent::Fixed);
 
   m_curves = new ui::CurveView(*m_document, this);
   m_curves->observe(m_session->view());
   QDockWidget* curveDock =
-      addDock(tr("Curves"), QStringLiteral("curvesDock"), m_curves, Qt::BottomDockWidgetArea, DockContent::Fixed);
+      addDock(*this, tr("Curves"), QStringLiteral("curvesDock"), m_curves, Qt::BottomDockWidgetArea, DockContent::Fixed);
 
   m_cleaning = new ui::CleaningPanel(*m_document, this);
   m_cleaning->addStep(new ui::SpikeStep(*m_document, m_cleaning));
@@ -163,20 +156,20 @@ void MainWindow::createDocks()
   m_cleaning->addStep(smoothingStep);
   // Last: its preview moves every marker, not something to compute on every open.
   m_cleaning->addStep(new ui::HeadStabilizationStep(*m_document, m_cleaning));
-  QDockWidget* historyDock = addDock(tr("History"), QStringLiteral("historyDock"),
+  QDockWidget* historyDock = addDock(*this, tr("History"), QStringLiteral("historyDock"),
                                      new ui::HistoryPanel(*m_document, this), Qt::RightDockWidgetArea);
   historyDock->hide();  // View ▸ History shows it (clicking an entry undoes or redoes to it)
 
-  QDockWidget* cleaningDock = addDock(tr("Cleaning"), QStringLiteral("cleaningDock"), m_cleaning, Qt::RightDockWidgetArea);
+  QDockWidget* cleaningDock = addDock(*this, tr("Cleaning"), QStringLiteral("cleaningDock"), m_cleaning, Qt::RightDockWidgetArea);
 
   // Marker layout planning (issue 7): its selected layout is highlighted in the 3D view.
   m_layoutPlanning = new ui::LayoutPlanningPanel(*m_session, this);
   QDockWidget* layoutDock =
-      addDock(tr("Layout planning"), QStringLiteral("layoutPlanningDock"), m_layoutPlanning, Qt::RightDockWidgetArea,
+      addDock(*this, tr("Layout planning"), QStringLiteral("layoutPlanningDock"), m_layoutPlanning, Qt::RightDockWidgetArea,
               DockContent::Fixed);  // scrolls its form itself, under a fixed Run row
   tabifyDockWidget(cleaningDock, layoutDock);
   m_gapList = new ui::GapListPanel(*m_document, this);  // issue 13: every gap, filled one by one or checked
-  QDockWidget* gapDock = addDock(tr("Gaps"), QStringLiteral("gapListDock"), m_gapList, Qt::RightDockWidgetArea);
+  QDockWidget* gapDock = addDock(*this, tr("Gaps"), QStringLiteral("gapListDock"), m_gapList, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, gapDock);
   connect(m_gapList, &ui::GapListPanel::frameRangeRequested, m_curves, &ui::CurveView::setVisibleRange);
   // One set of fill rules: the Gaps dock fills past the Cleaning panel's only when told to.
@@ -201,20 +194,20 @@ void MainWindow::createDocks()
   m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, m_referenceMarkers,
           &ui::ReferenceMarkerActions::edit);
-  m_faceMeshDock = addDock(tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
+  m_faceMeshDock = addDock(*this, tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
 
   m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_session, *m_view3d, this);
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::message, statusBar(), &QStatusBar::showMessage);
   m_blendshapeDock =
-      addDock(tr("Blendshape Solve"), QStringLiteral("blendshapeSolveDock"), m_blendshapeSolve, Qt::RightDockWidgetArea);
+      addDock(*this, tr("Blendshape Solve"), QStringLiteral("blendshapeSolveDock"), m_blendshapeSolve, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_blendshapeDock);
   m_blendshapeDock->hide();  // View ▸ Blendshape Solve shows it
 
   m_referenceVideo = new ui::ReferenceVideoPanel(*m_session, this);
   QDockWidget* videoDock =
-      addDock(tr("Reference Video"), QStringLiteral("referenceVideoDock"), m_referenceVideo, Qt::RightDockWidgetArea);
+      addDock(*this, tr("Reference Video"), QStringLiteral("referenceVideoDock"), m_referenceVideo, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, videoDock);
   videoDock->hide();  // View ▸ Reference Video shows it, and opening a take that remembers videos
   connect(&m_session->referenceVideos(), &ui::ReferenceVideos::restored, this, [this](int count) {
@@ -222,14 +215,14 @@ void MainWindow::createDocks()
       (void)showDock(QStringLiteral("referenceVideoDock"));
   });
 
-  QDockWidget* streamDock = addDock(tr("Live Stream"), QStringLiteral("liveStreamDock"),
+  QDockWidget* streamDock = addDock(*this, tr("Live Stream"), QStringLiteral("liveStreamDock"),
                                     new ui::LiveStreamPanel(*m_session, this), Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, streamDock);
   streamDock->hide();  // View ▸ Live Stream shows it
 
   m_weights = new ui::WeightCurveView(*m_document, m_session->blendshapes(), this);
   m_weightsDock =
-      addDock(tr("Weights"), QStringLiteral("weightsDock"), m_weights, Qt::BottomDockWidgetArea, DockContent::Fixed);
+      addDock(*this, tr("Weights"), QStringLiteral("weightsDock"), m_weights, Qt::BottomDockWidgetArea, DockContent::Fixed);
   tabifyDockWidget(curveDock, m_weightsDock);
   m_weightsDock->hide();  // shown with the first solve, or from View ▸ Weights
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::solveFinished, this, [this](const QString& error) {
@@ -286,11 +279,7 @@ ui::ReviewSource MainWindow::reviewSource() const
 {
   ui::ReviewSource source;
   source.session = m_session;
-  source.settings = ui::viewSettings(*m_view3d);
-  source.settings.meshOpacity = m_faceMesh->scene().layer().opacity();
-  source.settings.meshEdges = m_faceMesh->scene().layer().edgesVisible();
-  source.settings.rigShown = m_blendshapeSolve->scene().shown();
-  source.settings.rigBeside = m_blendshapeSolve->scene().beside();
+  source.settings = ui::shownSettings(*m_view3d, m_session->view());
   return source;
 }
 
@@ -355,7 +344,7 @@ void MainWindow::createActions()
   for (QDockWidget* dock : findChildren<QDockWidget*>())
     m_viewMenu->addAction(dock->toggleViewAction());
   m_viewMenu->addSeparator();
-  m_headStabilizedView = new ui::HeadStabilizedViewAction(*m_document, *m_view3d, *this, this);
+  m_headStabilizedView = new ui::HeadStabilizedViewAction(*m_document, m_session->view(), *this, this);
   connect(m_headStabilizedView, &ui::HeadStabilizedViewAction::message, statusBar(), &QStatusBar::showMessage);
   m_viewMenu->addAction(m_headStabilizedView->action());
 
@@ -443,31 +432,12 @@ void MainWindow::restoreSession(const QVariantMap& session)
 
 bool MainWindow::showDock(const QString& name)
 {
-  for (QDockWidget* dock : findChildren<QDockWidget*>())
-    if (dock->objectName().compare(name, Qt::CaseInsensitive) == 0 ||
-        dock->windowTitle().compare(name, Qt::CaseInsensitive) == 0) {
-      dock->show();
-      dock->raise();
-      // A tabified dock shown while the window was hidden may not take its tab's place on
-      // raise(); its tab then brings it forward.
-      for (QTabBar* tabs : findChildren<QTabBar*>())
-        for (int i = 0; i < tabs->count(); ++i)
-          if (tabs->tabText(i) == dock->windowTitle() && tabs->isVisible())
-            tabs->setCurrentIndex(i);
-      return true;
-    }
-  return false;
+  return raiseDock(*this, name);
 }
 
 int MainWindow::selectLabels(const QStringList& labels)
 {
-  std::vector<Eigen::Index> markers;
-  for (const QString& label : labels)
-    if (const auto index = m_document->take().markerIndex(label.toStdString()))
-      markers.push_back(*index);
-  const int found = static_cast<int>(markers.size());
-  m_document->setSelection(std::move(markers));
-  return found;
+  return m_document->selectLabels(labels);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -500,10 +470,10 @@ void MainWindow::dropEvent(QDropEvent* event)
 
 void MainWindow::readSettings()
 {
-  QSettings settings;
-  if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
-    applyFirstRunLayout();
-  restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+  const ui::StudioOptions& options = m_session->options();
+  if (!restoreGeometry(options.windowGeometry))
+    m_firstRun = placeFirstRunWindow(*this);  // the docks are proportioned once shown (showEvent)
+  restoreState(options.windowState);
   // The layout is saved shortly after every change (dock moved, shown, resized), not only on a
   // clean quit, so a crash keeps it.
   m_layoutSaver = new QTimer(this);
@@ -532,71 +502,11 @@ ui::ManualWindow* MainWindow::showManual()
   return m_manual;
 }
 
-QDockWidget* MainWindow::addDock(const QString& title, const QString& objectName, QWidget* content,
-                                 Qt::DockWidgetArea area, DockContent kind)
-{
-  auto* dock = new QDockWidget(title, this);
-  dock->setObjectName(objectName);
-  if (kind == DockContent::Scrolls) {
-    // A panel scrolls rather than making the window taller or wider than the screen (e.g. 1280×800):
-    // the window's minimum size is the sum of its docks' minimum sizes.
-    auto* scroll = new QScrollArea(dock);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(content);
-    ui::wrapLongFormRows(*content);  // nor sideways
-    dock->setWidget(scroll);
-  } else {
-    dock->setWidget(content);
-  }
-  addDockWidget(area, dock);
-  // Shown from the View menu, a dock comes to the front, not in a tab behind the others.
-  connect(dock->toggleViewAction(), &QAction::triggered, dock, [dock](bool shown) {
-    if (shown)
-      dock->raise();
-  });
-  return dock;
-}
-
-void MainWindow::applyFirstRunLayout()
-{
-  const QScreen* screen = QGuiApplication::primaryScreen();
-  if (!screen)
-    return;
-  const QRect available = screen->availableGeometry();
-  const QSize size(available.width() * 85 / 100, available.height() * 85 / 100);
-  resize(size);
-  move(available.center() - QPoint(size.width() / 2, size.height() / 2));
-  m_firstRun = true;  // the docks are proportioned once the window is shown (see showEvent)
-}
-
-void MainWindow::proportionDocks()
-{
-  // Side docks share at most half the width and the curves under the view a quarter of the height;
-  // the 3D view keeps the rest. (Panels scroll, so on a small screen these shares are what counts.)
-  QList<QDockWidget*> sideDocks, bottomDocks;
-  QList<int> widths, heights;
-  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-    if (!dock->isVisible() || dock->isFloating())
-      continue;
-    const Qt::DockWidgetArea area = dockWidgetArea(dock);
-    if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) {
-      sideDocks.append(dock);
-      widths.append(width() * (area == Qt::LeftDockWidgetArea ? 16 : 30) / 100);
-    } else if (area == Qt::BottomDockWidgetArea) {
-      bottomDocks.append(dock);
-      heights.append(height() * 26 / 100);
-    }
-  }
-  resizeDocks(sideDocks, widths, Qt::Horizontal);
-  resizeDocks(bottomDocks, heights, Qt::Vertical);
-}
-
 void MainWindow::showEvent(QShowEvent* event)
 {
   QMainWindow::showEvent(event);
   if (std::exchange(m_firstRun, false))
-    proportionDocks();
+    proportionDocks(*this);
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event)
@@ -608,9 +518,8 @@ void MainWindow::resizeEvent(QResizeEvent* event)
 
 void MainWindow::writeSettings() const
 {
-  QSettings settings;
-  settings.setValue(QStringLiteral("geometry"), saveGeometry());
-  settings.setValue(QStringLiteral("windowState"), saveState());
+  m_session->options().windowGeometry = saveGeometry();
+  m_session->options().windowState = saveState();
 }
 
 } // namespace mocap::studio

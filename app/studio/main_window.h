@@ -123,21 +123,6 @@ private:
   void createDocks();
   /// The 3D view with the head markers bar above it.
   [[nodiscard]] QWidget* centralArea();
-  /// Whether a dock's content scrolls (panels) or takes the dock's size (views that zoom and pan, panels
-  /// that scroll themselves).
-  enum class DockContent
-  {
-    Scrolls,
-    Fixed,
-  };
-  /// Adds a dock named `objectName` (the name its layout is saved under) holding `content`.
-  QDockWidget* addDock(const QString& title, const QString& objectName, QWidget* content, Qt::DockWidgetArea area,
-                       DockContent kind = DockContent::Scrolls);
-  /// Sizes a first-run window to the screen, with the 3D view at least half its width.
-  void applyFirstRunLayout();
-  /// Gives the side docks 12 % and 30 % of the width and the bottom docks 26 % of the height, so the
-  /// 3D view keeps more than half of each.
-  void proportionDocks();
   /// The face mesh, its binding and the window layout, kept with every autosave.
   [[nodiscard]] QVariantMap recoverySession() const;
   void restoreSession(const QVariantMap& session);

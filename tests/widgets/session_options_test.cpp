@@ -6,14 +6,22 @@
 #include "language.h"
 
 #include "actions/cleaning_preset_actions.h"
+#include "actions/head_stabilized_view_action.h"
 #include "actions/option_toggle.h"
 #include "actions/reference_marker_actions.h"
 #include "actions/take_file_actions.h"
+#include "document/remembered_folder.h"
+#include "document/session_option.h"
 #include "document/studio_options.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "document/view_state.h"
+#include "panels/layout_planning_panel.h"
+#include "views/blendshape_scene.h"
+#include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
+#include "views/mesh_layer.h"
+#include "views/scene_settings.h"
 #include "views/sample_colors.h"
 
 #include "mocap/base/file_io.h"
@@ -271,6 +279,140 @@ TEST(SessionTakeFileActions, OpenRemembersTheFilesNewestFirstAndAFailedOpenKeeps
   EXPECT_EQ(opened.count(), 3);
   EXPECT_EQ(session.options().recentFiles.get().size(), 2);
   QSettings().clear();
+}
+
+TEST(SessionOptions, ForgetRemovesTheKeyAndAnnouncesTheDefault)
+{
+  QSettings().clear();
+  ui::SessionOption<QString> actor(QStringLiteral("actorForTake/x"), QStringLiteral("none"));
+  actor = QStringLiteral("/actors/a.json");
+  ASSERT_TRUE(QSettings().contains(QStringLiteral("actorForTake/x")));
+  QObject follower;
+  std::vector<QString> seen;
+  actor.follow(&follower, [&seen](const QString& path) { seen.push_back(path); });
+  actor.forget();
+  EXPECT_FALSE(QSettings().contains(QStringLiteral("actorForTake/x"))) << "the key is gone";
+  EXPECT_EQ(actor.get(), QStringLiteral("none"));
+  EXPECT_EQ(seen, (std::vector<QString>{QStringLiteral("/actors/a.json"), QStringLiteral("none")}));
+  actor.forget();
+  EXPECT_EQ(seen.size(), 2U) << "forgetting the default is no change";
+  QSettings().clear();
+}
+
+TEST(SessionOptions, AFolderIsRememberedUnderItsGroupsKeyOfBefore)
+{
+  QSettings().clear();
+  EXPECT_EQ(ui::rememberedFolder(QStringLiteral("export/")), QString()) << "none yet: the caller's fallback";
+  QSettings().setValue(QStringLiteral("actor/folder"), QStringLiteral("/saved/by/the/last/version"));
+  EXPECT_EQ(ui::rememberedFolder(QStringLiteral("actor/")), QStringLiteral("/saved/by/the/last/version"));
+  ui::rememberFolder(QStringLiteral("export/"), QStringLiteral("/takes/out/take.fbx"));
+  EXPECT_EQ(QSettings().value(QStringLiteral("export/folder")).toString(), QStringLiteral("/takes/out"));
+  EXPECT_EQ(ui::rememberedFolder(QStringLiteral("export/")), QStringLiteral("/takes/out"));
+  QSettings().clear();
+}
+
+TEST(SessionOptions, APanelLoadsTheSettingsTheLastVersionSaved)
+{
+  // Written under the keys the panel wrote by hand before its settings became typed options.
+  QSettings().clear();
+  QSettings settings;
+  settings.setValue(QStringLiteral("layoutPlanning/method"), QStringLiteral("greedy"));
+  settings.setValue(QStringLiteral("layoutPlanning/variance"), 0.9);
+  settings.setValue(QStringLiteral("layoutPlanning/seed"), 11);
+  settings.setValue(QStringLiteral("layoutPlanning/markers"), QStringList{QStringLiteral("lip*"), QStringLiteral("jaw")});
+  settings.setValue(QStringLiteral("layoutPlanning/keyPoses"), QStringLiteral("12,40"));
+  settings.sync();
+  ui::StudioSession session;
+  {
+    const ui::LayoutPlanningPanel panel(session);
+    const ui::LayoutPlanParameters loaded = panel.parameters();
+    EXPECT_EQ(loaded.method, SelectionMethod::Greedy);
+    EXPECT_DOUBLE_EQ(loaded.variance, 0.9);
+    EXPECT_EQ(loaded.seed, 11);
+    EXPECT_EQ(loaded.markerPatterns, (QStringList{QStringLiteral("lip*"), QStringLiteral("jaw")}));
+    EXPECT_EQ(loaded.keyPoses, QStringLiteral("12,40"));
+    EXPECT_EQ(loaded.restarts, ui::LayoutPlanParameters{}.restarts) << "an unsaved one keeps its default";
+  }
+  QSettings().clear();
+}
+
+TEST(SessionViewState, TheHeadStabilizedViewIsTheSessionsAndFollowsTheReferenceMarkers)
+{
+  QSettings().clear();
+  ui::StudioSession session;
+  ui::TakeDocument& document = session.document();
+  const QString sample = optionsTestPath(test::sampleTake());
+  document.open(ui::TakeDocument::read(sample), sample);
+  ui::MarkerView3d view(document);
+  view.observe(session.view());
+  QWidget dialogParent;
+  ui::HeadStabilizedViewAction stabilize(document, session.view(), dialogParent);
+  QSignalSpy messages(&stabilize, &ui::HeadStabilizedViewAction::message);
+  std::vector<Eigen::Index> roots;
+  for (const char* label : {"root-1", "root-2", "root-3", "root-4", "root-5", "root-6"})
+    roots.push_back(*document.take().markerIndex(label));
+  (void)document.setReferenceMarkers(roots);
+
+  stabilize.setOn(true);
+  EXPECT_EQ(session.view().headReference(), roots) << "the session's view state holds it";
+  EXPECT_EQ(view.headReference(), roots) << "and the view observes it";
+  EXPECT_TRUE(stabilize.action()->isChecked());
+  (void)document.setReferenceMarkers({roots[0], roots[1]});  // two markers cannot carry a pose
+  EXPECT_TRUE(session.view().headReference().empty()) << "back in the lab frame";
+  EXPECT_TRUE(view.headReference().empty());
+  EXPECT_FALSE(stabilize.action()->isChecked());
+  ASSERT_EQ(messages.count(), 2);
+  EXPECT_TRUE(messages.last().at(0).toString().contains(QStringLiteral("lab frame")));
+
+  (void)document.setReferenceMarkers(roots);
+  EXPECT_TRUE(view.headReference().empty()) << "a new set does not turn it on";
+  session.view().setHeadReference(roots);
+  EXPECT_TRUE(stabilize.action()->isChecked()) << "the action shows the state, whoever set it";
+  stabilize.setOn(false);
+  EXPECT_TRUE(view.headReference().empty());
+  QSettings().clear();
+}
+
+TEST(SessionViewState, TheLayersLookIsTheSessionsAndWhatIsShownIsReadFromIt)
+{
+  QSettings().clear();
+  test::TempDir dir;
+  ui::StudioSession session;
+  openOptionsTestTake(session, dir.file("take.c3d"));
+  ui::MarkerView3d view(session.document());
+  ui::FaceMeshScene mesh(session.faceMesh(), view);
+  ui::BlendshapeScene rig(session.blendshapes(), session.faceMesh(), view);
+  mesh.observe(session.view());
+  rig.observe(session.view());
+  EXPECT_DOUBLE_EQ(mesh.layer().opacity(), 0.6) << "the studio's first-run look";
+  EXPECT_TRUE(rig.shown());
+  EXPECT_TRUE(rig.beside());
+  ui::ViewState& state = session.view();
+  state.setMeshOpacity(0.3);
+  state.setMeshEdges(true);
+  state.setRigShown(false);
+  state.setRigBeside(false);
+  EXPECT_DOUBLE_EQ(mesh.layer().opacity(), 0.3) << "the scenes follow the session's view state";
+  EXPECT_DOUBLE_EQ(mesh.compareLayer().opacity(), 0.3);
+  EXPECT_TRUE(mesh.compareLayer().edgesVisible());
+  EXPECT_FALSE(rig.shown());
+  EXPECT_FALSE(rig.beside());
+  // A review video takes the look from the session, not from a dock's widgets.
+  const ui::SceneSettings shown = ui::shownSettings(view, state);
+  EXPECT_DOUBLE_EQ(shown.meshOpacity, 0.3);
+  EXPECT_TRUE(shown.meshEdges);
+  EXPECT_FALSE(shown.rigShown);
+  EXPECT_FALSE(shown.rigBeside);
+  QSettings().clear();
+}
+
+TEST(SessionDocument, SelectsMarkersByLabelAndCountsTheOnesFound)
+{
+  test::TempDir dir;
+  ui::StudioSession session;
+  openOptionsTestTake(session, dir.file("take.c3d"));
+  EXPECT_EQ(session.document().selectLabels({QStringLiteral(" d"), QStringLiteral("b"), QStringLiteral("zz")}), 2);
+  EXPECT_EQ(session.document().selection(), (std::vector<Eigen::Index>{1, 3})) << "trimmed, sorted, unknown left out";
 }
 
 TEST(SessionActionsLanguage, TextsMovedOutOfTheWindowKeepTheirTranslations)

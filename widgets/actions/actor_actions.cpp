@@ -1,8 +1,11 @@
 #include "actions/actor_actions.h"
 
 #include "dialogs/job_dialog.h"
+#include "dialogs/remembered_file_dialog.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
+#include "document/remembered_folder.h"
+#include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "views/status_timeout.h"
@@ -15,7 +18,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
-#include <QSettings>
 #include <QUrl>
 
 #include <memory>
@@ -24,12 +26,14 @@ namespace mocap::ui {
 
 namespace {
 
-const QString kFolderKey = QStringLiteral("actor/folder");
+const QString kFolderGroup = QStringLiteral("actor/");  // its dialogs' folder: "actor/folder"
 
-QString takeKey(const QString& takePath)
+/// The actor profile a take remembers ("actorForTake/" + the take's encoded path).
+SessionOption<QString> actorOfTake(const QString& takePath)
 {
-  return QStringLiteral("actorForTake/") +
-         QString::fromLatin1(QUrl::toPercentEncoding(QFileInfo(takePath).absoluteFilePath()));
+  return {QStringLiteral("actorForTake/") +
+              QString::fromLatin1(QUrl::toPercentEncoding(QFileInfo(takePath).absoluteFilePath())),
+          QString()};
 }
 
 std::vector<std::string> boundLabels(const MeshBinding& binding)
@@ -151,7 +155,7 @@ void ActorActions::restoreForTake()
   const QString takePath = m_session.document().filePath();
   if (takePath.isEmpty())
     return;
-  const QString actorPath = QSettings().value(takeKey(takePath)).toString();
+  const QString actorPath = actorOfTake(takePath).get();
   if (!actorPath.isEmpty())
     (void)loadActor(actorPath);
 }
@@ -161,27 +165,26 @@ void ActorActions::rememberForTake(const QString& actorPath) const
   const QString takePath = m_session.document().filePath();
   if (takePath.isEmpty())
     return;
-  QSettings settings;
+  SessionOption<QString> actor = actorOfTake(takePath);
   if (actorPath.isEmpty())
-    settings.remove(takeKey(takePath));
+    actor.forget();
   else
-    settings.setValue(takeKey(takePath), QFileInfo(actorPath).absoluteFilePath());
+    actor = QFileInfo(actorPath).absoluteFilePath();
 }
 
 void ActorActions::newDialog()
 {
-  const QString path = QFileDialog::getSaveFileName(&m_dialogParent, tr("New Actor from Neutral Frame"),
-                                                    QSettings().value(kFolderKey).toString(), tr("Actor profiles (*.json)"));
+  const QString path =
+      saveFileOfGroup(&m_dialogParent, tr("New Actor from Neutral Frame"), kFolderGroup, tr("Actor profiles (*.json)"));
   if (path.isEmpty())
     return;
-  QSettings().setValue(kFolderKey, QFileInfo(path).absolutePath());
   (void)newFromNeutralFrame(path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive) ? path : path + QStringLiteral(".json"));
 }
 
 void ActorActions::calibrateDialog()
 {
   const QString rom = QFileDialog::getOpenFileName(&m_dialogParent, tr("Range-of-Motion Take"),
-                                                   QSettings().value(kFolderKey).toString(), tr("Takes (*.c3d *.trc);;All files (*)"));
+                                                   rememberedFolder(kFolderGroup), tr("Takes (*.c3d *.trc);;All files (*)"));
   if (rom.isEmpty())
     return;
   const QString out = QFileDialog::getSaveFileName(&m_dialogParent, tr("Save the Calibrated Actor"),
@@ -192,12 +195,10 @@ void ActorActions::calibrateDialog()
 
 void ActorActions::loadDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(&m_dialogParent, tr("Load Actor"), QSettings().value(kFolderKey).toString(),
-                                                    tr("Actor profiles (*.json);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  QSettings().setValue(kFolderKey, QFileInfo(path).absolutePath());
-  (void)loadActor(path);
+  const QString path =
+      openFileOfGroup(&m_dialogParent, tr("Load Actor"), kFolderGroup, tr("Actor profiles (*.json);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadActor(path);
 }
 
 } // namespace mocap::ui

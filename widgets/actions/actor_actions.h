@@ -19,7 +19,7 @@ class StudioSession;
 ///   on a worker, written and loaded;
 /// - Load Actor…: a profile file, checked against the rig's shapes.
 /// The loaded actor is the solve's (BlendshapeSolveModel::actor) and is remembered with the take
-/// (QSettings "actorForTake/…", the take's path → the profile's), so opening the take again loads
+/// (the session option "actorForTake/…", the take's path → the profile's), so opening the take again loads
 /// it; another take starts without one unless it remembers its own.
 class ActorActions final : public QObject
 {

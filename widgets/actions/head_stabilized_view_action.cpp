@@ -1,16 +1,18 @@
 #include "actions/head_stabilized_view_action.h"
 
 #include "document/take_document.h"
-#include "views/marker_view_3d.h"
+#include "document/view_state.h"
 #include "views/status_timeout.h"
 
 #include <QAction>
 #include <QMessageBox>
 #include <QWidget>
 
+#include <exception>
+
 namespace mocap::ui {
 
-HeadStabilizedViewAction::HeadStabilizedViewAction(TakeDocument& document, MarkerView3d& view, QWidget& dialogParent,
+HeadStabilizedViewAction::HeadStabilizedViewAction(TakeDocument& document, ViewState& view, QWidget& dialogParent,
                                                    QObject* parent)
     : QObject(parent), m_document(document), m_view(view), m_dialogParent(dialogParent), m_action(new QAction(this))
 {
@@ -21,6 +23,8 @@ HeadStabilizedViewAction::HeadStabilizedViewAction(TakeDocument& document, Marke
   m_action->setToolTip(tr("Show the markers in the head frame of the reference markers (a view setting; the take "
                           "is not changed)"));
   connect(m_action, &QAction::triggered, this, &HeadStabilizedViewAction::setOn);
+  connect(&view, &ViewState::headReferenceChanged, this,
+          [this] { m_action->setChecked(!m_view.headReference().empty()); });
   // The view drops its head pose when markers shift or a take is set: follow the document's set.
   connect(&document, &TakeDocument::markersChanged, this, &HeadStabilizedViewAction::followReferenceMarkers);
   connect(&document, &TakeDocument::referenceMarkersChanged, this, &HeadStabilizedViewAction::followReferenceMarkers);
@@ -37,26 +41,37 @@ void HeadStabilizedViewAction::setOn(bool on)
   }
   const QString error = m_document.referenceMarkers().size() < 3
                             ? tr("Choose at least three reference markers first (Marker ▸ Reference Markers…).")
-                            : m_view.setHeadReference(m_document.referenceMarkers());
+                            : headPoseProblem();
   m_action->setChecked(error.isEmpty());
-  if (!error.isEmpty())
+  if (!error.isEmpty()) {
     QMessageBox::warning(&m_dialogParent, tr("Head-Stabilized View"), error);
-  else
-    emit message(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"), kStatusMessageMs);
+    return;
+  }
+  m_view.setHeadReference(m_document.referenceMarkers());
+  emit message(tr("3D view stabilized on the reference markers (Ctrl+B again for the lab frame)"), kStatusMessageMs);
+}
+
+QString HeadStabilizedViewAction::headPoseProblem() const
+{
+  try {
+    (void)m_document.headMotion(m_document.referenceMarkers());
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
 }
 
 void HeadStabilizedViewAction::followReferenceMarkers()
 {
-  if (!m_action->isChecked())
+  if (m_view.headReference().empty())
     return;
-  const bool usable = m_document.referenceMarkers().size() >= 3 &&
-                      m_view.setHeadReference(m_document.referenceMarkers()).isEmpty();
-  if (!usable) {
-    m_view.setHeadReference({});
-    m_action->setChecked(false);
-    emit message(tr("3D view back in the lab frame: the reference markers cannot carry a head pose"),
-                 2 * kStatusMessageMs);
+  if (m_document.referenceMarkers().size() >= 3 && headPoseProblem().isEmpty()) {
+    m_view.setHeadReference(m_document.referenceMarkers());  // the views dropped the old indices
+    return;
   }
+  m_view.setHeadReference({});
+  emit message(tr("3D view back in the lab frame: the reference markers cannot carry a head pose"),
+               2 * kStatusMessageMs);
 }
 
 } // namespace mocap::ui

@@ -1,6 +1,8 @@
 #include "dialogs/export_dialog.h"
 
 #include "document/job_runner.h"
+#include "document/remembered_folder.h"
+#include "document/session_option.h"
 #include "document/take_document.h"
 
 #include "mocap/io/take_io.h"
@@ -20,7 +22,6 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSettings>
 #include <QSpinBox>
 #include <QStandardItemModel>
 #include <QStringList>
@@ -34,12 +35,17 @@ namespace mocap::ui {
 
 namespace {
 
-const QString kFolderKey = QStringLiteral("export/folder");
-const QString kFormatKey = QStringLiteral("export/format");
-const QString kFbxUpKey = QStringLiteral("export/fbxUp");
-const QString kFbxReduceKey = QStringLiteral("export/fbxReduce");
-const QString kFbxReduceMmKey = QStringLiteral("export/fbxReduceMm");
+const QString kGroup = QStringLiteral("export/");  // the folder is "export/folder"
 constexpr double kDefaultReduceMm = 0.1;
+
+/// The dialog's remembered choices, typed ("export/…").
+struct ExportSettings
+{
+  SessionOption<int> format{kGroup + QStringLiteral("format"), 0};
+  SessionOption<int> fbxUp{kGroup + QStringLiteral("fbxUp"), static_cast<int>(FbxUpAxis::Z)};
+  SessionOption<bool> fbxReduce{kGroup + QStringLiteral("fbxReduce"), false};
+  SessionOption<double> fbxReduceMm{kGroup + QStringLiteral("fbxReduceMm"), kDefaultReduceMm};
+};
 
 // The output file's extension for `format`; an OBJ sequence is a folder, which has none.
 QString extensionOf(AnimationFormat format)
@@ -190,7 +196,7 @@ void ExportDialog::setFbxOptions(FbxUpAxis up, std::optional<double> reduceMm)
 
 void ExportDialog::restoreSettings()
 {
-  const QSettings settings;
+  const ExportSettings settings;
   const Take& take = m_document.take();
   const qint64 first = take.firstFrame();
   const qint64 last = first + std::max<Eigen::Index>(take.frameCount(), 1) - 1;
@@ -210,16 +216,17 @@ void ExportDialog::restoreSettings()
   setRangeChoice(RangeChoice::WholeTake);
 
   const QFileInfo takeFile(m_document.filePath());
-  const QString folder =
-      settings.value(kFolderKey, takeFile.filePath().isEmpty() ? QDir::homePath() : takeFile.absolutePath()).toString();
+  QString folder = rememberedFolder(kGroup);
+  if (folder.isEmpty())
+    folder = takeFile.filePath().isEmpty() ? QDir::homePath() : takeFile.absolutePath();
   const QString base = takeFile.completeBaseName().isEmpty() ? QStringLiteral("take") : takeFile.completeBaseName();
   m_path->setText(QDir(folder).filePath(base));
-  const int remembered = settings.value(kFormatKey, 0).toInt();
+  const int remembered = settings.format;
   const bool known = remembered >= 0 && remembered <= static_cast<int>(AnimationFormat::Fbx);
   m_rememberedFormat = known ? static_cast<AnimationFormat>(remembered) : AnimationFormat::Bvh;
-  m_up->setCurrentIndex(std::max(0, m_up->findData(settings.value(kFbxUpKey, static_cast<int>(FbxUpAxis::Z)).toInt())));
-  m_reduce->setChecked(settings.value(kFbxReduceKey, false).toBool());
-  m_reduceMm->setValue(settings.value(kFbxReduceMmKey, kDefaultReduceMm).toDouble());
+  m_up->setCurrentIndex(std::max(0, m_up->findData(settings.fbxUp.get())));
+  m_reduce->setChecked(settings.fbxReduce);
+  m_reduceMm->setValue(settings.fbxReduceMm);
   setFormat(m_rememberedFormat);
   onFormatChanged();  // the extension, even when the format did not change
 }
@@ -438,13 +445,13 @@ bool ExportDialog::startExport()
     showStatus(tr("Not exported: the existing files are kept."), false);
     return false;
   }
-  QSettings settings;
+  ExportSettings settings;
   const QFileInfo output(m_path->text().trimmed());
-  settings.setValue(kFolderKey, output.absolutePath());
-  settings.setValue(kFormatKey, static_cast<int>(job.format));
-  settings.setValue(kFbxUpKey, m_up->currentData().toInt());
-  settings.setValue(kFbxReduceKey, m_reduce->isChecked());
-  settings.setValue(kFbxReduceMmKey, m_reduceMm->value());
+  rememberFolder(kGroup, output.filePath());
+  settings.format = static_cast<int>(job.format);
+  settings.fbxUp = m_up->currentData().toInt();
+  settings.fbxReduce = m_reduce->isChecked();
+  settings.fbxReduceMm = m_reduceMm->value();
   m_rememberedFormat = job.format;
 
   m_total = job.frameCount();

@@ -28,7 +28,7 @@ class TakeDocument;
 /// selected on the curves or types one. Existing files are replaced only after the user agreed
 /// (a question listing them). The export runs on a worker thread with a progress bar and Cancel;
 /// a cancelled or failed export leaves no file. The last folder, format and FBX options are
-/// remembered (QSettings "export/folder", "export/format", "export/fbx…"). The mesh formats need a source of
+/// remembered (session options "export/folder", "export/format", "export/fbx…"). The mesh formats need a source of
 /// deformed frames (setMeshSource); without one they are disabled.
 class ExportDialog final : public QDialog
 {

@@ -1,6 +1,8 @@
 #include "dialogs/live_link_open_dialog.h"
 
 #include "dialogs/retarget_map_chooser.h"
+#include "document/remembered_folder.h"
+#include "document/session_option.h"
 
 #include <QDialogButtonBox>
 #include <QDir>
@@ -11,15 +13,19 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSettings>
 #include <QVBoxLayout>
 
 namespace mocap::ui {
 
 namespace {
 
-const QString kFolderKey = QStringLiteral("liveLinkOpen/folder");
-const QString kMapKey = QStringLiteral("liveLinkOpen/map");
+const QString kGroup = QStringLiteral("liveLinkOpen/");  // the folder is "liveLinkOpen/folder"
+
+/// The map chosen last (RetargetMapChooser::settingValue).
+SessionOption<QString> mapOption()
+{
+  return {kGroup + QStringLiteral("map"), QString()};
+}
 
 } // namespace
 
@@ -47,8 +53,7 @@ LiveLinkOpenDialog::LiveLinkOpenDialog(QWidget* parent) : QDialog(parent)
   connect(buttons, &QDialogButtonBox::accepted, this, &LiveLinkOpenDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
   connect(browseButton, &QPushButton::clicked, this, &LiveLinkOpenDialog::browse);
-  const QSettings settings;
-  m_map->restoreSettingValue(settings.value(kMapKey).toString());
+  m_map->restoreSettingValue(mapOption().get());
   resize(560, 120);
 }
 
@@ -76,15 +81,16 @@ void LiveLinkOpenDialog::accept()
 {
   if (recordingPath().isEmpty() || m_map->lacksFile())
     return;
-  QSettings settings;
-  settings.setValue(kFolderKey, QFileInfo(recordingPath()).absolutePath());
-  settings.setValue(kMapKey, m_map->settingValue());
+  rememberFolder(kGroup, recordingPath());
+  mapOption().set(m_map->settingValue());
   QDialog::accept();
 }
 
 void LiveLinkOpenDialog::browse()
 {
-  const QString folder = QSettings().value(kFolderKey, QDir::homePath()).toString();
+  QString folder = rememberedFolder(kGroup);
+  if (folder.isEmpty())
+    folder = QDir::homePath();
   const QString path = QFileDialog::getOpenFileName(this, tr("Open Live Link Recording"),
                                                     recordingPath().isEmpty() ? folder : recordingPath(),
                                                     tr("Live Link Face CSV (*.csv);;All files (*)"));

@@ -14,7 +14,7 @@ class RetargetMapChooser;
 
 /// Asks for a Live Link Face recording (the CSV Epic's app writes) and the map from its 52 curves
 /// onto the loaded rig's shapes: by name (rigMapFromLiveLinkFace, the default), a shipped map
-/// (arkit_to_ict) or a map file. The folder and the map are remembered (QSettings "liveLinkOpen/…").
+/// (arkit_to_ict) or a map file. The folder and the map are remembered (session options "liveLinkOpen/…").
 class LiveLinkOpenDialog final : public QDialog
 {
   Q_OBJECT

@@ -37,8 +37,8 @@ public:
   /// True when "Map file…" is chosen and no file is given yet.
   [[nodiscard]] bool lacksFile() const;
 
-  /// The choice as one string for QSettings ("", a shipped name, "file:" + path) and back (the
-  /// map in memory is restored only while it is offered).
+  /// The choice as one string for a remembered option ("", a shipped name, "file:" + path) and back
+  /// (the map in memory is restored only while it is offered).
   [[nodiscard]] QString settingValue() const;
   void restoreSettingValue(const QString& value);
 

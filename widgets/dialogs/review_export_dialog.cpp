@@ -1,5 +1,7 @@
 #include "dialogs/review_export_dialog.h"
 
+#include "document/remembered_folder.h"
+#include "document/session_option.h"
 #include "document/take_document.h"
 
 #include <QCheckBox>
@@ -14,15 +16,18 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSettings>
 #include <QSpinBox>
 
 namespace mocap::ui {
 
 namespace {
 
-const QString kFolderKey = QStringLiteral("reviewExport/folder");
-const QString kSizeKey = QStringLiteral("reviewExport/size");
+const QString kGroup = QStringLiteral("reviewExport/");  // the folder is "reviewExport/folder"
+
+SessionOption<QSize> sizeOption()
+{
+  return {kGroup + QStringLiteral("size"), QSize(1280, 720)};
+}
 
 } // namespace
 
@@ -31,10 +36,11 @@ ReviewExportDialog::ReviewExportDialog(const TakeDocument& document, const QStri
     : QDialog(parent), m_document(document), m_videoPath(videoPath), m_videoOffset(videoOffset)
 {
   setWindowTitle(tr("Export Review Video"));
-  const QSettings settings;
   const Take& take = document.take();
   const QFileInfo takeFile(document.filePath());
-  const QString folder = settings.value(kFolderKey, takeFile.absolutePath()).toString();
+  QString folder = rememberedFolder(kGroup);
+  if (folder.isEmpty())
+    folder = takeFile.absolutePath();
   const QString stem = takeFile.completeBaseName().isEmpty() ? QStringLiteral("take") : takeFile.completeBaseName();
 
   m_output = new QLineEdit(QDir(folder).filePath(stem + QStringLiteral(".review.mp4")), this);
@@ -48,7 +54,7 @@ ReviewExportDialog::ReviewExportDialog(const TakeDocument& document, const QStri
   m_size = new QComboBox(this);
   for (const QSize size : {QSize(1280, 720), QSize(1920, 1080), QSize(960, 540), QSize(640, 360)})
     m_size->addItem(tr("%1 × %2").arg(size.width()).arg(size.height()), size);
-  m_size->setCurrentIndex(std::max(0, m_size->findData(settings.value(kSizeKey, QSize(1280, 720)).toSize())));
+  m_size->setCurrentIndex(std::max(0, m_size->findData(sizeOption().get())));
 
   const auto first = static_cast<int>(take.firstFrame());
   const auto last = static_cast<int>(take.firstFrame() + take.frameCount() - 1);
@@ -105,9 +111,8 @@ void ReviewExportDialog::accept()
   if (output.exists() &&
       QMessageBox::question(this, windowTitle(), tr("%1 exists. Replace it?").arg(output.fileName())) != QMessageBox::Yes)
     return;
-  QSettings settings;
-  settings.setValue(kFolderKey, output.absolutePath());
-  settings.setValue(kSizeKey, m_size->currentData().toSize());
+  rememberFolder(kGroup, output.filePath());
+  sizeOption().set(m_size->currentData().toSize());
   QDialog::accept();
 }
 

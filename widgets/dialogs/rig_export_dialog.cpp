@@ -1,6 +1,8 @@
 #include "dialogs/rig_export_dialog.h"
 
 #include "dialogs/retarget_map_chooser.h"
+#include "document/remembered_folder.h"
+#include "document/session_option.h"
 
 #include "mocap/base/length_unit.h"
 
@@ -17,7 +19,6 @@
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSettings>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -34,6 +35,17 @@ QString key(const char* name)
 {
   return kGroup + QLatin1String(name);
 }
+
+/// The dialog's remembered choices, typed ("rigExport/…"; the folder is "rigExport/folder").
+struct RigExportSettings
+{
+  SessionOption<int> format{key("format"), static_cast<int>(RigExportFormat::Fbx)};
+  SessionOption<QString> map{key("map"), QString()};  // RetargetMapChooser::settingValue
+  SessionOption<bool> reduce{key("reduce"), false};
+  SessionOption<double> tolerance{key("tolerance"), kDefaultTolerance};
+  SessionOption<int> up{key("up"), static_cast<int>(FbxUpAxis::Y)};
+  SessionOption<int> units{key("units"), static_cast<int>(LengthUnit::Centimetre)};
+};
 
 QString extensionOf(RigExportFormat format)
 {
@@ -177,33 +189,35 @@ QLayout* RigExportDialog::buildReductionRow()
 void RigExportDialog::restoreSettings()
 {
   m_restoring = true;
-  const QSettings settings;
-  const QString folder = settings.value(key("folder"), QDir::homePath()).toString();
+  const RigExportSettings settings;
+  QString folder = rememberedFolder(kGroup);
+  if (folder.isEmpty())
+    folder = QDir::homePath();
   const QString base = m_source.baseName.isEmpty() ? QStringLiteral("rig") : m_source.baseName;
   m_path->setText(QDir(folder).filePath(base));
-  const int format = settings.value(key("format"), static_cast<int>(RigExportFormat::Fbx)).toInt();
+  const int format = settings.format;
   m_format->setCurrentIndex(std::max(0, m_format->findData(format)));
-  m_map->restoreSettingValue(settings.value(key("map")).toString());
-  m_reduce->setChecked(settings.value(key("reduce"), false).toBool());
-  m_tolerance->setValue(settings.value(key("tolerance"), kDefaultTolerance).toDouble());
-  m_up->setCurrentIndex(std::max(0, m_up->findData(settings.value(key("up"), static_cast<int>(FbxUpAxis::Y)).toInt())));
+  m_map->restoreSettingValue(settings.map);
+  m_reduce->setChecked(settings.reduce);
+  m_tolerance->setValue(settings.tolerance);
+  m_up->setCurrentIndex(std::max(0, m_up->findData(settings.up.get())));
   m_units->setCurrentIndex(std::max(
-      0, m_units->findData(settings.value(key("units"), static_cast<int>(LengthUnit::Centimetre)).toInt())));
+      0, m_units->findData(settings.units.get())));
   m_restoring = false;
   onFormatChanged();  // the extension and which options apply
 }
 
 void RigExportDialog::writeSettings() const
 {
-  QSettings settings;
-  settings.setValue(key("folder"), QFileInfo(m_path->text().trimmed()).absolutePath());
-  settings.setValue(key("format"), static_cast<int>(format()));
+  RigExportSettings settings;
+  rememberFolder(kGroup, m_path->text().trimmed());
+  settings.format = static_cast<int>(format());
   if (!m_map->loadedMapChosen())  // the section's map is chosen anew whenever there is one
-    settings.setValue(key("map"), m_map->settingValue());
-  settings.setValue(key("reduce"), m_reduce->isChecked());
-  settings.setValue(key("tolerance"), m_tolerance->value());
-  settings.setValue(key("up"), m_up->currentData().toInt());
-  settings.setValue(key("units"), m_units->currentData().toInt());
+    settings.map = m_map->settingValue();
+  settings.reduce = m_reduce->isChecked();
+  settings.tolerance = m_tolerance->value();
+  settings.up = m_up->currentData().toInt();
+  settings.units = m_units->currentData().toInt();
 }
 
 RigExportFormat RigExportDialog::format() const

@@ -63,7 +63,7 @@ enum class RigExportFormat
 /// axis and units. It writes through writeWeightOutput, as `mocap solve -o` and `mocap convert`
 /// do, so the options mean what --map, --reduce, --up and --units mean there. The map is checked
 /// against the rig as it is chosen; after writing, the status says the keys before and after and
-/// the largest error. Every choice is remembered (QSettings "rigExport/…").
+/// the largest error. Every choice is remembered (session options "rigExport/…").
 class RigExportDialog final : public QDialog
 {
   Q_OBJECT

@@ -68,6 +68,15 @@ public:
     emit m_signal.changed();
     return true;
   }
+  /// Forgets the remembered value (its key leaves the settings): the option is its default again.
+  void forget()
+  {
+    QSettings().remove(m_key);
+    if (m_value == m_default)
+      return;
+    m_value = m_default;
+    emit m_signal.changed();
+  }
   SessionOption& operator=(T value)
   {
     set(std::move(value));

@@ -89,7 +89,9 @@ StudioOptions::StudioOptions()
       followHead(QStringLiteral("view/followHead"), false),
       keepRig(QStringLiteral("session/keepRig"), false),
       recentFiles(QStringLiteral("recentFiles"), QStringList()),
-      lastFolder(QStringLiteral("lastFolder"), QString())
+      lastFolder(QStringLiteral("lastFolder"), QString()),
+      windowGeometry(QStringLiteral("geometry"), QByteArray()),
+      windowState(QStringLiteral("windowState"), QByteArray())
 {
 }
 

@@ -5,6 +5,7 @@
 
 #include "mocap/base/length_unit.h"
 
+#include <QByteArray>
 #include <QString>
 #include <QStringList>
 
@@ -64,6 +65,8 @@ struct StudioOptions
   SessionOption<bool> keepRig;  // keep the face rig for the next take
   SessionOption<QStringList> recentFiles;  // newest first, absolute paths
   SessionOption<QString> lastFolder;       // where Open starts
+  SessionOption<QByteArray> windowGeometry;  // the main window's (QWidget::saveGeometry)
+  SessionOption<QByteArray> windowState;     // its docks and toolbars (QMainWindow::saveState)
 
   [[nodiscard]] Preferences preferences() const;
   /// Sets each option from `preferences` (clamped); an empty language leaves the language as it is.

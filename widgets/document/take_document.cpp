@@ -109,6 +109,17 @@ void TakeDocument::setCurrentFrame(Eigen::Index frame)
   emit currentFrameChanged(frame);
 }
 
+int TakeDocument::selectLabels(const QStringList& labels)
+{
+  std::vector<Eigen::Index> markers;
+  for (const QString& label : labels)
+    if (const auto index = m_take.markerIndex(label.trimmed().toStdString()))
+      markers.push_back(*index);
+  const int found = static_cast<int>(markers.size());
+  setSelection(std::move(markers));
+  return found;
+}
+
 void TakeDocument::setSelection(std::vector<Eigen::Index> markers)
 {
   markers.erase(std::remove_if(markers.begin(), markers.end(),

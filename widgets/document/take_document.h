@@ -5,6 +5,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QUndoStack>
 
 #include <map>
@@ -67,6 +68,9 @@ public:
   void setCurrentFrame(Eigen::Index frame);
   [[nodiscard]] const std::vector<Eigen::Index>& selection() const { return m_selection; }
   void setSelection(std::vector<Eigen::Index> markers);
+  /// Selects the markers with these labels (trimmed; a label the take lacks is left out) and
+  /// returns how many were found: the command lines' --select. O(#labels · #markers).
+  int selectLabels(const QStringList& labels);
 
   /// Puts `patches` into the take and returns the undo patches (for commands only).
   std::vector<SamplePatch> applyPatches(std::vector<SamplePatch> patches);

@@ -43,6 +43,12 @@ void ViewState::setLinksVisible(bool visible)
   emit linksVisibleChanged(visible);
 }
 
+void ViewState::setHeadReference(std::vector<Eigen::Index> markers)
+{
+  m_headReference = std::move(markers);
+  emit headReferenceChanged();
+}
+
 void ViewState::setFollowHead(bool on)
 {
   if (on == m_followHead)
@@ -75,6 +81,38 @@ void ViewState::setLayoutHighlight(std::vector<bool> kept, std::vector<bool> ref
   m_layoutKept = std::move(kept);
   m_layoutReference = std::move(reference);
   emit layoutHighlightChanged();
+}
+
+void ViewState::setMeshOpacity(double opacity)
+{
+  if (opacity == m_meshOpacity)
+    return;
+  m_meshOpacity = opacity;
+  emit meshLookChanged();
+}
+
+void ViewState::setMeshEdges(bool visible)
+{
+  if (visible == m_meshEdges)
+    return;
+  m_meshEdges = visible;
+  emit meshLookChanged();
+}
+
+void ViewState::setRigShown(bool shown)
+{
+  if (shown == m_rigShown)
+    return;
+  m_rigShown = shown;
+  emit rigShownChanged(shown);
+}
+
+void ViewState::setRigBeside(bool beside)
+{
+  if (beside == m_rigBeside)
+    return;
+  m_rigBeside = beside;
+  emit rigBesideChanged(beside);
 }
 
 void ViewState::followOptions(const StudioOptions& options)

@@ -4,15 +4,17 @@
 #include "actions/live_link_recording_import.h"
 #include "actions/weight_edit_actions.h"
 #include "dialogs/live_link_open_dialog.h"
+#include "dialogs/remembered_file_dialog.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/job_runner.h"
 #include "document/live_link_recording.h"
+#include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
-#include "panels/job_progress_row.h"
+#include "document/view_state.h"
 #include "panels/flow_layout.h"
-#include "panels/panel_folder.h"
+#include "panels/job_progress_row.h"
 #include "panels/retarget_section.h"
 #include "panels/status_line.h"
 #include "views/blendshape_scene.h"
@@ -33,7 +35,6 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
-#include <QSettings>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -49,6 +50,20 @@ QString settingKey(const char* name)
 {
   return kGroup + QLatin1String(name);
 }
+
+/// The panel's remembered settings, typed ("blendshapeSolve/…").
+struct BlendshapeSolveSettings
+{
+  SessionOption<int> method{settingKey("method"), static_cast<int>(BlendshapeSolveOptions{}.method)};
+  SessionOption<bool> autoLambda{settingKey("autoLambda"), true};
+  SessionOption<double> lambda{settingKey("lambda"), 0.001};
+  SessionOption<double> smoothness{settingKey("smoothness"), BlendshapeSolveOptions{}.smoothness};
+  SessionOption<double> sparsity{settingKey("sparsity"), BlendshapeSolveOptions{}.sparsity};
+  SessionOption<double> scale{settingKey("scale"), 0.8};
+  SessionOption<double> cutoff{settingKey("cutoff"), 6.0};
+  SessionOption<bool> show{settingKey("show"), true};
+  SessionOption<bool> beside{settingKey("beside"), true};
+};
 
 
 RigLoad readRigInBackground(const QString& path, const QString& shapeFolder)
@@ -104,6 +119,7 @@ BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d&
       m_jobs(new JobRunner(this))
 {
   TakeDocument& document = m_document;
+  m_scene->observe(session.view());
   buildUi();
   readSettings();
   connect(&m_model, &BlendshapeSolveModel::rigChanged, this, &BlendshapeSolvePanel::showRig);
@@ -265,12 +281,12 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
   auto* rows = new QVBoxLayout(box);
   m_show = new QCheckBox(tr("Show the solved rig in the 3D view"), box);
   connect(m_show, &QCheckBox::toggled, this, [this](bool on) {
-    m_scene->setShown(on);
+    m_session.view().setRigShown(on);  // the scene follows
     writeSettings();
   });
   m_beside = new QCheckBox(tr("Beside the markers (else over them)"), box);
   connect(m_beside, &QCheckBox::toggled, this, [this](bool on) {
-    m_scene->setBeside(on);
+    m_session.view().setRigBeside(on);
     writeSettings();
   });
   rows->addWidget(m_show);
@@ -307,21 +323,19 @@ QWidget* BlendshapeSolvePanel::buildDisplayBox()
 void BlendshapeSolvePanel::readSettings()
 {
   m_loadingSettings = true;
-  const QSettings settings;
-  const BlendshapeSolveOptions defaults;
-  m_method->setCurrentIndex(std::max(
-      0, m_method->findData(settings.value(settingKey("method"), static_cast<int>(defaults.method)).toInt())));
-  m_autoLambda->setChecked(settings.value(settingKey("autoLambda"), true).toBool());
-  m_lambda->setValue(settings.value(settingKey("lambda"), 0.001).toDouble());
-  m_smoothness->setValue(settings.value(settingKey("smoothness"), defaults.smoothness).toDouble());
-  m_sparsity->setValue(settings.value(settingKey("sparsity"), defaults.sparsity).toDouble());
-  m_scaleFactor->setValue(settings.value(settingKey("scale"), 0.8).toDouble());
-  m_cutoff->setValue(settings.value(settingKey("cutoff"), 6.0).toDouble());
-  m_show->setChecked(settings.value(settingKey("show"), true).toBool());
-  m_beside->setChecked(settings.value(settingKey("beside"), true).toBool());
+  const BlendshapeSolveSettings settings;
+  m_method->setCurrentIndex(std::max(0, m_method->findData(settings.method.get())));
+  m_autoLambda->setChecked(settings.autoLambda);
+  m_lambda->setValue(settings.lambda);
+  m_smoothness->setValue(settings.smoothness);
+  m_sparsity->setValue(settings.sparsity);
+  m_scaleFactor->setValue(settings.scale);
+  m_cutoff->setValue(settings.cutoff);
+  m_show->setChecked(settings.show);
+  m_beside->setChecked(settings.beside);
   m_loadingSettings = false;
-  m_scene->setShown(m_show->isChecked());
-  m_scene->setBeside(m_beside->isChecked());
+  m_session.view().setRigShown(m_show->isChecked());
+  m_session.view().setRigBeside(m_beside->isChecked());
   updateMethodFields();
 }
 
@@ -329,16 +343,16 @@ void BlendshapeSolvePanel::writeSettings() const
 {
   if (m_loadingSettings)
     return;
-  QSettings settings;
-  settings.setValue(settingKey("method"), m_method->currentData());
-  settings.setValue(settingKey("autoLambda"), m_autoLambda->isChecked());
-  settings.setValue(settingKey("lambda"), m_lambda->value());
-  settings.setValue(settingKey("smoothness"), m_smoothness->value());
-  settings.setValue(settingKey("sparsity"), m_sparsity->value());
-  settings.setValue(settingKey("scale"), m_scaleFactor->value());
-  settings.setValue(settingKey("cutoff"), m_cutoff->value());
-  settings.setValue(settingKey("show"), m_show->isChecked());
-  settings.setValue(settingKey("beside"), m_beside->isChecked());
+  BlendshapeSolveSettings settings;
+  settings.method = m_method->currentData().toInt();
+  settings.autoLambda = m_autoLambda->isChecked();
+  settings.lambda = m_lambda->value();
+  settings.smoothness = m_smoothness->value();
+  settings.sparsity = m_sparsity->value();
+  settings.scale = m_scaleFactor->value();
+  settings.cutoff = m_cutoff->value();
+  settings.show = m_show->isChecked();
+  settings.beside = m_beside->isChecked();
 }
 
 void BlendshapeSolvePanel::updateMethodFields()
@@ -673,21 +687,18 @@ void BlendshapeSolvePanel::showStatus(const QString& text, bool error)
 
 void BlendshapeSolvePanel::loadGltfDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load glTF rig"), panelFolder(kGroup),
-                                                    tr("glTF rigs (*.glb *.gltf);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberPanelFolder(kGroup, path);
-  (void)loadRig(path);
+  const QString path =
+      openFileOfGroup(this, tr("Load glTF rig"), kGroup, tr("glTF rigs (*.glb *.gltf);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadRig(path);
 }
 
 void BlendshapeSolvePanel::loadObjDialog()
 {
-  const QString neutral = QFileDialog::getOpenFileName(this, tr("Load the rig's neutral mesh"), panelFolder(kGroup),
-                                                       tr("Meshes (*.obj *.ply);;All files (*)"));
+  const QString neutral =
+      openFileOfGroup(this, tr("Load the rig's neutral mesh"), kGroup, tr("Meshes (*.obj *.ply);;All files (*)"));
   if (neutral.isEmpty())
     return;
-  rememberPanelFolder(kGroup, neutral);
   const QString folder = QFileDialog::getExistingDirectory(this, tr("The folder with one OBJ per shape"),
                                                            QFileInfo(neutral).absolutePath());
   if (folder.isEmpty())

@@ -62,7 +62,7 @@ struct SolveRun
 /// edits of the selected shapes over the selected frame range (scale, zero, smooth), a Live Link
 /// Face recording opened as the rig's curves (undoable), and Export Rig (RigExportDialog: the
 /// animated rig as FBX or GLB, the weights as CSV, plain or Live Link Face, with a retarget map
-/// and key reduction as the command line has them). Settings are remembered (QSettings,
+/// and key reduction as the command line has them). Settings are remembered (typed session options,
 /// "blendshapeSolve/…"). Below them the Retarget section (RetargetSection) shows the curves
 /// through a retarget map whose gains are edited in place.
 class BlendshapeSolvePanel final : public QWidget

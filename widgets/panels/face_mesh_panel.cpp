@@ -1,11 +1,13 @@
 #include "panels/face_mesh_panel.h"
 
 #include "commands/rebind_marker_command.h"
+#include "dialogs/remembered_file_dialog.h"
 #include "document/face_mesh_model.h"
+#include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
+#include "document/view_state.h"
 #include "panels/flow_layout.h"
-#include "panels/panel_folder.h"
 #include "panels/reference_markers_row.h"
 #include "panels/status_line.h"
 #include "views/face_mesh_scene.h"
@@ -21,14 +23,12 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPushButton>
-#include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStackedWidget>
@@ -53,6 +53,21 @@ QString settingKey(const char* name)
   return kGroup + QLatin1String(name);
 }
 
+/// The panel's remembered settings, typed ("faceMesh/…").
+struct FaceMeshSettings
+{
+  SessionOption<int> method{settingKey("method"), 0};
+  SessionOption<int> kernel{settingKey("kernel"), 0};
+  SessionOption<double> radius{settingKey("radius"), RbfOptions{}.radius};
+  SessionOption<bool> regions{settingKey("regions"), false};
+  SessionOption<int> weights{settingKey("weights"), static_cast<int>(LaplacianWeights::MeanValue)};
+  SessionOption<double> constraintWeight{settingKey("constraintWeight"), LaplacianOptions{}.constraintWeight};
+  SessionOption<int> rotations{settingKey("rotations"), 0};
+  SessionOption<bool> compare{settingKey("compare"), false};
+  SessionOption<bool> edges{settingKey("edges"), false};
+  SessionOption<int> opacity{settingKey("opacity"), 60};
+};
+
 
 QString nameText(std::string_view name)
 {
@@ -63,10 +78,11 @@ QString nameText(std::string_view name)
 
 FaceMeshPanel::FaceMeshPanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
     : QWidget(parent), m_document(session.document()), m_view(view), m_model(session.faceMesh()),
-      m_scene(new FaceMeshScene(m_model, view, this)),
+      m_scene(new FaceMeshScene(m_model, view, this)), m_viewState(session.view()),
       m_undo(session.undoStack())
 {
   TakeDocument& document = m_document;
+  m_scene->observe(m_viewState);
   buildUi();
   readSettings();
   connect(&m_model, &FaceMeshModel::meshChanged, this, &FaceMeshPanel::updateMeshLabel);
@@ -196,9 +212,7 @@ void FaceMeshPanel::buildUi()
   auto* look = new QFormLayout(lookBox);
   m_edges = new QCheckBox(tr("Edges"), lookBox);
   connect(m_edges, &QCheckBox::toggled, this, [this](bool on) {
-    m_scene->layer().setEdgesVisible(on);
-    m_scene->compareLayer().setEdgesVisible(on);
-    m_view.viewport()->requestRender();
+    m_viewState.setMeshEdges(on);  // the scene follows
     writeSettings();
   });
   look->addRow(m_edges);
@@ -206,9 +220,7 @@ void FaceMeshPanel::buildUi()
   m_opacity->setRange(10, 100);
   m_opacity->setValue(60);
   connect(m_opacity, &QSlider::valueChanged, this, [this](int percent) {
-    m_scene->layer().setOpacity(percent / 100.0);
-    m_scene->compareLayer().setOpacity(percent / 100.0);
-    m_view.viewport()->requestRender();
+    m_viewState.setMeshOpacity(percent / 100.0);  // the scene follows
     writeSettings();
   });
   look->addRow(tr("Opacity:"), m_opacity);
@@ -227,19 +239,17 @@ void FaceMeshPanel::buildUi()
 void FaceMeshPanel::readSettings()
 {
   m_loadingSettings = true;
-  QSettings settings;
-  m_method->setCurrentIndex(std::max(0, m_method->findData(settings.value(settingKey("method"), 0).toInt())));
-  m_kernel->setCurrentIndex(std::max(0, m_kernel->findData(settings.value(settingKey("kernel"), 0).toInt())));
-  m_radius->setValue(settings.value(settingKey("radius"), RbfOptions{}.radius).toDouble());
-  m_regions->setChecked(settings.value(settingKey("regions"), false).toBool());
-  m_weights->setCurrentIndex(std::max(
-      0, m_weights->findData(settings.value(settingKey("weights"), static_cast<int>(LaplacianWeights::MeanValue)).toInt())));
-  m_constraintWeight->setValue(
-      settings.value(settingKey("constraintWeight"), LaplacianOptions{}.constraintWeight).toDouble());
-  m_rotations->setValue(settings.value(settingKey("rotations"), 0).toInt());
-  m_compare->setChecked(settings.value(settingKey("compare"), false).toBool());
-  m_edges->setChecked(settings.value(settingKey("edges"), false).toBool());
-  m_opacity->setValue(settings.value(settingKey("opacity"), 60).toInt());
+  const FaceMeshSettings settings;
+  m_method->setCurrentIndex(std::max(0, m_method->findData(settings.method.get())));
+  m_kernel->setCurrentIndex(std::max(0, m_kernel->findData(settings.kernel.get())));
+  m_radius->setValue(settings.radius);
+  m_regions->setChecked(settings.regions);
+  m_weights->setCurrentIndex(std::max(0, m_weights->findData(settings.weights.get())));
+  m_constraintWeight->setValue(settings.constraintWeight);
+  m_rotations->setValue(settings.rotations);
+  m_compare->setChecked(settings.compare);
+  m_edges->setChecked(settings.edges);
+  m_opacity->setValue(settings.opacity);
   m_methodPages->setCurrentIndex(std::max(0, m_method->currentIndex()));
   m_loadingSettings = false;
   m_model.setOptions(optionsFromUi());
@@ -250,17 +260,17 @@ void FaceMeshPanel::writeSettings() const
 {
   if (m_loadingSettings)
     return;
-  QSettings settings;
-  settings.setValue(settingKey("method"), m_method->currentData());
-  settings.setValue(settingKey("kernel"), m_kernel->currentData());
-  settings.setValue(settingKey("radius"), m_radius->value());
-  settings.setValue(settingKey("regions"), m_regions->isChecked());
-  settings.setValue(settingKey("weights"), m_weights->currentData());
-  settings.setValue(settingKey("constraintWeight"), m_constraintWeight->value());
-  settings.setValue(settingKey("rotations"), m_rotations->value());
-  settings.setValue(settingKey("compare"), m_compare->isChecked());
-  settings.setValue(settingKey("edges"), m_edges->isChecked());
-  settings.setValue(settingKey("opacity"), m_opacity->value());
+  FaceMeshSettings settings;
+  settings.method = m_method->currentData().toInt();
+  settings.kernel = m_kernel->currentData().toInt();
+  settings.radius = m_radius->value();
+  settings.regions = m_regions->isChecked();
+  settings.weights = m_weights->currentData().toInt();
+  settings.constraintWeight = m_constraintWeight->value();
+  settings.rotations = m_rotations->value();
+  settings.compare = m_compare->isChecked();
+  settings.edges = m_edges->isChecked();
+  settings.opacity = m_opacity->value();
 }
 
 FaceRigOptions FaceMeshPanel::optionsFromUi() const
@@ -528,32 +538,24 @@ void FaceMeshPanel::showError(const QString& message)
 
 void FaceMeshPanel::loadMeshDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load face mesh"), panelFolder(kGroup),
-                                                    tr("Meshes (*.obj *.ply *.glb *.gltf);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberPanelFolder(kGroup, path);
-  (void)loadMesh(path);
+  const QString path =
+      openFileOfGroup(this, tr("Load face mesh"), kGroup, tr("Meshes (*.obj *.ply *.glb *.gltf);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadMesh(path);
 }
 
 void FaceMeshPanel::loadBindingDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Load marker binding"), panelFolder(kGroup),
-                                                    tr("Bindings (*.json);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberPanelFolder(kGroup, path);
-  (void)loadBinding(path);
+  const QString path = openFileOfGroup(this, tr("Load marker binding"), kGroup, tr("Bindings (*.json);;All files (*)"));
+  if (!path.isEmpty())
+    (void)loadBinding(path);
 }
 
 void FaceMeshPanel::saveBindingDialog()
 {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save marker binding"), panelFolder(kGroup),
-                                                    tr("Bindings (*.json)"));
-  if (path.isEmpty())
-    return;
-  rememberPanelFolder(kGroup, path);
-  (void)saveBinding(path);
+  const QString path = saveFileOfGroup(this, tr("Save marker binding"), kGroup, tr("Bindings (*.json)"));
+  if (!path.isEmpty())
+    (void)saveBinding(path);
 }
 
 } // namespace mocap::ui

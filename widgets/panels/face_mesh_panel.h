@@ -26,6 +26,7 @@ class MarkerView3d;
 class ReferenceMarkersRow;
 class StudioSession;
 class TakeDocument;
+class ViewState;
 
 /// The Face mesh dock: load a mesh (OBJ/PLY) and a marker binding (JSON), bind automatically or
 /// edit the binding by picking (select a marker, then click the mesh vertex it belongs to; each
@@ -34,7 +35,7 @@ class TakeDocument;
 /// or both side by side, and read the per-frame deform time. The mesh, binding and rigs live in
 /// the session's FaceMeshModel (document/), drawn by FaceMeshScene (views/, owned here). The
 /// binding line says what is bound in this take, and how many of a kept rig's markers it has.
-/// Settings are remembered (QSettings, "faceMesh/…").
+/// Settings are remembered (typed session options, "faceMesh/…").
 class FaceMeshPanel final : public QWidget
 {
   Q_OBJECT
@@ -102,6 +103,7 @@ private:
   MarkerView3d& m_view;
   FaceMeshModel& m_model;
   FaceMeshScene* m_scene = nullptr;
+  ViewState& m_viewState;  // the session's: the mesh look is set there, the scene follows it
   QUndoStack* m_undo = nullptr;  // the document's: binding edits undo in order with every other edit
   std::string m_pendingLabel;
   QPoint m_pressPosition;

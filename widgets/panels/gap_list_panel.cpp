@@ -3,6 +3,7 @@
 #include "commands/apply_patches_command.h"
 #include "commands/record_step_command.h"
 #include "document/job_runner.h"
+#include "document/session_option.h"
 #include "document/take_document.h"
 #include "models/fill_rule_text.h"
 #include "models/gap_table_model.h"
@@ -21,7 +22,6 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSettings>
 #include <QShortcut>
 #include <QSortFilterProxyModel>
 #include <QStyledItemDelegate>
@@ -37,8 +37,12 @@ namespace mocap::ui {
 
 namespace {
 
-const QString kLiveKey = QStringLiteral("gapList/livePreview");
-const QString kOnlyOpenKey = QStringLiteral("gapList/onlyOpen");
+/// The dock's remembered check boxes, typed.
+struct GapListSettings
+{
+  SessionOption<bool> livePreview{QStringLiteral("gapList/livePreview"), true};
+  SessionOption<bool> onlyOpen{QStringLiteral("gapList/onlyOpen"), false};
+};
 
 /// The marker filter (case-insensitive substring of the label) and "only open gaps".
 class GapFilterProxy final : public QSortFilterProxyModel
@@ -129,7 +133,7 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   m_filter->setClearButtonEnabled(true);
   m_onlyOpen = new QCheckBox(tr("Only open gaps"), this);
   m_onlyOpen->setObjectName(QStringLiteral("onlyOpenGaps"));
-  m_onlyOpen->setChecked(QSettings().value(kOnlyOpenKey, false).toBool());
+  m_onlyOpen->setChecked(GapListSettings().onlyOpen);
   proxy->setOnlyOpen(m_onlyOpen->isChecked());
   filters->addWidget(m_filter, 1);
   filters->addWidget(m_onlyOpen);
@@ -170,7 +174,7 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   checkShown->setToolTip(tr("Check every open gap the filter shows"));
   auto* uncheckAll = new QPushButton(tr("Uncheck All"), this);
   m_live = new QCheckBox(tr("Live preview"), this);
-  m_live->setChecked(QSettings().value(kLiveKey, true).toBool());
+  m_live->setChecked(GapListSettings().livePreview);
   m_live->setToolTip(tr("Show the fill of the checked (or selected) gaps over the views before filling"));
   checks->addWidget(checkShown);
   checks->addWidget(uncheckAll);
@@ -201,10 +205,10 @@ GapListPanel::GapListPanel(TakeDocument& document, QWidget* parent) : QWidget(pa
   connect(m_filter, &QLineEdit::textChanged, this, [proxy](const QString& text) { proxy->setLabelFilter(text); });
   connect(m_onlyOpen, &QCheckBox::toggled, this, [proxy](bool on) {
     proxy->setOnlyOpen(on);
-    QSettings().setValue(kOnlyOpenKey, on);
+    GapListSettings().onlyOpen.set(on);
   });
   connect(m_live, &QCheckBox::toggled, this, [this](bool on) {
-    QSettings().setValue(kLiveKey, on);
+    GapListSettings().livePreview.set(on);
     if (on)
       schedule();
     else

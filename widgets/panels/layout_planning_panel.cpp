@@ -3,6 +3,7 @@
 #include "document/bound_rig.h"
 #include "document/job_runner.h"
 #include "document/layout_plan_model.h"
+#include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/job_progress_row.h"
@@ -31,7 +32,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QSettings>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
@@ -45,6 +45,30 @@ namespace mocap::ui {
 namespace {
 
 const QString kGroup = QStringLiteral("layoutPlanning/");
+
+QString settingKey(const char* name)
+{
+  return kGroup + QLatin1String(name);
+}
+
+/// The panel's remembered settings, typed ("layoutPlanning/…"; the defaults are LayoutPlanParameters').
+struct LayoutPlanningSettings
+{
+  SessionOption<QString> method{settingKey("method"), QString()};  // selectionMethodName; empty: the default
+  SessionOption<double> variance{settingKey("variance"), LayoutPlanParameters{}.variance};
+  SessionOption<int> restarts{settingKey("restarts"), LayoutPlanParameters{}.restarts};
+  SessionOption<int> minK{settingKey("minK"), LayoutPlanParameters{}.minK};
+  SessionOption<int> maxK{settingKey("maxK"), LayoutPlanParameters{}.maxK};
+  SessionOption<int> seed{settingKey("seed"), LayoutPlanParameters{}.seed};
+  SessionOption<int> randomSubsets{settingKey("randomSubsets"), LayoutPlanParameters{}.randomSubsets};
+  SessionOption<QString> keyPoses{settingKey("keyPoses"), QString()};
+  SessionOption<QString> pairsFile{settingKey("pairsFile"), QString()};
+  SessionOption<QStringList> markers{settingKey("markers"), QStringList()};
+  SessionOption<QStringList> exclude{settingKey("exclude"), QStringList()};
+  SessionOption<QStringList> extraTakes{settingKey("extraTakes"), QStringList()};
+  SessionOption<bool> judgeOnRig{settingKey("judgeOnRig"), false};
+  SessionOption<QString> exportFolder{settingKey("exportFolder"), QString()};  // empty: the take's folder
+};
 
 std::vector<std::string> toStd(const QStringList& list)
 {
@@ -355,24 +379,23 @@ void LayoutPlanningPanel::setParameters(const LayoutPlanParameters& p)
 
 void LayoutPlanningPanel::readSettings()
 {
-  const QSettings settings;
+  const LayoutPlanningSettings settings;
   LayoutPlanParameters p;  // the defaults
-  p.method = parseSelectionMethod(settings.value(kGroup + QStringLiteral("method")).toString().toStdString())
-                 .value_or(p.method);
-  p.variance = settings.value(kGroup + QStringLiteral("variance"), p.variance).toDouble();
-  p.restarts = settings.value(kGroup + QStringLiteral("restarts"), p.restarts).toInt();
-  p.minK = settings.value(kGroup + QStringLiteral("minK"), p.minK).toInt();
-  p.maxK = settings.value(kGroup + QStringLiteral("maxK"), p.maxK).toInt();
-  p.seed = settings.value(kGroup + QStringLiteral("seed"), p.seed).toInt();
-  p.randomSubsets = settings.value(kGroup + QStringLiteral("randomSubsets"), p.randomSubsets).toInt();
-  p.keyPoses = settings.value(kGroup + QStringLiteral("keyPoses")).toString();
-  p.pairsFile = settings.value(kGroup + QStringLiteral("pairsFile")).toString();
-  p.markerPatterns = settings.value(kGroup + QStringLiteral("markers")).toStringList();
-  p.excludePatterns = settings.value(kGroup + QStringLiteral("exclude")).toStringList();
-  p.extraTakes = settings.value(kGroup + QStringLiteral("extraTakes")).toStringList();
+  p.method = parseSelectionMethod(settings.method.get().toStdString()).value_or(p.method);
+  p.variance = settings.variance;
+  p.restarts = settings.restarts;
+  p.minK = settings.minK;
+  p.maxK = settings.maxK;
+  p.seed = settings.seed;
+  p.randomSubsets = settings.randomSubsets;
+  p.keyPoses = settings.keyPoses;
+  p.pairsFile = settings.pairsFile;
+  p.markerPatterns = settings.markers;
+  p.excludePatterns = settings.exclude;
+  p.extraTakes = settings.extraTakes;
   setParameters(p);
   const QSignalBlocker blocker(m_judgeOnRig);
-  m_judgeOnRig->setChecked(settings.value(kGroup + QStringLiteral("judgeOnRig"), false).toBool());
+  m_judgeOnRig->setChecked(settings.judgeOnRig);
 }
 
 void LayoutPlanningPanel::setJudgeOnRig(bool on)
@@ -382,23 +405,22 @@ void LayoutPlanningPanel::setJudgeOnRig(bool on)
 
 void LayoutPlanningPanel::writeSettings() const
 {
-  QSettings settings;
+  LayoutPlanningSettings settings;
   const LayoutPlanParameters p = parameters();
   const std::string_view method = selectionMethodName(p.method);
-  settings.setValue(kGroup + QStringLiteral("method"),
-                    QString::fromUtf8(method.data(), static_cast<qsizetype>(method.size())));
-  settings.setValue(kGroup + QStringLiteral("variance"), p.variance);
-  settings.setValue(kGroup + QStringLiteral("restarts"), p.restarts);
-  settings.setValue(kGroup + QStringLiteral("minK"), p.minK);
-  settings.setValue(kGroup + QStringLiteral("maxK"), p.maxK);
-  settings.setValue(kGroup + QStringLiteral("seed"), p.seed);
-  settings.setValue(kGroup + QStringLiteral("randomSubsets"), p.randomSubsets);
-  settings.setValue(kGroup + QStringLiteral("keyPoses"), p.keyPoses);
-  settings.setValue(kGroup + QStringLiteral("pairsFile"), p.pairsFile);
-  settings.setValue(kGroup + QStringLiteral("markers"), p.markerPatterns);
-  settings.setValue(kGroup + QStringLiteral("exclude"), p.excludePatterns);
-  settings.setValue(kGroup + QStringLiteral("extraTakes"), p.extraTakes);
-  settings.setValue(kGroup + QStringLiteral("judgeOnRig"), m_judgeOnRig->isChecked());
+  settings.method = QString::fromUtf8(method.data(), static_cast<qsizetype>(method.size()));
+  settings.variance = p.variance;
+  settings.restarts = p.restarts;
+  settings.minK = p.minK;
+  settings.maxK = p.maxK;
+  settings.seed = p.seed;
+  settings.randomSubsets = p.randomSubsets;
+  settings.keyPoses = p.keyPoses;
+  settings.pairsFile = p.pairsFile;
+  settings.markers = p.markerPatterns;
+  settings.exclude = p.excludePatterns;
+  settings.extraTakes = p.extraTakes;
+  settings.judgeOnRig = m_judgeOnRig->isChecked();
 }
 
 QString LayoutPlanningPanel::run()
@@ -650,15 +672,14 @@ QString LayoutPlanningPanel::exportTake(const QString& path) const
 void LayoutPlanningPanel::exportWithDialog(const QString& title, const QString& filter,
                                            QString (LayoutPlanningPanel::*write)(const QString&) const)
 {
-  QSettings settings;
-  const QString folder = settings.value(kGroup + QStringLiteral("exportFolder"),
-                                        QFileInfo(m_document.filePath()).absolutePath())
-                             .toString();
+  LayoutPlanningSettings settings;
+  const QString folder = settings.exportFolder.get().isEmpty() ? QFileInfo(m_document.filePath()).absolutePath()
+                                                               : settings.exportFolder.get();
   // The dialog asks before replacing an existing file.
   const QString path = QFileDialog::getSaveFileName(this, title, folder, filter);
   if (path.isEmpty())
     return;
-  settings.setValue(kGroup + QStringLiteral("exportFolder"), QFileInfo(path).absolutePath());
+  settings.exportFolder = QFileInfo(path).absolutePath();
   const QString error = (this->*write)(path);
   if (!error.isEmpty())
     QMessageBox::warning(this, title, tr("Could not write %1:\n%2").arg(path, error));

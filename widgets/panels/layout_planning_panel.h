@@ -30,7 +30,7 @@ class ReferenceMarkersRow;
 class StudioSession;
 class TakeDocument;
 
-/// What the layout planning panel runs with (remembered in QSettings).
+/// What the layout planning panel runs with (remembered as session options, "layoutPlanning/…").
 struct LayoutPlanParameters
 {
   QStringList extraTakes;  ///< take files planned together with the open take

@@ -1,6 +1,7 @@
 #include "panels/live_stream_panel.h"
 
 #include "document/live_stream.h"
+#include "document/session_option.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/status_line.h"
@@ -13,7 +14,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSettings>
 #include <QShortcut>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -28,6 +28,21 @@ QString settingKey(const char* name)
 {
   return QStringLiteral("liveStream/") + QLatin1String(name);
 }
+
+/// The dock's remembered settings, typed ("liveStream/…").
+struct LiveStreamSettings
+{
+  static constexpr int kProtocolsPort = 0;  // not remembered: the protocol's default port
+
+  SessionOption<QString> protocol{settingKey("protocol"), QStringLiteral("livelink")};
+  SessionOption<QString> host{settingKey("host"), QStringLiteral("127.0.0.1")};
+  SessionOption<int> port{settingKey("port"), kProtocolsPort};
+  SessionOption<QString> subject{settingKey("subject"), QString::fromStdString(StreamSettings{}.subject)};
+  SessionOption<bool> weights{settingKey("weights"), true};
+  SessionOption<bool> markers{settingKey("markers"), false};
+  SessionOption<bool> takeRate{settingKey("takeRate"), true};
+  SessionOption<double> rate{settingKey("rate"), 60.0};
+};
 
 } // namespace
 
@@ -115,31 +130,31 @@ void LiveStreamPanel::buildUi()
 
 void LiveStreamPanel::readSettings()
 {
-  const QSettings settings;
-  m_protocol->setCurrentIndex(std::max(0, m_protocol->findData(settings.value(settingKey("protocol"), "livelink"))));
-  m_host->setText(settings.value(settingKey("host"), QStringLiteral("127.0.0.1")).toString());
+  const LiveStreamSettings settings;
+  m_protocol->setCurrentIndex(std::max(0, m_protocol->findData(settings.protocol.get())));
+  m_host->setText(settings.host);
   const int defaultPort = defaultStreamPort(parseStreamProtocol(m_protocol->currentData().toString().toStdString())
                                                 .value_or(StreamProtocol::LiveLink));
-  m_port->setValue(settings.value(settingKey("port"), defaultPort).toInt());
-  m_subject->setText(settings.value(settingKey("subject"), m_subject->text()).toString());
-  m_weights->setChecked(settings.value(settingKey("weights"), true).toBool());
-  m_markers->setChecked(settings.value(settingKey("markers"), false).toBool());
-  m_takeRate->setChecked(settings.value(settingKey("takeRate"), true).toBool());
-  m_rate->setValue(settings.value(settingKey("rate"), 60.0).toDouble());
+  m_port->setValue(settings.port == LiveStreamSettings::kProtocolsPort ? defaultPort : settings.port.get());
+  m_subject->setText(settings.subject);
+  m_weights->setChecked(settings.weights);
+  m_markers->setChecked(settings.markers);
+  m_takeRate->setChecked(settings.takeRate);
+  m_rate->setValue(settings.rate);
   enableFieldsOfProtocol();
 }
 
 void LiveStreamPanel::writeSettings() const
 {
-  QSettings settings;
-  settings.setValue(settingKey("protocol"), m_protocol->currentData());
-  settings.setValue(settingKey("host"), m_host->text());
-  settings.setValue(settingKey("port"), m_port->value());
-  settings.setValue(settingKey("subject"), m_subject->text());
-  settings.setValue(settingKey("weights"), m_weights->isChecked());
-  settings.setValue(settingKey("markers"), m_markers->isChecked());
-  settings.setValue(settingKey("takeRate"), m_takeRate->isChecked());
-  settings.setValue(settingKey("rate"), m_rate->value());
+  LiveStreamSettings settings;
+  settings.protocol = m_protocol->currentData().toString();
+  settings.host = m_host->text();
+  settings.port = m_port->value();
+  settings.subject = m_subject->text();
+  settings.weights = m_weights->isChecked();
+  settings.markers = m_markers->isChecked();
+  settings.takeRate = m_takeRate->isChecked();
+  settings.rate = m_rate->value();
 }
 
 void LiveStreamPanel::protocolChanged()

@@ -1,11 +1,12 @@
 #include "panels/reference_video_panel.h"
 
+#include "dialogs/remembered_file_dialog.h"
 #include "document/reference_video.h"
 #include "document/reference_videos.h"
+#include "document/remembered_folder.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "panels/flow_layout.h"
-#include "panels/panel_folder.h"
 #include "panels/status_line.h"
 #include "views/video_view.h"
 
@@ -383,13 +384,10 @@ void ReferenceVideoPanel::restored(int /*count*/, int missing, const QString& pr
 
 void ReferenceVideoPanel::openDialog()
 {
-  const QString path = QFileDialog::getOpenFileName(
-      this, tr("Add reference video"), panelFolder(kGroup),
-      tr("Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)"));
-  if (path.isEmpty())
-    return;
-  rememberPanelFolder(kGroup, path);
-  (void)openVideo(path);
+  const QString path = openFileOfGroup(this, tr("Add reference video"), kGroup,
+                                       tr("Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)"));
+  if (!path.isEmpty())
+    (void)openVideo(path);
 }
 
 void ReferenceVideoPanel::locateDialog()
@@ -400,13 +398,13 @@ void ReferenceVideoPanel::locateDialog()
   const QString missing = video().path();
   QString folder = QFileInfo(missing).absolutePath();
   if (!QFileInfo(folder).isDir())
-    folder = m_document.filePath().isEmpty() ? panelFolder(kGroup) : QFileInfo(m_document.filePath()).absolutePath();
+    folder = m_document.filePath().isEmpty() ? rememberedFolder(kGroup) : QFileInfo(m_document.filePath()).absolutePath();
   const QString path = QFileDialog::getOpenFileName(
       this, tr("Locate %1").arg(QFileInfo(missing).fileName()), folder,
       tr("Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)"));
   if (path.isEmpty())
     return;  // declined: the video stays linked as it was
-  rememberPanelFolder(kGroup, path);
+  rememberFolder(kGroup, path);
   (void)locateVideo(current, path);
 }
 

@@ -3,6 +3,7 @@
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/take_document.h"
+#include "document/view_state.h"
 #include "views/face_mesh_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
@@ -26,6 +27,14 @@ BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshModel& fac
 }
 
 BlendshapeScene::~BlendshapeScene() = default;
+
+void BlendshapeScene::observe(const ViewState& state)
+{
+  setShown(state.rigShown());
+  setBeside(state.rigBeside());
+  connect(&state, &ViewState::rigShownChanged, this, &BlendshapeScene::setShown);
+  connect(&state, &ViewState::rigBesideChanged, this, &BlendshapeScene::setBeside);
+}
 
 void BlendshapeScene::setShown(bool shown)
 {

@@ -12,6 +12,7 @@ class BlendshapeSolveModel;
 class FaceMeshModel;
 class MarkerView3d;
 class MeshLayer;
+class ViewState;
 
 /// The blendshape rig posed by the solved weights (BlendshapeSolveModel) in the 3D view, placed
 /// as the face mesh is (meshPlacement: the binding's alignment, on the captured head),
@@ -32,6 +33,8 @@ public:
   /// Beside the markers instead of over them.
   void setBeside(bool beside);
   [[nodiscard]] bool beside() const { return m_beside; }
+  /// Shown and beside as `state` says (rigShown, rigBeside) from now on, while both live.
+  void observe(const ViewState& state);
   [[nodiscard]] MeshLayer& layer() const { return *m_layer; }
 
 private:

@@ -2,6 +2,7 @@
 
 #include "document/face_mesh_model.h"
 #include "document/take_document.h"
+#include "document/view_state.h"
 #include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
@@ -46,6 +47,19 @@ std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const M
   if (placement && viewMotion && index < viewMotion->poses.size())
     placement = Eigen::Affine3d(viewMotion->poses[index].inverse()) * *placement;  // as the view draws markers
   return placement;
+}
+
+void FaceMeshScene::observe(const ViewState& state)
+{
+  auto applyLook = [this, &state] {
+    for (MeshLayer* layer : {m_layer.get(), m_compareLayer.get()}) {
+      layer->setOpacity(state.meshOpacity());
+      layer->setEdgesVisible(state.meshEdges());
+    }
+    m_view.viewport()->requestRender();
+  };
+  applyLook();
+  connect(&state, &ViewState::meshLookChanged, this, applyLook);
 }
 
 FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* parent)

@@ -16,6 +16,7 @@ namespace mocap::ui {
 class FaceMeshModel;
 class MarkerView3d;
 class MeshLayer;
+class ViewState;
 
 /// How far along the mesh's x axis (mesh units) a second mesh is drawn beside it: a little more
 /// than its width. O(#vertices).
@@ -42,6 +43,8 @@ public:
   [[nodiscard]] FaceMeshModel& model() const { return m_model; }
   [[nodiscard]] MeshLayer& layer() const { return *m_layer; }
   [[nodiscard]] MeshLayer& compareLayer() const { return *m_compareLayer; }
+  /// Draws both meshes with `state`'s mesh look (opacity, edges) from now on, while both live.
+  void observe(const ViewState& state);
   /// The vertex of the (first) mesh under `position` (3D view widget coordinates), or −1.
   [[nodiscard]] Eigen::Index vertexAt(QPoint position) const;
   /// Where vertex `vertex` of the (first) mesh is drawn, in 3D view widget coordinates.

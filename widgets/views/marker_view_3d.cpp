@@ -197,15 +197,7 @@ m_status->setAttribute(Qt::WA_NativeWindow);
   });
 
   connect(&document, &TakeDocument::takeReset, this, [this] {
-    m_layoutKept.clear();
-    m_layoutReference.clear();
-    m_headReference.clear();  // a new take
-    m_headMotion.reset();
-    m_followMarkers = markersToFollow();
-    updateStatus();
-    m_links.clear();
-    if (m_linksVisible)
-      computeLinks();
+    forgetMarkerIndices();  // a new take
     rebuildScene();
   });
   connect(&document, &TakeDocument::referenceMarkersChanged, this, [this] {
@@ -217,15 +209,7 @@ m_status->setAttribute(Qt::WA_NativeWindow);
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markerRenamed, this, &MarkerView3d::updateFrame);
   connect(&document, &TakeDocument::markersChanged, this, [this] {
-    m_layoutKept.clear();
-    m_layoutReference.clear();
-    m_headReference.clear();  // indices shifted
-    m_headMotion.reset();
-    m_followMarkers = markersToFollow();
-    updateStatus();
-    m_links.clear();
-    if (m_linksVisible)
-      computeLinks();
+    forgetMarkerIndices();  // indices shifted
     updateFrame();
   });
   connect(&document, &TakeDocument::samplesChanged, this, [this](const std::vector<Eigen::Index>& markers) {
@@ -243,6 +227,19 @@ m_status->setAttribute(Qt::WA_NativeWindow);
 
 MarkerView3d::~MarkerView3d() = default;
 
+void MarkerView3d::forgetMarkerIndices()
+{
+  m_layoutKept.clear();
+  m_layoutReference.clear();
+  m_headReference.clear();
+  m_headMotion.reset();
+  m_followMarkers = markersToFollow();
+  updateStatus();
+  m_links.clear();
+  if (m_linksVisible)
+    computeLinks();
+}
+
 double MarkerView3d::takeSize() const
 {
   return diagonalOf(m_document.take(), m_document.currentFrame());
@@ -257,6 +254,8 @@ void MarkerView3d::observe(const ViewState& state)
   refreshColors();
   setLinksVisible(state.linksVisible());
   setFollowHead(state.followHead());
+  if (!state.headReference().empty())
+    (void)setHeadReference(state.headReference());
   setLayoutHighlight(state.layoutKept(), state.layoutReference());
   connect(&state, &ViewState::markerScaleChanged, this, &MarkerView3d::setMarkerScale);
   connect(&state, &ViewState::trailFramesChanged, this, &MarkerView3d::setTrailFrames);
@@ -265,6 +264,9 @@ void MarkerView3d::observe(const ViewState& state)
   connect(&state, &ViewState::colorsChanged, this, &MarkerView3d::refreshColors);
   connect(&state, &ViewState::linksVisibleChanged, this, &MarkerView3d::setLinksVisible);
   connect(&state, &ViewState::followHeadChanged, this, &MarkerView3d::setFollowHead);
+  // The head-stabilized view's set is checked by whoever sets it (HeadStabilizedViewAction).
+  connect(&state, &ViewState::headReferenceChanged, this,
+          [this, &state] { (void)setHeadReference(state.headReference()); });
   connect(&state, &ViewState::layoutHighlightChanged, this,
           [this, &state] { setLayoutHighlight(state.layoutKept(), state.layoutReference()); });
   connect(&state, &ViewState::cameraResetRequested, this, &MarkerView3d::resetCamera);

@@ -136,6 +136,9 @@ private:
   /// Where the markers (not hidden, not model outputs) are drawn over frames first…last, at most
   /// 500 frames sampled; each marker's first valid sample when none is valid there.
   [[nodiscard]] std::vector<Eigen::Vector3d> drawnPositions(Eigen::Index first, Eigen::Index last) const;
+  /// Drops what holds marker indices (layout highlight, head reference, links) and works out the
+  /// markers to follow again: the take was replaced or its markers shifted.
+  void forgetMarkerIndices();
   void rebuildScene();
   void updateFrame();
   void updateTrails();

@@ -1,5 +1,6 @@
 #include "views/scene_settings.h"
 
+#include "document/view_state.h"
 #include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
 
@@ -50,6 +51,16 @@ SceneSettings viewSettings(const MarkerView3d& view)
   settings.layoutKept = view.layoutHighlight();
   settings.layoutReference = view.layoutReference();
   settings.camera = cameraState(*view.viewport()->renderer()->GetActiveCamera(), view.viewport()->size());
+  return settings;
+}
+
+SceneSettings shownSettings(const MarkerView3d& view, const ViewState& state)
+{
+  SceneSettings settings = viewSettings(view);
+  settings.meshOpacity = state.meshOpacity();
+  settings.meshEdges = state.meshEdges();
+  settings.rigShown = state.rigShown();
+  settings.rigBeside = state.rigBeside();
   return settings;
 }
 

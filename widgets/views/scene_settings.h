@@ -12,6 +12,7 @@ class vtkCamera;
 namespace mocap::ui {
 
 class MarkerView3d;
+class ViewState;
 
 /// A camera as a value: where it is, what it looks at, and the size of the view it was set for.
 struct CameraState
@@ -51,6 +52,9 @@ struct SceneSettings
 
 /// The 3D view's part of the settings (view settings and camera; the mesh look stays default).
 [[nodiscard]] SceneSettings viewSettings(const MarkerView3d& view);
+/// What the studio shows now: the 3D view's part (viewSettings) with the layers' look (face mesh
+/// opacity and edges, the posed rig shown and beside) from the session's view state.
+[[nodiscard]] SceneSettings shownSettings(const MarkerView3d& view, const ViewState& state);
 /// Applies the 3D view's part of `settings` to `view` (the camera when it has one).
 void applyViewSettings(const SceneSettings& settings, MarkerView3d& view);
 

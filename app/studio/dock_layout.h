@@ -1,0 +1,35 @@
+#pragma once
+
+#include <QString>
+#include <qnamespace.h>
+
+class QDockWidget;
+class QMainWindow;
+class QWidget;
+
+namespace mocap::studio {
+
+/// Whether a dock's content scrolls (panels) or takes the dock's size (views that zoom and pan, panels
+/// that scroll themselves).
+enum class DockContent
+{
+  Scrolls,
+  Fixed,
+};
+
+/// Adds to `window` a dock named `objectName` (the name its layout is saved under) holding `content`;
+/// shown from the View menu, it comes to the front.
+QDockWidget* addDock(QMainWindow& window, const QString& title, const QString& objectName, QWidget* content,
+                     Qt::DockWidgetArea area, DockContent kind = DockContent::Scrolls);
+
+/// Shows and raises the dock of `window` with this object name or title (any case); false when none has it.
+bool raiseDock(QMainWindow& window, const QString& name);
+
+/// Sizes and centres a first-run window on the primary screen (85 % of it); false without a screen.
+bool placeFirstRunWindow(QMainWindow& window);
+
+/// Gives the side docks 16 % (left) and 30 % (right) of the width and the bottom docks 26 % of the
+/// height, so the 3D view keeps more than half of each.
+void proportionDocks(QMainWindow& window);
+
+} // namespace mocap::studio
