@@ -58,6 +58,7 @@
 #include "views/review_scene.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
+#include "panels/dock_tab_titles.h"
 #include "panels/form_wrapping.h"
 
 #include <QAction>
@@ -108,6 +109,7 @@ MainWindow::MainWindow(QWidget* parent)
   m_files = new ui::TakeFileActions(*m_document, m_session->options(), *this, this);
   connect(m_files, &ui::TakeFileActions::message, status, &QStatusBar::showMessage);
   createDocks();
+  ui::keepDockTabTitlesWhole(*this);  // six tabbed docks in a narrow side dock stay readable
   m_cleaningPresets = new ui::CleaningPresetActions(
       *m_document, *this,
       {[this] { return m_cleaning->cleanOptions(); },
