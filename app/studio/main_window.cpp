@@ -31,6 +31,7 @@
 #include "panels/cleaning_panel.h"
 #include "document/blendshape_solve_model.h"
 #include "panels/blendshape_solve_panel.h"
+#include "panels/dock_tab_titles.h"
 #include "panels/face_mesh_panel.h"
 #include "panels/gap_fill_step.h"
 #include "panels/gap_list_panel.h"
@@ -101,6 +102,7 @@ MainWindow::MainWindow(QWidget* parent)
   m_files = new ui::TakeFileActions(*m_document, m_session->options(), *this, this);
   connect(m_files, &ui::TakeFileActions::message, status, &QStatusBar::showMessage);
   createDocks();
+  ui::keepDockTabTitlesWhole(*this);  // six tabbed docks in a narrow side dock stay readable
   m_cleaningPresets = new ui::CleaningPresetActions(
       *m_document, *this,
       {[this] { return m_cleaning->cleanOptions(); },

@@ -150,6 +150,33 @@ TEST(HeadStabilization, TheSampleHeadMarkersAreFoundWithoutTheirNames)
   EXPECT_NO_THROW((void)estimateHeadMotion(take, guess));
 }
 
+TEST(HeadStabilization, NoHeadIsProposedOnAFullBodyTake)
+{
+  // On Vicon's gait-pig the studio proposed the pelvis (LASI, RASI, LPSI, RPSI) as head markers:
+  // the most rigid cluster of a body take is a pelvis or a limb's, and most markers are far from it.
+  for (const char* file : {"c3d/sample03/gait-pig-nz.c3d", "c3d/sample00_motion_analysis/Walk1.c3d",
+                           "c3d/btk_others/mocap36.c3d"}) {
+    const Take take = readTake(test::dataFile(file));
+    EXPECT_TRUE(headSizedRigidCluster(take).empty()) << file;
+    EXPECT_TRUE(guessHeadReferenceMarkers(take).empty()) << file;
+  }
+  EXPECT_FALSE(mostRigidCluster(readTake(test::dataFile("c3d/sample03/gait-pig-nz.c3d"))).empty())
+      << "the pelvis is rigid: the take, not the cluster, says it is no head";
+  // A face take keeps its proposal, in any units.
+  Take head = movingHead();
+  EXPECT_EQ(headSizedRigidCluster(head), (std::vector<Eigen::Index>{0, 1, 2, 3}));
+  head.convertUnits(LengthUnit::Metre);
+  EXPECT_EQ(headSizedRigidCluster(head), (std::vector<Eigen::Index>{0, 1, 2, 3}));
+}
+
+TEST(HeadStabilization, HeadMarkersAreNamedBehindASubjectPrefix)
+{
+  // C3D files of other systems put the subject before every label (SUBJECTS:LABEL_PREFIXES):
+  // Vicon's "Anna:root-1", ART's "Human3:HEAD".
+  const Take take({"Anna:root-1", "Anna:nose", "Anna:HEAD_L", "Anna:root-2", "Tools:TOOL1", "rootless:chin"}, 1, 100.0);
+  EXPECT_EQ(labelledHeadMarkers(take), (std::vector<Eigen::Index>{0, 2, 3}));
+}
+
 TEST(HeadStabilization, FramesWithTooFewReferenceMarkersAreInterpolated)
 {
   Take take = movingHead();

@@ -9,6 +9,7 @@
 #include "models/gap_table_model.h"
 #include "models/marker_table_model.h"
 #include "panels/gap_list_panel.h"
+#include "panels/head_markers_proposal_bar.h"
 #include "sample_window.h"
 #include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
@@ -22,6 +23,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTableView>
 #include <QTest>
 #include <QUndoStack>
@@ -39,6 +41,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 namespace mocap {
 namespace {
@@ -296,6 +299,74 @@ TEST(ForeignTakeWalkthrough, CtrlReturnFillsWithTheGapTableFocused)
   view->setFocus();
   QTest::keyClick(view, Qt::Key_Z, Qt::ControlModifier);
   EXPECT_EQ(window->document().undoStack()->index(), steps) << "Ctrl+Z undoes with the table focused";
+}
+
+/// Opens a file of the test data in `window`, quietly (no warnings dialog).
+bool openForeignTake(studio::MainWindow& window, const char* file)
+{
+  const QString error = window.openFile(QString::fromStdString(test::dataFile(file).string()), true);
+  EXPECT_EQ(error, QString()) << file;
+  QTest::qWait(50);
+  return error.isEmpty();
+}
+
+TEST(ForeignTakeWalkthrough, ElidedLabelsWithASubjectPrefixLookDifferent)
+{
+  // ART's labels carry their subject ("Human3:LLSP", "Human3:ULSP", "Tools:TOOL1Y"): eliding in the
+  // middle kept the prefix and lost the name, "Hum…LSP" twice in the Markers dock.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ASSERT_TRUE(openForeignTake(*window, "c3d/sample37/ART-Human_tools_integer_6dofLimbs.c3d"));
+  auto* markers = qobject_cast<QTableView*>(window->findChild<QDockWidget*>(QStringLiteral("markersDock"))->widget());
+  ASSERT_NE(markers, nullptr);
+  const int label = ui::MarkerTableModel::LabelColumn;
+  ASSERT_LT(markers->columnWidth(label), markers->fontMetrics().horizontalAdvance(QStringLiteral("Human3:LHANY")));
+  std::vector<std::pair<QString, QImage>> drawn;
+  for (int row = 0; row < markers->model()->rowCount(); ++row) {
+    const QModelIndex index = markers->model()->index(row, label);
+    markers->scrollTo(index);
+    drawn.emplace_back(index.data().toString(), markers->viewport()->grab(markers->visualRect(index)).toImage());
+  }
+  ASSERT_EQ(drawn.size(), 37u);
+  QString alike;
+  for (std::size_t a = 0; a < drawn.size(); ++a)
+    for (std::size_t b = a + 1; b < drawn.size(); ++b)
+      if (drawn[a].second == drawn[b].second)
+        alike += QStringLiteral(" %1=%2").arg(drawn[a].first, drawn[b].first);
+  EXPECT_TRUE(alike.isEmpty()) << "drawn alike:" << alike.toStdString();
+}
+
+TEST(ForeignTakeWalkthrough, SixTabbedDocksShowTheirTitlesWhole)
+{
+  // With Face Mesh, Blendshape Solve and Reference Video shown beside Cleaning, Layout planning and
+  // Gaps, the side dock's tabs read "Cl…", "La…", "Ga…": every title was elided.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  for (const char* name : {"faceMeshDock", "blendshapeSolveDock", "referenceVideoDock"})
+    window->findChild<QDockWidget*>(QString::fromLatin1(name))->toggleViewAction()->trigger();
+  QTest::qWait(50);
+  int most = 0;
+  for (const QTabBar* tabs : window->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+    if (!tabs->isVisible())
+      continue;
+    most = std::max(most, tabs->count());
+    for (int i = 0; i < tabs->count(); ++i)
+      EXPECT_GE(tabs->tabRect(i).width(), tabs->fontMetrics().horizontalAdvance(tabs->tabText(i)))
+          << tabs->tabText(i).toStdString() << " in a tab bar of " << tabs->width() << " px";
+  }
+  EXPECT_GE(most, 6);
+}
+
+TEST(ForeignTakeWalkthrough, NoHeadMarkersAreProposedOnAGaitTake)
+{
+  // On Vicon's gait-pig the bar proposed "Head markers guessed: RASI, LASI, SACR", the pelvis.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  auto* bar = window->findChild<ui::HeadMarkersProposalBar*>(QStringLiteral("headMarkersProposalBar"));
+  ASSERT_NE(bar, nullptr);
+  ASSERT_TRUE(openForeignTake(*window, "c3d/sample03/gait-pig-nz.c3d"));
+  EXPECT_TRUE(window->document().proposedReferenceMarkers().empty());
+  EXPECT_FALSE(bar->isVisible()) << bar->text().toStdString();
 }
 
 } // namespace

@@ -336,7 +336,7 @@ void TakeDocument::loadReferenceMarkers()
   }
   m_referenceMarkers = labelledHeadMarkers(m_take);
   if (m_referenceMarkers.empty())
-    m_proposedReference = mostRigidCluster(m_take);
+    m_proposedReference = headSizedRigidCluster(m_take);
 }
 
 void TakeDocument::storeReferenceMarkers()

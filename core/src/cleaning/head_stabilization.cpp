@@ -2,12 +2,14 @@
 #include "mocap/cleaning/head_marker_labels.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/length_unit.h"
 #include "mocap/math/kabsch.h"
 #include "mocap/model/marker_points.h"
 #include "mocap/model/marker_set.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <set>
 #include <string>
@@ -191,7 +193,7 @@ void restoreHeadMotion(Take& take, const HeadMotion& motion)
 std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take)
 {
   std::vector<Eigen::Index> markers = labelledHeadMarkers(take);
-  return markers.empty() ? mostRigidCluster(take) : markers;
+  return markers.empty() ? headSizedRigidCluster(take) : markers;
 }
 
 std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options)
@@ -260,6 +262,49 @@ std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterO
     markers.push_back(candidates[static_cast<std::size_t>(c)]);
   std::sort(markers.begin(), markers.end());
   return markers;
+}
+
+std::vector<Eigen::Index> headSizedRigidCluster(const Take& take)
+{
+  // Face markers sit within about 200 mm of a headband's centre; 300 mm leaves room for a neck or
+  // collar marker, and a share of 80 % for a few on the shoulders.
+  constexpr double kHeadReachMillimetres = 300.0;
+  constexpr double kShareWithinReach = 0.8;
+  constexpr Eigen::Index kFramesSampled = 50;
+  std::vector<Eigen::Index> cluster = mostRigidCluster(take);
+  if (cluster.empty())
+    return cluster;
+  const double reach = kHeadReachMillimetres / millimetresPer(take.units());
+  const Eigen::Index step = std::max<Eigen::Index>(1, take.frameCount() / kFramesSampled);
+  const std::vector<Eigen::Index> markers = markerPoints(take);
+  std::size_t seen = 0, within = 0;
+  std::vector<double> distances;
+  for (const Eigen::Index m : markers) {
+    distances.clear();
+    for (Eigen::Index f = 0; f < take.frameCount(); f += step) {
+      if (!take.isValid(f, m))
+        continue;
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      double count = 0.0;
+      for (const Eigen::Index c : cluster)
+        if (take.isValid(f, c)) {
+          centre += take.position(f, c);
+          count += 1.0;
+        }
+      if (count > 0.0)
+        distances.push_back((take.position(f, m) - centre / count).norm());
+    }
+    if (distances.empty())
+      continue;
+    const auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
+    std::nth_element(distances.begin(), middle, distances.end());
+    ++seen;
+    if (*middle <= reach)
+      ++within;
+  }
+  if (static_cast<double>(within) < kShareWithinReach * static_cast<double>(seen))
+    cluster.clear();
+  return cluster;
 }
 
 std::vector<SamplePatch> headMotionRemovalPatches(const Take& take, const HeadMotion& motion)

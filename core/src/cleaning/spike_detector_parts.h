@@ -66,6 +66,13 @@ inline constexpr double kRunEndScaleWeight = 0.5;       // see runEndSigma
 inline constexpr Eigen::Index kMinRobustRun = 5;        // shorter runs have too few samples to judge one
 // Stage 2's window: 9 samples.
 inline constexpr int kWindow = 2 * kQuadraticHalfWidth + 1;
+// Step 4: each side's extrapolation uses the 8 samples before (after) the judged one, stage 2's
+// window shifted to one side.
+inline constexpr Eigen::Index kSideSpan = kWindow - 1;
+// Step 4: a side leads to the sample when its extrapolation misses by at most this share of the
+// threshold (in robust standard deviations): within the noise, not merely under the flag's bar, so
+// a small spike in noise is not cleared by a side that misses it by less than the threshold.
+inline constexpr double kSideThresholdShare = 0.5;
 
 // Buffers reused across the runs of a trajectory.
 struct RobustWork

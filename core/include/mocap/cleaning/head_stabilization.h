@@ -51,7 +51,7 @@ void restoreHeadMotion(Take& take, const HeadMotion& motion);
 
 /// The head-mounted reference markers to propose (a default for the user to confirm): the markers
 /// whose labels start with "root" or "head" (any case), the usual names, when there are at least
-/// three; else mostRigidCluster(take). Empty when neither finds three. O(#markers) by label,
+/// three; else headSizedRigidCluster(take). Empty when neither finds three. O(#markers) by label,
 /// else as mostRigidCluster.
 [[nodiscard]] std::vector<Eigen::Index> guessHeadReferenceMarkers(const Take& take);
 
@@ -75,6 +75,13 @@ struct RigidClusterOptions
 /// takes whose head markers are not named. Throws InvalidArgument for tolerance ≤ 0 or
 /// maxFrames < 2. O(#markers² · #sampled frames + #markers³).
 [[nodiscard]] std::vector<Eigen::Index> mostRigidCluster(const Take& take, const RigidClusterOptions& options = {});
+
+/// mostRigidCluster(take) when it can be a head's: a face take's markers stay within a head's
+/// reach of it (most of them within 300 mm of its centre, the median over sampled frames), while
+/// on a full-body take the most rigid cluster is a pelvis or a limb's and most markers are far
+/// from it (Vicon's gait-pig: 4 pelvis markers, the feet a metre away). Empty otherwise, so no
+/// head markers are proposed for a body take. Not a paper equation. O(as mostRigidCluster).
+[[nodiscard]] std::vector<Eigen::Index> headSizedRigidCluster(const Take& take);
 
 /// removeHeadMotion as patches (one per marker point, every frame): the studio previews and undoes
 /// stabilization like any other edit. Validity, residuals and origins are kept (the samples move,
