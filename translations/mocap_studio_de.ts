@@ -167,7 +167,7 @@
 <context>
     <name>LiveLinkRecordingImport</name>
     <message>
-        <location filename="../widgets/actions/live_link_recording_import.cpp" line="+22"/>
+        <location filename="../widgets/actions/live_link_recording_import.cpp" line="+29"/>
         <source>Load a rig first: the recording&apos;s curves animate its shapes.</source>
         <translation>Laden Sie zuerst ein Rig: Die Kurven der Aufnahme animieren seine Shapes.</translation>
     </message>
@@ -177,7 +177,7 @@
         <translation>%1: Eine Aufzeichnung braucht zwei oder mehr Zeilen mit steigenden Timecodes.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>Open Live Link Recording %1</source>
         <translation>Live-Link-Aufzeichnung %1 öffnen</translation>
     </message>
@@ -499,7 +499,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+97"/>
+        <location filename="../app/studio/main_window.cpp" line="+91"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -508,7 +508,7 @@
         <translation type="vanished">Frame %1 von %2–%3 — %4 Marker ausgewählt</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Autosave failed: %1</source>
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
@@ -604,7 +604,7 @@
         <translation type="vanished">%1 geschrieben (%2 Frames, %3)</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+63"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -1026,7 +1026,7 @@
         <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+17"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
@@ -1079,7 +1079,7 @@
         <translation type="vanished">Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-49"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -1122,7 +1122,7 @@
 <context>
     <name>mocap::ui::ActorActions</name>
     <message>
-        <location filename="../widgets/actions/actor_actions.cpp" line="+53"/>
+        <location filename="../widgets/actions/actor_actions.cpp" line="+57"/>
         <source>&amp;Actor</source>
         <translation>&amp;Darsteller</translation>
     </message>
@@ -1202,13 +1202,13 @@
         <translation>Darsteller %1: Der Solve verwendet seine Neutralpose und seinen Umfang.</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>New Actor from Neutral Frame</source>
         <translation>Neuer Darsteller aus neutralem Frame</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+14"/>
+        <location line="+0"/>
+        <location line="+13"/>
         <source>Actor profiles (*.json)</source>
         <translation>Darstellerprofile (*.json)</translation>
     </message>
@@ -1228,12 +1228,12 @@
         <translation>Kalibrierten Darsteller speichern</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Load Actor</source>
         <translation>Darsteller laden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Actor profiles (*.json);;All files (*)</source>
         <translation>Darstellerprofile (*.json);;Alle Dateien (*)</translation>
     </message>
@@ -1249,29 +1249,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+121"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+137"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+283"/>
+        <location line="+281"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-278"/>
+        <location line="-276"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+266"/>
+        <location line="+264"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="-262"/>
+        <location line="-260"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1447,7 +1447,7 @@
         <translation>Gewichtskurven als CSV: eine Spalte je Shape (einfach oder im Live-Link-Face-Layout)</translation>
     </message>
     <message>
-        <location line="+340"/>
+        <location line="+345"/>
         <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
         <translation>Lösen Sie zuerst die Aufnahme oder öffnen Sie eine Live-Link-Aufzeichnung: Es gibt keine Kurven zum Exportieren.</translation>
     </message>
@@ -1465,6 +1465,11 @@
         </translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>Recorded at %1 Hz: resampled to the take&apos;s rate.</source>
+        <translation>Mit %1 Hz aufgezeichnet: auf die Rate der Aufnahme umgerechnet.</translation>
+    </message>
+    <message>
         <source>Export Rig GLB…</source>
         <translation type="vanished">Rig als GLB exportieren…</translation>
     </message>
@@ -1473,7 +1478,7 @@
         <translation type="vanished">Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
     </message>
     <message>
-        <location line="-264"/>
+        <location line="-278"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
     </message>
@@ -1501,7 +1506,7 @@
         <translation>Rig geladen. Binden Sie die Marker im Face-Mesh-Panel an seine Neutralform (Automatisch binden oder Bindung laden) und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-116"/>
         <source>Export Rig…</source>
         <translation>Rig exportieren…</translation>
     </message>
@@ -1511,7 +1516,7 @@
         <translation>Das Rig mit seinen Blendshapes und den Gewichten als Animationskurven, FBX oder glTF (Unreal, Maya, MotionBuilder, Blender, Unity), über eine Retarget-Zuordnung, mit reduzierten Keys</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+116"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>Rig geladen. Lösen, sobald bereit.</translation>
     </message>
@@ -1589,7 +1594,7 @@
         <translation>  (Spitze %1)</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+90"/>
         <source>Solve the take first.</source>
         <translation>Lösen Sie zuerst die Aufnahme.</translation>
     </message>
@@ -1608,27 +1613,27 @@
         <translation type="vanished">Das Rig kann nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+66"/>
         <source>Load glTF rig</source>
         <translation>glTF-Rig laden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>glTF rigs (*.glb *.gltf);;All files (*)</source>
         <translation>glTF-Rigs (*.glb *.gltf);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Load the rig&apos;s neutral mesh</source>
         <translation>Das neutrale Mesh des Rigs laden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Meshes (*.obj *.ply);;All files (*)</source>
         <translation>Meshes (*.obj *.ply);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>The folder with one OBJ per shape</source>
         <translation>Der Ordner mit einem OBJ je Shape</translation>
     </message>
@@ -1839,7 +1844,7 @@
     <name>mocap::ui::ExportDialog</name>
     <message>
         <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+81"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+87"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -1910,12 +1915,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+388"/>
+        <location line="+389"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-368"/>
         <source>Z up</source>
         <translation>Z oben</translation>
     </message>
@@ -1960,7 +1965,7 @@
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>Laden Sie zuerst ein Gesichtsnetz: Diese Formate exportieren das verformte Netz.</translation>
     </message>
@@ -2069,12 +2074,12 @@
         <translation>%1 von %2 Keys behalten (%3 %), größter Fehler %4 mm (Toleranz %5 mm).</translation>
     </message>
     <message>
-        <location line="-455"/>
+        <location line="-456"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message numerus="yes">
-        <location line="+414"/>
+        <location line="+415"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>%n Bild nach %1 exportiert.</numerusform>
@@ -2139,18 +2144,18 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+88"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+104"/>
         <source>Mesh and binding</source>
         <translation>Netz und Bindung</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+233"/>
+        <location line="+227"/>
         <source>No mesh</source>
         <translation>Kein Netz</translation>
     </message>
     <message>
-        <location line="-229"/>
+        <location line="-223"/>
         <source>Load Mesh…</source>
         <translation>Netz laden…</translation>
     </message>
@@ -2195,12 +2200,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+282"/>
+        <location line="+276"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>Wählen Sie einen Marker aus und klicken Sie dann auf seinen Scheitelpunkt im Netz</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-273"/>
         <source>Undo</source>
         <translation>Rückgängig</translation>
     </message>
@@ -2236,18 +2241,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+333"/>
+        <location line="+327"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-332"/>
-        <location line="+332"/>
+        <location line="-326"/>
+        <location line="+326"/>
         <source>Laplacian</source>
         <translation>Laplace</translation>
     </message>
     <message>
-        <location line="-331"/>
+        <location line="-325"/>
         <source>Method:</source>
         <translation>Methode:</translation>
     </message>
@@ -2307,12 +2312,12 @@
         <translation>Kanten</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+13"/>
         <source>Opacity:</source>
         <translation>Deckkraft:</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+84"/>
         <source>first complete</source>
         <translation>erstes vollständiges</translation>
     </message>
@@ -2407,12 +2412,12 @@
         <translation>Neutralbild %1; Vorbereitung %2 ms</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Load face mesh</source>
         <translation>Gesichtsnetz laden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Meshes (*.obj *.ply *.glb *.gltf);;All files (*)</source>
         <translation>Meshes (*.obj *.ply *.glb *.gltf);;Alle Dateien (*)</translation>
     </message>
@@ -2421,22 +2426,22 @@
         <translation type="vanished">Netze (*.obj *.ply);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>Load marker binding</source>
         <translation>Markerbindung laden</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Bindings (*.json);;All files (*)</source>
         <translation>Bindungen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>Save marker binding</source>
         <translation>Markerbindung speichern</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Bindings (*.json)</source>
         <translation>Bindungen (*.json)</translation>
     </message>
@@ -2564,7 +2569,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+128"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+132"/>
         <source>Filter markers…</source>
         <translation>Marker filtern…</translation>
     </message>
@@ -3052,7 +3057,7 @@
 <context>
     <name>mocap::ui::HeadStabilizedViewAction</name>
     <message>
-        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+17"/>
+        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+19"/>
         <source>&amp;Head-Stabilized View</source>
         <translation>&amp;Kopfstabilisierte Ansicht</translation>
     </message>
@@ -3062,7 +3067,7 @@
         <translation>Die Marker im Kopfkoordinatensystem der Referenzmarker anzeigen (eine Ansichtseinstellung; die Aufnahme wird nicht verändert)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>3D view in the lab frame</source>
         <translation>3D-Ansicht im Laborkoordinatensystem</translation>
     </message>
@@ -3077,12 +3082,12 @@
         <translation>Kopfstabilisierte Ansicht</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
         <translation>3D-Ansicht auf die Referenzmarker stabilisiert (Strg+B erneut für das Laborkoordinatensystem)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
         <translation>3D-Ansicht wieder im Laborkoordinatensystem: Aus den Referenzmarkern lässt sich keine Kopfhaltung bestimmen</translation>
     </message>
@@ -3319,7 +3324,7 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+92"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+116"/>
         <source>detected</source>
         <translation>erkannt</translation>
     </message>
@@ -3504,7 +3509,7 @@
         <translation>Außerdem die Gewichte des geladenen Rigs aus jedem Layout und aus allen gebundenen Markern lösen und ihren MSE zeichnen (das Maß des Ausgangsartikels an einem semantischen Rig; mocap pfa --rig)</translation>
     </message>
     <message>
-        <location line="+169"/>
+        <location line="+167"/>
         <source>Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its neutral (Face Mesh panel); or switch it off.</source>
         <translation>Die Beurteilung am Rig braucht ein Blendshape-Rig (Blendshape-Solve-Panel) und an seine Neutralform gebundene Marker (Face-Mesh-Panel); oder schalten Sie sie aus.</translation>
     </message>
@@ -3527,7 +3532,7 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-277"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -3617,7 +3622,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+89"/>
         <source>A plan is already running.</source>
         <translation>Eine Planung läuft bereits.</translation>
     </message>
@@ -3667,12 +3672,12 @@
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-191"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message>
-        <location line="+237"/>
+        <location line="+235"/>
         <source>Planning failed: %1</source>
         <translation>Planung fehlgeschlagen: %1</translation>
     </message>
@@ -3719,7 +3724,7 @@
         <translation>Es gibt kein Layout zum Exportieren: Führen Sie die Planung aus und wählen Sie eine Markeranzahl.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>Could not write %1:
 %2</source>
         <translation>%1 konnte nicht geschrieben werden:
@@ -3734,7 +3739,7 @@
 <context>
     <name>mocap::ui::LiveLinkOpenDialog</name>
     <message>
-        <location filename="../widgets/dialogs/live_link_open_dialog.cpp" line="+28"/>
+        <location filename="../widgets/dialogs/live_link_open_dialog.cpp" line="+34"/>
         <location line="+60"/>
         <source>Open Live Link Recording</source>
         <translation>Live-Link-Aufzeichnung öffnen</translation>
@@ -3773,7 +3778,7 @@
 <context>
     <name>mocap::ui::LiveStreamPanel</name>
     <message>
-        <location filename="../widgets/panels/live_stream_panel.cpp" line="+59"/>
+        <location filename="../widgets/panels/live_stream_panel.cpp" line="+74"/>
         <source>Live Link Face (Unreal, MetaHuman)</source>
         <translation>Live Link Face (Unreal, MetaHuman)</translation>
     </message>
@@ -4041,7 +4046,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+264"/>
+        <location line="+266"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
@@ -4395,7 +4400,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+47"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>Die Referenzvideos der Aufnahme: Das hier gewählte wird angezeigt</translation>
     </message>
@@ -4515,7 +4520,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Den Versatz so setzen, dass beim Ereignis der erste Videoframe erscheint, oder der angehaltene</translation>
     </message>
     <message>
-        <location line="+281"/>
+        <location line="+278"/>
         <source>Locate %1</source>
         <translation>%1 suchen</translation>
     </message>
@@ -4524,7 +4529,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation type="vanished">Das Video um eines seiner Frames früher setzen (Alt+,)</translation>
     </message>
     <message>
-        <location line="-317"/>
+        <location line="-314"/>
         <source>+1 frame</source>
         <translation>+1 Frame</translation>
     </message>
@@ -4613,13 +4618,13 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation type="vanished">Die Videos können nicht neben der Aufnahme gemerkt werden: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Add reference video</source>
         <translation>Referenzvideo hinzufügen</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+18"/>
+        <location line="+16"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;Alle Dateien (*)</translation>
     </message>
@@ -4652,7 +4657,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::RetargetMapChooser</name>
     <message>
-        <location filename="../widgets/dialogs/retarget_map_chooser.cpp" line="+30"/>
+        <location filename="../widgets/dialogs/retarget_map_chooser.cpp" line="+31"/>
         <source>%1 (shipped)</source>
         <translation>%1 (mitgeliefert)</translation>
     </message>
@@ -4672,7 +4677,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Dur&amp;chsuchen…</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+84"/>
         <source>Retarget map</source>
         <translation>Retarget-Zuordnung</translation>
     </message>
@@ -4821,8 +4826,8 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+33"/>
-        <location line="+54"/>
+        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+38"/>
+        <location line="+55"/>
         <source>Export Review Video</source>
         <translation>Prüfvideo exportieren</translation>
     </message>
@@ -4907,7 +4912,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>%1 existiert. Ersetzen?</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>untitled take</source>
         <translation>unbenannte Aufnahme</translation>
     </message>
@@ -4915,13 +4920,13 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::RigExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/rig_export_dialog.cpp" line="+78"/>
-        <location line="+226"/>
+        <location filename="../widgets/dialogs/rig_export_dialog.cpp" line="+90"/>
+        <location line="+246"/>
         <source>Export Rig</source>
         <translation>Rig exportieren</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-233"/>
         <source>FBX rig with animated blend shapes (.fbx)</source>
         <translation>FBX-Rig mit animierten Blendshapes (.fbx)</translation>
     </message>
@@ -5021,7 +5026,17 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Gewichtseinheiten</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+83"/>
+        <source>Retarget section&apos;s: %1, gains edited</source>
+        <translation>Aus dem Retarget-Bereich: %1, Verstärkungen bearbeitet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget section&apos;s: %1</source>
+        <translation>Aus dem Retarget-Bereich: %1</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>FBX (*.fbx)</source>
         <translation>FBX (*.fbx)</translation>
     </message>
@@ -5307,7 +5322,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::TakeFileActions</name>
     <message>
-        <location filename="../widgets/actions/take_file_actions.cpp" line="+35"/>
+        <location filename="../widgets/actions/take_file_actions.cpp" line="+36"/>
         <source>Opening %1…</source>
         <translation>%1 wird geöffnet…</translation>
     </message>
@@ -5373,7 +5388,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX-Marker (*.fbx)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+16"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
@@ -5525,7 +5540,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::WeightCurveView</name>
     <message>
-        <location filename="../widgets/views/weight_curve_view.cpp" line="+42"/>
+        <location filename="../widgets/views/weight_curve_view.cpp" line="+121"/>
         <source>Solve the take to see its weights</source>
         <translation>Lösen Sie die Aufnahme, um ihre Gewichte zu sehen</translation>
     </message>
@@ -5540,7 +5555,12 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Klicken Sie auf eine Kurve (oder wählen Sie Shapes im Panel), um ihren Shape auszuwählen</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+48"/>
+        <source>Weights through the map %1</source>
+        <translation>Gewichte über die Zuordnung %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Weights</source>
         <translation>Gewichte</translation>
     </message>
@@ -5550,7 +5570,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Marker-Residuum (%1)</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+89"/>
         <source>%1 · frame %2 · %3</source>
         <translation>%1 · Frame %2 · %3</translation>
     </message>

@@ -160,7 +160,7 @@
 <context>
     <name>LiveLinkRecordingImport</name>
     <message>
-        <location filename="../widgets/actions/live_link_recording_import.cpp" line="+22"/>
+        <location filename="../widgets/actions/live_link_recording_import.cpp" line="+29"/>
         <source>Load a rig first: the recording&apos;s curves animate its shapes.</source>
         <translation>请先加载绑定模型：录制的曲线驱动其形状。</translation>
     </message>
@@ -170,7 +170,7 @@
         <translation>%1：录制需要两行或更多且时间码递增。</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+17"/>
         <source>Open Live Link Recording %1</source>
         <translation>打开 Live Link 录制 %1</translation>
     </message>
@@ -490,7 +490,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+97"/>
+        <location filename="../app/studio/main_window.cpp" line="+91"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -499,7 +499,7 @@
         <translation type="vanished">第 %1 帧（%2–%3）— 已选择 %4 个标记点</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Autosave failed: %1</source>
         <translation>自动保存失败：%1</translation>
     </message>
@@ -595,7 +595,7 @@
         <translation type="vanished">已写入 %1（%2 帧，%3）</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+63"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -1015,7 +1015,7 @@
         <translation>无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+17"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
@@ -1068,7 +1068,7 @@
         <translation type="vanished">动捕片段有未保存的修改。是否保存？</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-49"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -1111,7 +1111,7 @@
 <context>
     <name>mocap::ui::ActorActions</name>
     <message>
-        <location filename="../widgets/actions/actor_actions.cpp" line="+53"/>
+        <location filename="../widgets/actions/actor_actions.cpp" line="+57"/>
         <source>&amp;Actor</source>
         <translation>演员(&amp;A)</translation>
     </message>
@@ -1191,13 +1191,13 @@
         <translation>演员 %1：求解使用其中性姿态和幅度。</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>New Actor from Neutral Frame</source>
         <translation>从中性帧新建演员</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+14"/>
+        <location line="+0"/>
+        <location line="+13"/>
         <source>Actor profiles (*.json)</source>
         <translation>演员配置 (*.json)</translation>
     </message>
@@ -1217,12 +1217,12 @@
         <translation>保存已校准的演员</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Load Actor</source>
         <translation>加载演员</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Actor profiles (*.json);;All files (*)</source>
         <translation>演员配置 (*.json);;所有文件 (*)</translation>
     </message>
@@ -1238,29 +1238,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+121"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+137"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+283"/>
+        <location line="+281"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="-278"/>
+        <location line="-276"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+266"/>
+        <location line="+264"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="-262"/>
+        <location line="-260"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1436,7 +1436,7 @@
         <translation>权重曲线导出为 CSV：每个形状一列（普通或 Live Link Face 布局）</translation>
     </message>
     <message>
-        <location line="+340"/>
+        <location line="+345"/>
         <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
         <translation>请先求解拍摄或打开 Live Link 录制：没有可导出的曲线。</translation>
     </message>
@@ -1453,6 +1453,11 @@
         </translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>Recorded at %1 Hz: resampled to the take&apos;s rate.</source>
+        <translation>以 %1 Hz 录制：已重采样到该录制的帧率。</translation>
+    </message>
+    <message>
         <source>Export Rig GLB…</source>
         <translation type="vanished">导出绑定模型 GLB…</translation>
     </message>
@@ -1461,7 +1466,7 @@
         <translation type="vanished">带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
     </message>
     <message>
-        <location line="-264"/>
+        <location line="-278"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>请等待正在运行的任务，或将其取消。</translation>
     </message>
@@ -1488,7 +1493,7 @@
         <translation>绑定模型已加载。请在面部网格面板中将标记点绑定到其中性形状（自动绑定或加载绑定），然后求解。</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-116"/>
         <source>Export Rig…</source>
         <translation>导出绑定模型…</translation>
     </message>
@@ -1498,7 +1503,7 @@
         <translation>带混合形状的绑定模型及作为动画曲线的权重，FBX 或 glTF（Unreal、Maya、MotionBuilder、Blender、Unity），可经重定向映射并精简关键帧</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+116"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>绑定模型已加载。准备好后即可求解。</translation>
     </message>
@@ -1575,7 +1580,7 @@
         <translation>  （峰值 %1）</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+90"/>
         <source>Solve the take first.</source>
         <translation>请先求解拍摄。</translation>
     </message>
@@ -1594,27 +1599,27 @@
         <translation type="vanished">无法写入绑定模型：%1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+66"/>
         <source>Load glTF rig</source>
         <translation>加载 glTF 绑定模型</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>glTF rigs (*.glb *.gltf);;All files (*)</source>
         <translation>glTF 绑定模型 (*.glb *.gltf);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Load the rig&apos;s neutral mesh</source>
         <translation>加载绑定模型的中性网格</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Meshes (*.obj *.ply);;All files (*)</source>
         <translation>网格 (*.obj *.ply);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>The folder with one OBJ per shape</source>
         <translation>每个形状一个 OBJ 的文件夹</translation>
     </message>
@@ -1824,7 +1829,7 @@
     <name>mocap::ui::ExportDialog</name>
     <message>
         <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+81"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+87"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -1895,12 +1900,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+388"/>
+        <location line="+389"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-368"/>
         <source>Z up</source>
         <translation>Z 向上</translation>
     </message>
@@ -1945,7 +1950,7 @@
         <translation>自定义</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>请先加载面部网格：这些格式导出的是变形后的网格。</translation>
     </message>
@@ -2051,12 +2056,12 @@
         <translation>保留了 %2 个关键帧中的 %1 个（%3 %），最大误差 %4 mm（容差 %5 mm）。</translation>
     </message>
     <message>
-        <location line="-455"/>
+        <location line="-456"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message numerus="yes">
-        <location line="+414"/>
+        <location line="+415"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 帧导出到 %1。</numerusform>
@@ -2118,18 +2123,18 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+88"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+104"/>
         <source>Mesh and binding</source>
         <translation>网格与绑定</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+233"/>
+        <location line="+227"/>
         <source>No mesh</source>
         <translation>无网格</translation>
     </message>
     <message>
-        <location line="-229"/>
+        <location line="-223"/>
         <source>Load Mesh…</source>
         <translation>加载网格…</translation>
     </message>
@@ -2174,12 +2179,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+282"/>
+        <location line="+276"/>
         <source>Select a marker, then click its vertex on the mesh</source>
         <translation>选择一个标记点，然后在网格上点击其对应的顶点</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-273"/>
         <source>Undo</source>
         <translation>撤销</translation>
     </message>
@@ -2215,18 +2220,18 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+333"/>
+        <location line="+327"/>
         <source>RBF</source>
         <translation>RBF</translation>
     </message>
     <message>
-        <location line="-332"/>
-        <location line="+332"/>
+        <location line="-326"/>
+        <location line="+326"/>
         <source>Laplacian</source>
         <translation>拉普拉斯</translation>
     </message>
     <message>
-        <location line="-331"/>
+        <location line="-325"/>
         <source>Method:</source>
         <translation>方法：</translation>
     </message>
@@ -2286,12 +2291,12 @@
         <translation>边线</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+13"/>
         <source>Opacity:</source>
         <translation>不透明度：</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+84"/>
         <source>first complete</source>
         <translation>第一个完整帧</translation>
     </message>
@@ -2384,12 +2389,12 @@
         <translation>中性帧 %1；预处理 %2 ms</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Load face mesh</source>
         <translation>加载面部网格</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Meshes (*.obj *.ply *.glb *.gltf);;All files (*)</source>
         <translation>网格 (*.obj *.ply *.glb *.gltf);;所有文件 (*)</translation>
     </message>
@@ -2398,22 +2403,22 @@
         <translation type="vanished">网格 (*.obj *.ply);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>Load marker binding</source>
         <translation>加载标记点绑定</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Bindings (*.json);;All files (*)</source>
         <translation>绑定 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+7"/>
         <source>Save marker binding</source>
         <translation>保存标记点绑定</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Bindings (*.json)</source>
         <translation>绑定 (*.json)</translation>
     </message>
@@ -2541,7 +2546,7 @@
 <context>
     <name>mocap::ui::GapListPanel</name>
     <message>
-        <location filename="../widgets/panels/gap_list_panel.cpp" line="+128"/>
+        <location filename="../widgets/panels/gap_list_panel.cpp" line="+132"/>
         <source>Filter markers…</source>
         <translation>筛选标记点…</translation>
     </message>
@@ -3028,7 +3033,7 @@
 <context>
     <name>mocap::ui::HeadStabilizedViewAction</name>
     <message>
-        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+17"/>
+        <location filename="../widgets/actions/head_stabilized_view_action.cpp" line="+19"/>
         <source>&amp;Head-Stabilized View</source>
         <translation>头部稳定视图(&amp;H)</translation>
     </message>
@@ -3038,7 +3043,7 @@
         <translation>在参考标记点的头部坐标系中显示标记点（仅为视图设置，不会更改动捕片段）</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>3D view in the lab frame</source>
         <translation>三维视图使用实验室坐标系</translation>
     </message>
@@ -3053,12 +3058,12 @@
         <translation>头部稳定视图</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>3D view stabilized on the reference markers (Ctrl+B again for the lab frame)</source>
         <translation>三维视图已按参考标记点稳定（再按 Ctrl+B 返回实验室坐标系）</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
         <source>3D view back in the lab frame: the reference markers cannot carry a head pose</source>
         <translation>三维视图已返回实验室坐标系：参考标记点无法确定头部姿态</translation>
     </message>
@@ -3293,7 +3298,7 @@
 <context>
     <name>mocap::ui::LayoutPlanningPanel</name>
     <message>
-        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+92"/>
+        <location filename="../widgets/panels/layout_planning_panel.cpp" line="+116"/>
         <source>detected</source>
         <translation>自动检测</translation>
     </message>
@@ -3478,7 +3483,7 @@
         <translation>同时从每个布局和所有已绑定标记点求解已加载绑定模型的权重，并绘制其 MSE（种子论文的度量，用于语义绑定模型；mocap pfa --rig）</translation>
     </message>
     <message>
-        <location line="+169"/>
+        <location line="+167"/>
         <source>Judging on the rig needs a blendshape rig (Blendshape Solve panel) and the markers bound to its neutral (Face Mesh panel); or switch it off.</source>
         <translation>在绑定模型上评估需要一个混合形状绑定模型（混合形状求解面板）以及绑定到其中性形状的标记点（面部网格面板）；或关闭此选项。</translation>
     </message>
@@ -3500,7 +3505,7 @@
         <translation>未去除头部运动：没有参考标记点</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-277"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
@@ -3590,7 +3595,7 @@
         <translation>C3D (*.c3d);;TRC (*.trc)</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+89"/>
         <source>A plan is already running.</source>
         <translation>已有规划正在运行。</translation>
     </message>
@@ -3640,12 +3645,12 @@
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-191"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message>
-        <location line="+237"/>
+        <location line="+235"/>
         <source>Planning failed: %1</source>
         <translation>规划失败：%1</translation>
     </message>
@@ -3692,7 +3697,7 @@
         <translation>没有可导出的布局：请运行规划并选择标记点数量。</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>Could not write %1:
 %2</source>
         <translation>无法写入 %1：
@@ -3707,7 +3712,7 @@
 <context>
     <name>mocap::ui::LiveLinkOpenDialog</name>
     <message>
-        <location filename="../widgets/dialogs/live_link_open_dialog.cpp" line="+28"/>
+        <location filename="../widgets/dialogs/live_link_open_dialog.cpp" line="+34"/>
         <location line="+60"/>
         <source>Open Live Link Recording</source>
         <translation>打开 Live Link 录制</translation>
@@ -3746,7 +3751,7 @@
 <context>
     <name>mocap::ui::LiveStreamPanel</name>
     <message>
-        <location filename="../widgets/panels/live_stream_panel.cpp" line="+59"/>
+        <location filename="../widgets/panels/live_stream_panel.cpp" line="+74"/>
         <source>Live Link Face (Unreal, MetaHuman)</source>
         <translation>Live Link Face（Unreal、MetaHuman）</translation>
     </message>
@@ -4014,7 +4019,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+264"/>
+        <location line="+266"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>已基于 %n 个标记点进行头部稳定 — 按 Ctrl+B 返回实验室坐标系</numerusform>
@@ -4363,7 +4368,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::ReferenceVideoPanel</name>
     <message>
-        <location filename="../widgets/panels/reference_video_panel.cpp" line="+47"/>
+        <location filename="../widgets/panels/reference_video_panel.cpp" line="+48"/>
         <source>The take&apos;s reference videos: the one picked here is shown</source>
         <translation>录制的参考视频：显示此处选中的视频</translation>
     </message>
@@ -4483,7 +4488,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>设置偏移，使事件处显示视频的第一帧或停住的帧</translation>
     </message>
     <message>
-        <location line="+281"/>
+        <location line="+278"/>
         <source>Locate %1</source>
         <translation>定位 %1</translation>
     </message>
@@ -4492,7 +4497,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation type="vanished">将视频提前一帧（Alt+,）</translation>
     </message>
     <message>
-        <location line="-317"/>
+        <location line="-314"/>
         <source>+1 frame</source>
         <translation>+1 帧</translation>
     </message>
@@ -4580,13 +4585,13 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation type="vanished">无法在录制旁记住视频：%1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Add reference video</source>
         <translation>添加参考视频</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+18"/>
+        <location line="+16"/>
         <source>Videos (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;All files (*)</source>
         <translation>视频 (*.mp4 *.mov *.avi *.mkv *.m4v *.webm);;所有文件 (*)</translation>
     </message>
@@ -4619,7 +4624,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::RetargetMapChooser</name>
     <message>
-        <location filename="../widgets/dialogs/retarget_map_chooser.cpp" line="+30"/>
+        <location filename="../widgets/dialogs/retarget_map_chooser.cpp" line="+31"/>
         <source>%1 (shipped)</source>
         <translation>%1（内置）</translation>
     </message>
@@ -4639,7 +4644,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>浏览(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+84"/>
         <source>Retarget map</source>
         <translation>重定向映射</translation>
     </message>
@@ -4786,8 +4791,8 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+33"/>
-        <location line="+54"/>
+        <location filename="../widgets/dialogs/review_export_dialog.cpp" line="+38"/>
+        <location line="+55"/>
         <source>Export Review Video</source>
         <translation>导出审阅视频</translation>
     </message>
@@ -4872,7 +4877,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>%1 已存在。要替换吗？</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>untitled take</source>
         <translation>未命名录制</translation>
     </message>
@@ -4880,13 +4885,13 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::RigExportDialog</name>
     <message>
-        <location filename="../widgets/dialogs/rig_export_dialog.cpp" line="+78"/>
-        <location line="+226"/>
+        <location filename="../widgets/dialogs/rig_export_dialog.cpp" line="+90"/>
+        <location line="+246"/>
         <source>Export Rig</source>
         <translation>导出绑定模型</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-233"/>
         <source>FBX rig with animated blend shapes (.fbx)</source>
         <translation>带动画混合形状的 FBX 绑定模型 (.fbx)</translation>
     </message>
@@ -4986,7 +4991,17 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>权重单位</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+83"/>
+        <source>Retarget section&apos;s: %1, gains edited</source>
+        <translation>重定向区的：%1，增益已编辑</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retarget section&apos;s: %1</source>
+        <translation>重定向区的：%1</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>FBX (*.fbx)</source>
         <translation>FBX (*.fbx)</translation>
     </message>
@@ -5271,7 +5286,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::TakeFileActions</name>
     <message>
-        <location filename="../widgets/actions/take_file_actions.cpp" line="+35"/>
+        <location filename="../widgets/actions/take_file_actions.cpp" line="+36"/>
         <source>Opening %1…</source>
         <translation>正在打开 %1…</translation>
     </message>
@@ -5337,7 +5352,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>C3D (*.c3d);;TRC (*.trc);;CSV (*.csv);;BVH (*.bvh);;FBX 标记点 (*.fbx)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+16"/>
         <source>Cannot export</source>
         <translation>无法导出</translation>
     </message>
@@ -5489,7 +5504,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::WeightCurveView</name>
     <message>
-        <location filename="../widgets/views/weight_curve_view.cpp" line="+42"/>
+        <location filename="../widgets/views/weight_curve_view.cpp" line="+121"/>
         <source>Solve the take to see its weights</source>
         <translation>求解拍摄后即可查看其权重</translation>
     </message>
@@ -5504,7 +5519,12 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>单击曲线（或在面板中选择形状）以选中其形状</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+48"/>
+        <source>Weights through the map %1</source>
+        <translation>经映射 %1 的权重</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Weights</source>
         <translation>权重</translation>
     </message>
@@ -5514,7 +5534,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>标记点残差（%1）</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+89"/>
         <source>%1 · frame %2 · %3</source>
         <translation>%1 · 第 %2 帧 · %3</translation>
     </message>
