@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include "mocap/base/error.h"
+#include "mocap/base/file_io.h"
 #include "mocap/io/c3d_reader.h"
 #include "mocap/io/c3d_writer.h"
 
@@ -334,6 +335,36 @@ TEST(C3dForeignLayout, ResidualWordIsTestedAsAnInteger)
   // 40000 is a 16-bit word with its sign bit set (as 65535 is −1): invalid as the format says. 1e9
   // and NaN are no 16-bit word at all.
   (void)warningWith(read, {"3 sample(s) have a residual word that is no 16-bit integer"});
+}
+
+TEST(C3dForeignLayout, IntegerCoordinatesThatWrapRoundAreReportedAsWrongData)
+{
+  // A real integer file (Intel, scale 0.0833) whose first always-seen marker is made to move
+  // smoothly past 32767 × scale on x, as an ART file's head marker did: the stored words wrap
+  // round and the curve jumps by 65536 × scale, which the reader must not pass off as motion.
+  const std::filesystem::path path = test::dataFile("c3d/sample01/Eb015pi.c3d");
+  std::string bytes = readFileBytes(path);
+  const Read original = parse(bytes);
+  ASSERT_FALSE(original.layout.isFloat);
+  EXPECT_FALSE(anyWarningWith(original, "16-bit range")) << "the file as recorded has no wrap";
+  Eigen::Index marker = 0;
+  while (marker < original.take.markerCount() && !original.take.valid().col(marker).all())
+    ++marker;
+  ASSERT_LT(marker, original.take.markerCount());
+  const std::size_t start = (original.layout.dataStartBlock - 1) * kBlock;
+  for (Eigen::Index f = 0; f < original.take.frameCount(); ++f)  // x word: 32 000 + 10 per frame
+    putWord(bytes, start + static_cast<std::size_t>(f) * original.layout.frameBytes + static_cast<std::size_t>(marker) * 8,
+            static_cast<std::int16_t>(static_cast<std::uint16_t>(32000 + 10 * f)));
+  const Read wrapped = parse(bytes);
+  const std::string& label = original.take.label(marker);
+  // 32 000 + 10 f passes 32 767 after index 76: the jump is between the file's frames 77 and 78.
+  const std::string frames = " x between frames " + std::to_string(original.take.firstFrame() + 76) + " and " +
+                             std::to_string(original.take.firstFrame() + 77);
+  ASSERT_EQ(wrapped.dataLoss.size(), 1u);
+  EXPECT_NE(wrapped.dataLoss.front().find("1 marker(s) jump by over half the 16-bit range"), std::string::npos)
+      << wrapped.dataLoss.front();
+  EXPECT_NE(wrapped.dataLoss.front().find(label + frames), std::string::npos) << wrapped.dataLoss.front();
+  EXPECT_TRUE((wrapped.take.valid() == original.take.valid()).all()) << "reported, not hidden or repaired";
 }
 
 TEST(C3dForeignLayout, FallbackLabelNeverTakesARealLabel)

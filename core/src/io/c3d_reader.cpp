@@ -238,6 +238,8 @@ public:
     Take take = makeTake(layout);
     readC3dPointTypes(m_tree, take);
     decodeData(layout, take);
+    if (!layout.isFloat)
+      warnAboutWrappedIntegers(layout, take);
     readEvents(take);
     take.parameters() = std::move(m_tree);
     loadProvenance(take, m_warnings, m_residualCounts);
@@ -952,6 +954,49 @@ private:
       warn(std::to_string(counts.outOfRange) + " sample(s) have a residual word that is no 16-bit integer " +
            "(NaN, infinite or 65536 and more); read as invalid");
     decodeAnalog(layout, take.analog(), decode);
+  }
+
+  /// Integer storage holds ±32767 × scale: a coordinate past it wraps round, and its trajectory
+  /// jumps by about 65536 × scale between two frames (seen in an ART file). A jump of over half
+  /// that between consecutive valid samples of a marker cannot be motion, so it is reported as
+  /// wrong data, not repaired. Markers only: an angle may wrap by 360° on purpose. O(#samples).
+  void warnAboutWrappedIntegers(const DataLayout& layout, const Take& take)
+  {
+    const double limit = 32768.0 * layout.scale;
+    const auto valid = take.valid();
+    std::size_t markers = 0;
+    std::string example;
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m) {
+      if (take.pointType(m) != PointType::Marker)
+        continue;
+      const auto xyz = take.trajectory(m);
+      for (Eigen::Index f = 1; f < take.frameCount(); ++f) {
+        if (!valid(f - 1, m) || !valid(f, m))
+          continue;
+        const Eigen::Index axis = wrappedAxis(xyz.row(f - 1), xyz.row(f), limit);
+        if (axis < 0)
+          continue;
+        if (markers++ == 0)
+          example = take.label(m) + " " + "xyz"[axis] + " between frames " + std::to_string(take.firstFrame() + f - 1) +
+                    " and " + std::to_string(take.firstFrame() + f) + " (" + numberText(xyz(f - 1, axis)) + " to " + numberText(xyz(f, axis)) +
+                    ")";
+        break;
+      }
+    }
+    if (markers > 0)
+      warnDataLoss(std::to_string(markers) + " marker(s) jump by over half the 16-bit range in one frame, e.g. " +
+                   example + ": integer storage holds ±" + numberText(32767.0 * layout.scale) +
+                   " at POINT:SCALE " + numberText(layout.scale) +
+                   ", so coordinates past it have wrapped round and those samples are wrong");
+  }
+
+  /// The axis on which two consecutive positions differ by more than `limit`, or −1.
+  static Eigen::Index wrappedAxis(const Eigen::RowVector3d& before, const Eigen::RowVector3d& after, double limit)
+  {
+    for (Eigen::Index axis = 0; axis < 3; ++axis)
+      if (std::abs(after(axis) - before(axis)) > limit)
+        return axis;
+    return -1;
   }
 
   static MarkerColumns markerColumns(Take& take, std::size_t marker)
