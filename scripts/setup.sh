@@ -18,10 +18,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-# Never libvtk9-qt-dev: it drags in the Qt 5 stack. ccache and lld only make builds faster: the
+# Never libvtk9-qt-dev: it drags in the Qt 5 stack. ccache, lld and ninja only make builds faster: the
 # build goes on without them (and says so) where they cannot be installed.
 packages=(
-  cmake make g++ clang pkg-config ccache lld
+  cmake make ninja-build g++ clang pkg-config ccache lld
   qt6-base-dev qt6-tools-dev qt6-l10n-tools
   qt6-translations-l10n  # Qt's own texts (OK, Cancel, file dialogs) in the studio's languages
   libvtk9-dev libeigen3-dev libcli11-dev
