@@ -132,7 +132,8 @@ void checkOutput(const SolveArguments& arguments)
 
 void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, const BlendshapeSolver& solver,
                     const Take& take, const BlendshapeSolveResult& result, double loadSeconds,
-                    const std::optional<LeaveOutResult>& quality, const std::optional<KeyCount>& keys)
+                    const std::optional<LeaveOutResult>& quality, const std::optional<KeyCount>& keys,
+                    const std::string& note)
 {
   const ResidualSummary residual = summarize(result.residual);
   const auto frames = static_cast<double>(result.weights.rows());
@@ -190,6 +191,10 @@ void printSolveJson(const SolveArguments& arguments, const BlendshapeRig& rig, c
     json.key("max_error").value(keys->maxError);
     json.endObject();
   }
+  json.key("notes").beginArray();
+  if (!note.empty())
+    json.value(note);
+  json.endArray();
   json.key("output").value(arguments.out);
   json.endObject();
   std::cout << json.str() << '\n';
@@ -217,7 +222,7 @@ int runSolve(const SolveArguments& arguments)
     quality = evaluateBlendshapeLeaveOut(solver, take, arguments.leaveOut);
 
   if (arguments.json) {
-    printSolveJson(arguments, rig, solver, take, result, loadSeconds, quality, keys);
+    printSolveJson(arguments, rig, solver, take, result, loadSeconds, quality, keys, solved.unstabilizedHeadNote());
     return kExitOk;
   }
   const ResidualSummary residual = summarize(result.residual);
@@ -228,6 +233,8 @@ int runSolve(const SolveArguments& arguments)
             << fixedNumber(solver.setupSeconds(), 3) << " s, solve " << fixedNumber(result.solveSeconds, 3)
             << " s\nmarker residual " << fixedNumber(residual.mean, 2) << " mm mean, " << fixedNumber(residual.p95, 2)
             << " mm p95, " << fixedNumber(residual.max, 2) << " mm max\n";
+  if (const std::string note = solved.unstabilizedHeadNote(); !note.empty())
+    std::cout << "note: " << note << '\n';
   if (held > 0)
     std::cout << "warning: " << held << " frames had too few markers and hold the previous frame's weights\n";
   if (quality)

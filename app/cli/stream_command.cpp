@@ -92,6 +92,8 @@ StreamFrames streamFrames(const StreamArguments& arguments)
     frames = streamFramesFromRecording(liveLinkFaceRecordingOfRig(solved.rig->shapeNames(), solved.result.weights,
                                                                   map, solved.take.frameRate(), solved.headRotation()),
                                        solved.take.frameRate(), solved.take.firstFrame());
+    if (const std::string note = solved.unstabilizedHeadNote(); !note.empty())
+      std::cerr << "note: " << note << '\n';  // stdout may be the --json statistics
     take = std::move(solved.take);
   }
   if (arguments.markers) {

@@ -6,6 +6,7 @@
 
 #include "mocap/base/stopwatch.h"
 #include "mocap/cleaning/head_angles.h"
+#include "mocap/cleaning/head_marker_labels.h"
 #include "mocap/deform/actor_profile_io.h"
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/deform/retarget.h"
@@ -15,6 +16,20 @@ namespace mocap::cli {
 Eigen::MatrixXd SolvedTake::headRotation() const
 {
   return motion ? headYawPitchRoll(*motion, solver->retarget().rotation) : Eigen::MatrixXd();
+}
+
+std::string SolvedTake::unstabilizedHeadNote() const
+{
+  if (motion)
+    return {};
+  const std::vector<Eigen::Index> head = labelledHeadMarkers(take);
+  if (head.empty())
+    return {};
+  std::string labels;
+  for (const Eigen::Index m : head)
+    labels += (labels.empty() ? "" : ",") + take.label(m);
+  return "the take names head-mounted markers but --stabilize was not given, so the head's motion was solved as "
+         "expression; to remove it first, add --stabilize " + labels;
 }
 
 SolvedTake solveInputTake(const SolveInput& input, const std::function<void(const BlendshapeRig&)>& checkRig)

@@ -34,6 +34,11 @@ struct SolvedTake
   /// The head's yaw, pitch and roll per frame in the rig's axes (Live Link's head rotation) from
   /// the motion --stabilize removed; empty (zeros) without it. O(#frames).
   [[nodiscard]] Eigen::MatrixXd headRotation() const;
+  /// When the take names head-mounted markers (root…/head…) and --stabilize was not given, a
+  /// sentence saying so and the option to pass: their motion was solved as expression, which
+  /// on a moving head costs tens of millimetres of residual. The CLI guesses nothing, so it only
+  /// says. Else empty. O(#markers).
+  [[nodiscard]] std::string unstabilizedHeadNote() const;
 };
 
 /// Reads the rig, then calls `checkRig` (so a wrong map fails before the take is read or solved),

@@ -206,6 +206,7 @@ TEST(SolveCli, WritesWeightCurvesInBothLayoutsAndTheIssueJsonKeys)
     EXPECT_GE(residual.find(key, "residual")->number(key), 0.0) << key;
   EXPECT_TRUE(json.find("active_shapes", "solve")->isArray());
   EXPECT_EQ(json.find("markers", "solve")->number("markers"), 31.0);
+  EXPECT_TRUE(json.find("notes", "solve")->array("notes").empty()) << "stabilized: nothing to note";
 
   const std::vector<std::string> plain = csvLines(readFileBytes(curves));
   ASSERT_EQ(plain.size(), 3001u);  // header + the take's 3000 frames
@@ -580,6 +581,27 @@ TEST(RigCli, TheBundledIctRigLoadsAndSolvesTheBundledTake)
   EXPECT_LT(leaveOut, 2.2);
   EXPECT_LT(leaveOut, json.find("leave_out", "solve")->find("rest_error_mm", "leave_out")->number("rest"));
   EXPECT_EQ(csvLines(readFileBytes(dir.file("w.csv"))).size(), 3001u);
+}
+
+// The sample names its head-mounted markers root-1…6: a solve without --stabilize says so and
+// names the option to pass (the CLI guesses nothing, so it does not stabilize by itself).
+TEST(SolveCli, WithoutStabilizeOnATakeWithHeadMarkersSaysWhichToPass)
+{
+  test::TempDir dir;
+  writeSmallRig(dir);
+  std::string arguments = solveArguments(dir);
+  arguments.erase(arguments.find(kStabilize));
+  const std::string curves = dir.file("weights.csv").string();
+  const Outcome json = mocap(arguments + " --leave-out 0 -o '" + curves + "' --json", dir);
+  ASSERT_EQ(json.exitCode, 0) << json.err;
+  const JsonValue parsed = parseJson(json.out, "solve --json");
+  const std::vector<JsonValue>& notes = parsed.find("notes", "solve")->array("notes");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].string("note").find("--stabilize root-1,root-2,root-3,root-4,root-5,root-6"), std::string::npos)
+      << notes[0].string("note");
+  const Outcome text = mocap(arguments + " --leave-out 0 -o '" + curves + "'", dir);
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("note: the take names head-mounted markers"), std::string::npos) << text.out;
 }
 
 TEST(SolveCli, WritesTheRigWithItsAnimatedWeightsAsFbx)
