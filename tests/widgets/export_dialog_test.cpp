@@ -260,6 +260,32 @@ TEST(ExportDialog, FbxOfTheMarkersIsWhatConvertWritesWithItsKeysReported)
   EXPECT_EQ(again.format(), AnimationFormat::Fbx);
 }
 
+// Maya and MotionBuilder work in centimetres: the markers are written in the units chosen, as
+// `mocap convert TAKE OUT.fbx --units cm` writes them, the key tolerance staying in millimetres.
+TEST(ExportDialog, FbxInTheUnitsChosenIsWhatConvertWritesWithThoseUnits)
+{
+  Fixture fx;
+  ExportDialog dialog(fx.document);
+  dialog.setFormat(AnimationFormat::Fbx);
+  dialog.setFbxOptions(FbxUpAxis::Z, 0.1);
+  dialog.setMarkerUnits(LengthUnit::Centimetre);
+  dialog.setOutputPath(QString::fromStdString(fx.dir.file("markers_cm.fbx").string()));
+  dialog.setFrameRange(101, 120);
+  ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
+  Take centimetres = sliceFrames(fx.document.take(), 0, 20);
+  ASSERT_EQ(centimetres.units(), LengthUnit::Millimetre);
+  centimetres.convertUnits(LengthUnit::Centimetre);
+  EXPECT_EQ(readFileBytes(fx.dir.file("markers_cm.fbx")), markersFbx(centimetres, FbxUpAxis::Z, FbxCurveKeys{0.1 / millimetresPer(LengthUnit::Centimetre)}));
+  EXPECT_EQ(fx.document.take().units(), LengthUnit::Millimetre) << "the take itself is not converted";
+  dialog.setMarkerUnits(std::nullopt);  // the take's own units write what the take holds
+  dialog.setOutputPath(QString::fromStdString(fx.dir.file("markers_mm.fbx").string()));
+  ASSERT_TRUE(dialog.startExport()) << dialog.statusText().toStdString();
+  ASSERT_TRUE(test::waitForJob(dialog.jobs()));
+  EXPECT_EQ(readFileBytes(fx.dir.file("markers_mm.fbx")),
+            markersFbx(sliceFrames(fx.document.take(), 0, 20), FbxUpAxis::Z, FbxCurveKeys{0.1}));
+}
+
 TEST(ExportDialog, RemembersTheLastFolderAndFormat)
 {
   Fixture fx;

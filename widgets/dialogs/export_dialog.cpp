@@ -37,6 +37,7 @@ namespace {
 
 const QString kGroup = QStringLiteral("export/");  // the folder is "export/folder"
 constexpr double kDefaultReduceMm = 0.1;
+constexpr int kTakeUnits = -1;  // the units combo's "as the take" entry
 
 /// The dialog's remembered choices, typed ("export/…").
 struct ExportSettings
@@ -45,6 +46,8 @@ struct ExportSettings
   SessionOption<int> fbxUp{kGroup + QStringLiteral("fbxUp"), static_cast<int>(FbxUpAxis::Z)};
   SessionOption<bool> fbxReduce{kGroup + QStringLiteral("fbxReduce"), false};
   SessionOption<double> fbxReduceMm{kGroup + QStringLiteral("fbxReduceMm"), kDefaultReduceMm};
+  /// BVH and FBX: the LengthUnit the markers are written in, or -1 for the take's own.
+  SessionOption<int> markerUnits{kGroup + QStringLiteral("markerUnits"), kTakeUnits};
 };
 
 // The output file's extension for `format`; an OBJ sequence is a folder, which has none.
@@ -107,6 +110,12 @@ void ExportDialog::buildLayout()
   auto* fbxLabel = new QLabel(tr("FB&X:"), this);
   form->addRow(fbxLabel, buildFbxRow());
   fbxLabel->setBuddy(m_up);
+  m_units = new QComboBox(this);
+  m_units->setToolTip(tr("The units of the markers' positions in the file (as mocap convert --units): Maya and "
+                         "MotionBuilder work in centimetres, Blender, Unreal and Unity read the declared units"));
+  auto* unitsLabel = new QLabel(tr("&Units:"), this);
+  unitsLabel->setBuddy(m_units);
+  form->addRow(unitsLabel, m_units);
 
   auto* pathRow = new QHBoxLayout;
   m_path = new QLineEdit(this);
@@ -186,6 +195,23 @@ QLayout* ExportDialog::buildFbxRow()
   return row;
 }
 
+void ExportDialog::fillUnits(LengthUnit takeUnits)
+{
+  const auto name = [](LengthUnit unit) {
+    const std::string_view text = unitName(unit);
+    return QString::fromUtf8(text.data(), static_cast<int>(text.size()));
+  };
+  m_units->clear();
+  m_units->addItem(tr("As the take (%1)").arg(name(takeUnits)), kTakeUnits);
+  for (const LengthUnit unit : {LengthUnit::Millimetre, LengthUnit::Centimetre, LengthUnit::Metre})
+    m_units->addItem(name(unit), static_cast<int>(unit));
+}
+
+void ExportDialog::setMarkerUnits(std::optional<LengthUnit> units)
+{
+  m_units->setCurrentIndex(std::max(0, m_units->findData(units ? static_cast<int>(*units) : kTakeUnits)));
+}
+
 void ExportDialog::setFbxOptions(FbxUpAxis up, std::optional<double> reduceMm)
 {
   m_up->setCurrentIndex(m_up->findData(static_cast<int>(up)));
@@ -225,6 +251,8 @@ void ExportDialog::restoreSettings()
   const bool known = remembered >= 0 && remembered <= static_cast<int>(AnimationFormat::Fbx);
   m_rememberedFormat = known ? static_cast<AnimationFormat>(remembered) : AnimationFormat::Bvh;
   m_up->setCurrentIndex(std::max(0, m_up->findData(settings.fbxUp.get())));
+  fillUnits(take.units());
+  m_units->setCurrentIndex(std::max(0, m_units->findData(settings.markerUnits.get())));
   m_reduce->setChecked(settings.fbxReduce);
   m_reduceMm->setValue(settings.fbxReduceMm);
   setFormat(m_rememberedFormat);
@@ -366,6 +394,7 @@ void ExportDialog::onFormatChanged()
   if (!m_path->text().isEmpty())
     m_path->setText(pathForFormat(m_path->text(), format()));
   const bool fbx = format() == AnimationFormat::Fbx;
+  m_units->setEnabled(markerFormat(format()));
   m_up->setEnabled(fbx);
   m_reduce->setEnabled(fbx);
   m_reduceMm->setEnabled(fbx && m_reduce->isChecked());
@@ -415,6 +444,8 @@ AnimationExportJob ExportDialog::makeJob() const
   job.startFrame = static_cast<float>(m_first->value());
   if (markerFormat(job.format)) {
     job.markers = sliceFrames(take, job.begin, job.end);
+    if (const int unit = m_units->currentData().toInt(); unit != kTakeUnits)
+      job.markers.convertUnits(static_cast<LengthUnit>(unit));
     job.up = static_cast<FbxUpAxis>(m_up->currentData().toInt());
     if (m_reduce->isChecked())
       job.reduceMm = m_reduceMm->value();
@@ -450,6 +481,7 @@ bool ExportDialog::startExport()
   rememberFolder(kGroup, output.filePath());
   settings.format = static_cast<int>(job.format);
   settings.fbxUp = m_up->currentData().toInt();
+  settings.markerUnits = m_units->currentData().toInt();
   settings.fbxReduce = m_reduce->isChecked();
   settings.fbxReduceMm = m_reduceMm->value();
   m_rememberedFormat = job.format;
@@ -533,7 +565,7 @@ void ExportDialog::setRunning(bool running)
   if (!running)
     onFormatChanged();  // the FBX options as the format allows
   else
-    for (QWidget* input : std::initializer_list<QWidget*>{m_up, m_reduce, m_reduceMm})
+    for (QWidget* input : std::initializer_list<QWidget*>{m_up, m_units, m_reduce, m_reduceMm})
       input->setEnabled(false);
   m_cancel->setText(running ? tr("Cancel") : tr("Close"));
 }

@@ -52,6 +52,8 @@ public:
   void setFrameRange(qint64 first, qint64 last);
   /// FBX: the up axis declared, and the key tolerance in mm (nullopt: every frame a key).
   void setFbxOptions(FbxUpAxis up, std::optional<double> reduceMm);
+  /// BVH, FBX: the units the markers are written in (nullopt: the take's own).
+  void setMarkerUnits(std::optional<LengthUnit> units);
   [[nodiscard]] qint64 firstFrame() const;
   [[nodiscard]] qint64 lastFrame() const;
   /// What the Range box offers: the whole take (the default), the range selected on the curves
@@ -86,6 +88,7 @@ signals:
 private:
   void buildLayout();
   QLayout* buildFbxRow();
+  void fillUnits(LengthUnit takeUnits);
   void restoreSettings();
   void browse();
   void onFormatChanged();
@@ -111,6 +114,7 @@ private:
   QLineEdit* m_path = nullptr;
   QPushButton* m_browse = nullptr;
   QComboBox* m_up = nullptr;
+  QComboBox* m_units = nullptr;  ///< the markers' units in the file: the take's own (-1), or mm, cm, m
   QCheckBox* m_reduce = nullptr;
   QDoubleSpinBox* m_reduceMm = nullptr;
   QComboBox* m_range = nullptr;
