@@ -417,14 +417,16 @@ bool MainWindow::offerRecovery()
       });
   if (!recovered)
     return false;
-  if (m_session->faceMesh().hasMesh())
+  if (m_session->faceMesh().hasMesh()) {
     m_faceMeshDock->show();
+    m_session->view().resetCamera();  // frame the mesh and rig with the markers, as on loading them
+  }
   // What could not be restored is said, not asked about: the take's edits are back either way.
-  statusBar()->showMessage(recovered->problems.isEmpty()
-                               ? tr("Recovered unsaved edits of %1; save them to keep them").arg(recovered->name)
-                               : tr("Recovered unsaved edits of %1; not restored: %2")
-                                     .arg(recovered->name, QString(recovered->problems).replace(QLatin1Char('\n'), QStringLiteral("; "))),
-                           2 * ui::kStatusMessageMs);
+  const QString problems = QString(recovered->problems).replace(QLatin1Char('\n'), QStringLiteral("; "));
+  statusBar()->showMessage(
+      problems.isEmpty() ? tr("Recovered unsaved edits of %1; save them to keep them").arg(recovered->name)
+                         : tr("Recovered unsaved edits of %1; not restored: %2").arg(recovered->name, problems),
+      2 * ui::kStatusMessageMs);
   return true;
 }
 

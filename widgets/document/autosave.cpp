@@ -35,7 +35,7 @@ QString statePath(const QString& recoveryPath)
 }
 
 // The recovery take and the session state beside it, on any thread; an error message or "".
-// The state goes first: a take on disk never lacks the state written with it.
+// The state goes first, so the take on disk is never newer than the state beside it.
 QString writeRecovery(const Take& take, const std::optional<SessionState>& state, const QString& path)
 {
   try {

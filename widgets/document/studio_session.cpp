@@ -146,6 +146,13 @@ QString StudioSession::restoreState(const SessionState& state)
       problems << tr("the binding: %1").arg(m_faceMesh->error());
   }
   restoreCurves(state, problems);
+  if (m_blendshapes->hasRig()) {
+    std::vector<Eigen::Index> shapes;
+    for (const Eigen::Index shape : state.selectedShapes)
+      if (shape >= 0 && shape < m_blendshapes->rig()->shapeCount())
+        shapes.push_back(shape);
+    m_blendshapes->setSelectedShapes(std::move(shapes));
+  }
   restoreVideos(state, problems);
   if (state.layoutPlan)
     m_layoutPlan->setResult(state.layoutPlan, state.layoutSize);
@@ -174,11 +181,6 @@ void StudioSession::restoreCurves(const SessionState& state, QStringList& proble
   } else {
     (void)m_blendshapes->setResult(state.curves, state.solvedWith);
   }
-  std::vector<Eigen::Index> shapes;
-  for (const Eigen::Index shape : state.selectedShapes)
-    if (shape >= 0 && shape < m_blendshapes->rig()->shapeCount())
-      shapes.push_back(shape);
-  m_blendshapes->setSelectedShapes(std::move(shapes));
 }
 
 void StudioSession::restoreVideos(const SessionState& state, QStringList& problems)

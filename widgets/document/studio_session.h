@@ -95,7 +95,7 @@ private:
   /// First on a new take: the previous take's context goes (kept aside when keepRig()).
   void dropPreviousTake();
   void followReferenceMarkers();
-  /// restoreState's weight curves (with the selected shapes) and reference videos.
+  /// restoreState's weight curves and reference videos.
   void restoreCurves(const SessionState& state, QStringList& problems);
   void restoreVideos(const SessionState& state, QStringList& problems);
   /// Last on a new take, once the models have it: the kept rig bound to its labels.
