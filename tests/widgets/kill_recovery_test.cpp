@@ -41,6 +41,7 @@
 #include <QMessageBox>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTest>
@@ -211,6 +212,7 @@ TEST(KillAndRecover, EveryPartOfTheSessionComesBackAfterTheStudioIsKilled)
     return;  // only after a failure: the parent then finds no facts
   }
   test::TempDir dir;
+  QSettings().clear();  // the child reads the same settings: the defaults, as a first run
   QDir(ui::Autosave::defaultFolder()).removeRecursively();
   QProcess child;
   const QJsonObject before = startStudioAndWaitForAutosave(child, test::qpath(dir.path()));
