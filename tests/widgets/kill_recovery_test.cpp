@@ -23,6 +23,7 @@
 #include "panels/blendshape_solve_panel.h"
 #include "panels/cleaning_panel.h"
 #include "panels/layout_planning_panel.h"
+#include "sample_window.h"
 #include "views/layout_error_plot.h"
 #include "views/vtk_viewport.h"
 
@@ -116,7 +117,7 @@ QJsonObject sessionFacts(studio::MainWindow& window)
   facts[QStringLiteral("videoOpen")] = video && video->isOpen();
   facts[QStringLiteral("layoutSize")] = static_cast<qint64>(session.layoutPlan().selectedSize());
   facts[QStringLiteral("layoutLabels")] = jsonLabels(session.layoutPlan().selectedLabels());
-  const LayoutPlanResult* plan = session.layoutPlan().result();
+  const ui::LayoutPlanResult* plan = session.layoutPlan().result();
   facts[QStringLiteral("layoutSizes")] = plan ? static_cast<int>(plan->plan.sizes.size()) : 0;
   return facts;
 }

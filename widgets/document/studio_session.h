@@ -4,10 +4,10 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 
-class QStringList;
 class QUndoStack;
 
 namespace mocap::ui {
