@@ -103,8 +103,9 @@ QJsonObject sessionFacts(studio::MainWindow& window)
   facts[QStringLiteral("rig")] = weights.rigPath();
   facts[QStringLiteral("frames")] = static_cast<qint64>(weights.weights().rows());
   facts[QStringLiteral("weightSum")] = weights.weights().sum();
-  facts[QStringLiteral("editedWeight")] =
-      weights.hasResult() ? weights.weights()(kEditFirst + 50, kEditedShape) : -1.0;
+  facts[QStringLiteral("editedCurveSum")] =  // the edited shape over the edited range
+      weights.hasResult() ? weights.weights().col(kEditedShape).segment(kEditFirst, kEditLast - kEditFirst + 1).sum()
+                          : -1.0;
   facts[QStringLiteral("lambda")] = weights.result().lambda;
   facts[QStringLiteral("method")] = static_cast<int>(weights.solvedWith().method);
   QJsonArray selected;
@@ -239,6 +240,7 @@ TEST(KillAndRecover, EveryPartOfTheSessionComesBackAfterTheStudioIsKilled)
   EXPECT_GT(before[QStringLiteral("frames")].toInteger(), 0);
   EXPECT_TRUE(before[QStringLiteral("videoOpen")].toBool());
   EXPECT_GE(before[QStringLiteral("layoutSizes")].toInt(), 2);
+  EXPECT_GT(before[QStringLiteral("editedCurveSum")].toDouble(), 0.0) << "the edit halved a curve that moves there";
   for (auto it = before.begin(); it != before.end(); ++it)
     EXPECT_EQ(after.value(it.key()), it.value()) << it.key().toStdString() << " did not come back";
   EXPECT_EQ(window->statusBar()->currentMessage().contains(QStringLiteral("not restored")), false)
