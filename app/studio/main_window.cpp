@@ -77,6 +77,10 @@
 
 namespace mocap::studio {
 
+namespace {
+const QString kWindowStateKey = QStringLiteral("windowState");  // in the recovery description
+} // namespace
+
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_session(new ui::StudioSession(this)), m_document(&m_session->document())
 {
@@ -130,7 +134,9 @@ MainWindow::MainWindow(QWidget* parent)
   connect(m_autosave, &ui::Autosave::failed, this, [this](const QString& message) {
     statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 2 * ui::kStatusMessageMs);
   });
-  m_autosave->setSessionProvider([this] { return recoverySession(); });
+  // The session's state goes with the take; the window adds its layout.
+  m_autosave->setStateProvider([this] { return m_session->saveState(); });
+  m_autosave->setSessionProvider([this] { return QVariantMap{{kWindowStateKey, saveState()}}; });
   m_session->options().autosaveMinutes.follow(m_autosave,
                                               [this](int minutes) { m_autosave->setInterval(minutes * 60 * 1000); });
   readSettings();
@@ -404,32 +410,24 @@ void MainWindow::updateTitle()
 
 bool MainWindow::offerRecovery()
 {
-  const std::optional<QString> name = ui::offerRecovery(*m_document, *m_autosave, *this, [this](const QVariantMap& session) {
-    m_files->forgetOverwriteConfirmation();
-    restoreSession(session);
-  });
-  if (name)
-    statusBar()->showMessage(tr("Recovered unsaved edits of %1; save them to keep them").arg(*name), 2 * ui::kStatusMessageMs);
-  return name.has_value();
-}
-
-QVariantMap MainWindow::recoverySession() const
-{
-  QVariantMap session = m_session->recoveryState();
-  session.insert(QStringLiteral("windowState"), saveState());
-  return session;
-}
-
-void MainWindow::restoreSession(const QVariantMap& session)
-{
-  restoreState(session.value(QStringLiteral("windowState")).toByteArray());
-  if (session.value(QStringLiteral("mesh")).toString().isEmpty())
-    return;
-  const QString error = m_session->restoreRecoveryState(session);
-  m_faceMeshDock->show();
-  if (!error.isEmpty())
-    statusBar()->showMessage(tr("The face mesh of the recovered session could not be restored: %1").arg(error),
-                             2 * ui::kStatusMessageMs);
+  const std::optional<ui::RecoveredTake> recovered =
+      ui::offerRecovery(*m_session, *m_autosave, *this, [this](const QVariantMap& window) {
+        m_files->forgetOverwriteConfirmation();
+        restoreState(window.value(kWindowStateKey).toByteArray());
+      });
+  if (!recovered)
+    return false;
+  if (m_session->faceMesh().hasMesh()) {
+    m_faceMeshDock->show();
+    m_session->view().resetCamera();  // frame the mesh and rig with the markers, as on loading them
+  }
+  // What could not be restored is said, not asked about: the take's edits are back either way.
+  const QString problems = QString(recovered->problems).replace(QLatin1Char('\n'), QStringLiteral("; "));
+  statusBar()->showMessage(
+      problems.isEmpty() ? tr("Recovered unsaved edits of %1; save them to keep them").arg(recovered->name)
+                         : tr("Recovered unsaved edits of %1; not restored: %2").arg(recovered->name, problems),
+      2 * ui::kStatusMessageMs);
+  return true;
 }
 
 bool MainWindow::showDock(const QString& name)

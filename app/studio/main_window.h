@@ -123,9 +123,6 @@ private:
   void createDocks();
   /// The 3D view with the head markers bar above it.
   [[nodiscard]] QWidget* centralArea();
-  /// The face mesh, its binding and the window layout, kept with every autosave.
-  [[nodiscard]] QVariantMap recoverySession() const;
-  void restoreSession(const QVariantMap& session);
   void updateTitle();
   void readSettings();
   void writeSettings() const;

@@ -1,19 +1,25 @@
 // The session's models without a window (issue 31): the take's reference videos with their
 // sidecar, and the layout plan with its highlight, owned by a StudioSession alone (no MainWindow,
-// no dock): what the Reference Video and Layout planning docks only show.
+// no dock): what the Reference Video and Layout planning docks only show; and the session's state
+// (what crash recovery keeps beside the take) saved, encoded and restored into a new session.
 #include "../core/coded_video.h"
 #include "../core/test_support.h"
 #include "sample_files.h"
 
+#include "checkout_paths.h"
+#include "commands/edit_weights_command.h"
 #include "commands/remove_markers_command.h"
+#include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/layout_plan_model.h"
 #include "document/reference_video.h"
 #include "document/reference_videos.h"
 #include "document/studio_session.h"
 #include "document/session_files.h"
+#include "document/session_state.h"
 #include "document/take_document.h"
 
+#include "mocap/base/error.h"
 #include "mocap/io/take_io.h"
 #include "mocap/video/reference_video_sidecar.h"
 
@@ -123,30 +129,76 @@ TEST(SessionLayoutPlan, HighlightsThePickedLayoutOnTheOpenTakeByLabel)
   EXPECT_EQ(plan.highlight().kept, (std::vector<bool>{true, false, true, false}));
 }
 
-TEST(SessionRecovery, RestoresTheFaceMeshAndItsBindingStraightFromTheState)
+/// The sample (copied to `take`, so a video sidecar goes beside the copy) solved to the bundled ICT
+/// rig through its binding, as `mocap review --solve` loads it.
+void loadSolvedSample(ui::StudioSession& session, const std::filesystem::path& take)
 {
+  std::filesystem::copy_file(test::sampleTake(), take);
   ui::SessionFiles files;
-  files.take = QString::fromStdString(test::sampleTake().string());
-  files.mesh = test::sampleMesh();
-  files.binding = test::sampleBinding();
-  ui::StudioSession crashed;
-  ASSERT_EQ(ui::loadSessionFiles(crashed, files), QString());
-  const ui::FaceMeshModel& before = crashed.faceMesh();
-  ASSERT_NE(before.rig(), nullptr);
-  const QVariantMap state = crashed.recoveryState();
+  files.take = QString::fromStdString(take.string());
+  files.rig = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/ict_face_rig.glb");
+  files.binding = QString::fromUtf8(checkout::sampleDir()) + QStringLiteral("/Facial-Sing.ict_face_rig.binding.json");
+  files.solve = true;
+  ASSERT_EQ(ui::loadSessionFiles(session, files), QString());
+  ASSERT_TRUE(session.blendshapes().hasResult());
+}
 
+TEST(SessionRecovery, RestoresEveryPartOfTheSessionStraightFromItsState)
+{
+  test::TempDir dir;
+  ASSERT_TRUE(test::writeCodedVideo(dir.file("hmc.avi"), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, 50, 96, 64));
+  ui::StudioSession crashed;
+  ASSERT_NO_FATAL_FAILURE(loadSolvedSample(crashed, dir.file("take.c3d")));
+  ui::BlendshapeSolveModel& weights = crashed.blendshapes();
+  // A weight edit (undoable, on the one stack) and a picked shape: the edited curve is what comes back.
+  crashed.undoStack()->push(new ui::EditWeightsCommand(weights, QStringLiteral("Scale"), {3}, 100,
+                                                       Eigen::MatrixXd::Constant(20, 1, 0.625)));
+  weights.setSelectedShapes({3, 7});
+  ASSERT_EQ(crashed.referenceVideos().open(sessionModelsPath(dir.file("hmc.avi"))), QString());
+  crashed.referenceVideos().current()->setOffset(0.52);
+  crashed.layoutPlan().setResult(twoMarkerPlan(), 2);
+
+  const QByteArray bytes = ui::encodeSessionState(crashed.saveState());
+  const ui::SessionState state = ui::decodeSessionState(bytes, "state");
   ui::StudioSession recovered;
   recovered.document().setTake(crashed.document().take());
-  EXPECT_TRUE(recovered.recoveryState().isEmpty()) << "no face mesh, nothing to keep";
-  ASSERT_EQ(recovered.restoreRecoveryState(state), QString());
-  const ui::FaceMeshModel& after = recovered.faceMesh();
-  EXPECT_EQ(after.meshPath(), before.meshPath());
-  ASSERT_EQ(after.binding().markers.size(), before.binding().markers.size());
-  EXPECT_EQ(after.binding().markers.front().label, before.binding().markers.front().label);
-  EXPECT_NE(after.rig(), nullptr);
-  QVariantMap broken = state;
-  broken.insert(QStringLiteral("binding"), QStringLiteral("{"));
-  EXPECT_FALSE(recovered.restoreRecoveryState(broken).isEmpty()) << "a damaged binding is said, not a crash";
+  EXPECT_TRUE(recovered.saveState().rigPath.isEmpty()) << "a new take starts without the rig";
+  ASSERT_EQ(recovered.restoreState(state), QString());
+
+  EXPECT_EQ(recovered.faceMesh().meshPath(), crashed.faceMesh().meshPath());
+  ASSERT_EQ(recovered.faceMesh().binding().markers.size(), crashed.faceMesh().binding().markers.size());
+  EXPECT_EQ(recovered.faceMesh().binding().markers.front().label, crashed.faceMesh().binding().markers.front().label);
+  EXPECT_NE(recovered.faceMesh().rig(), nullptr) << recovered.faceMesh().error().toStdString();
+  const ui::BlendshapeSolveModel& back = recovered.blendshapes();
+  EXPECT_EQ(back.rigPath(), weights.rigPath());
+  ASSERT_TRUE(back.hasResult());
+  EXPECT_EQ(back.weights(), weights.weights()) << "every curve as it was, edits included";
+  EXPECT_DOUBLE_EQ(back.weights()(110, 3), 0.625);
+  EXPECT_EQ(back.result().held, weights.result().held);
+  EXPECT_EQ(back.solvedWith().method, weights.solvedWith().method);
+  EXPECT_EQ(back.solvedWith().neutralFrame, weights.solvedWith().neutralFrame);
+  EXPECT_DOUBLE_EQ(back.result().lambda, weights.result().lambda);
+  EXPECT_EQ(back.selectedShapes(), (std::vector<Eigen::Index>{3, 7}));
+  ASSERT_EQ(recovered.referenceVideos().count(), 1);
+  EXPECT_EQ(recovered.referenceVideos().at(0).path(), sessionModelsPath(dir.file("hmc.avi")));
+  EXPECT_DOUBLE_EQ(recovered.referenceVideos().at(0).offset(), 0.52);
+  ASSERT_NE(recovered.layoutPlan().result(), nullptr);
+  EXPECT_EQ(recovered.layoutPlan().selectedSize(), 2);
+  EXPECT_EQ(recovered.layoutPlan().captureLabels(), crashed.layoutPlan().captureLabels());
+
+  // Damage is said, never a crash: cut bytes, foreign bytes, a rig file gone.
+  EXPECT_THROW((void)ui::decodeSessionState(bytes.left(bytes.size() / 2), "cut"), FormatError);
+  EXPECT_THROW((void)ui::decodeSessionState(QByteArray(64, '\x7f'), "foreign"), FormatError);
+  ui::SessionState gone = state;
+  gone.rigPath = sessionModelsPath(dir.file("moved.glb"));
+  gone.meshPath = gone.rigPath;
+  ui::StudioSession partly;
+  partly.document().setTake(crashed.document().take());
+  const QString problems = partly.restoreState(gone);
+  EXPECT_TRUE(problems.contains(QStringLiteral("moved.glb"))) << problems.toStdString();
+  EXPECT_FALSE(partly.blendshapes().hasResult()) << "no curves without their rig";
+  EXPECT_EQ(partly.referenceVideos().count(), 1) << "what can be restored still is";
+  EXPECT_NE(partly.layoutPlan().result(), nullptr);
 }
 
 } // namespace

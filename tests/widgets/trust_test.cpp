@@ -139,8 +139,9 @@ TEST_F(Trust, RecoveryKeepsStatesHistoryLayoutAndFaceMesh)
   TakeDocument document;
   ASSERT_EQ(document.open(qpath(test::sampleTake())), QString());
   ui::Autosave autosave(document, qpath(dir.path()));
-  QVariantMap session{{QStringLiteral("mesh"), QStringLiteral("/somewhere/face.obj")}};
-  autosave.setSessionProvider([&session] { return session; });
+  ui::SessionState session;
+  session.meshPath = QStringLiteral("/somewhere/face.obj");
+  autosave.setStateProvider([&session] { return session; });
   const Eigen::Index samples = fillShortGaps(document);
   autosave.saveInBackground();  // the timer's path: written on a worker thread
   autosave.waitForWrite();
@@ -153,9 +154,14 @@ TEST_F(Trust, RecoveryKeepsStatesHistoryLayoutAndFaceMesh)
   const QString dead = qpath(dir.file("take-2147480001.c3d"));
   ASSERT_TRUE(QFile::copy(autosave.recoveryPath(), dead));
   ASSERT_TRUE(QFile::copy(autosave.recoveryPath() + ".ini", dead + ".ini"));
+  ASSERT_TRUE(QFile::copy(autosave.recoveryPath() + ".session", dead + ".session"));
   const auto leftovers = ui::Autosave::leftovers(qpath(dir.path()));
   ASSERT_EQ(leftovers.size(), 1u);
-  EXPECT_EQ(leftovers.front().session.value(QStringLiteral("mesh")).toString(), QStringLiteral("/somewhere/face.obj"));
+  const std::optional<ui::SessionState> kept = ui::Autosave::readState(leftovers.front());
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_EQ(kept->meshPath, QStringLiteral("/somewhere/face.obj"));
+  ui::Autosave::remove(leftovers.front());
+  EXPECT_FALSE(QFile::exists(dead + ".session")) << "the state goes with its take";
 }
 
 TEST_F(Trust, TheStudioRecoversTheFaceMeshAndBinding)
@@ -174,6 +180,7 @@ TEST_F(Trust, TheStudioRecoversTheFaceMeshAndBinding)
     const QString dead = folder + QStringLiteral("/take-2147480002.c3d");
     ASSERT_TRUE(QFile::copy(window->autosave()->recoveryPath(), dead));
     ASSERT_TRUE(QFile::copy(window->autosave()->recoveryPath() + ".ini", dead + ".ini"));
+    ASSERT_TRUE(QFile::copy(window->autosave()->recoveryPath() + ".session", dead + ".session"));
     window->document().undoStack()->setClean();  // close without asking
   }
   auto window = showWindow();

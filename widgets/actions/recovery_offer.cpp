@@ -1,6 +1,7 @@
 #include "actions/recovery_offer.h"
 
 #include "document/autosave.h"
+#include "document/studio_session.h"
 #include "document/take_document.h"
 
 #include "mocap/io/take_io.h"
@@ -18,9 +19,25 @@ class RecoveryOffer
   Q_DECLARE_TR_FUNCTIONS(RecoveryOffer)
 };
 
-std::optional<QString> offerRecovery(TakeDocument& document, Autosave& autosave, QWidget& dialogParent,
-                                     const std::function<void(const QVariantMap&)>& restore)
+namespace {
+
+/// The session state kept beside `file` restored onto the recovered take: "" or what was not.
+QString restoreKeptState(StudioSession& session, const RecoveryFile& file)
 {
+  try {
+    const std::optional<SessionState> state = Autosave::readState(file);
+    return state ? session.restoreState(*state) : QString();
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
+}
+
+} // namespace
+
+std::optional<RecoveredTake> offerRecovery(StudioSession& session, Autosave& autosave, QWidget& dialogParent,
+                                           const std::function<void(const QVariantMap&)>& restoreWindow)
+{
+  TakeDocument& document = session.document();
   for (const RecoveryFile& file : Autosave::leftovers()) {
     const QString name = file.originalPath.isEmpty() ? RecoveryOffer::tr("an untitled take") : QFileInfo(file.originalPath).fileName();
     const auto answer = QMessageBox::question(
@@ -41,11 +58,12 @@ std::optional<QString> offerRecovery(TakeDocument& document, Autosave& autosave,
       continue;
     }
     document.markModified();
-    restore(file.session);
+    RecoveredTake recovered{name, restoreKeptState(session, file)};
+    restoreWindow(file.session);
     // Our own recovery copy first, then the old one goes: the edits are never only in memory.
     if (autosave.saveNow().isEmpty())
       Autosave::remove(file);
-    return name;
+    return recovered;
   }
   return std::nullopt;
 }

@@ -10,6 +10,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 
+#include "mocap/base/file_io.h"
 #include "mocap/io/take_io.h"
 
 #include <algorithm>
@@ -25,6 +26,28 @@ constexpr int kDefaultIntervalMs = 60 * 1000;
 QString descriptionPath(const QString& recoveryPath)
 {
   return recoveryPath + QStringLiteral(".ini");
+}
+
+// The session's state beside the recovery take.
+QString statePath(const QString& recoveryPath)
+{
+  return recoveryPath + QStringLiteral(".session");
+}
+
+// The recovery take and the session state beside it, on any thread; an error message or "".
+// The state goes first, so the take on disk is never newer than the state beside it.
+QString writeRecovery(const Take& take, const std::optional<SessionState>& state, const QString& path)
+{
+  try {
+    if (state)
+      writeFileAtomically(statePath(path).toStdString(), encodeSessionState(*state).toStdString());
+    else
+      QFile::remove(statePath(path));
+    writeTake(take, path.toStdString());
+    return {};
+  } catch (const std::exception& e) {
+    return QString::fromStdString(e.what());
+  }
 }
 
 // Whether the process that writes `fileName` (take-PID.c3d) still runs, so its file is not a
@@ -99,7 +122,8 @@ QString Autosave::saveNow()
     return {};
   if (const QString error = prepare(); !error.isEmpty())
     return error;
-  return m_document.save(recoveryPath(), false);
+  return writeRecovery(m_document.take(), m_state ? std::optional<SessionState>(m_state()) : std::nullopt,
+                       recoveryPath());
 }
 
 void Autosave::saveInBackground()
@@ -110,17 +134,11 @@ void Autosave::saveInBackground()
     emit failed(error);
     return;
   }
-  // The copy is the only work on the UI thread (a memory copy of the samples); encoding and the
-  // atomic write happen on the worker.
+  // The copies are the only work on the UI thread (the samples, the session's weights); encoding
+  // and the atomic writes happen on the worker.
   m_write->start(
-      [take = m_document.take(), path = recoveryPath()](const JobControl&) -> QString {
-        try {
-          writeTake(take, path.toStdString());
-          return {};
-        } catch (const std::exception& e) {
-          return QString::fromStdString(e.what());
-        }
-      },
+      [take = m_document.take(), state = m_state ? std::optional<SessionState>(m_state()) : std::nullopt,
+       path = recoveryPath()](const JobControl&) { return writeRecovery(take, state, path); },
       [this](const QString& error) { onWriteFinished(error); });
 }
 
@@ -144,6 +162,7 @@ void Autosave::discard()
   waitForWrite();
   QFile::remove(recoveryPath());
   QFile::remove(descriptionPath(recoveryPath()));
+  QFile::remove(statePath(recoveryPath()));
 }
 
 std::vector<RecoveryFile> Autosave::leftovers(QString folder)
@@ -163,6 +182,8 @@ std::vector<RecoveryFile> Autosave::leftovers(QString folder)
     for (const QString& key : description.allKeys())
       if (key.startsWith(QStringLiteral("session/")))
         file.session.insert(key.mid(8), description.value(key));
+    if (QFileInfo::exists(statePath(file.path)))
+      file.statePath = statePath(file.path);
     files.push_back(std::move(file));
   }
   std::sort(files.begin(), files.end(),
@@ -174,6 +195,15 @@ void Autosave::remove(const RecoveryFile& file)
 {
   QFile::remove(file.path);
   QFile::remove(descriptionPath(file.path));
+  QFile::remove(statePath(file.path));
+}
+
+std::optional<SessionState> Autosave::readState(const RecoveryFile& file)
+{
+  if (file.statePath.isEmpty())
+    return std::nullopt;
+  const std::string path = file.statePath.toStdString();
+  return decodeSessionState(QByteArray::fromStdString(readFileBytes(path)), path);
 }
 
 } // namespace mocap::ui

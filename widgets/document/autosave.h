@@ -1,5 +1,7 @@
 #pragma once
 
+#include "document/session_state.h"
+
 #include <QDateTime>
 #include <QObject>
 #include <QString>
@@ -7,6 +9,7 @@
 #include <QVariantMap>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace mocap::ui {
@@ -21,16 +24,20 @@ struct RecoveryFile
   QString path;          ///< the recovery C3D
   QString originalPath;  ///< the file the edits were made to (empty for an untitled take)
   QDateTime written;
-  /// What the session provider gave at the time (face mesh, binding, window layout).
+  /// What the session provider gave at the time (the window layout).
   QVariantMap session;
+  /// The session's state beside the take (Autosave::readState reads it); "" when none was written.
+  QString statePath;
 };
 
 /// Writes the open take to a recovery file every `interval` while it has unsaved edits, so a
 /// crash loses at most that much work, and removes the file once the take is saved, replaced or
 /// closed cleanly. Writes are atomic (a crash during autosave leaves the previous recovery file).
 /// One recovery file per process, in `folder` (the per-user application data folder by default).
-/// The timer's writes run on a worker thread on a copy of the take (the C3D keeps sample states
-/// and history); the description beside it also keeps what setSessionProvider() supplies.
+/// The timer's writes run on a worker thread on a copy of the take (the C3D keeps sample states,
+/// history and the head reference markers) and of the session's state (setStateProvider: face
+/// mesh, binding, rig and weights, videos, layout plan), written beside it; the description beside
+/// them keeps what setSessionProvider() supplies.
 class Autosave final : public QObject
 {
   Q_OBJECT
@@ -54,16 +61,22 @@ public:
   /// Blocks until a background write has finished and handles its outcome at once (no event
   /// loop). Before a write or removal of the recovery file, and at shutdown.
   void waitForWrite();
-  /// State besides the take that a recovery must bring back (the face mesh and its binding, the
-  /// window layout): asked on the UI thread at every autosave and stored in the description.
+  /// What the window shows besides the session (its layout): asked on the UI thread at every
+  /// autosave and stored in the description.
   void setSessionProvider(std::function<QVariantMap()> provider) { m_session = std::move(provider); }
+  /// The session's state beside the take (StudioSession::saveState): asked on the UI thread at
+  /// every autosave (a copy), encoded and written on the worker with the take.
+  void setStateProvider(std::function<SessionState()> provider) { m_state = std::move(provider); }
   /// Removes this process's recovery file (clean close, save).
   void discard();
 
   /// Recovery files left by other sessions in `folder` (default folder when empty), newest first.
   [[nodiscard]] static std::vector<RecoveryFile> leftovers(QString folder = {});
-  /// Deletes a leftover recovery file and its description.
+  /// Deletes a leftover recovery file, its description and its session state.
   static void remove(const RecoveryFile& file);
+  /// The session state kept with a leftover, or none when it has none. Throws IoError or
+  /// FormatError for a state that cannot be read.
+  [[nodiscard]] static std::optional<SessionState> readState(const RecoveryFile& file);
   [[nodiscard]] static QString defaultFolder();
 
 signals:
@@ -81,6 +94,7 @@ private:
   QString m_folder;
   QTimer m_timer;
   std::function<QVariantMap()> m_session;
+  std::function<SessionState()> m_state;
   JobRunner* m_write = nullptr;  // the background write
 };
 

@@ -10,10 +10,11 @@ BlendshapeSolveModel::BlendshapeSolveModel(QObject* parent) : QObject(parent) {}
 
 BlendshapeSolveModel::~BlendshapeSolveModel() = default;
 
-void BlendshapeSolveModel::setRig(std::shared_ptr<const BlendshapeRig> rig, QString path)
+void BlendshapeSolveModel::setRig(std::shared_ptr<const BlendshapeRig> rig, QString path, QString shapeFolder)
 {
   m_rig = std::move(rig);
   m_rigPath = std::move(path);
+  m_rigShapeFolder = std::move(shapeFolder);
   m_result = {};
   m_read.reset();
   m_selected.clear();

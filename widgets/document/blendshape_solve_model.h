@@ -43,11 +43,13 @@ public:
   explicit BlendshapeSolveModel(QObject* parent = nullptr);
   ~BlendshapeSolveModel() override;
 
-  /// Replaces the rig (`path` names it in the panel); drops the weights.
-  void setRig(std::shared_ptr<const BlendshapeRig> rig, QString path);
+  /// Replaces the rig (`path` names it in the panel; `shapeFolder` holds an OBJ rig's shapes, so
+  /// it can be read again); drops the weights.
+  void setRig(std::shared_ptr<const BlendshapeRig> rig, QString path, QString shapeFolder = {});
   [[nodiscard]] const std::shared_ptr<const BlendshapeRig>& rig() const { return m_rig; }
   [[nodiscard]] bool hasRig() const { return m_rig != nullptr; }
   [[nodiscard]] const QString& rigPath() const { return m_rigPath; }
+  [[nodiscard]] const QString& rigShapeFolder() const { return m_rigShapeFolder; }
   [[nodiscard]] QString shapeName(Eigen::Index shape) const;
 
   /// Takes a finished solve made with `options` (weights #frames × #shapes of
@@ -107,6 +109,7 @@ signals:
 private:
   std::shared_ptr<const BlendshapeRig> m_rig;
   QString m_rigPath;
+  QString m_rigShapeFolder;
   BlendshapeSolveResult m_result;
   BlendshapeSolveOptions m_options;
   std::optional<ReadWeightCurves> m_read;

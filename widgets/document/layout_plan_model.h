@@ -49,6 +49,8 @@ public:
 
   /// The last successful plan, or nullptr.
   [[nodiscard]] const LayoutPlanResult* result() const { return m_result.get(); }
+  /// The same, shared (a plan is never changed once kept: a saved session state shares it).
+  [[nodiscard]] const std::shared_ptr<const LayoutPlanResult>& sharedResult() const { return m_result; }
   /// Keeps `result` (a successful plan) with `size` markers picked.
   void setResult(std::shared_ptr<const LayoutPlanResult> result, Eigen::Index size);
   [[nodiscard]] Eigen::Index selectedSize() const { return m_size; }

@@ -26,12 +26,9 @@ QString failed(const QString& path, const std::exception& e)
 
 void loadRig(StudioSession& session, const SessionFiles& files)
 {
-  auto rig = std::make_shared<const BlendshapeRig>(readRig(files.rig.toStdString(), files.rigShapes.toStdString()));
-  FaceMeshModel& face = session.faceMesh();
-  // The binding is made on the rig's neutral: it is the face mesh (a mesh of its vertex count is kept).
-  if (face.mesh().vertexCount() != rig->neutral.vertexCount())
-    face.setMesh(rig->neutral, files.rig);
-  session.blendshapes().setRig(std::move(rig), files.rig);
+  session.setBlendshapeRig(
+      std::make_shared<const BlendshapeRig>(readRig(files.rig.toStdString(), files.rigShapes.toStdString())), files.rig,
+      files.rigShapes);
 }
 
 QString solve(StudioSession& session)

@@ -4,15 +4,22 @@
 #include "document/face_mesh_model.h"
 #include "document/layout_plan_model.h"
 #include "document/live_stream.h"
+#include "document/reference_video.h"
 #include "document/reference_videos.h"
+#include "document/session_state.h"
 #include "document/studio_options.h"
 #include "document/take_document.h"
 #include "document/view_state.h"
 
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/io/mesh_io.h"
+#include "mocap/io/rig_io.h"
 
+#include <QFileInfo>
+#include <QStringList>
 #include <QUndoStack>
+
+#include <exception>
 
 #include <string>
 #include <vector>
@@ -27,6 +34,7 @@ struct StudioSession::KeptRig
   MeshBinding binding;
   std::shared_ptr<const BlendshapeRig> rig;
   QString rigPath;
+  QString rigShapeFolder;
 };
 
 StudioSession::StudioSession(QObject* parent)
@@ -70,35 +78,127 @@ BoundRig StudioSession::boundRig() const
   return {rig, m_faceMesh->binding()};
 }
 
-namespace {
-const QString kMeshKey = QStringLiteral("mesh");
-const QString kBindingKey = QStringLiteral("binding");
-} // namespace
-
-QVariantMap StudioSession::recoveryState() const
+void StudioSession::setBlendshapeRig(std::shared_ptr<const BlendshapeRig> rig, const QString& path,
+                                     const QString& shapeFolder)
 {
-  QVariantMap state;
+  if (rig && m_faceMesh->mesh().vertexCount() != rig->neutral.vertexCount())
+    m_faceMesh->setMesh(rig->neutral, path);
+  m_blendshapes->setRig(std::move(rig), path, shapeFolder);
+}
+
+SessionState StudioSession::saveState() const
+{
+  SessionState state;
   if (m_faceMesh->hasMesh()) {
-    state.insert(kMeshKey, m_faceMesh->meshPath());
-    state.insert(kBindingKey, QString::fromStdString(bindingJson(m_faceMesh->binding())));
+    state.meshPath = m_faceMesh->meshPath();
+    state.binding = bindingJson(m_faceMesh->binding());
   }
+  state.rigPath = m_blendshapes->rigPath();
+  state.rigShapeFolder = m_blendshapes->rigShapeFolder();
+  if (m_blendshapes->hasResult()) {
+    state.curves = m_blendshapes->result();
+    state.solvedWith = m_blendshapes->solvedWith();
+    state.solvedWith.actor.reset();  // a file of its own, remembered with the take
+    state.readCurves = m_blendshapes->readCurves();
+  }
+  state.selectedShapes = m_blendshapes->selectedShapes();
+  for (int i = 0; i < m_videos->count(); ++i)
+    state.videos.push_back({m_videos->at(i).path(), m_videos->at(i).offset()});
+  state.currentVideo = m_videos->currentIndex();
+  state.layoutPlan = m_layoutPlan->sharedResult();
+  state.layoutSize = m_layoutPlan->selectedSize();
   return state;
 }
 
-QString StudioSession::restoreRecoveryState(const QVariantMap& state)
+namespace {
+
+/// Runs `step`; what it throws goes to `problems` after `what`.
+template <class Step>
+void restoreStep(QStringList& problems, const QString& what, const Step& step)
 {
-  const QString meshPath = state.value(kMeshKey).toString();
-  if (meshPath.isEmpty())
-    return {};
   try {
-    Mesh mesh = readMesh(meshPath.toStdString());
-    const Eigen::Index vertices = mesh.vertexCount();
-    m_faceMesh->setMesh(std::move(mesh), meshPath);
-    m_faceMesh->setBinding(parseBinding(state.value(kBindingKey).toString().toStdString(), "recovered binding", vertices));
+    step();
   } catch (const std::exception& e) {
-    return QString::fromStdString(e.what());
+    problems << QStringLiteral("%1: %2").arg(what, QString::fromStdString(e.what()));
   }
-  return m_faceMesh->error();
+}
+
+} // namespace
+
+QString StudioSession::restoreState(const SessionState& state)
+{
+  QStringList problems;
+  // A rig's neutral is its face mesh: read once, with the rig.
+  if (!state.meshPath.isEmpty() && state.meshPath != state.rigPath)
+    restoreStep(problems, QFileInfo(state.meshPath).fileName(),
+                [&] { m_faceMesh->setMesh(readMesh(state.meshPath.toStdString()), state.meshPath); });
+  if (!state.rigPath.isEmpty())
+    restoreStep(problems, QFileInfo(state.rigPath).fileName(), [&] {
+      setBlendshapeRig(std::make_shared<const BlendshapeRig>(
+                           readRig(state.rigPath.toStdString(), state.rigShapeFolder.toStdString())),
+                       state.rigPath, state.rigShapeFolder);
+    });
+  if (!state.binding.empty() && m_faceMesh->hasMesh()) {
+    restoreStep(problems, tr("the binding"), [&] {
+      m_faceMesh->setBinding(parseBinding(state.binding, "recovered binding", m_faceMesh->mesh().vertexCount()));
+    });
+    if (!m_faceMesh->error().isEmpty())
+      problems << tr("the binding: %1").arg(m_faceMesh->error());
+  }
+  restoreCurves(state, problems);
+  if (m_blendshapes->hasRig()) {
+    std::vector<Eigen::Index> shapes;
+    for (const Eigen::Index shape : state.selectedShapes)
+      if (shape >= 0 && shape < m_blendshapes->rig()->shapeCount())
+        shapes.push_back(shape);
+    m_blendshapes->setSelectedShapes(std::move(shapes));
+  }
+  restoreVideos(state, problems);
+  if (state.layoutPlan)
+    m_layoutPlan->setResult(state.layoutPlan, state.layoutSize);
+  return problems.join(QLatin1Char('\n'));
+}
+
+void StudioSession::restoreCurves(const SessionState& state, QStringList& problems)
+{
+  if (state.curves.weights.rows() == 0)
+    return;
+  const Eigen::Index frames = m_document->take().frameCount();
+  if (!m_blendshapes->hasRig() || state.curves.weights.cols() != m_blendshapes->rig()->shapeCount()) {
+    problems << tr("the weight curves: they were made for a rig that is not loaded");
+    return;
+  }
+  if (!state.readCurves && state.curves.weights.rows() != frames) {
+    problems << tr("the weight curves: %1 frames solved, the take has %2")
+                    .arg(static_cast<qlonglong>(state.curves.weights.rows()))
+                    .arg(static_cast<qlonglong>(frames));
+    return;
+  }
+  if (state.readCurves) {  // a recording's curves, kept with where they were read from
+    BlendshapeSolveResult curves = state.curves;
+    std::optional<ReadWeightCurves> read = state.readCurves;
+    m_blendshapes->swapCurves(curves, read);
+  } else {
+    (void)m_blendshapes->setResult(state.curves, state.solvedWith);
+  }
+}
+
+void StudioSession::restoreVideos(const SessionState& state, QStringList& problems)
+{
+  // The take's sidecar may have linked them already: opening a linked video only makes it current.
+  for (const SessionVideo& video : state.videos) {
+    const QString error = m_videos->open(video.path);
+    if (!error.isEmpty())
+      problems << QStringLiteral("%1: %2").arg(QFileInfo(video.path).fileName(), error);
+    else
+      m_videos->current()->setOffset(video.offset);
+  }
+  if (state.currentVideo < 0 || state.currentVideo >= static_cast<int>(state.videos.size()))
+    return;
+  const QString& current = state.videos[static_cast<std::size_t>(state.currentVideo)].path;
+  for (int i = 0; i < m_videos->count(); ++i)
+    if (m_videos->at(i).path() == current)
+      m_videos->setCurrentIndex(i);
 }
 
 void StudioSession::dropPreviousTake()
@@ -106,7 +206,7 @@ void StudioSession::dropPreviousTake()
   m_kept.reset();
   if (m_keepRig && (m_faceMesh->hasMesh() || m_blendshapes->hasRig()))
     m_kept.reset(new KeptRig{m_faceMesh->mesh(), m_faceMesh->meshPath(), m_faceMesh->bindingToKeep(),
-                             m_blendshapes->rig(), m_blendshapes->rigPath()});
+                             m_blendshapes->rig(), m_blendshapes->rigPath(), m_blendshapes->rigShapeFolder()});
   // Still the previous take's, they would be drawn on this one.
   if (m_faceMesh->hasMesh())
     m_faceMesh->clear();
@@ -131,7 +231,7 @@ void StudioSession::restoreKeptRig()
       m_faceMesh->bindKeptRig(std::move(kept->binding));
     }
     if (kept->rig)
-      m_blendshapes->setRig(std::move(kept->rig), kept->rigPath);
+      m_blendshapes->setRig(std::move(kept->rig), kept->rigPath, kept->rigShapeFolder);
   }
   emit takeContextReset(kept != nullptr);
 }

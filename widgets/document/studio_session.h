@@ -4,7 +4,7 @@
 
 #include <QObject>
 #include <QString>
-#include <QVariantMap>
+#include <QStringList>
 
 #include <memory>
 
@@ -17,6 +17,7 @@ class FaceMeshModel;
 class LayoutPlanModel;
 class LiveStream;
 class ReferenceVideos;
+struct SessionState;
 struct StudioOptions;
 class TakeDocument;
 class ViewState;
@@ -66,11 +67,20 @@ public:
   void setKeepRig(bool keep) { m_keepRig = keep; }
   [[nodiscard]] bool keepRig() const { return m_keepRig; }
 
-  /// What a recovery file keeps beside the take: the face mesh's file and its binding (JSON).
-  [[nodiscard]] QVariantMap recoveryState() const;
-  /// Restores recoveryState()'s face mesh and binding (read from the mesh file again); returns ""
-  /// or why they could not be restored.
-  QString restoreRecoveryState(const QVariantMap& state);
+  /// Makes `rig` (read from `path`, with an OBJ rig's `shapeFolder`) the blendshape rig; its
+  /// neutral becomes the face mesh, since the binding is made on it (a face mesh of the same
+  /// vertex count, e.g. the OBJ it came from, is kept with its binding).
+  void setBlendshapeRig(std::shared_ptr<const BlendshapeRig> rig, const QString& path, const QString& shapeFolder = {});
+
+  /// Everything the session holds beside its take, as a value (session_state.h): what crash
+  /// recovery writes beside the take. Copies only (the weights, the binding); O(#frames · #shapes).
+  [[nodiscard]] SessionState saveState() const;
+  /// Brings saveState()'s state back onto the take set now: the face mesh and rig read from their
+  /// files again, the binding, the weight curves with their edits and solve settings, the selected
+  /// shapes, the reference videos with their offsets and the layout plan with its picked size.
+  /// What cannot be restored (a file gone, curves for another take's length) is left out and said:
+  /// returns "" or the problems, one a line. Not undoable (the take's history is not either).
+  QString restoreState(const SessionState& state);
 
   /// The blendshape rig with the binding made on its neutral (the face mesh is the rig's
   /// neutral); empty otherwise.
@@ -85,6 +95,9 @@ private:
   /// First on a new take: the previous take's context goes (kept aside when keepRig()).
   void dropPreviousTake();
   void followReferenceMarkers();
+  /// restoreState's weight curves and reference videos.
+  void restoreCurves(const SessionState& state, QStringList& problems);
+  void restoreVideos(const SessionState& state, QStringList& problems);
   /// Last on a new take, once the models have it: the kept rig bound to its labels.
   void restoreKeptRig();
 

@@ -70,6 +70,7 @@ RigLoad readRigInBackground(const QString& path, const QString& shapeFolder)
 {
   RigLoad load;
   load.path = path;
+  load.shapeFolder = shapeFolder;
   try {
     load.rig = std::make_shared<const BlendshapeRig>(readRig(path.toStdString(), shapeFolder.toStdString()));
   } catch (const std::exception& e) {  // nothing may throw across the event loop
@@ -408,11 +409,7 @@ void BlendshapeSolvePanel::onRigLoaded(const RigLoad& load)
     emit rigLoaded(m_status->text());
     return;
   }
-  m_model.setRig(load.rig, load.path);
-  // The binding is made on the rig's neutral: it becomes the face mesh (a mesh of the same
-  // vertex count, e.g. the OBJ it came from, and its binding are kept).
-  if (m_faceMesh.mesh().vertexCount() != load.rig->neutral.vertexCount())
-    m_faceMesh.setMesh(load.rig->neutral, load.path);
+  m_session.setBlendshapeRig(load.rig, load.path, load.shapeFolder);  // its neutral becomes the face mesh
   showStatus(m_faceMesh.binding().markers.empty()
                  ? tr("Rig loaded. Bind the markers to its neutral in the Face Mesh panel (Auto-Bind or Load Binding), then Solve.")
                  : tr("Rig loaded. Solve when ready."));

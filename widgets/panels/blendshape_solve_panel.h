@@ -38,6 +38,7 @@ struct RigLoad
 {
   std::shared_ptr<const BlendshapeRig> rig;
   QString path;
+  QString shapeFolder;
   QString error;
 };
 

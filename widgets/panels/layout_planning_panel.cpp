@@ -151,8 +151,9 @@ LayoutPlanningPanel::LayoutPlanningPanel(StudioSession& session, QWidget* parent
   buildForm();
   readSettings();
   connect(m_plot, &LayoutErrorPlot::sizeSelected, &m_plan, &LayoutPlanModel::setSelectedSize);
-  connect(&m_plan, &LayoutPlanModel::changed, this, &LayoutPlanningPanel::showSelectedSize);
+  connect(&m_plan, &LayoutPlanModel::changed, this, &LayoutPlanningPanel::followPlan);
   setIdle(true);
+  followPlan();  // a plan the session already holds
 }
 
 LayoutPlanningPanel::~LayoutPlanningPanel() = default;  // the runner stops and awaits its job
@@ -530,32 +531,53 @@ void LayoutPlanningPanel::onFinished(std::shared_ptr<LayoutPlanResult> result)
   } else if (result->plan.cancelled) {
     m_status->setText(tr("Cancelled; the previous result is kept."));
   } else {
-    const LayoutPlan& plan = result->plan;
-    const LayoutFrames& frames = result->frames;
-    m_status->setText(tr("%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.")
-                          .arg(frames.markerCount())
-                          .arg(static_cast<qlonglong>(frames.frames.rows()))
-                          .arg(result->symmetry.pairs().size())
-                          .arg(result->pairSource)
-                          .arg(static_cast<qlonglong>(plan.pcaComponents))
-                          .arg(static_cast<qlonglong>(plan.recommendedSize))
-                          .arg(frames.stabilized ? tr("head motion removed with %n reference marker(s)", nullptr,
-                                                      static_cast<int>(result->stabilizeLabels.size()))
-                                                 : tr("head motion not removed: no reference markers")));
-    m_status->setToolTip(tr("%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; "
-                            "recommended by the %3")
-                             .arg(static_cast<qlonglong>(frames.droppedFrames))
-                             .arg(100.0 * plan.explainedVariance, 0, 'f', 1)
-                             .arg(QString::fromStdString(plan.recommendationRule)));
-    m_plot->setPlan(plan, result->rig ? &*result->rig : nullptr);
-    if (!result->rigError.isEmpty())
-      m_status->setText(m_status->text() + QLatin1Char('\n') +
-                        tr("Not judged on the rig: %1").arg(result->rigError));
-    else if (result->rig && result->rig->cancelled)
-      m_status->setText(m_status->text() + QLatin1Char('\n') + tr("Judging on the rig was cancelled."));
-    m_plan.setResult(std::move(result), m_plot->selectedSize());  // the table and highlight follow
+    showResult(result);
+    const Eigen::Index size = m_plot->selectedSize();  // the recommended one
+    m_plan.setResult(std::move(result), size);          // the table and highlight follow
   }
   setIdle(true);
+}
+
+void LayoutPlanningPanel::showResult(std::shared_ptr<const LayoutPlanResult> result)
+{
+  m_shown = std::move(result);
+  if (!m_shown) {
+    m_plot->clear();
+    return;
+  }
+  const LayoutPlan& plan = m_shown->plan;
+  const LayoutFrames& frames = m_shown->frames;
+  m_status->setStyleSheet({});
+  m_status->setText(tr("%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.")
+                        .arg(frames.markerCount())
+                        .arg(static_cast<qlonglong>(frames.frames.rows()))
+                        .arg(m_shown->symmetry.pairs().size())
+                        .arg(m_shown->pairSource)
+                        .arg(static_cast<qlonglong>(plan.pcaComponents))
+                        .arg(static_cast<qlonglong>(plan.recommendedSize))
+                        .arg(frames.stabilized ? tr("head motion removed with %n reference marker(s)", nullptr,
+                                                    static_cast<int>(m_shown->stabilizeLabels.size()))
+                                               : tr("head motion not removed: no reference markers")));
+  m_status->setToolTip(tr("%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; "
+                          "recommended by the %3")
+                           .arg(static_cast<qlonglong>(frames.droppedFrames))
+                           .arg(100.0 * plan.explainedVariance, 0, 'f', 1)
+                           .arg(QString::fromStdString(plan.recommendationRule)));
+  m_plot->setPlan(plan, m_shown->rig ? &*m_shown->rig : nullptr);
+  if (!m_shown->rigError.isEmpty())
+    m_status->setText(m_status->text() + QLatin1Char('\n') + tr("Not judged on the rig: %1").arg(m_shown->rigError));
+  else if (m_shown->rig && m_shown->rig->cancelled)
+    m_status->setText(m_status->text() + QLatin1Char('\n') + tr("Judging on the rig was cancelled."));
+}
+
+void LayoutPlanningPanel::followPlan()
+{
+  // A plan this panel did not just show (a recovered session's) is shown as if it had run here.
+  if (m_plan.sharedResult() != m_shown)
+    showResult(m_plan.sharedResult());
+  if (m_shown && m_plot->selectedSize() != m_plan.selectedSize())
+    (void)m_plot->setSelectedSize(m_plan.selectedSize());
+  showSelectedSize();
 }
 
 namespace {

@@ -104,6 +104,10 @@ private:
   void readSettings();
   void writeSettings() const;
   void onFinished(std::shared_ptr<LayoutPlanResult> result);
+  /// Shows a plan in the plot and the status line (nullptr: none).
+  void showResult(std::shared_ptr<const LayoutPlanResult> result);
+  /// Follows the session's plan: shows one made elsewhere, its picked size and the size's markers.
+  void followPlan();
   void showSelectedSize();
   void setIdle(bool idle);
   void showError(const QString& message);
@@ -138,6 +142,7 @@ private:
   JobRunner* m_jobs = nullptr;
   QLabel* m_status = nullptr;
   LayoutErrorPlot* m_plot = nullptr;
+  std::shared_ptr<const LayoutPlanResult> m_shown;  // the plan in the plot and status line
   QTableWidget* m_markers = nullptr;
   QPushButton* m_exportLabels = nullptr;
   QPushButton* m_exportSet = nullptr;
