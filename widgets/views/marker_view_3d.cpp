@@ -127,12 +127,6 @@ void MarkerView3d::observe(const ViewState& state)
   connect(&state, &ViewState::cameraResetRequested, this, &MarkerView3d::resetCamera);
 }
 
-void MarkerView3d::setTrailFrames(int frames)
-{
-  m_scene->setTrailFrames(frames);
-  updateFrame();
-}
-
 void MarkerView3d::setMarkerScale(double fraction)
 {
   m_scene->setMarkerScale(fraction);
@@ -142,12 +136,6 @@ void MarkerView3d::setMarkerScale(double fraction)
 void MarkerView3d::refreshColors()
 {
   m_viewport->setBackground(colorScheme().background);
-  updateFrame();
-}
-
-void MarkerView3d::setLinksVisible(bool visible)
-{
-  m_scene->setLinksVisible(visible);
   updateFrame();
 }
 

@@ -48,7 +48,11 @@ public:
   /// camera when it asks (ViewState::resetCamera). The setters below stay for a view without one.
   void observe(const ViewState& state);
   /// Frames drawn before and after the current one for each selected marker (0 = no trails).
-  void setTrailFrames(int frames);
+  void setTrailFrames(int frames)
+  {
+    m_scene->setTrailFrames(frames);
+    updateFrame();
+  }
   [[nodiscard]] int trailFrames() const { return m_scene->trailFrames(); }
   /// Sphere radius as a fraction of the take's size.
   void setMarkerScale(double fraction);
@@ -60,7 +64,11 @@ public:
   [[nodiscard]] bool labellingMode() const { return m_labellingMode; }
   /// Lines between neighbouring markers (each to its nearest three in the most complete frame;
   /// none when no marker is ever valid).
-  void setLinksVisible(bool visible);
+  void setLinksVisible(bool visible)
+  {
+    m_scene->setLinksVisible(visible);
+    updateFrame();
+  }
   [[nodiscard]] bool linksVisible() const { return m_scene->linksVisible(); }
   [[nodiscard]] const std::vector<MarkerLink>& links() const { return m_scene->links(); }
   /// Which lab axis points up on screen: 1 = Y, 2 = Z.
