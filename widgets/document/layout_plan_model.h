@@ -1,5 +1,6 @@
 #pragma once
 
+#include "document/layout_highlight.h"
 #include "mocap/evaluation/layout_rig_error.h"
 #include "mocap/layout/layout_planning.h"
 
@@ -25,15 +26,6 @@ struct LayoutPlanResult : LayoutResult
   QString error;       ///< non-empty when the run failed
   std::optional<PlanRigErrors> rig;  ///< the layouts judged on the blendshape rig, when asked
   QString rigError;                  ///< why they could not be (the plan itself stands)
-};
-
-/// What the 3D view highlights of a layout: one flag per marker of the open take, kept by the
-/// layout or not, and which of them are the head reference markers it was planned with. Empty
-/// when there is no layout to show.
-struct LayoutHighlight
-{
-  std::vector<bool> kept;
-  std::vector<bool> reference;
 };
 
 /// The session's marker layout plan: the last successful planning result and the marker count

@@ -1,7 +1,10 @@
 #include "views/camera_framing.h"
 
 #include <vtkCamera.h>
+#include <vtkActor.h>
 #include <vtkMath.h>
+#include <vtkPropCollection.h>
+#include <vtkRenderer.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -90,6 +93,23 @@ void fitCamera(vtkCamera& camera, const std::vector<Eigen::Vector3d>& points, co
   camera.SetPosition(eye.data());
   camera.SetViewUp(up.data());
   camera.OrthogonalizeViewUp();
+}
+
+std::vector<Eigen::Vector3d> actorBoxCorners(vtkRenderer& renderer, const std::vector<vtkProp*>& skip)
+{
+  std::vector<Eigen::Vector3d> corners;
+  vtkPropCollection* props = renderer.GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp()) {
+    if (std::find(skip.begin(), skip.end(), prop) != skip.end() || !prop->GetVisibility() || !vtkActor::SafeDownCast(prop))
+      continue;
+    const double* bounds = prop->GetBounds();
+    if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+      continue;
+    for (int corner = 0; corner < 8; ++corner)
+      corners.emplace_back(bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)], bounds[4 + ((corner >> 2) & 1)]);
+  }
+  return corners;
 }
 
 } // namespace mocap::ui

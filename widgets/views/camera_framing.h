@@ -5,6 +5,8 @@
 #include <vector>
 
 class vtkCamera;
+class vtkProp;
+class vtkRenderer;
 
 namespace mocap::ui {
 
@@ -32,5 +34,10 @@ struct ViewDirection
 /// videos. O(#points).
 void fitCamera(vtkCamera& camera, const std::vector<Eigen::Vector3d>& points, const ViewDirection& direction,
                double aspect, double radius, double margin = kFramingMargin);
+
+/// The corners of the boxes of the visible actors `renderer` draws, but for those in `skip` (what
+/// is framed by its points instead): how a framing keeps the other actors drawn (face mesh, posed
+/// rig) in view. Text and other props that are no vtkActor are left out. O(#props).
+[[nodiscard]] std::vector<Eigen::Vector3d> actorBoxCorners(vtkRenderer& renderer, const std::vector<vtkProp*>& skip);
 
 } // namespace mocap::ui

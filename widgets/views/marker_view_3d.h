@@ -1,6 +1,7 @@
 #pragma once
 
-#include "mocap/cleaning/head_stabilization.h"
+#include "mocap/base/length_unit.h"
+#include "views/marker_scene.h"
 #include "views/scene_settings.h"
 
 #include <QColor>
@@ -11,36 +12,26 @@
 
 #include <Eigen/Core>
 
-#include <vtkNew.h>
-#include <vtkSmartPointer.h>
-
-#include <string>
 #include <vector>
 
 class QLabel;
 class QStackedLayout;
-class vtkActor;
-class vtkAxesActor;
-class vtkBillboardTextActor3D;
-class vtkGlyph3DMapper;
-class vtkPoints;
-class vtkPolyData;
-class vtkRenderer;
-class vtkUnsignedCharArray;
 
 namespace mocap::ui {
 
+class AxesCorner;
 class TakeDocument;
 class ViewState;
 class VtkViewport;
 
-/// The 3D viewport: the current frame's markers as spheres coloured by sample state
-/// (original, filled, smoothed, edited, flagged as a bad point); selected markers in their curve
-/// colours (selection_palette.h) and labelled, with trails over ±trailFrames frames in the same
-/// colours; an axes marker in the corner and, while the view is head-stabilized or follows the
-/// head, a line of text saying so in the top-left corner.
-/// Missing samples are not drawn. Click picks the nearest marker, Ctrl+drag a rubber band picks all inside it (Ctrl/Shift adds to the
-/// selection); the camera faces the take's markers from the side they protrude to.
+/// The 3D view of a document: a VtkViewport drawing the document's MarkerScene (the markers coloured
+/// by sample state, selection or layout highlight, the selected markers' trails and labels, the
+/// links, in the lab frame or head-stabilized, the camera framed or following the head) with the lab
+/// axes in a corner (AxesCorner), kept up to date with the document and, when observed, its
+/// ViewState. The widget's own part: picking (click picks the nearest marker, Ctrl+drag a rubber
+/// band picks all inside it, Ctrl/Shift adds to the selection), the hovered marker's tooltip, R for
+/// Reset Camera, and a line of text in the top-left corner while the view is head-stabilized or
+/// follows the head. Other layers (face mesh, posed rig) draw into viewport()->renderer().
 class MarkerView3d final : public QWidget
 {
   Q_OBJECT
@@ -50,16 +41,22 @@ public:
   ~MarkerView3d() override;
 
   [[nodiscard]] VtkViewport* viewport() const { return m_viewport; }
+  /// What the view draws: the document's MarkerScene in the viewport's renderer.
+  [[nodiscard]] const MarkerScene& scene() const { return *m_scene; }
   /// Draws as `state` says from now on: up axis, marker size, trails, links, head follow, display
   /// unit, colours and layout highlight, each applied now and on each change, and frames the
   /// camera when it asks (ViewState::resetCamera). The setters below stay for a view without one.
   void observe(const ViewState& state);
   /// Frames drawn before and after the current one for each selected marker (0 = no trails).
-  void setTrailFrames(int frames);
-  [[nodiscard]] int trailFrames() const { return m_trailFrames; }
+  void setTrailFrames(int frames)
+  {
+    m_scene->setTrailFrames(frames);
+    updateFrame();
+  }
+  [[nodiscard]] int trailFrames() const { return m_scene->trailFrames(); }
   /// Sphere radius as a fraction of the take's size.
   void setMarkerScale(double fraction);
-  [[nodiscard]] double markerScale() const { return m_markerScale; }
+  [[nodiscard]] double markerScale() const { return m_scene->markerScale(); }
   /// Unit of the hover read-out (the take keeps its own units).
   void setDisplayUnit(LengthUnit unit) { m_displayUnit = unit; }
   /// Labelling mode: a click on a drawn marker emits labelPointClicked instead of selecting it.
@@ -67,12 +64,16 @@ public:
   [[nodiscard]] bool labellingMode() const { return m_labellingMode; }
   /// Lines between neighbouring markers (each to its nearest three in the most complete frame;
   /// none when no marker is ever valid).
-  void setLinksVisible(bool visible);
-  [[nodiscard]] bool linksVisible() const { return m_linksVisible; }
-  [[nodiscard]] const std::vector<std::pair<Eigen::Index, Eigen::Index>>& links() const { return m_links; }
+  void setLinksVisible(bool visible)
+  {
+    m_scene->setLinksVisible(visible);
+    updateFrame();
+  }
+  [[nodiscard]] bool linksVisible() const { return m_scene->linksVisible(); }
+  [[nodiscard]] const std::vector<MarkerLink>& links() const { return m_scene->links(); }
   /// Which lab axis points up on screen: 1 = Y, 2 = Z.
   void setUpAxis(int axis);
-  [[nodiscard]] int upAxis() const { return m_upAxis; }
+  [[nodiscard]] int upAxis() const { return m_scene->upAxis(); }
   /// Frames what is drawn at the current frame: frameCamera(current, current) (View ▸ Reset Camera).
   void resetCamera();
   /// Faces the markers drawn over frames first…last (their least-spread side, facingDirection) and
@@ -87,7 +88,7 @@ public:
   /// A view setting: the take is not changed. Returns an error message (the view is then
   /// unchanged) or an empty string. Dropped when markers are added or removed.
   QString setHeadReference(std::vector<Eigen::Index> referenceMarkers);
-  [[nodiscard]] const std::vector<Eigen::Index>& headReference() const { return m_headReference; }
+  [[nodiscard]] const std::vector<Eigen::Index>& headReference() const { return m_scene->positions().headReference(); }
   /// Where marker `marker` is drawn in `frame` (stabilized when the view is).
   [[nodiscard]] Eigen::Vector3d displayPosition(Eigen::Index frame, Eigen::Index marker) const;
   /// The marker drawn nearest to `position` (widget coordinates), within `radius` pixels.
@@ -100,14 +101,14 @@ public:
   /// (guessHeadReferenceMarkers, else every valid marker), keeping orientation and distance, so
   /// the face stays in view while the head moves in the lab frame.
   void setFollowHead(bool on);
-  [[nodiscard]] bool followHead() const { return m_followHead; }
+  [[nodiscard]] bool followHead() const { return m_scene->follow().on(); }
   /// Where the camera looks in `frame` while following: the mean, over frames within ±0.2 s, of
   /// the centroid of the followed markers' drawn positions (a window mean, so scrubbing back and
   /// forth gives the same view). nullopt when no followed marker is valid near `frame`.
   /// O(window × followed markers).
   [[nodiscard]] std::optional<Eigen::Vector3d> followTarget(Eigen::Index frame) const;
   /// The markers the camera follows.
-  [[nodiscard]] const std::vector<Eigen::Index>& followedMarkers() const { return m_followMarkers; }
+  [[nodiscard]] const std::vector<Eigen::Index>& followedMarkers() const { return m_scene->follow().markers(); }
   /// The camera's focal point (lab or stabilized coordinates, as drawn).
   [[nodiscard]] Eigen::Vector3d cameraFocalPoint() const;
   /// The colour `marker` is drawn in at the current frame; nullopt when it is not drawn.
@@ -122,9 +123,9 @@ public:
   void setLayoutHighlight(std::vector<bool> kept, std::vector<bool> reference = {});
   void clearLayoutHighlight();
   /// The highlight shown, empty when none.
-  [[nodiscard]] const std::vector<bool>& layoutHighlight() const { return m_layoutKept; }
+  [[nodiscard]] const std::vector<bool>& layoutHighlight() const { return m_scene->layoutHighlight().kept; }
   /// The highlight's reference markers left out (empty when none).
-  [[nodiscard]] const std::vector<bool>& layoutReference() const { return m_layoutReference; }
+  [[nodiscard]] const std::vector<bool>& layoutReference() const { return m_scene->layoutHighlight().reference; }
 
 signals:
   void labelPointClicked(Eigen::Index marker);
@@ -133,64 +134,28 @@ protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-  /// Where the markers (not hidden, not model outputs) are drawn over frames first…last, at most
-  /// 500 frames sampled; each marker's first valid sample when none is valid there.
-  [[nodiscard]] std::vector<Eigen::Vector3d> drawnPositions(Eigen::Index first, Eigen::Index last) const;
-  /// Drops what holds marker indices (layout highlight, head reference, links) and works out the
-  /// markers to follow again: the take was replaced or its markers shifted.
+  /// The take was replaced or its markers shifted (MarkerScene::forgetMarkerIndices).
   void forgetMarkerIndices();
+  /// Sizes the markers for the take and draws the frame, the camera framed afresh.
   void rebuildScene();
+  /// Draws the scene at the document's current frame.
   void updateFrame();
-  void updateTrails();
-  void updateLinks();
-  void computeLinks();
-  void updateLabels();
-  void keepLabelsInView();
   void updateStatus();
-  void updateFollow();
-  /// The document's reference markers (the whole face when it has none). O(#markers).
-  [[nodiscard]] std::vector<Eigen::Index> markersToFollow() const;
+  void showTooltip(QPoint position);
   void onClicked(QPoint position, Qt::KeyboardModifiers modifiers);
   void onRectangle(const QRect& rectangle, Qt::KeyboardModifiers modifiers);
-  /// Drawn point `id` in widget (logical) coordinates.
-  [[nodiscard]] QPointF projected(vtkIdType id) const;
-  [[nodiscard]] double takeSize() const;
+  /// Drawn point `index` (MarkerLayer::drawnMarkers) in widget (logical) coordinates.
+  [[nodiscard]] QPointF projected(std::size_t index) const;
 
   TakeDocument& m_document;
   QStackedLayout* m_stack = nullptr;
   VtkViewport* m_viewport = nullptr;
   QLabel* m_failure = nullptr;
-  vtkNew<vtkPoints> m_points;
-  vtkNew<vtkUnsignedCharArray> m_colors;
-  vtkNew<vtkPolyData> m_markers;
-  vtkNew<vtkGlyph3DMapper> m_mapper;
-  vtkNew<vtkActor> m_actor;
-  vtkNew<vtkPolyData> m_trails;
-  vtkNew<vtkActor> m_trailActor;
-  vtkNew<vtkRenderer> m_axesRenderer;
-  vtkNew<vtkAxesActor> m_axes;
-  std::vector<vtkSmartPointer<vtkBillboardTextActor3D>> m_labels;  // one per selected marker
-  std::vector<Eigen::Index> m_labelMarkers;
-  std::vector<std::string> m_labelTexts;
-  double m_takeSize = 1.0;  // diagonal of the take's markers, fixed per take
-  std::vector<Eigen::Index> m_drawnMarkers;  // point id -> marker
-  int m_trailFrames = 50;
-  double m_markerScale = 0.012;
-  int m_upAxis = 2;
-  std::vector<Eigen::Index> m_headReference;
-  vtkNew<vtkPolyData> m_linkLines;
-  vtkNew<vtkActor> m_linkActor;
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> m_links;
-  bool m_linksVisible = false;
+  QLabel* m_status = nullptr;
+  std::unique_ptr<MarkerScene> m_scene;  // draws into m_viewport's renderer
+  std::unique_ptr<AxesCorner> m_axes;
   bool m_labellingMode = false;
   LengthUnit m_displayUnit = LengthUnit::Millimetre;
-  std::shared_ptr<const HeadMotion> m_headMotion;  // shared with the document's cache
-  std::vector<bool> m_layoutKept;  // empty: no layout highlight
-  std::vector<bool> m_layoutReference;  // empty or one per marker
-  std::vector<QColor> m_labelColors;
-  bool m_followHead = false;
-  std::vector<Eigen::Index> m_followMarkers;
-  QLabel* m_status = nullptr;
   std::optional<CameraState> m_framedCamera;  // as the last framing left it
 };
 
