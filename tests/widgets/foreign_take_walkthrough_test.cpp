@@ -19,6 +19,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QImage>
 #include <QScrollArea>
@@ -395,6 +396,25 @@ TEST(ForeignTakeWalkthrough, MarkersDockShowsEveryColumnWholeOnA1600Screen)
     EXPECT_LE(table->columnViewportPosition(column) + table->columnWidth(column), table->viewport()->width())
         << "column " << column << ", dock " << dock->width() << " px";
   EXPECT_GE(window->markerView()->width(), window->width() * 40 / 100) << "the 3D view keeps 40 %";
+}
+
+TEST(ForeignTakeWalkthrough, ReadWarningsNameTheFileReadAfterSaveAs)
+{
+  // After Save As, the warnings list said "1 warning(s) while reading pig_saved.c3d": the saved copy
+  // reads without them (its types are listed); they are the original file's.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ASSERT_TRUE(openForeignTake(*window, "c3d/sample03/gait-pig-nz.c3d"));
+  ui::TakeDocument& document = window->document();
+  ASSERT_EQ(document.loadWarnings().size(), 1u) << "Plug-in Gait's virtual points";
+  test::TempDir dir;
+  const QString saved = QString::fromStdString(dir.file("pig_saved.c3d").string());
+  ASSERT_TRUE(document.save(saved, true).isEmpty());
+  EXPECT_EQ(document.filePath(), saved);
+  EXPECT_EQ(QFileInfo(document.readFilePath()).fileName(), QStringLiteral("gait-pig-nz.c3d"));
+  std::vector<std::string> again;
+  (void)readTake(saved.toStdString(), &again);
+  EXPECT_TRUE(again.empty()) << again.front();
 }
 
 TEST(ForeignTakeWalkthrough, NoHeadMarkersAreProposedOnAGaitTake)
