@@ -8,7 +8,6 @@
 #include "mocap/io/c3d_reader.h"
 #include "mocap/io/take_io.h"
 
-#include <array>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -42,12 +41,10 @@ void writeLayoutJson(JsonWriter& json, const std::optional<C3dLayoutReport>& lay
 /// How many points of each type the take holds ("point_types"), every type listed.
 void writePointTypesJson(JsonWriter& json, const Take& take)
 {
-  constexpr std::array kTypes{PointType::Marker, PointType::Angle, PointType::Force,
-                              PointType::Moment, PointType::Power, PointType::Other};
   const auto counts = pointTypeCounts(take);
   json.key("point_types").beginObject();
-  for (const PointType type : kTypes)
-    json.key(pointTypeName(type)).value(static_cast<std::int64_t>(counts[static_cast<std::size_t>(type)]));
+  for (std::size_t type = 0; type < counts.size(); ++type)
+    json.key(pointTypeName(static_cast<PointType>(type))).value(static_cast<std::int64_t>(counts[type]));
   json.endObject();
 }
 

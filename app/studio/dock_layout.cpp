@@ -68,12 +68,27 @@ bool placeFirstRunWindow(QMainWindow& window)
   return true;
 }
 
+namespace {
+
+/// The width a side dock's content asks for beyond its share: a panel in a scroll area wraps and
+/// scrolls, and tabbed docks share their place, so only a dock of its own whose content sizes
+/// itself (the Markers table) asks. 0 for none.
+int contentWidth(const QMainWindow& window, QDockWidget& dock)
+{
+  if (qobject_cast<const QScrollArea*>(dock.widget()) || !window.tabifiedDockWidgets(&dock).isEmpty())
+    return 0;
+  return dock.sizeHint().width();
+}
+
+} // namespace
+
 void proportionDocks(QMainWindow& window)
 {
-  // Side docks share at most half the width and the curves under the view a quarter of the height;
+  // Side docks share under half the width and the curves under the view a quarter of the height;
   // the 3D view keeps the rest. (Panels scroll, so on a small screen these shares are what counts.)
+  // A table gets its columns' width beyond its share when the view still keeps 40 %.
   QList<QDockWidget*> sideDocks, bottomDocks;
-  QList<int> widths, heights;
+  QList<int> widths, heights, asked;
   for (QDockWidget* dock : window.findChildren<QDockWidget*>()) {
     if (!dock->isVisible() || dock->isFloating())
       continue;
@@ -81,11 +96,26 @@ void proportionDocks(QMainWindow& window)
     if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea) {
       sideDocks.append(dock);
       widths.append(window.width() * (area == Qt::LeftDockWidgetArea ? 16 : 30) / 100);
+      asked.append(contentWidth(window, *dock));
     } else if (area == Qt::BottomDockWidgetArea) {
       bottomDocks.append(dock);
       heights.append(window.height() * 26 / 100);
     }
   }
+  int spare = window.width() * 60 / 100;  // the side docks' widths beyond their shares, per side
+  for (const Qt::DockWidgetArea side : {Qt::LeftDockWidgetArea, Qt::RightDockWidgetArea})
+    for (qsizetype i = 0; i < sideDocks.size(); ++i)
+      if (window.dockWidgetArea(sideDocks[i]) == side) {
+        spare -= widths[i];  // docks of one side stand side by side only when tabbed: one width
+        break;
+      }
+  // The whole content or the share: a dock widened only part of the way still cuts a column, and
+  // takes the 3D view's width for it.
+  for (qsizetype i = 0; i < sideDocks.size(); ++i)
+    if (const int more = asked[i] - widths[i]; more > 0 && more <= spare) {
+      widths[i] = asked[i];
+      spare -= more;
+    }
   window.resizeDocks(sideDocks, widths, Qt::Horizontal);
   window.resizeDocks(bottomDocks, heights, Qt::Vertical);
 }

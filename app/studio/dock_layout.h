@@ -28,8 +28,9 @@ bool raiseDock(QMainWindow& window, const QString& name);
 /// Sizes and centres a first-run window on the primary screen (85 % of it); false without a screen.
 bool placeFirstRunWindow(QMainWindow& window);
 
-/// Gives the side docks 16 % (left) and 30 % (right) of the width and the bottom docks 26 % of the
-/// height, so the 3D view keeps more than half of each.
+/// Gives the side docks 16 % (left) and 30 % (right) of the width, or the width a dock that does not
+/// scroll asks for to show its content whole (the Markers table's columns) when the 3D view still
+/// keeps 40 % of it; and the bottom docks 26 % of the height.
 void proportionDocks(QMainWindow& window);
 
 } // namespace mocap::studio

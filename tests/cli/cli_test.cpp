@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
+#include <utility>
 #include <vector>
 
 namespace mocap {
@@ -188,8 +189,8 @@ TEST(Cli, ModelOutputsAreCountedAndLeftUntouched)
   const JsonValue json = parseJson(info.out, "info");
   const JsonValue* types = json.find("point_types", "info");
   ASSERT_NE(types, nullptr) << info.out.substr(0, 500);
-  const std::map<std::string, double> expected = {{"marker", 4}, {"angle", 2}, {"force", 1},
-                                                   {"moment", 1}, {"power", 1}, {"other", 0}};
+  const std::map<std::string, double> expected = {{"marker", 4}, {"angle", 2}, {"force", 1}, {"moment", 1},
+                                                   {"power", 1}, {"other", 0}, {"virtual", 0}};
   for (const auto& [type, count] : expected) {
     const JsonValue* value = types->find(type, "point_types");
     ASSERT_NE(value, nullptr) << type;
@@ -231,6 +232,37 @@ TEST(Cli, ModelOutputsAreCountedAndLeftUntouched)
       << trc.err;
   const CommandResult c3d = runMocap("convert " + q(dir.file("nexus.c3d")) + " " + q(dir.file("copy.c3d")), dir);
   EXPECT_EQ(c3d.err.find("note:"), std::string::npos) << c3d.err;
+}
+
+// Vicon's gait-pig (issue 30): Plug-in Gait's 36 segment points are counted as virtual model
+// outputs, left out of the gaps and untouched by clean, and the cleaned file keeps their type.
+TEST(Cli, PlugInGaitVirtualPointsKeepTheirTypeThroughClean)
+{
+  test::TempDir dir;
+  const auto pointTypes = [&dir](const std::string& file) {
+    const CommandResult info = runMocap("info " + q(file) + " --json", dir);
+    EXPECT_EQ(info.exitCode, 0) << info.err;
+    const JsonValue json = parseJson(info.out, "info");
+    std::map<std::string, double> counts;
+    for (const char* type : {"marker", "angle", "virtual"})
+      counts[type] = json.find("point_types", "info")->find(type, "point_types")->number(type);
+    const bool guessed = info.out.find("Vicon Plug-in Gait virtual points") != std::string::npos;
+    return std::make_pair(counts, guessed);
+  };
+  const std::string gait = test::dataFile("c3d/sample03/gait-pig-nz.c3d");
+  const std::map<std::string, double> expected = {{"marker", 15}, {"angle", 12}, {"virtual", 36}};
+  EXPECT_EQ(pointTypes(gait), std::make_pair(expected, true)) << "typed by the reader, which says so";
+  const CommandResult clean = runMocap("clean " + q(gait) + " -o " + q(dir.file("cleaned.c3d")), dir);
+  ASSERT_EQ(clean.exitCode, 0) << clean.err;
+  EXPECT_NE(clean.err.find("70 model outputs (12 angles, 8 forces, 8 moments, 6 powers, 36 virtual points) left "
+                           "untouched"),
+            std::string::npos)
+      << clean.err;
+  EXPECT_EQ(pointTypes(dir.file("cleaned.c3d")), std::make_pair(expected, false)) << "listed in the written file";
+  const Take before = readTake(gait);
+  const Take after = readTake(dir.file("cleaned.c3d"));
+  const Eigen::Index pelvis = *before.markerIndex("PELO");
+  EXPECT_TRUE(before.trajectory(pelvis) == after.trajectory(pelvis)) << "never cleaned";
 }
 
 TEST(Cli, CorruptFileGivesExitOneAndOneClearLine)

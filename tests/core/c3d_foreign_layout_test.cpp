@@ -9,6 +9,8 @@
 #include "mocap/base/file_io.h"
 #include "mocap/io/c3d_reader.h"
 #include "mocap/io/c3d_writer.h"
+#include "mocap/model/gaps.h"
+#include "mocap/model/marker_points.h"
 
 #include <gtest/gtest.h>
 
@@ -407,6 +409,61 @@ TEST(C3dForeignLayout, NexusModelOutputsKeepTheirPointTypes)
   }
 }
 
+// Plug-in Gait's segment axes and centre of mass are in no model-output list of the file: typed by
+// their names only when the points are a segment's axes, said in a warning, and listed when written.
+TEST(C3dForeignLayout, PlugInGaitVirtualPointsAreModelOutputs)
+{
+  for (const char* subject : {"", "Anna:"}) {
+    const std::string prefix = subject;
+    SCOPED_TRACE("prefix '" + prefix + "'");
+    const Read read = parse(encodeC3d(test::plugInGaitTake(prefix)));
+    std::vector<std::string> virtuals;
+    for (Eigen::Index m = 0; m < read.take.markerCount(); ++m)
+      if (read.take.pointType(m) == PointType::Virtual)
+        virtuals.push_back(read.take.label(m));
+    std::vector<std::string> expected;
+    for (const char* name : {"PELO", "PELA", "PELL", "PELP", "CentreOfMass", "CentreOfMassFloor"})
+      expected.push_back(prefix + name);
+    EXPECT_EQ(virtuals, expected) << "not the femur without its P, nor the tibia whose axes slant";
+    EXPECT_EQ(markerLabels(read.take).size(), 3u + 3u + 4u);
+    (void)warningWith(read, {"6 points are Vicon Plug-in Gait virtual points", prefix + "PELO, "});
+    EXPECT_EQ(describeModelOutputs(read.take), "6 model outputs (6 virtual points)");
+    for (const Gap& gap : findGaps(read.take))
+      EXPECT_NE(read.take.label(gap.marker), prefix + "PELA") << "a model output's gap is not the take's";
+
+    // Written back, they are listed (POINT:VIRTUALS, named in TYPE_GROUPS) and read to the same
+    // types without a guess.
+    const Read back = parse(encodeC3d(read.take));
+    EXPECT_EQ(test::pointTypes(back.take), test::pointTypes(read.take));
+    const C3dParameterTree& lists = back.take.parameters();
+    EXPECT_EQ(lists.strings("POINT", "VIRTUALS"), expected);
+    const std::vector<std::string> groups = lists.strings("POINT", "TYPE_GROUPS");
+    const std::vector<std::string> pair = {"VIRTUALS", "VIRTUAL"};
+    EXPECT_NE(std::search(groups.begin(), groups.end(), pair.begin(), pair.end()), groups.end());
+    EXPECT_FALSE(anyWarningWith(back, "Plug-in Gait"));
+  }
+}
+
+TEST(C3dForeignLayout, PlugInGaitNamesAloneTypeNothing)
+{
+  // A take's own labels that happen to be Plug-in Gait's: four collinear points named like the
+  // head's axes, a lone toe origin, a centre of mass in a file without model outputs.
+  Take own = test::distinctValuesTake(6, 5);
+  const std::vector<std::string> labels = {"CentreOfMass", "HEDO", "HEDA", "HEDL", "HEDP", "LTOO"};
+  for (Eigen::Index m = 0; m < own.markerCount(); ++m)
+    own.setLabel(m, labels[static_cast<std::size_t>(m)]);
+  const Read read = parse(encodeC3d(own));
+  EXPECT_EQ(markerLabels(read.take), labels);
+  EXPECT_FALSE(anyWarningWith(read, "Plug-in Gait"));
+
+  // Beside the file's listed model outputs, the centre of mass is one.
+  Take nexus = test::nexusStyleTake(false);
+  const Eigen::Index centre = nexus.addMarker("Anna:CentreOfMass");
+  const Read withOutputs = parse(encodeC3d(nexus));
+  EXPECT_EQ(withOutputs.take.pointType(centre), PointType::Virtual);
+  EXPECT_EQ(withOutputs.take.pointType(0), PointType::Marker) << "LASI";
+}
+
 TEST(C3dForeignLayout, PointTypesTravelWithTheMarker)
 {
   Take take = parse(encodeC3d(test::nexusStyleTake(false))).take;
@@ -430,9 +487,17 @@ TEST(C3dForeignLayout, RealNexusFileHasItsModelOutputsTyped)
   EXPECT_EQ(counts[PointType::Force], 8);
   EXPECT_EQ(counts[PointType::Moment], 8);
   EXPECT_EQ(counts[PointType::Power], 6);
-  EXPECT_EQ(counts[PointType::Marker], 85 - 34);
+  // Plug-in Gait's 9 lower-body segments, 4 points each (PELO… RTOL), in no list of the file.
+  EXPECT_EQ(counts[PointType::Virtual], 36);
+  EXPECT_EQ(counts[PointType::Marker], 85 - 34 - 36);
   EXPECT_EQ(take.pointType(*take.markerIndex("LHipAngles")), PointType::Angle);
+  EXPECT_EQ(take.pointType(*take.markerIndex("LFEO")), PointType::Virtual);
   EXPECT_EQ(take.pointType(*take.markerIndex("RKNE")), PointType::Marker);
+  EXPECT_EQ(std::count_if(warnings.begin(), warnings.end(),
+                          [](const std::string& w) { return w.find("36 points are Vicon Plug-in Gait") == 0; }),
+            1);
+  const std::string bytes = encodeC3d(take);
+  EXPECT_EQ(test::pointTypes(parse(bytes).take), test::pointTypes(take)) << "written back, the same types";
   // Nexus writes an invalid sample's residual word as 65535.0: the 16-bit word 0xFFFF, −1. The
   // unlabelled "*5" has it in every frame, at the origin.
   EXPECT_FALSE(take.valid().col(*take.markerIndex("*5")).any());

@@ -93,6 +93,39 @@ Take nexusCleaningTake(Eigen::Index frames)
   return take;
 }
 
+Take plugInGaitTake(const std::string& prefix)
+{
+  const std::vector<std::string> names = {"LASI", "RASI", "SACR", "PELO", "PELA", "PELL", "PELP",
+                                          "CentreOfMass", "CentreOfMassFloor", "LFEO", "LFEA", "LFEL",
+                                          "LTIO", "LTIA", "LTIL", "LTIP"};
+  std::vector<std::string> labels;
+  for (const std::string& name : names)
+    labels.push_back(prefix + name);
+  constexpr Eigen::Index kFrames = 30;
+  Take take(labels, kFrames, 100.0);
+  for (Eigen::Index f = 0; f < kFrames; ++f) {
+    const double t = static_cast<double>(f) / 100.0;
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.8 * t, Eigen::Vector3d(0.2, 0.3, 1.0).normalized()).toRotationMatrix();
+    const Eigen::Vector3d pelvis(500.0 * t, 20.0 * std::sin(3.0 * t), 950.0);
+    const std::vector<Eigen::Vector3d> offsets = {
+        {0, 120, 0},    {0, -120, 0},   {-150, 0, 0},                                         // LASI RASI SACR
+        {0, 0, 0},      {100, 0, 0},    {0, 100, 0},    {0, 0, 100},                          // pelvis O A L P
+        {0, 0, 50},     {0, 0, -950},                                                         // centre of mass
+        {0, 90, -400},  {100, 90, -400}, {0, 190, -400},                                      // femur O A L
+        {0, 90, -800},  {100, 90, -800}, {70.7, 160.7, -800}, {0, 90, -700}};                 // tibia O A L P
+    for (Eigen::Index m = 0; m < take.markerCount(); ++m)
+      take.setPosition(f, m, pelvis + turn * offsets[static_cast<std::size_t>(m)]);
+    take.setPosition(f, 8, Eigen::Vector3d(pelvis.x(), pelvis.y(), 0.0));  // the centre of mass on the floor
+  }
+  take.valid().setConstant(true);
+  take.residuals().setConstant(1.0);
+  for (Eigen::Index f = 10; f < 13; ++f) {
+    take.valid()(f, 4) = false;
+    take.residuals()(f, 4) = -1.0;
+  }
+  return take;
+}
+
 std::vector<PointType> pointTypes(const Take& take)
 {
   std::vector<PointType> types;

@@ -2,6 +2,7 @@
 
 #include "mocap/model/take.h"
 
+#include <string>
 #include <vector>
 
 namespace mocap::test {
@@ -28,6 +29,14 @@ namespace mocap::test {
 /// 40 + 5m and jumps by 40 units in frame 120, so a step that touched an output would change it.
 /// `frames` ≥ 150.
 [[nodiscard]] Take nexusCleaningTake(Eigen::Index frames = 200);
+
+/// A Vicon Plug-in Gait export in miniature, every label behind `prefix` ("" or "Anna:"), over 30
+/// frames at 100 Hz, no model-output list in the parameters: the markers LASI, RASI, SACR; the
+/// pelvis's virtual points PELO, PELA, PELL, PELP (an origin and the ends of three right-angled
+/// 100 mm axes, turning and moving; PELA misses frames 10–12); CentreOfMass and CentreOfMassFloor;
+/// an incomplete femur LFEO, LFEA, LFEL (right-angled, no LFEP); and a tibia LTIO, LTIA, LTIL, LTIP
+/// whose lateral axis is 45° off the anterior one (four markers that happen to have those names).
+[[nodiscard]] Take plugInGaitTake(const std::string& prefix);
 
 /// The point type of each point of `take`, in order.
 [[nodiscard]] std::vector<PointType> pointTypes(const Take& take);

@@ -8,6 +8,7 @@
 #include "main_window.h"
 #include "models/gap_table_model.h"
 #include "models/marker_table_model.h"
+#include "panels/cleaning_panel.h"
 #include "panels/gap_list_panel.h"
 #include "panels/head_markers_proposal_bar.h"
 #include "sample_window.h"
@@ -18,12 +19,14 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QImage>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStatusBar>
 #include <QTabBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTest>
 #include <QUndoStack>
@@ -37,6 +40,7 @@
 #include <vtkStdString.h>
 #include <vtkTextRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -355,6 +359,62 @@ TEST(ForeignTakeWalkthrough, SixTabbedDocksShowTheirTitlesWhole)
           << tabs->tabText(i).toStdString() << " in a tab bar of " << tabs->width() << " px";
   }
   EXPECT_GE(most, 6);
+}
+
+TEST(ForeignTakeWalkthrough, CleaningTabsShowWholeAtTheFirstRunSize)
+{
+  // On a 1280×800 screen the Cleaning panel's fourth tab read "Sta" behind the scroll arrows.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ASSERT_TRUE(window->showDock(QStringLiteral("cleaningDock")));
+  QTest::qWait(50);
+  auto* panel = window->findChild<ui::CleaningPanel*>();
+  ASSERT_NE(panel, nullptr);
+  const QTabBar* tabs = panel->findChild<QTabWidget*>()->tabBar();
+  ASSERT_EQ(tabs->count(), 4);
+  for (int i = 0; i < tabs->count(); ++i) {
+    EXPECT_GE(tabs->tabRect(i).left(), 0) << tabs->tabText(i).toStdString();
+    EXPECT_LE(tabs->tabRect(i).right(), tabs->width() - 1)
+        << tabs->tabText(i).toStdString() << " ends at " << tabs->tabRect(i).right() << " in a tab bar of "
+        << tabs->width() << " px";
+    EXPECT_GE(tabs->tabRect(i).width(), tabs->fontMetrics().horizontalAdvance(tabs->tabText(i)));
+    EXPECT_FALSE(tabs->tabToolTip(i).isEmpty()) << "the step's whole title";
+  }
+}
+
+TEST(ForeignTakeWalkthrough, MarkersDockShowsEveryColumnWholeOnA1600Screen)
+{
+  // On a 1600×1000 screen (the first window 1360×850) the Markers dock cut its third column.
+  const auto window = test::openSampleWindow(1360, 850);
+  ASSERT_NE(window, nullptr);
+  auto* dock = window->findChild<QDockWidget*>(QStringLiteral("markersDock"));
+  ASSERT_NE(dock, nullptr);
+  auto* table = qobject_cast<QTableView*>(dock->widget());
+  ASSERT_NE(table, nullptr);
+  QTest::qWait(50);
+  for (int column = 0; column < ui::MarkerTableModel::ColumnCount; ++column)
+    EXPECT_LE(table->columnViewportPosition(column) + table->columnWidth(column), table->viewport()->width())
+        << "column " << column << ", dock " << dock->width() << " px";
+  EXPECT_GE(window->markerView()->width(), window->width() * 40 / 100) << "the 3D view keeps 40 %";
+}
+
+TEST(ForeignTakeWalkthrough, ReadWarningsNameTheFileReadAfterSaveAs)
+{
+  // After Save As, the warnings list said "1 warning(s) while reading pig_saved.c3d": the saved copy
+  // reads without them (its types are listed); they are the original file's.
+  const auto window = test::openSampleWindow(kWalkWidth, kWalkHeight);
+  ASSERT_NE(window, nullptr);
+  ASSERT_TRUE(openForeignTake(*window, "c3d/sample03/gait-pig-nz.c3d"));
+  ui::TakeDocument& document = window->document();
+  ASSERT_EQ(document.loadWarnings().size(), 1u) << "Plug-in Gait's virtual points";
+  test::TempDir dir;
+  const QString saved = QString::fromStdString(dir.file("pig_saved.c3d").string());
+  ASSERT_TRUE(document.save(saved, true).isEmpty());
+  EXPECT_EQ(document.filePath(), saved);
+  EXPECT_EQ(QFileInfo(document.readFilePath()).fileName(), QStringLiteral("gait-pig-nz.c3d"));
+  std::vector<std::string> again;
+  (void)readTake(saved.toStdString(), &again);
+  EXPECT_TRUE(again.empty()) << again.front();
 }
 
 TEST(ForeignTakeWalkthrough, NoHeadMarkersAreProposedOnAGaitTake)

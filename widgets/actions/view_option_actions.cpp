@@ -55,8 +55,8 @@ void addViewOptionActions(QMenu& menu, StudioOptions& options, ViewState& view)
   links->setShortcut(QKeySequence(Qt::Key_L));
   QAction* outputs = addOptionToggle(menu, ViewOptionActions::tr("Show &Model Outputs"), options.showModelOutputs);
   outputs->setObjectName(QStringLiteral("showModelOutputsAction"));
-  outputs->setToolTip(ViewOptionActions::tr("Draw and gap-list the joint angles, forces, moments and powers a C3D "
-                                            "file stores as points (they are never cleaned)"));
+  outputs->setToolTip(ViewOptionActions::tr("Draw and gap-list the joint angles, forces, moments, powers and virtual "
+                                            "points a C3D file stores as points (they are never cleaned)"));
   QAction* follow = addOptionToggle(menu, ViewOptionActions::tr("&Follow Head"), options.followHead);
   follow->setObjectName(QStringLiteral("followHeadAction"));
   follow->setShortcut(QKeySequence(Qt::Key_F));

@@ -38,7 +38,7 @@ void ReadWarningsButton::openList()
       list << QString::fromStdString(text);
     return list;
   };
-  ReadWarningsDialog dialog(QFileInfo(m_document.filePath()).fileName(), toList(m_document.loadWarnings()),
+  ReadWarningsDialog dialog(QFileInfo(m_document.readFilePath()).fileName(), toList(m_document.loadWarnings()),
                             toList(m_document.dataLossWarnings()), window());
   dialog.exec();
 }

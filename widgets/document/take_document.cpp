@@ -66,6 +66,7 @@ void TakeDocument::setTake(Take take, const QString& path)
 {
   m_take = std::move(take);
   m_filePath = path;
+  m_readFilePath = path;
   m_loadWarnings.clear();
   m_dataLoss.clear();
   m_undoStack.clear();

@@ -34,6 +34,9 @@ public:
   [[nodiscard]] bool hasTake() const { return !m_take.empty(); }
   [[nodiscard]] QUndoStack* undoStack() { return &m_undoStack; }
   [[nodiscard]] bool isModified() const { return !m_undoStack.isClean(); }
+  /// The file the open take was read from, whose warnings loadWarnings() are: Save As changes
+  /// filePath(), not this (the list said "while reading" the saved copy, which reads without them).
+  [[nodiscard]] const QString& readFilePath() const { return m_readFilePath; }
   /// Warnings from the last successful open (tolerated file quirks), all of them.
   [[nodiscard]] const std::vector<std::string>& loadWarnings() const { return m_loadWarnings; }
   /// The warnings of the last open that mean data the file declares is missing (truncation).
@@ -186,6 +189,7 @@ private:
   QUndoStack m_undoStack;
   Eigen::Index m_currentFrame = 0;
   std::vector<Eigen::Index> m_selection;
+  QString m_readFilePath;
   std::vector<std::string> m_loadWarnings;
   std::vector<std::string> m_dataLoss;
   std::vector<bool> m_hidden;  // one per marker

@@ -82,14 +82,22 @@ QVariant MarkerTableModel::data(const QModelIndex& index, int role) const
 
 QVariant MarkerTableModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
+  if (orientation == Qt::Horizontal && role == Qt::ToolTipRole) {  // the whole names of the short headers
+    switch (section) {
+    case LongestGapColumn: return tr("Longest gap, in frames");
+    case BadPointsColumn: return tr("Bad points");
+    default: return {};
+    }
+  }
   if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
     return QAbstractTableModel::headerData(section, orientation, role);
+  // Short, so the dock shows every column whole beside the 3D view (at 1600×1000 it cut the third).
   switch (section) {
   case LabelColumn: return tr("Marker");
   case ValidColumn: return tr("Valid %");
   case GapsColumn: return tr("Gaps");
-  case LongestGapColumn: return tr("Longest gap");
-  case BadPointsColumn: return tr("Bad points");
+  case LongestGapColumn: return tr("Longest", "the longest gap");
+  case BadPointsColumn: return tr("Bad", "bad points");
   default: return {};
   }
 }

@@ -64,7 +64,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
 {
   auto* layout = new QVBoxLayout(this);
   m_tabs = new QTabWidget(this);
-  m_tabs->setUsesScrollButtons(true);  // four step titles are wider than the dock
+  m_tabs->setUsesScrollButtons(true);  // in a dock narrower than the four tabs (a larger font, a translation)
   layout->addWidget(m_tabs, 1);
   m_live = new QCheckBox(tr("Live preview"), this);
   m_live->setChecked(true);
@@ -120,7 +120,7 @@ CleaningPanel::~CleaningPanel() = default;  // the runner stops and awaits its j
 void CleaningPanel::addStep(CleaningStep* step)
 {
   wrapLongFormRows(*step);  // a step may come after the panel is docked
-  m_tabs->addTab(step, step->title());
+  m_tabs->setTabToolTip(m_tabs->addTab(step, step->tabTitle()), step->title());
   connect(step, &CleaningStep::changed, this, &CleaningPanel::schedule);
 }
 

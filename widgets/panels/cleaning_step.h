@@ -92,8 +92,11 @@ class CleaningStep : public QWidget
 public:
   using QWidget::QWidget;
 
-  /// The step's title for tabs and undo texts ("Fill gaps").
+  /// The step's title for undo texts, presets and the tab's tooltip ("Stabilize head").
   [[nodiscard]] virtual QString title() const = 0;
+  /// The tab's word, whole: the four tabs fit side by side in the dock of the first window on a
+  /// 1280×800 screen (a longer title was cut to "Sta" behind the scroll arrows). The title by default.
+  [[nodiscard]] virtual QString tabTitle() const { return title(); }
   [[nodiscard]] virtual StepJob job() const = 0;
   /// The patches Apply pushes, given the last result (a step may let the user reject some).
   [[nodiscard]] virtual std::vector<SamplePatch> patchesToApply(const Take& take, const StepResult& result) const

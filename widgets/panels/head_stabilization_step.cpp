@@ -48,6 +48,11 @@ QString HeadStabilizationStep::title() const
   return tr("Stabilize head");
 }
 
+QString HeadStabilizationStep::tabTitle() const
+{
+  return tr("Head", "the Cleaning panel's tab of Stabilize head");
+}
+
 StepJob HeadStabilizationStep::job() const
 {
   // Indices into the document's take, of which the job gets a copy taken at the same moment.

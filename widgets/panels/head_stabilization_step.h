@@ -23,6 +23,7 @@ public:
   explicit HeadStabilizationStep(TakeDocument& document, QWidget* parent = nullptr);
 
   [[nodiscard]] QString title() const override;
+  [[nodiscard]] QString tabTitle() const override;
   [[nodiscard]] StepJob job() const override;
   [[nodiscard]] bool wholeTake() const override { return true; }
   // No addToPreset: the reference markers are the take's, not an option; File ▸ Save Cleaning

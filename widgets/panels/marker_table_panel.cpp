@@ -5,8 +5,10 @@
 #include "views/label_column.h"
 
 #include <QHeaderView>
+#include <QScrollBar>
 #include <QSortFilterProxyModel>
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -25,10 +27,23 @@ MarkerTablePanel::MarkerTablePanel(TakeDocument& document, QWidget* parent)
   setSelectionMode(QAbstractItemView::ExtendedSelection);
   verticalHeader()->hide();
   horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  horizontalHeader()->setStretchLastSection(true);
+  // No stretched last column: stretched, it kept the header's default 100 px however little it held
+  // and ended past the dock that sizeHint() asked for.
+  horizontalHeader()->setStretchLastSection(false);
   limitLabelColumn(*this, MarkerTableModel::LabelColumn, false);  // "Valid %" stays in view
   connect(selectionModel(), &QItemSelectionModel::selectionChanged, this, &MarkerTablePanel::takeRowSelection);
   connect(&document, &TakeDocument::selectionChanged, this, &MarkerTablePanel::selectDocumentSelection);
+}
+
+QSize MarkerTablePanel::sizeHint() const
+{
+  const QHeaderView* header = horizontalHeader();
+  int width = 2 * frameWidth() + verticalScrollBar()->sizeHint().width();
+  for (int column = 0; column < header->count(); ++column)
+    width += column == MarkerTableModel::LabelColumn
+                 ? header->sectionSize(column)  // limited, elided beyond
+                 : std::max(header->sectionSizeHint(column), sizeHintForColumn(column));
+  return {width, QTableView::sizeHint().height()};
 }
 
 void MarkerTablePanel::editCurrentLabel()

@@ -28,8 +28,9 @@ void ModelOutputsNote::refresh()
   setText(shown ? tr("%1 shown").arg(head) : tr("%1 hidden").arg(head));
   setToolTip((shown ? tr("%1 shown; never cleaned") : tr("%1 hidden; View ▸ Show Model Outputs")).arg(outputs) +
              QStringLiteral("\n") +
-             tr("Model outputs are joint angles, forces, moments and powers the capture software stored as points. "
-                "They are kept and saved, but not cleaned, gap-listed or counted in statistics."));
+             tr("Model outputs are joint angles, forces, moments, powers and virtual points (a model's segment "
+                "axes, centre of mass) the capture software stored as points. They are kept and saved, but not "
+                "cleaned, gap-listed or counted in statistics."));
 }
 
 } // namespace mocap::ui

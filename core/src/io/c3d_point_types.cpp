@@ -4,6 +4,7 @@
 #include "mocap/io/c3d_string_lists.h"
 
 #include <algorithm>
+#include <array>
 #include <unordered_map>
 
 namespace mocap {
@@ -17,10 +18,20 @@ std::string defaultListName(PointType type)
   case PointType::Force: return "FORCES";
   case PointType::Moment: return "MOMENTS";
   case PointType::Power: return "POWERS";
+  case PointType::Virtual: return "VIRTUALS";
   case PointType::Marker:
   case PointType::Other: break;
   }
   return "OTHERS";
+}
+
+/// The types whose lists a reader finds without POINT:TYPE_GROUPS (Nexus's four).
+constexpr std::array kListsWithoutTypeGroups{PointType::Angle, PointType::Force, PointType::Moment, PointType::Power};
+
+bool isFoundWithoutTypeGroups(PointType type)
+{
+  return std::find(kListsWithoutTypeGroups.begin(), kListsWithoutTypeGroups.end(), type) !=
+         kListsWithoutTypeGroups.end();
 }
 
 // A list name that is one of the POINT group's own parameters: a file naming it in TYPE_GROUPS
@@ -44,7 +55,7 @@ std::vector<std::pair<std::string, PointType>> c3dPointTypeLists(const C3dParame
     if (!isPointGroupParameter(groups[i]))
       lists.emplace_back(groups[i], parsePointType(toLower(groups[i + 1])).value_or(PointType::Other));
   if (lists.empty())
-    for (const PointType type : {PointType::Angle, PointType::Force, PointType::Moment, PointType::Power})
+    for (const PointType type : kListsWithoutTypeGroups)
       lists.emplace_back(defaultListName(type), type);
   return lists;
 }
@@ -86,7 +97,7 @@ void writeC3dPointTypes(const Take& take, C3dParameterTree& tree)
     if (i == lists.size()) {
       lists.emplace_back(defaultListName(type), type);
       contents.emplace_back();
-      typeGroupsNeeded = typeGroupsNeeded || hadTypeGroups || type == PointType::Other;
+      typeGroupsNeeded = typeGroupsNeeded || hadTypeGroups || !isFoundWithoutTypeGroups(type);
     }
     contents[i].push_back(take.label(m));
   }

@@ -3,6 +3,7 @@
 #include "mocap/io/c3d_binary.h"
 #include "mocap/io/c3d_point_types.h"
 #include "mocap/io/c3d_string_lists.h"
+#include "mocap/io/vicon_virtual_points.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/model/provenance.h"
@@ -238,6 +239,7 @@ public:
     Take take = makeTake(layout);
     readC3dPointTypes(m_tree, take);
     decodeData(layout, take);
+    reportVirtualPoints(typeViconVirtualPoints(take));  // decoded first: the axes are checked
     if (!layout.isFloat)
       warnAboutWrappedIntegers(layout, take);
     readEvents(take);
@@ -256,6 +258,21 @@ private:
   {
     if (m_warnings)
       m_warnings->push_back(message);
+  }
+
+  /// Plug-in Gait's virtual points are typed by their names and axes, not by a list of the file: the
+  /// reader's judgement, so it is said.
+  void reportVirtualPoints(const std::vector<std::string>& labels)
+  {
+    if (labels.empty())
+      return;
+    std::string named;
+    for (std::size_t i = 0; i < std::min<std::size_t>(labels.size(), 4); ++i)
+      named += (i == 0 ? "" : ", ") + labels[i];
+    warn(std::to_string(labels.size()) +
+         (labels.size() == 1 ? " point is a Vicon Plug-in Gait virtual point" : " points are Vicon Plug-in Gait virtual points") +
+         " (segment axes, centre of mass: " + named + (labels.size() > 4 ? ", …" : "") +
+         "), not markers: kept as model outputs");
   }
 
   /// A warning that means data the file declares is missing from the take.

@@ -16,6 +16,15 @@ std::vector<Eigen::Index> pointsWhere(const Take& take, bool marker)
   return points;
 }
 
+/// "angle"/"angles" for a count of a type; "other" has no plural of its own ("2 others" reads as
+/// well as "2 angles"), "virtual" is an adjective ("36 virtual points").
+std::string kindNoun(PointType type, bool one)
+{
+  const std::string name(pointTypeName(type));
+  const std::string noun = type == PointType::Virtual ? name + " point" : name;
+  return one ? noun : noun + "s";
+}
+
 } // namespace
 
 bool isMarker(const Take& take, Eigen::Index point)
@@ -52,9 +61,9 @@ double markerValidFraction(const Take& take)
   return samples == 0 ? 0.0 : static_cast<double>(valid) / static_cast<double>(samples);
 }
 
-std::array<Eigen::Index, 6> pointTypeCounts(const Take& take)
+std::array<Eigen::Index, kPointTypeCount> pointTypeCounts(const Take& take)
 {
-  std::array<Eigen::Index, 6> counts{};
+  std::array<Eigen::Index, kPointTypeCount> counts{};
   for (Eigen::Index m = 0; m < take.markerCount(); ++m)
     ++counts[static_cast<std::size_t>(take.pointType(m))];
   return counts;
@@ -62,7 +71,7 @@ std::array<Eigen::Index, 6> pointTypeCounts(const Take& take)
 
 std::string describeModelOutputs(const Take& take)
 {
-  const std::array<Eigen::Index, 6> counts = pointTypeCounts(take);
+  const std::array<Eigen::Index, kPointTypeCount> counts = pointTypeCounts(take);
   const Eigen::Index outputs = take.markerCount() - counts[static_cast<std::size_t>(PointType::Marker)];
   if (outputs == 0)
     return {};
@@ -70,9 +79,8 @@ std::string describeModelOutputs(const Take& take)
   for (std::size_t t = 1; t < counts.size(); ++t) {
     if (counts[t] == 0)
       continue;
-    // "other" has no plural of its own: "2 others" reads as well as "2 angles".
     kinds += (kinds.empty() ? "" : ", ") + std::to_string(counts[t]) + " " +
-             std::string(pointTypeName(static_cast<PointType>(t))) + (counts[t] == 1 ? "" : "s");
+             kindNoun(static_cast<PointType>(t), counts[t] == 1);
   }
   return std::to_string(outputs) + (outputs == 1 ? " model output (" : " model outputs (") + kinds + ")";
 }

@@ -20,13 +20,14 @@ Eigen::VectorXd AnalogData::physical(Eigen::Index c) const
 
 namespace {
 
-constexpr EnumTable<PointType, 6> kPointTypes{{{
+constexpr EnumTable<PointType, kPointTypeCount> kPointTypes{{{
     {PointType::Marker, "marker"},
     {PointType::Angle, "angle"},
     {PointType::Force, "force"},
     {PointType::Moment, "moment"},
     {PointType::Power, "power"},
     {PointType::Other, "other"},
+    {PointType::Virtual, "virtual"},
 }}};
 
 /// "M<index+1>", suffixed "_2", "_3"... until it is none of `labels` and not in `seen`.

@@ -24,7 +24,8 @@ void readC3dPointTypes(const C3dParameterTree& tree, Take& take);
 /// Rewrites the lists in `tree` from the take's point types, so a re-read gives the same types:
 /// each holds exactly the take's points of its type, in take order (a point keeps the list it was
 /// in when several lists have its type). A type without a list gets one (ANGLES, FORCES, MOMENTS,
-/// POWERS, OTHERS), named in TYPE_GROUPS when the file has one or the type is Other; a list of the
+/// POWERS, OTHERS, VIRTUALS), named in TYPE_GROUPS when the file has one or the type is Other or
+/// Virtual (a reader finds only the first four without it); a list of the
 /// file whose points are gone is kept, empty; a take of markers only adds nothing.
 /// O(#points + #listed labels) expected.
 void writeC3dPointTypes(const Take& take, C3dParameterTree& tree);

@@ -10,7 +10,8 @@
 namespace mocap {
 
 /// Which points of a take are marker positions. C3D files from Vicon Nexus store model outputs
-/// (joint angles, forces, moments, powers) as points beside the markers; they are kept in the take
+/// (joint angles, forces, moments, powers, and virtual points such as segment axes) as points
+/// beside the markers; they are kept in the take
 /// and written back, but views, gap lists, cleaning, layout planning and statistics leave them
 /// out. This is the one rule they all use.
 
@@ -32,10 +33,10 @@ namespace mocap {
 [[nodiscard]] double markerValidFraction(const Take& take);
 
 /// How many points of each PointType the take holds, indexed by the enum's value. O(#points).
-[[nodiscard]] std::array<Eigen::Index, 6> pointTypeCounts(const Take& take);
+[[nodiscard]] std::array<Eigen::Index, kPointTypeCount> pointTypeCounts(const Take& take);
 
-/// "34 model outputs (12 angles, 8 forces, 8 moments, 6 powers)", the kinds the take holds in
-/// enum order; "" when every point is a marker. O(#points).
+/// "70 model outputs (12 angles, 8 forces, 8 moments, 6 powers, 36 virtual points)", the kinds the
+/// take holds in enum order; "" when every point is a marker. O(#points).
 [[nodiscard]] std::string describeModelOutputs(const Take& take);
 
 /// The take with its marker points only, for a file that holds marker positions and cannot say a

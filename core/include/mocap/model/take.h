@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -80,7 +81,9 @@ private:
 };
 
 /// What one point of a take holds: a measured marker, or a model output C3D stores as a point
-/// (Vicon Nexus's joint angles, forces, moments and powers; `Other` for further kinds a file names).
+/// (Vicon Nexus's joint angles, forces, moments and powers; `Other` for further kinds a file names;
+/// `Virtual` for a model's positions that no camera saw: Plug-in Gait's segment axes PELO, LFEA…,
+/// its CentreOfMass).
 enum class PointType : std::uint8_t
 {
   Marker = 0,
@@ -89,9 +92,13 @@ enum class PointType : std::uint8_t
   Moment = 3,
   Power = 4,
   Other = 5,
+  Virtual = 6,
 };
 
-/// "marker", "angle", "force", "moment", "power", "other". O(1).
+/// How many PointType values there are: the size of a count per type.
+inline constexpr std::size_t kPointTypeCount = 7;
+
+/// "marker", "angle", "force", "moment", "power", "other", "virtual". O(1).
 [[nodiscard]] std::string_view pointTypeName(PointType type);
 /// The type pointTypeName gives `name` (lower case), or nullopt. O(1).
 [[nodiscard]] std::optional<PointType> parsePointType(std::string_view name);
