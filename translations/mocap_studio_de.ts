@@ -154,7 +154,7 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+65"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>Keine Referenzmarker: Wählen Sie sie unter Marker ▸ Referenzmarker… aus</translation>
     </message>
@@ -319,7 +319,7 @@
 <context>
     <name>RecoveryOffer</name>
     <message>
-        <location filename="../widgets/actions/recovery_offer.cpp" line="+25"/>
+        <location filename="../widgets/actions/recovery_offer.cpp" line="+42"/>
         <source>an untitled take</source>
         <translation>einer unbenannten Aufnahme</translation>
     </message>
@@ -482,8 +482,12 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Draw and gap-list the joint angles, forces, moments, powers and virtual points a C3D file stores as points (they are never cleaned)</source>
+        <translation>Die Gelenkwinkel, Kräfte, Momente, Leistungen und virtuellen Punkte, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
+    </message>
+    <message>
         <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
-        <translation>Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
+        <translation type="vanished">Gelenkwinkel, Kräfte, Momente und Leistungen, die eine C3D-Datei als Punkte speichert, zeichnen und in der Lückenliste zeigen (sie werden nie bereinigt)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -499,7 +503,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+91"/>
+        <location filename="../app/studio/main_window.cpp" line="+95"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -513,7 +517,7 @@
         <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Markers</source>
         <translation>Marker</translation>
     </message>
@@ -724,6 +728,11 @@
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
+        <location line="+81"/>
+        <source>Recovered unsaved edits of %1; not restored: %2</source>
+        <translation>Nicht gespeicherte Änderungen von %1 wiederhergestellt; nicht wiederhergestellt: %2</translation>
+    </message>
+    <message>
         <source>&amp;Reset Camera</source>
         <translation type="vanished">Kamera &amp;zurücksetzen</translation>
     </message>
@@ -760,7 +769,7 @@
         <translation type="vanished">Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-79"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -1021,12 +1030,11 @@
         <translation type="vanished">Die Vorgabe wurde nicht geladen: %1</translation>
     </message>
     <message>
-        <location line="+69"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
-        <translation>Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
+        <translation type="vanished">Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+78"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
@@ -1079,7 +1087,7 @@
         <translation type="vanished">Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-41"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -1110,7 +1118,7 @@
         <translation type="vanished">Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+20"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
@@ -1241,7 +1249,7 @@
 <context>
     <name>mocap::ui::Autosave</name>
     <message>
-        <location filename="../widgets/document/autosave.cpp" line="+81"/>
+        <location filename="../widgets/document/autosave.cpp" line="+104"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>Der Wiederherstellungsordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -1249,29 +1257,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+137"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+138"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+281"/>
+        <location line="+277"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>Laden Sie ein Rig, binden Sie die Marker im Face-Mesh-Panel an seine Neutralform und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-276"/>
+        <location line="-272"/>
         <source>Rig</source>
         <translation>Rig</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+264"/>
+        <location line="+260"/>
         <source>No rig</source>
         <translation>Kein Rig</translation>
     </message>
     <message>
-        <location line="-260"/>
+        <location line="-256"/>
         <source>Load glTF Rig…</source>
         <translation>glTF-Rig laden…</translation>
     </message>
@@ -1447,7 +1455,7 @@
         <translation>Gewichtskurven als CSV: eine Spalte je Shape (einfach oder im Live-Link-Face-Layout)</translation>
     </message>
     <message>
-        <location line="+345"/>
+        <location line="+341"/>
         <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
         <translation>Lösen Sie zuerst die Aufnahme oder öffnen Sie eine Live-Link-Aufzeichnung: Es gibt keine Kurven zum Exportieren.</translation>
     </message>
@@ -1478,7 +1486,7 @@
         <translation type="vanished">Das Rig mit seinen Morph-Targets und den Gewichten als Animation (Blender, Unity, three.js)</translation>
     </message>
     <message>
-        <location line="-278"/>
+        <location line="-274"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>Warten Sie auf den laufenden Auftrag oder brechen Sie ihn ab.</translation>
     </message>
@@ -1493,7 +1501,7 @@
         <translation>Das Rig %1 kann nicht gelesen werden: %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+18"/>
+        <location line="+14"/>
         <source>%1: %n shape(s), %2 vertices</source>
         <translation>
             <numerusform>%1: %n Shape, %2 Vertices</numerusform>
@@ -1506,7 +1514,7 @@
         <translation>Rig geladen. Binden Sie die Marker im Face-Mesh-Panel an seine Neutralform (Automatisch binden oder Bindung laden) und lösen Sie dann.</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-112"/>
         <source>Export Rig…</source>
         <translation>Rig exportieren…</translation>
     </message>
@@ -1516,7 +1524,7 @@
         <translation>Das Rig mit seinen Blendshapes und den Gewichten als Animationskurven, FBX oder glTF (Unreal, Maya, MotionBuilder, Blender, Unity), über eine Retarget-Zuordnung, mit reduzierten Keys</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+112"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>Rig geladen. Lösen, sobald bereit.</translation>
     </message>
@@ -1844,7 +1852,7 @@
     <name>mocap::ui::ExportDialog</name>
     <message>
         <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+87"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+90"/>
         <source>Export Animation</source>
         <translation>Animation exportieren</translation>
     </message>
@@ -1884,6 +1892,16 @@
         <translation>FB&amp;X:</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>The units of the markers&apos; positions in the file (as mocap convert --units): Maya and MotionBuilder work in centimetres, Blender, Unreal and Unity read the declared units</source>
+        <translation>Die Einheit der Markerpositionen in der Datei (wie mocap convert --units): Maya und MotionBuilder arbeiten in Zentimetern, Blender, Unreal und Unity lesen die angegebene Einheit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Units:</source>
+        <translation>&amp;Einheit:</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>&amp;Browse…</source>
         <translation>&amp;Durchsuchen…</translation>
@@ -1915,12 +1933,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+389"/>
+        <location line="+412"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location line="-368"/>
+        <location line="-391"/>
         <source>Z up</source>
         <translation>Z oben</translation>
     </message>
@@ -1950,7 +1968,12 @@
         <translation> mm</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+16"/>
+        <source>As the take (%1)</source>
+        <translation>Wie die Aufnahme (%1)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Whole take (%1–%2)</source>
         <translation>Gesamte Aufnahme (%1–%2)</translation>
     </message>
@@ -1965,7 +1988,7 @@
         <translation>Benutzerdefiniert</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>Laden Sie zuerst ein Gesichtsnetz: Diese Formate exportieren das verformte Netz.</translation>
     </message>
@@ -1991,7 +2014,7 @@
         <translation>Dateien ersetzen?</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Folder for the OBJ sequence</source>
         <translation>Ordner für die OBJ-Sequenz</translation>
     </message>
@@ -2056,12 +2079,12 @@
         <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen.</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>Not exported: the existing files are kept.</source>
         <translation>Nicht exportiert: Die vorhandenen Dateien bleiben erhalten.</translation>
     </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>%n Bild wird exportiert…</numerusform>
@@ -2074,12 +2097,12 @@
         <translation>%1 von %2 Keys behalten (%3 %), größter Fehler %4 mm (Toleranz %5 mm).</translation>
     </message>
     <message>
-        <location line="-456"/>
+        <location line="-485"/>
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
     <message numerus="yes">
-        <location line="+415"/>
+        <location line="+444"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>%n Bild nach %1 exportiert.</numerusform>
@@ -3019,7 +3042,7 @@
 <context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-51"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>Am Kopf befestigte Marker, die sich nur mit dem Kopf bewegen: An ihnen wird die Kopfhaltung jedes Bildes gemessen.</translation>
     </message>
@@ -3052,6 +3075,12 @@
         <location line="+14"/>
         <source>Stabilize head</source>
         <translation>Kopf stabilisieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Head</source>
+        <comment>the Cleaning panel&apos;s tab of Stabilize head</comment>
+        <translation>Kopf</translation>
     </message>
 </context>
 <context>
@@ -3329,7 +3358,7 @@
         <translation>erkannt</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>Aufnahmedateien, die zusammen mit der geöffneten Aufnahme geplant werden (sie müssen deren Marker enthalten)</translation>
     </message>
@@ -3514,7 +3543,7 @@
         <translation>Die Beurteilung am Rig braucht ein Blendshape-Rig (Blendshape-Solve-Panel) und an seine Neutralform gebundene Marker (Face-Mesh-Panel); oder schalten Sie sie aus.</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+102"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 Marker, %2 Bilder (%7), %3 Paare (%4), %5 PCA-Komponenten. Empfohlen: %6 Marker.</translation>
     </message>
@@ -3532,7 +3561,7 @@
         <translation>Kopfbewegung nicht entfernt: keine Referenzmarker</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-292"/>
         <source>Reference markers:</source>
         <translation>Referenzmarker:</translation>
     </message>
@@ -3687,12 +3716,12 @@
         <translation>Abgebrochen; das vorherige Ergebnis bleibt erhalten.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+29"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>%1 Bilder wegen eines fehlenden Markers verworfen; die PCA erklärt %2 % der Varianz; Empfehlung gemäß %3</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Not judged on the rig: %1</source>
         <translation>Nicht am Rig beurteilt: %1</translation>
     </message>
@@ -3702,7 +3731,7 @@
         <translation>Die Beurteilung am Rig wurde abgebrochen.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>PFA %1 · greedy %2 · random %3</source>
         <translation>PFA %1 · Greedy %2 · Zufall %3</translation>
     </message>
@@ -4011,7 +4040,12 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Eine Modellausgabe (%1), kein Marker: wird nie bereinigt; gezeichnet und in der Lückenliste nur mit Ansicht ▸ Modellausgaben anzeigen</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
+        <source>Longest gap, in frames</source>
+        <translation>Längste Lücke, in Frames</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Marker</source>
         <translation>Marker</translation>
     </message>
@@ -4027,11 +4061,22 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
     </message>
     <message>
         <location line="+1"/>
-        <source>Longest gap</source>
-        <translation>Längste Lücke</translation>
+        <source>Longest</source>
+        <comment>the longest gap</comment>
+        <translation>Längste</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Bad</source>
+        <comment>bad points</comment>
+        <translation>Fehlp.</translation>
+    </message>
+    <message>
+        <source>Longest gap</source>
+        <translation type="vanished">Längste Lücke</translation>
+    </message>
+    <message>
+        <location line="-12"/>
         <source>Bad points</source>
         <translation>Fehlpunkte</translation>
     </message>
@@ -4039,14 +4084,14 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+138"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+266"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+266"/>
+        <location line="-69"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>Kopfstabilisiert auf %n Marker — Strg+B für das Laborkoordinatensystem</numerusform>
@@ -4083,8 +4128,12 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
     </message>
     <message>
         <location line="+2"/>
+        <source>Model outputs are joint angles, forces, moments, powers and virtual points (a model&apos;s segment axes, centre of mass) the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
+        <translation>Modellausgaben sind Gelenkwinkel, Kräfte, Momente, Leistungen und virtuelle Punkte (Segmentachsen eines Modells, Körperschwerpunkt), die die Aufnahmesoftware als Punkte gespeichert hat. Sie bleiben erhalten und werden gespeichert, aber nicht bereinigt, nicht in der Lückenliste geführt und nicht in Statistiken gezählt.</translation>
+    </message>
+    <message>
         <source>Model outputs are joint angles, forces, moments and powers the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
-        <translation>Modellausgaben sind Gelenkwinkel, Kräfte, Momente und Leistungen, die die Aufnahmesoftware als Punkte gespeichert hat. Sie bleiben erhalten und werden gespeichert, aber nicht bereinigt, in der Lückenliste gezeigt oder in Statistiken gezählt.</translation>
+        <translation type="vanished">Modellausgaben sind Gelenkwinkel, Kräfte, Momente und Leistungen, die die Aufnahmesoftware als Punkte gespeichert hat. Sie bleiben erhalten und werden gespeichert, aber nicht bereinigt, in der Lückenliste gezeigt oder in Statistiken gezählt.</translation>
     </message>
 </context>
 <context>

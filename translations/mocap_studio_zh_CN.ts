@@ -147,7 +147,7 @@
 <context>
     <name>HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+60"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="+65"/>
         <source>No reference markers: choose them in Marker ▸ Reference Markers…</source>
         <translation>没有参考标记点：请在“标记点 ▸ 参考标记点…”中选择</translation>
     </message>
@@ -312,7 +312,7 @@
 <context>
     <name>RecoveryOffer</name>
     <message>
-        <location filename="../widgets/actions/recovery_offer.cpp" line="+25"/>
+        <location filename="../widgets/actions/recovery_offer.cpp" line="+42"/>
         <source>an untitled take</source>
         <translation>未命名拍摄</translation>
     </message>
@@ -473,8 +473,12 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Draw and gap-list the joint angles, forces, moments, powers and virtual points a C3D file stores as points (they are never cleaned)</source>
+        <translation>绘制 C3D 文件以点形式存储的关节角度、力、力矩、功率和虚拟点，并列入缺口列表（它们从不被清理）</translation>
+    </message>
+    <message>
         <source>Draw and gap-list the joint angles, forces, moments and powers a C3D file stores as points (they are never cleaned)</source>
-        <translation>绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
+        <translation type="vanished">绘制并在缺口列表中显示 C3D 文件以点存储的关节角度、力、力矩和功率（它们从不被清理）</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -490,7 +494,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+91"/>
+        <location filename="../app/studio/main_window.cpp" line="+95"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -504,7 +508,7 @@
         <translation>自动保存失败：%1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Markers</source>
         <translation>标记点</translation>
     </message>
@@ -715,6 +719,11 @@
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
+        <location line="+81"/>
+        <source>Recovered unsaved edits of %1; not restored: %2</source>
+        <translation>已恢复 %1 未保存的编辑；未恢复：%2</translation>
+    </message>
+    <message>
         <source>&amp;Reset Camera</source>
         <translation type="vanished">重置相机(&amp;C)</translation>
     </message>
@@ -751,7 +760,7 @@
         <translation type="vanished">头部移动时相机始终对准头部（头部标记点的质心）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-79"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
@@ -1010,12 +1019,11 @@
         <translation type="vanished">预设未加载：%1</translation>
     </message>
     <message>
-        <location line="+69"/>
         <source>The face mesh of the recovered session could not be restored: %1</source>
-        <translation>无法还原所恢复会话的面部网格：%1</translation>
+        <translation type="vanished">无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+78"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
@@ -1068,7 +1076,7 @@
         <translation type="vanished">动捕片段有未保存的修改。是否保存？</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-41"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
@@ -1099,7 +1107,7 @@
         <translation type="vanished">无法恢复</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+20"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
@@ -1230,7 +1238,7 @@
 <context>
     <name>mocap::ui::Autosave</name>
     <message>
-        <location filename="../widgets/document/autosave.cpp" line="+81"/>
+        <location filename="../widgets/document/autosave.cpp" line="+104"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>无法创建恢复文件夹 %1</translation>
     </message>
@@ -1238,29 +1246,29 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+137"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+138"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+281"/>
+        <location line="+277"/>
         <source>Load a rig, bind the markers to its neutral in the Face Mesh panel, then Solve.</source>
         <translation>加载绑定模型，在面部网格面板中将标记点绑定到其中性形状，然后求解。</translation>
     </message>
     <message>
-        <location line="-276"/>
+        <location line="-272"/>
         <source>Rig</source>
         <translation>绑定模型</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+264"/>
+        <location line="+260"/>
         <source>No rig</source>
         <translation>无绑定模型</translation>
     </message>
     <message>
-        <location line="-260"/>
+        <location line="-256"/>
         <source>Load glTF Rig…</source>
         <translation>加载 glTF 绑定模型…</translation>
     </message>
@@ -1436,7 +1444,7 @@
         <translation>权重曲线导出为 CSV：每个形状一列（普通或 Live Link Face 布局）</translation>
     </message>
     <message>
-        <location line="+345"/>
+        <location line="+341"/>
         <source>Solve the take, or open a Live Link recording, first: there are no curves to export.</source>
         <translation>请先求解拍摄或打开 Live Link 录制：没有可导出的曲线。</translation>
     </message>
@@ -1466,7 +1474,7 @@
         <translation type="vanished">带变形目标的绑定模型，权重作为动画（Blender、Unity、three.js）</translation>
     </message>
     <message>
-        <location line="-278"/>
+        <location line="-274"/>
         <source>Wait for the running job, or cancel it.</source>
         <translation>请等待正在运行的任务，或将其取消。</translation>
     </message>
@@ -1481,7 +1489,7 @@
         <translation>无法读取绑定模型 %1：%2</translation>
     </message>
     <message numerus="yes">
-        <location line="+18"/>
+        <location line="+14"/>
         <source>%1: %n shape(s), %2 vertices</source>
         <translation>
             <numerusform>%1：%n 个形状，%2 个顶点</numerusform>
@@ -1493,7 +1501,7 @@
         <translation>绑定模型已加载。请在面部网格面板中将标记点绑定到其中性形状（自动绑定或加载绑定），然后求解。</translation>
     </message>
     <message>
-        <location line="-116"/>
+        <location line="-112"/>
         <source>Export Rig…</source>
         <translation>导出绑定模型…</translation>
     </message>
@@ -1503,7 +1511,7 @@
         <translation>带混合形状的绑定模型及作为动画曲线的权重，FBX 或 glTF（Unreal、Maya、MotionBuilder、Blender、Unity），可经重定向映射并精简关键帧</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+112"/>
         <source>Rig loaded. Solve when ready.</source>
         <translation>绑定模型已加载。准备好后即可求解。</translation>
     </message>
@@ -1829,7 +1837,7 @@
     <name>mocap::ui::ExportDialog</name>
     <message>
         <location filename="../widgets/actions/animation_export.cpp" line="+19"/>
-        <location filename="../widgets/dialogs/export_dialog.cpp" line="+87"/>
+        <location filename="../widgets/dialogs/export_dialog.cpp" line="+90"/>
         <source>Export Animation</source>
         <translation>导出动画</translation>
     </message>
@@ -1869,6 +1877,16 @@
         <translation>FBX(&amp;X):</translation>
     </message>
     <message>
+        <location line="+4"/>
+        <source>The units of the markers&apos; positions in the file (as mocap convert --units): Maya and MotionBuilder work in centimetres, Blender, Unreal and Unity read the declared units</source>
+        <translation>文件中标记点位置的单位（同 mocap convert --units）：Maya 和 MotionBuilder 使用厘米，Blender、Unreal 和 Unity 读取声明的单位</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Units:</source>
+        <translation>单位(&amp;U)：</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>&amp;Browse…</source>
         <translation>浏览(&amp;B)…</translation>
@@ -1900,12 +1918,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+389"/>
+        <location line="+412"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-368"/>
+        <location line="-391"/>
         <source>Z up</source>
         <translation>Z 向上</translation>
     </message>
@@ -1935,7 +1953,12 @@
         <translation> mm</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+16"/>
+        <source>As the take (%1)</source>
+        <translation>与录制相同（%1）</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>Whole take (%1–%2)</source>
         <translation>整个拍摄数据（%1–%2）</translation>
     </message>
@@ -1950,7 +1973,7 @@
         <translation>自定义</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Load a face mesh first: these formats export the deformed mesh.</source>
         <translation>请先加载面部网格：这些格式导出的是变形后的网格。</translation>
     </message>
@@ -1974,7 +1997,7 @@
         <translation>替换文件？</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Folder for the OBJ sequence</source>
         <translation>OBJ 序列的文件夹</translation>
     </message>
@@ -2039,12 +2062,12 @@
         <translation>%1 是文件夹，请选择文件名。</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>Not exported: the existing files are kept.</source>
         <translation>未导出：已保留现有文件。</translation>
     </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Exporting %n frame(s)…</source>
         <translation>
             <numerusform>正在导出 %n 帧…</numerusform>
@@ -2056,12 +2079,12 @@
         <translation>保留了 %2 个关键帧中的 %1 个（%3 %），最大误差 %4 mm（容差 %5 mm）。</translation>
     </message>
     <message>
-        <location line="-456"/>
+        <location line="-485"/>
         <source>Cancelling…</source>
         <translation>正在取消…</translation>
     </message>
     <message numerus="yes">
-        <location line="+415"/>
+        <location line="+444"/>
         <source>Exported %n frame(s) to %1.</source>
         <translation>
             <numerusform>已将 %n 帧导出到 %1。</numerusform>
@@ -2995,7 +3018,7 @@
 <context>
     <name>mocap::ui::HeadStabilizationStep</name>
     <message>
-        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-46"/>
+        <location filename="../widgets/panels/head_stabilization_step.cpp" line="-51"/>
         <source>Head-mounted markers that move only with the head: the head pose of every frame is measured on them.</source>
         <translation>仅随头部运动的头戴标记点：每一帧的头部姿态都基于它们测得。</translation>
     </message>
@@ -3028,6 +3051,12 @@
         <location line="+14"/>
         <source>Stabilize head</source>
         <translation>稳定头部</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Head</source>
+        <comment>the Cleaning panel&apos;s tab of Stabilize head</comment>
+        <translation>头部</translation>
     </message>
 </context>
 <context>
@@ -3303,7 +3332,7 @@
         <translation>自动检测</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>Take files planned together with the open take (they must have its markers)</source>
         <translation>与已打开的拍摄数据一起规划的拍摄数据文件（必须包含其标记点）</translation>
     </message>
@@ -3488,7 +3517,7 @@
         <translation>在绑定模型上评估需要一个混合形状绑定模型（混合形状求解面板）以及绑定到其中性形状的标记点（面部网格面板）；或关闭此选项。</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+102"/>
         <source>%1 markers, %2 frames (%7), %3 pairs (%4), %5 PCA components. Recommended: %6 markers.</source>
         <translation>%1 个标记点，%2 帧（%7），%3 对（%4），%5 个 PCA 分量。推荐：%6 个标记点。</translation>
     </message>
@@ -3505,7 +3534,7 @@
         <translation>未去除头部运动：没有参考标记点</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-292"/>
         <source>Reference markers:</source>
         <translation>参考标记点：</translation>
     </message>
@@ -3660,12 +3689,12 @@
         <translation>已取消，保留先前的结果。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+29"/>
         <source>%1 frames dropped for a missing marker; the PCA explains %2 % of the variance; recommended by the %3</source>
         <translation>因缺少标记点而丢弃 %1 帧；PCA 解释了 %2 % 的方差；推荐依据：%3</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>Not judged on the rig: %1</source>
         <translation>未在绑定模型上评估：%1</translation>
     </message>
@@ -3675,7 +3704,7 @@
         <translation>在绑定模型上的评估已取消。</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>PFA %1 · greedy %2 · random %3</source>
         <translation>PFA %1 · 贪心 %2 · 随机 %3</translation>
     </message>
@@ -3984,7 +4013,12 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>模型输出（%1），不是标记点：从不清理；仅在 视图 ▸ 显示模型输出 时绘制并列入缺口列表</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
+        <source>Longest gap, in frames</source>
+        <translation>最长缺口（帧）</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Marker</source>
         <translation>标记点</translation>
     </message>
@@ -4000,11 +4034,22 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
     </message>
     <message>
         <location line="+1"/>
-        <source>Longest gap</source>
-        <translation>最长缺口</translation>
+        <source>Longest</source>
+        <comment>the longest gap</comment>
+        <translation>最长</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Bad</source>
+        <comment>bad points</comment>
+        <translation>坏点</translation>
+    </message>
+    <message>
+        <source>Longest gap</source>
+        <translation type="vanished">最长缺口</translation>
+    </message>
+    <message>
+        <location line="-12"/>
         <source>Bad points</source>
         <translation>坏点</translation>
     </message>
@@ -4012,14 +4057,14 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+138"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+266"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
 %2, %3, %4 %5</translation>
     </message>
     <message numerus="yes">
-        <location line="+266"/>
+        <location line="-69"/>
         <source>Head-stabilized on %n marker(s) — Ctrl+B for the lab frame</source>
         <translation>
             <numerusform>已基于 %n 个标记点进行头部稳定 — 按 Ctrl+B 返回实验室坐标系</numerusform>
@@ -4055,8 +4100,12 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
     </message>
     <message>
         <location line="+2"/>
+        <source>Model outputs are joint angles, forces, moments, powers and virtual points (a model&apos;s segment axes, centre of mass) the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
+        <translation>模型输出是采集软件以点形式存储的关节角度、力、力矩、功率和虚拟点（模型的节段轴、质心）。它们会被保留和保存，但不会被清理、列入缺口列表或计入统计。</translation>
+    </message>
+    <message>
         <source>Model outputs are joint angles, forces, moments and powers the capture software stored as points. They are kept and saved, but not cleaned, gap-listed or counted in statistics.</source>
-        <translation>模型输出是采集软件以点存储的关节角度、力、力矩和功率。它们会被保留和保存，但不会被清理、列入缺口列表或计入统计。</translation>
+        <translation type="vanished">模型输出是采集软件以点存储的关节角度、力、力矩和功率。它们会被保留和保存，但不会被清理、列入缺口列表或计入统计。</translation>
     </message>
 </context>
 <context>
