@@ -8,6 +8,7 @@
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/io/c3d_reader.h"
+#include "mocap/model/data_loss_record.h"
 #include "mocap/io/c3d_writer.h"
 #include "mocap/model/gaps.h"
 #include "mocap/model/marker_points.h"
@@ -367,6 +368,21 @@ TEST(C3dForeignLayout, IntegerCoordinatesThatWrapRoundAreReportedAsWrongData)
       << wrapped.dataLoss.front();
   EXPECT_NE(wrapped.dataLoss.front().find(label + frames), std::string::npos) << wrapped.dataLoss.front();
   EXPECT_TRUE((wrapped.take.valid() == original.take.valid()).all()) << "reported, not hidden or repaired";
+
+  // Saved (as float, whose bytes cannot wrap), the finding travels with the take: every later
+  // read reports it as data loss, once, however often the take is saved again.
+  std::string saved = encodeC3d(wrapped.take);
+  for (int save = 0; save < 2; ++save) {
+    const Read again = parse(saved);
+    ASSERT_TRUE(again.layout.isFloat);
+    ASSERT_EQ(again.dataLoss.size(), 1u) << "save " << save;
+    EXPECT_EQ(again.dataLoss.front().rfind("recorded when ", 0), 0u) << again.dataLoss.front();
+    EXPECT_NE(again.dataLoss.front().find(label + frames), std::string::npos) << again.dataLoss.front();
+    EXPECT_EQ(std::count_if(again.take.history().begin(), again.take.history().end(),
+                            [](const ProcessingStep& step) { return step.operation == kDataLossOperation; }),
+              1);
+    saved = encodeC3d(again.take);
+  }
 }
 
 TEST(C3dForeignLayout, FallbackLabelNeverTakesARealLabel)

@@ -1,5 +1,7 @@
 #include "mocap/io/c3d_reader.h"
 
+#include "mocap/model/data_loss_record.h"
+
 #include "mocap/io/c3d_binary.h"
 #include "mocap/io/c3d_point_types.h"
 #include "mocap/io/c3d_string_lists.h"
@@ -1117,7 +1119,12 @@ private:
 Take parseC3d(const unsigned char* data, std::size_t size, const std::string& sourceName,
               std::vector<std::string>* warnings, std::vector<std::string>* dataLoss, C3dLayoutReport* layout)
 {
-  return C3dParser(data, size, sourceName, warnings, dataLoss, layout).parse();
+  std::vector<std::string> own;  // findings are recorded with the take even when the caller does not ask for them
+  std::vector<std::string>& findings = dataLoss ? *dataLoss : own;
+  const std::size_t firstNew = findings.size();
+  Take take = C3dParser(data, size, sourceName, warnings, &findings, layout).parse();
+  carryDataLoss(take, sourceName, findings, firstNew, warnings);
+  return take;
 }
 
 Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings, std::vector<std::string>* dataLoss,

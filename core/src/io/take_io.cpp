@@ -9,6 +9,7 @@
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
 #include "mocap/base/text.h"
+#include "mocap/model/data_loss_record.h"
 #include "mocap/model/marker_points.h"
 #include "mocap/model/provenance.h"
 #include "mocap/io/trc_io.h"
@@ -77,8 +78,12 @@ Take readTake(const std::filesystem::path& path, std::vector<std::string>* warni
   switch (formatFromPath(path)) {
   case TakeFormat::C3d: return readC3d(path, warnings, dataLoss);
   case TakeFormat::Trc: {
-    Take take = readTrc(path, warnings, dataLoss);
-    readSidecar(take, path, warnings);
+    std::vector<std::string> own;  // as parseC3d: recorded with the take even when not asked for
+    std::vector<std::string>& findings = dataLoss ? *dataLoss : own;
+    const std::size_t firstNew = findings.size();
+    Take take = readTrc(path, warnings, &findings);
+    readSidecar(take, path, warnings);  // the history an earlier save kept
+    carryDataLoss(take, path.string(), findings, firstNew, warnings);
     return take;
   }
   case TakeFormat::Csv:
