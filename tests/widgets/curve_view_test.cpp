@@ -24,6 +24,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QInputDialog>
+#include <QPicture>
 #include <QLabel>
 #include <QSettings>
 #include <QTest>
@@ -177,9 +178,10 @@ TEST(CurveView, SettingTheFrameOutsideTheViewCentresItAndKeepsTheZoom)
   EXPECT_DOUBLE_EQ(view.lastVisible() - view.firstVisible(), 200.0);
 }
 
-/// Milliseconds per paint of a 1600×400 curve view showing all `frames` frames of three selected
-/// markers with a smoothing-like preview over every frame.
-double paintMilliseconds(Eigen::Index frames)
+/// Bytes QPicture records for one paint of a 1600×400 curve view showing all `frames` frames of
+/// three selected markers with a smoothing-like preview over every frame: a count of what was drawn
+/// (points, lines, dots), whatever the machine's load. Its time is measured by curve_paint_bench.
+qsizetype paintedBytes(Eigen::Index frames)
 {
   ui::TakeDocument doc;
   doc.setTake(syntheticTake(frames, 6));
@@ -197,28 +199,21 @@ double paintMilliseconds(Eigen::Index frames)
   doc.setPreview(preview);
   ui::CurveView view(doc);
   view.resize(1600, 400);
-  QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
-  view.render(&image);
-  const int runs = 10;
-  QElapsedTimer clock;
-  clock.start();
-  for (int i = 0; i < runs; ++i)
-    view.render(&image);
-  return static_cast<double>(clock.nsecsElapsed()) * 1e-6 / runs;
+  QPicture picture;
+  view.render(&picture);
+  return static_cast<qsizetype>(picture.size());
 }
 
-TEST(CurveView, PaintingTwentyThousandFramesStaysCheap)
+TEST(CurveView, PaintingTwentyThousandFramesDrawsNoMoreThanTwoThousand)
 {
-  // Ten times the frames on the same width: drawing per pixel column keeps the cost well under ten
-  // times (about three here, the pass over the samples)
-  // while drawing every sample, as the preview once did, makes it ten times dearer. A ratio, so a
-  // loaded machine slows both alike.
-  const double small = paintMilliseconds(2000);
-  const double large = paintMilliseconds(20000);
-  std::cout << "[ curve paint ] 1600x400, 3 markers + full preview: 2000 frames " << small << " ms, 20000 frames "
-            << large << " ms\n";
-  EXPECT_LT(large, 5.0 * small);
-  EXPECT_LT(large, 1000.0);
+  // Ten times the frames on the same width: drawing per pixel column draws about as much (a few
+  // more gap edges), while drawing every sample, as the preview once did, draws ten times more.
+  const qsizetype small = paintedBytes(2000);
+  const qsizetype large = paintedBytes(20000);
+  std::cout << "[ curve paint ] 1600x400, 3 markers + full preview: 2000 frames " << small << " bytes drawn, 20000 frames "
+            << large << " bytes\n";
+  ASSERT_GT(small, 0);
+  EXPECT_LT(large, 2 * small);
 }
 
 TEST(SelectionPalette, SelectedMarkersGetDistinctColoursTheFirstThePreference)
