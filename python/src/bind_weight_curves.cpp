@@ -55,9 +55,10 @@ void writeLiveLink(const std::filesystem::path& path, const std::vector<std::str
                    const std::optional<Eigen::MatrixXd>& headRotation)
 {
   checkFiniteWeights(weights);
-  if (headRotation && (headRotation->rows() != weights.rows() || headRotation->cols() != 3))
+  if (headRotation && (headRotation->rows() != weights.rows() || (headRotation->cols() != 3 && headRotation->cols() != 9)))
     throw InvalidArgument("head_rotation must be frames × 3 (" + std::to_string(weights.rows()) +
-                          " × 3: yaw, pitch, roll in radians), not " + std::to_string(headRotation->rows()) +
+                          " × 3: yaw, pitch, roll in radians; × 9 with each eye's after the head's), not " +
+                          std::to_string(headRotation->rows()) +
                           " × " + std::to_string(headRotation->cols()));
   const std::optional<RetargetMap> retarget = retargetMap(map);
   const py::gil_scoped_release release;
@@ -97,7 +98,7 @@ void bindWeightCurves(py::module_& m)
         "Writes weight curves as Live Link Face's CSV (its 52 ARKit curves, timecodes at 60 fps), as "
         "`mocap solve -o W.csv --format livelink [--map M]` does: through `map` (a shipped map's name or a "
         "map file) or, without one, by identity for ARKit names and the shipped ict_to_arkit map for ICT "
-        "names. head_rotation: frames × 3 yaw, pitch, roll in radians (None: zeros). Atomic.");
+        "names. head_rotation: frames × 3 yaw, pitch, roll in radians, or frames × 9 with the left and right eye's after them (None: zeros). Atomic.");
 }
 
 } // namespace mocap::python

@@ -70,6 +70,20 @@ TEST(LiveLinkFaceCsv, ASolveUnderArkitNamesFillsTheAppsColumns)
   EXPECT_NE(unknown.find("'jawOpen' is not one of its 52 ARKit names"), std::string::npos) << unknown;
 }
 
+TEST(LiveLinkFaceCsv, ARecordingsEyeRotationsAreWrittenBackAsGiven)
+{
+  Eigen::MatrixXd weights = Eigen::MatrixXd::Constant(2, 1, 0.5);
+  Eigen::MatrixXd rotations(2, 9);
+  rotations << 0.1, 0.2, 0.3, 0.01, 0.02, 0.03, -0.01, -0.02, -0.03,  //
+      0.0, 0.0, 0.0, 0.12, -0.06, 0.0, 0.11, -0.07, 0.0;
+  const LiveLinkFaceRecording recording = liveLinkFaceRecording({"JawOpen"}, weights, 60.0, rotations);
+  EXPECT_EQ(recording.rotations, rotations) << "head, left eye, right eye in the app's order";
+  const std::string wrong = errorOf([&] {
+    (void)liveLinkFaceRecording({"JawOpen"}, weights, 60.0, Eigen::MatrixXd::Zero(2, 6));
+  });
+  EXPECT_NE(wrong.find("each eye's yaw, pitch and roll"), std::string::npos) << wrong;
+}
+
 TEST(LiveLinkFaceCsv, ABrokenRecordingIsAClearErrorNamingTheLine)
 {
   const std::string text = recordingText();

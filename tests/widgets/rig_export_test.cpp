@@ -307,6 +307,9 @@ TEST_F(LiveLinkInStudioTest, ARecordingKeepsItsHeadTurnInTheLiveLinkExport)
   ASSERT_EQ(written.rotations.rows(), recording.rotations.rows());
   EXPECT_LT((written.rotations.leftCols(3) - recording.rotations.leftCols(3)).cwiseAbs().maxCoeff(), 1e-9)
       << "HeadYaw, HeadPitch, HeadRoll as recorded";
+  ASSERT_GT(recording.rotations.rightCols(6).cwiseAbs().maxCoeff(), 0.05) << "the real recording's eyes move";
+  EXPECT_LT((written.rotations.rightCols(6) - recording.rotations.rightCols(6)).cwiseAbs().maxCoeff(), 1e-9)
+      << "each eye's yaw, pitch and roll as recorded, not zeros";
 }
 
 TEST_F(LiveLinkInStudioTest, AMapOrFileThatDoesNotFitChangesNothing)

@@ -44,7 +44,7 @@ QString openLiveLinkRecording(TakeDocument& document, BlendshapeSolveModel& mode
     read.frameRate = liveLinkFaceRate(recording);
     read.startSeconds = liveLinkFaceSeconds(recording.timecodes.front());
     read.firstTimecode = QString::fromStdString(recording.timecodes.front());
-    read.headRotation = recording.rotations.leftCols(3);
+    read.headRotation = recording.rotations;  // the head's and the eyes', written back on export
     curves.weights = liveLinkFaceWeightsOnRig(recording.weights, model.rig()->shapeNames(), chosen);
   } catch (const std::exception& e) {  // a malformed file or a map that does not fit: nothing changes
     return QString::fromStdString(e.what());

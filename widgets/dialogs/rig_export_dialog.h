@@ -34,7 +34,7 @@ struct RigExportSource
   /// A recording's first timecode (seconds): the FBX's first key and time span, the glTF's
   /// extras.startSeconds, as `mocap convert REC.csv` writes them; none for a solve (from 0).
   std::optional<double> startSeconds;
-  Eigen::MatrixXd headRotation;  ///< Live Link's head yaw, pitch, roll per frame, or empty (zeros)
+  Eigen::MatrixXd headRotation;  ///< Live Link's head (× 3) or head and eyes (× 9) yaw, pitch, roll per frame, or empty (zeros)
   QString baseName;            ///< the output's default file name without extension (the take's)
   /// The Retarget section's map with its gains as edited there, offered (and chosen) as a map of
   /// its own; nullopt when the section has none.

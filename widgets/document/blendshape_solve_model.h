@@ -26,7 +26,7 @@ struct ReadWeightCurves
   double recordedRate = 0.0;  ///< the recording's own
   double startSeconds = 0.0;
   QString firstTimecode;  ///< as the file wrote it
-  Eigen::MatrixXd headRotation;  ///< per row the recording's HeadYaw, HeadPitch, HeadRoll (radians)
+  Eigen::MatrixXd headRotation;  ///< per row the recording's 9 rotations: head, left eye, right eye yaw/pitch/roll (radians)
 };
 
 /// The blendshape rig the open take is solved to and the weights solved, beside the document:

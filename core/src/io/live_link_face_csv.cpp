@@ -202,8 +202,10 @@ LiveLinkFaceRecording liveLinkFaceRecording(const std::vector<std::string>& name
                           std::to_string(weights.cols()) + " weight columns");
   if (!(frameRate > 0.0) || !std::isfinite(frameRate))
     throw InvalidArgument("Live Link Face: the frame rate must be positive");
-  if (headRotation.size() > 0 && (headRotation.rows() != weights.rows() || headRotation.cols() != 3))
-    throw InvalidArgument("Live Link Face: the head rotation needs yaw, pitch and roll for every frame");
+  if (headRotation.size() > 0 &&
+      (headRotation.rows() != weights.rows() || (headRotation.cols() != 3 && headRotation.cols() != kRotations)))
+    throw InvalidArgument("Live Link Face: the head rotation needs yaw, pitch and roll for every frame (and, "
+                          "when given, each eye's yaw, pitch and roll after them)");
   LiveLinkFaceRecording recording;
   recording.weights = Eigen::MatrixXd::Zero(weights.rows(), kShapes);
   recording.rotations = Eigen::MatrixXd::Zero(weights.rows(), kRotations);
@@ -215,7 +217,7 @@ LiveLinkFaceRecording liveLinkFaceRecording(const std::vector<std::string>& name
     recording.weights.col(found->second) = weights.col(static_cast<Eigen::Index>(i));
   }
   if (headRotation.size() > 0)
-    recording.rotations.leftCols(3) = headRotation;
+    recording.rotations.leftCols(headRotation.cols()) = headRotation;
   for (Eigen::Index f = 0; f < weights.rows(); ++f)
     recording.timecodes.push_back(liveLinkFaceTimecode(static_cast<double>(f) / frameRate));
   return recording;

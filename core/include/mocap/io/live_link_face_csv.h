@@ -52,7 +52,8 @@ void writeLiveLinkFaceCsv(const std::filesystem::path& path, const LiveLinkFaceR
 /// A recording from solved weights under ARKit names (`names`, a column each in `weights`, any
 /// order and any subset of the 52: one missing is written as 0, a name the app does not have is
 /// an InvalidArgument), timed from 0 at `frameRate`; `headRotation` (#rows × 3: yaw, pitch, roll
-/// in radians) or empty for zeros; the eyes are zero. O(#rows · 61).
+/// in radians; or #rows × 9, the head's then each eye's as liveLinkFaceRotationNames orders them,
+/// as a recording carries them) or empty for zeros; eyes not given are zero. O(#rows · 61).
 [[nodiscard]] LiveLinkFaceRecording liveLinkFaceRecording(const std::vector<std::string>& names,
                                                           const Eigen::Ref<const Eigen::MatrixXd>& weights,
                                                           double frameRate,

@@ -31,7 +31,7 @@ struct WeightOutput
   /// --reduce: .glb keeps the fewest key frames all curves share, .fbx each curve's fewest keys,
   /// within this many weight units of every frame of the curves written (after the map).
   std::optional<double> reduce;
-  Eigen::MatrixXd headRotation;       ///< Live Link: #frames × 3 yaw, pitch, roll, or empty for zeros
+  Eigen::MatrixXd headRotation;       ///< Live Link: #frames × 3 head yaw, pitch, roll (× 9: then the eyes'), or empty for zeros
 };
 
 /// Writes `weights` (#frames × the rig's shapes) to `out` by its extension: weight curves (.csv,
