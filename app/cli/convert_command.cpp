@@ -26,7 +26,7 @@ namespace {
 struct ConvertArguments
 {
   std::string input, output;
-  std::optional<std::string> units, up, rig, shapes, map;
+  std::optional<std::string> units, inputUnits, up, rig, shapes, map;
   std::optional<double> reduce;  // FBX: key tolerance in mm
 };
 
@@ -53,8 +53,8 @@ int convertRecording(const ConvertArguments& arguments)
   if (extension != "glb" && extension != "fbx")
     throw UsageError("a Live Link Face recording converts to the rig with animated weights (.glb, .fbx), not '" +
                      arguments.output + "'");
-  if (arguments.units || arguments.reduce)
-    throw UsageError("--units and --reduce (mm) apply to a take's markers; a recording holds weights");
+  if (arguments.units || arguments.inputUnits || arguments.reduce)
+    throw UsageError("--units, --input-units and --reduce (mm) apply to a take's markers; a recording holds weights");
   if (arguments.up && extension != "fbx")
     throw UsageError("--up applies to .fbx output only");
   std::optional<RetargetMap> map;
@@ -98,6 +98,8 @@ int runConvert(const ConvertArguments& arguments)
   if (arguments.units)
     units = parseLengthUnit(*arguments.units);
   Take take = readInputTake(input);
+  if (arguments.inputUnits)  // the file's unit was wrong or missing: the numbers stay, their unit is named
+    take.setUnits(*parseLengthUnit(*arguments.inputUnits));
   if (units)
     take.convertUnits(*units);
   if (arguments.up || arguments.reduce)
@@ -118,13 +120,19 @@ Command addConvert(CLI::App& mocap)
   command->add_option("IN", arguments->input, "the take to read")->required();
   command->add_option("OUT", arguments->output, "the file to write; its extension names the format")->required();
   // parseLengthUnit also reads "metres", "Centimeter", ...: it is the check.
+  const CLI::Validator lengthUnit(
+      [](const std::string& text) -> std::string {
+        return parseLengthUnit(text) ? "" : "'" + text + "' is not mm, cm or m";
+      },
+      "", "length unit");
   command->add_option("--units", arguments->units, "rescale the positions to these units")
       ->type_name("mm|cm|m")
-      ->check(CLI::Validator(
-          [](const std::string& text) -> std::string {
-            return parseLengthUnit(text) ? "" : "'" + text + "' is not mm, cm or m";
-          },
-          "", "length unit"));
+      ->check(lengthUnit);
+  command->add_option("--input-units", arguments->inputUnits,
+                      "the unit IN's positions are in, when the file names none or the wrong one (nothing is "
+                      "rescaled; applied before --units)")
+      ->type_name("mm|cm|m")
+      ->check(lengthUnit);
   oneOf(command->add_option("--up", arguments->up, "FBX: the take's up axis, declared in the file (default z)"),
         std::string("y|z"));
   numberIn(command->add_option("--reduce", arguments->reduce,

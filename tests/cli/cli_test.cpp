@@ -675,6 +675,33 @@ TEST(Cli, CleanByDefaultLeavesLongGapsOpenAndSaysWhy)
   EXPECT_EQ(runMocap("clean " + q(test::sampleTake()) + " -o " + q(dir.file("x.c3d")) + " --min-valid 2", dir).exitCode, 2);
 }
 
+// A file in metres without POINT:UNITS (a real SIMI export, every point invalid): info says both,
+// and convert --input-units names the unit without rescaling a number.
+TEST(Cli, InputUnitsNamesTheUnitAFileGotWrongWithoutRescaling)
+{
+  test::TempDir dir;
+  const std::string simi = q(test::dataFile("c3d/sample16/basketball.c3d"));
+  const CommandResult info = runMocap("info " + simi, dir);
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_NE(info.err.find("every sample is marked invalid"), std::string::npos) << info.err;
+  EXPECT_NE(info.err.find("--input-units m"), std::string::npos) << info.err;
+  const CommandResult named = runMocap("convert " + simi + " " + q(dir.file("m.trc")) + " --input-units m", dir);
+  ASSERT_EQ(named.exitCode, 0) << named.err;
+  std::vector<std::string> warnings;
+  const Take before = readTake(test::dataFile("c3d/sample16/basketball.c3d"));
+  const Take after = readTake(dir.file("m.trc"), &warnings);
+  EXPECT_EQ(after.units(), LengthUnit::Metre);
+  for (const std::string& warning : warnings)
+    EXPECT_EQ(warning.find("span"), std::string::npos) << warning;
+  const CommandResult scaled = runMocap("convert " + simi + " " + q(dir.file("mm.c3d")) + " --input-units m --units mm", dir);
+  ASSERT_EQ(scaled.exitCode, 0) << scaled.err;
+  EXPECT_EQ(readTake(dir.file("mm.c3d")).units(), LengthUnit::Millimetre);
+  const CommandResult bad = runMocap("convert " + simi + " " + q(dir.file("x.trc")) + " --input-units furlong", dir);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("'furlong' is not mm, cm or m"), std::string::npos) << bad.err;
+  EXPECT_EQ(before.frameCount(), after.frameCount());
+}
+
 TEST(Cli, FailedConvertLeavesNoOutputFile)
 {
   test::TempDir dir;

@@ -5,6 +5,7 @@
 #include "mocap/io/c3d_binary.h"
 #include "mocap/io/c3d_point_types.h"
 #include "mocap/io/c3d_string_lists.h"
+#include "mocap/io/take_plausibility.h"
 #include "mocap/io/vicon_virtual_points.h"
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
@@ -244,6 +245,8 @@ public:
     reportVirtualPoints(typeViconVirtualPoints(take));  // decoded first: the axes are checked
     if (!layout.isFloat)
       warnAboutWrappedIntegers(layout, take);
+    for (const std::string& warning : takePlausibilityWarnings(take, m_unitDeclared))
+      warn(warning);
     readEvents(take);
     take.parameters() = std::move(m_tree);
     loadProvenance(take, m_warnings, m_residualCounts);
@@ -866,6 +869,7 @@ private:
     take.setFirstFrame(layout.firstFrame);
     const auto unitText = m_tree.string("POINT", "UNITS");
     const auto unit = unitText ? parseLengthUnit(*unitText) : std::nullopt;
+    m_unitDeclared = unit.has_value();
     if (!unitText)
       warn("POINT:UNITS is missing; assuming mm");
     else if (!unit)
@@ -1107,6 +1111,7 @@ private:
   std::vector<std::string>* m_dataLoss;
   C3dLayoutReport* m_layoutReport;
   std::optional<ResidualCounts> m_residualCounts;  // set by decodeFrames
+  bool m_unitDeclared = false;  // POINT:UNITS names a length unit (set by makeTake)
   Processor m_processor = Processor::Intel;
   Header m_header;
   std::size_t m_parameterOffset = 0;

@@ -1,4 +1,5 @@
 #include "mocap/io/trc_io.h"
+#include "mocap/io/take_plausibility.h"
 
 #include "mocap/base/error.h"
 #include "mocap/base/number_text.h"
@@ -225,6 +226,8 @@ public:
       readRow(line, data.lineNumber(), row, take);
       ++row;
     }
+    for (std::string& warning : takePlausibilityWarnings(take, m_unitDeclared))
+      warn(std::move(warning));
     return take;
   }
 
@@ -295,6 +298,7 @@ private:
 
     const auto units = value("Units");
     const auto unit = units ? parseLengthUnit(*units) : std::nullopt;
+    m_unitDeclared = unit.has_value();
     if (unit)
       m_units = *unit;
     else if (units)
@@ -415,6 +419,7 @@ private:
   std::optional<std::int64_t> m_numFrames;
   std::optional<std::int64_t> m_origStartFrame;
   LengthUnit m_units = LengthUnit::Millimetre;
+  bool m_unitDeclared = false;  // line 3's Units names a length unit
   std::int64_t m_previousFrame = 0;
   bool m_warnedExtraCells = false;
   bool m_warnedFrameNumbers = false;
