@@ -15,6 +15,7 @@
 #include "actions/recovery_offer.h"
 #include "actions/review_video_export.h"
 #include "actions/take_file_actions.h"
+#include "actions/take_units_menu.h"
 #include "actions/transport_shortcuts.h"
 #include "actions/view_option_actions.h"
 
@@ -333,6 +334,7 @@ void MainWindow::createActions()
   QAction* deleteRange = edit->addAction(tr("&Delete Range"), QKeySequence::Delete, m_markerEdits, &ui::MarkerEditActions::deleteRange);
   deleteRange->setToolTip(tr("Make the selected frame range of the selected markers a gap (Shift-drag on the curves)"));
   edit->addAction(tr("&Rename Marker…"), QKeySequence(Qt::Key_F2), m_table, &ui::MarkerTablePanel::editCurrentLabel);
+  ui::addTakeUnitsMenu(*edit, *m_document);
   edit->addSeparator();
   QAction* preferences = edit->addAction(tr("&Preferences…"), QKeySequence(Qt::CTRL | Qt::Key_Comma), this, [this] {
     ui::editPreferences(m_session->options(), availableLanguages(), availableLanguageNames(), defaultLanguage(), this);

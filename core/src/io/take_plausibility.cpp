@@ -81,7 +81,8 @@ std::string unitWarning(const Take& take, double span, bool unitDeclared)
   const std::string source = unitDeclared ? "the file's unit" : "assumed: the file names no unit";
   const auto likely = [&](const char* what, const char* name) {
     return "; the file is likely in " + std::string(what) + ". Positions are read as " + unit +
-           "; once you know the unit, name it: mocap convert IN OUT --input-units " + name;
+           "; once you know the unit, name it (studio: Edit > Positions Are In; "
+           "mocap convert IN OUT --input-units " + name + ")";
   };
   if (mm < kSmallestSpanMm)
     return "the markers span only " + numberText(span) + " " + unit + " (" + source +
