@@ -200,7 +200,7 @@ TEST(BatchCli, BadTakesAreRecordedWithTheirErrorAndTheBatchGoesOn)
 {
   test::TempDir dir;
   const Archive archive(dir);
-  fs::copy_file(test::dataFile("c3d/sample18/bad_parameter_section.c3d"), archive.root / "session1/corrupt.c3d");
+  test::writeCorruptC3d(archive.root / "session1/corrupt.c3d");
   writeFileAtomically(archive.root / "bad.txt",
                       "session1/Eb015pi.c3d\nsession1/missing.c3d\nsession1/corrupt.c3d\n\nsession1/Eb015pi.c3d\n");
   const auto run = mocap("batch " + shellQuote(archive.root / "bad.txt") + " -o " + shellQuote(dir.file("out")), dir);
@@ -516,7 +516,7 @@ TEST(SummarizeCli, WritesOneWellFormedPageWithThePlotsAndTheTakesToReview)
 {
   test::TempDir dir;
   const Archive archive(dir);
-  fs::copy_file(test::dataFile("c3d/sample18/bad_parameter_section.c3d"), archive.root / "session1/corrupt.c3d");
+  test::writeCorruptC3d(archive.root / "session1/corrupt.c3d");
   writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) + "session1/corrupt.c3d\n");
   ASSERT_EQ(mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir).exitCode, 1);
   const auto run =

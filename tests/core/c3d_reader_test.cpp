@@ -251,14 +251,38 @@ TEST(C3dReader, ArtFileWithTwoDimensionalUnits)
 
 TEST(C3dReader, CorruptParameterSectionIsRejectedWithAClearError)
 {
+  const test::TempDir dir;
+  test::writeCorruptC3d(dir.file("corrupt.c3d"));
   try {
-    (void)readC3d(dataFile("c3d/sample18/bad_parameter_section.c3d"));
+    (void)readC3d(dir.file("corrupt.c3d"));
     FAIL() << "the corrupt file was accepted";
   } catch (const FormatError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("bad_parameter_section.c3d: parameter section corrupt"), std::string::npos) << message;
+    EXPECT_NE(message.find("corrupt.c3d: parameter section corrupt: a record name is binary data"), std::string::npos)
+        << message;
     EXPECT_GT(e.offset(), 512);
   }
+}
+
+TEST(C3dReader, ALastParameterRunningIntoTheDataIsLeftOutAndTheTakeReads)
+{
+  // c3d.org's sample18: 12 parameter blocks declared where the data starts after 10, and
+  // EVENT:LABELS, the last record, runs into the data. Read to the data start, that one left out.
+  std::vector<std::string> warnings;
+  const Take take = readC3d(dataFile("c3d/sample18/bad_parameter_section.c3d"), &warnings);
+  EXPECT_EQ(take.markerCount(), 45);
+  EXPECT_EQ(take.frameCount(), 332);
+  EXPECT_EQ(take.label(0), "P1");
+  EXPECT_EQ(take.label(44), "P45");
+  EXPECT_EQ(take.frameRate(), 120.0);
+  EXPECT_EQ(take.analog().channelCount(), 32);
+  const auto said = [&](const std::string& text) {
+    return std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) { return w.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(said("parameter 'EVENT:LABELS' runs past the parameter section into the data section (byte 5632); left out"));
+  EXPECT_FALSE(said("jump by over half")) << "the data start is the header's: no frame is shifted";
+  EXPECT_EQ(take.parameters().find("EVENT", "LABELS"), nullptr);
+  EXPECT_NE(take.parameters().find("EVENT", "CONTEXTS"), nullptr) << "the records before it are kept";
 }
 
 TEST(C3dReader, MissingFileAndNonC3dGiveClearErrors)

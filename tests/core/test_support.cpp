@@ -1,5 +1,6 @@
 #include "test_support.h"
 
+#include "mocap/base/file_io.h"
 #include "mocap/io/obj_io.h"
 #include "mocap/model/mesh.h"
 #include "checkout_paths.h"
@@ -59,6 +60,15 @@ void writeSmallRig(const TempDir& dir)
   writeObj(dir.path() / "shapes" / "jawOpen.obj", face, jaw);
   writeObj(dir.path() / "shapes" / "browInnerUp.obj", face, brow);
   writeObj(dir.path() / "shapes" / "mouthSmile_L.obj", face, smile);
+}
+
+void writeCorruptC3d(const std::filesystem::path& to)
+{
+  std::string bytes = readFileBytes(dataFile("c3d/sample01/Eb015pi.c3d"));
+  const std::size_t name = bytes.find("\x06\x01LABELS", 512);  // length 6, POINT's group id 1
+  ASSERT_NE(name, std::string::npos);
+  bytes.replace(name + 2, 6, std::string("\x01\x02\x03\x04\x05\x06", 6));
+  writeFileAtomically(to, bytes);
 }
 
 std::size_t entryCount(const std::filesystem::path& folder)

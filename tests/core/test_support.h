@@ -33,6 +33,11 @@ private:
 /// binding fits its neutral.
 void writeSmallRig(const TempDir& dir);
 
+/// Writes to `to` a copy of c3d/sample01/Eb015pi.c3d whose parameter section is corrupt in its
+/// middle (POINT:LABELS' record name overwritten with binary bytes), which every reader must refuse
+/// with "parameter section corrupt". (sample18's file, once the fixture, reads with warnings.)
+void writeCorruptC3d(const std::filesystem::path& to);
+
 /// How many entries (files and folders) `folder` holds directly.
 [[nodiscard]] std::size_t entryCount(const std::filesystem::path& folder);
 

@@ -251,8 +251,9 @@ TEST_F(StudioWindow, SaveAndReopenKeepTheEdit)
 
 TEST_F(StudioWindow, CorruptFileShowsAnErrorAndKeepsTheOpenTake)
 {
-  const QString error =
-      window->openFile(QString::fromStdString(test::dataFile("c3d/sample18/bad_parameter_section.c3d").string()), true);
+  const test::TempDir dir;
+  test::writeCorruptC3d(dir.file("corrupt.c3d"));
+  const QString error = window->openFile(QString::fromStdString(dir.file("corrupt.c3d").string()), true);
   EXPECT_TRUE(error.contains(QStringLiteral("parameter section corrupt"))) << error.toStdString();
   EXPECT_EQ(window->document().take().frameCount(), 3000);
   EXPECT_EQ(window->document().take().label(0), "root-1");

@@ -350,7 +350,11 @@ private:
                             std::to_string(link) + ")");
       const bool last = link == 0 || !continuesAt(next);
       require(offsetPos, (last ? std::min(next, m_size) : next) - offsetPos, "parameter section");
-      const std::size_t limit = last ? std::min(next, m_size) : next;
+      std::size_t limit = last ? std::min(next, m_size) : next;
+      // The last record ends with the section: what runs past it is the data's bytes.
+      const bool clipped = last && limit > parameterSectionEnd() && offsetPos < parameterSectionEnd();
+      if (clipped)
+        limit = parameterSectionEnd();
       const std::size_t body = offsetPos + 2;
       if (id < 0) {
         C3dGroup group;
@@ -359,10 +363,9 @@ private:
         group.locked = nameLength < 0;
         group.description = readDescription(body, limit, name);
         m_tree.groups().push_back(std::move(group));
-      } else {
-        C3dParameter parameter = readParameter(body, limit, name);
-        parameter.locked = nameLength < 0;
-        parametersByGroup[id].push_back(std::move(parameter));
+      } else if (std::optional<C3dParameter> parameter = readLastParameter(body, limit, name, id, clipped)) {
+        parameter->locked = nameLength < 0;
+        parametersByGroup[id].push_back(std::move(*parameter));
       }
       if (last)
         break;
@@ -371,13 +374,25 @@ private:
     attachParameters(parametersByGroup);
   }
 
+  /// Past the parameter section: its declared block count, or where the header's data section
+  /// starts when that comes first. O(1).
+  std::size_t parameterSectionEnd() const
+  {
+    std::size_t end = m_parameterOffset + std::size_t{m_data[m_parameterOffset + 2]} * c3d::kBlockSize;
+    if (const std::size_t dataStart = (std::size_t{m_header.dataBlock} - 1) * c3d::kBlockSize;
+        m_header.dataBlock > 0 && dataStart > m_parameterOffset)
+      end = std::min(end, dataStart);
+    return end;
+  }
+
   /// Whether a link to `next` continues the section. Some writers (the SGI sample02 files) give
   /// the last record a link far past the section's declared end, into the data: a link beyond
-  /// that end continues only when a plausible record (text name) sits there.
+  /// that end continues only when a plausible record (text name) sits there. The section ends at
+  /// its declared block count or where the header's data section starts, whichever comes first
+  /// (sample18's file declares 12 parameter blocks where its data starts after 10).
   bool continuesAt(std::size_t next)
   {
-    const std::size_t declaredEnd = m_parameterOffset + std::size_t{m_data[m_parameterOffset + 2]} * c3d::kBlockSize;
-    if (next < declaredEnd)
+    if (next < parameterSectionEnd())
       return true;  // inside the section: follow it (require() reports a truncated file)
     if (next + 2 <= m_size && m_data[next] == 0)
       return true;  // a proper terminator: only the declared block count was too small
@@ -404,6 +419,32 @@ private:
     }
     m_parameterEnd = std::max(m_parameterEnd, at + 1 + length);
     return std::string(trim(std::string_view(reinterpret_cast<const char*>(m_data + at + 1), length)));
+  }
+
+  /// readParameter, except that a record `clipped` at the section's end whose values run past it is
+  /// left out with a warning (sample18's EVENT:LABELS runs into the data section) rather than
+  /// failing the read: no value of it is made up from the data's bytes.
+  std::optional<C3dParameter> readLastParameter(std::size_t body, std::size_t limit, const std::string& name,
+                                                int group, bool clipped)
+  {
+    if (!clipped)
+      return readParameter(body, limit, name);
+    try {
+      return readParameter(body, limit, name);
+    } catch (const FormatError&) {
+      warn("parameter '" + groupName(group) + name + "' runs past the parameter section into the data section (byte " +
+           std::to_string(limit) + "); left out");
+      return std::nullopt;
+    }
+  }
+
+  /// "GROUP:" for a parameter of group `id` read so far, or "" (a message's prefix).
+  std::string groupName(int id) const
+  {
+    for (const C3dGroup& group : m_tree.groups())
+      if (group.id == id)
+        return group.name + ":";
+    return {};
   }
 
   C3dParameter readParameter(std::size_t body, std::size_t limit, const std::string& name)
