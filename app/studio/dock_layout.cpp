@@ -56,6 +56,16 @@ bool raiseDock(QMainWindow& window, const QString& name)
   return false;
 }
 
+bool dockInFront(const QDockWidget& dock)
+{
+  if (!dock.isVisible())
+    return false;
+  if (dock.isFloating())
+    return true;
+  const QWidget* window = dock.window();
+  return QRect(dock.mapTo(window, QPoint(0, 0)), dock.size()).intersects(window->rect());
+}
+
 bool placeFirstRunWindow(QMainWindow& window)
 {
   const QScreen* screen = QGuiApplication::primaryScreen();

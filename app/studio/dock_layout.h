@@ -25,6 +25,10 @@ QDockWidget* addDock(QMainWindow& window, const QString& title, const QString& o
 /// Shows and raises the dock of `window` with this object name or title (any case); false when none has it.
 bool raiseDock(QMainWindow& window, const QString& name);
 
+/// Whether the dock's content is on screen: shown and, when tabbed, its tab in front. (Qt keeps a
+/// dock in a tab behind another visible, moved outside the window, so isVisible() does not tell.)
+[[nodiscard]] bool dockInFront(const QDockWidget& dock);
+
 /// Sizes and centres a first-run window on the primary screen (85 % of it); false without a screen.
 bool placeFirstRunWindow(QMainWindow& window);
 

@@ -5,6 +5,7 @@
 #include "studio_profile.h"
 #include "ui_stall_meter.h"
 
+#include "document/autosave.h"
 #include "document/studio_options.h"
 #include "document/take_document.h"
 #include "views/redraw_memory.h"
@@ -14,6 +15,7 @@
 #include <QCommandLineParser>
 #include <QSurfaceFormat>
 #include <QElapsedTimer>
+#include <QStatusBar>
 #include <QTimer>
 
 #include <algorithm>
@@ -90,11 +92,27 @@ int main(int argc, char** argv)
   const QCommandLineOption videoOffset(QStringLiteral("video-offset"),
                                        QStringLiteral("The video's time at the take's first frame, in seconds."),
                                        QStringLiteral("S"));
+  const QCommandLineOption recover(
+      QStringLiteral("recover"),
+      QStringLiteral("Recover the newest unsaved take a crashed studio left, with its session, without asking."));
+  const QCommandLineOption autosaveSeconds(
+      QStringLiteral("autosave-seconds"),
+      QStringLiteral("Copy unsaved edits to the recovery file every S seconds (at least 1; default: the preferences')."),
+      QStringLiteral("S"));
   parser.addOptions({screenshot, frame, select, profile, profileFrames, mesh, binding, showDock, rig, rigShapes, solve,
-                     video, videoOffset});
+                     video, videoOffset, recover, autosaveSeconds});
   parser.process(app);
 
   mocap::studio::MainWindow window;
+  if (parser.isSet(autosaveSeconds)) {
+    bool ok = false;
+    const double seconds = parser.value(autosaveSeconds).toDouble(&ok);
+    if (!ok || !(seconds >= 1.0 && seconds <= 86400.0)) {
+      std::cerr << "mocap-studio: --autosave-seconds needs a number of seconds from 1 to 86400\n";
+      return 2;
+    }
+    window.autosave()->setInterval(static_cast<int>(seconds * 1000.0));
+  }
   mocap::studio::OpenFigures open;
   if (!parser.positionalArguments().isEmpty()) {
     QElapsedTimer openClock;
@@ -175,7 +193,14 @@ int main(int argc, char** argv)
   if (parser.isSet(screenshot))
     scheduleScreenshot(window, parser.value(screenshot));
   window.show();
-  if (!parser.isSet(screenshot))
+  if (parser.isSet(recover)) {
+    if (!window.offerRecovery(false)) {
+      std::cerr << "mocap-studio: no unsaved take of a crashed studio to recover\n";
+      return 1;
+    }
+    std::cout << "mocap-studio: " << window.statusBar()->currentMessage().toStdString() << std::endl;
+  } else if (!parser.isSet(screenshot)) {
     QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
+  }
   return QApplication::exec();
 }

@@ -187,9 +187,10 @@ void MainWindow::createDocks()
           [this, gapFillStep] { m_gapList->setFillRules(gapFillStep->currentOptions()); });
   cleaningDock->raise();
   // The highlight shows only while the dock is on screen: leaving the panel (another tab raised,
-  // the dock closed) gives the 3D view its sample-state colours back, returning shows it again.
+  // the dock closed) gives the 3D view its sample-state colours back, returning shows it again; a
+  // plan set while its tab is behind another (a recovered session's) waits for the tab.
   auto showLayout = [this, layoutDock] {
-    ui::LayoutHighlight shown = layoutDock->isVisible() ? m_session->layoutPlan().highlight() : ui::LayoutHighlight{};
+    ui::LayoutHighlight shown = dockInFront(*layoutDock) ? m_session->layoutPlan().highlight() : ui::LayoutHighlight{};
     m_session->view().setLayoutHighlight(std::move(shown.kept), std::move(shown.reference));
   };
   connect(&m_session->layoutPlan(), &ui::LayoutPlanModel::changed, this, showLayout);
@@ -410,13 +411,15 @@ void MainWindow::updateTitle()
   setWindowModified(m_document->isModified());
 }
 
-bool MainWindow::offerRecovery()
+bool MainWindow::offerRecovery(bool ask)
 {
-  const std::optional<ui::RecoveredTake> recovered =
-      ui::offerRecovery(*m_session, *m_autosave, *this, [this](const QVariantMap& window) {
+  const std::optional<ui::RecoveredTake> recovered = ui::offerRecovery(
+      *m_session, *m_autosave, *this,
+      [this](const QVariantMap& window) {
         m_files->forgetOverwriteConfirmation();
         restoreState(window.value(kWindowStateKey).toByteArray());
-      });
+      },
+      ask);
   if (!recovered)
     return false;
   if (m_session->faceMesh().hasMesh()) {

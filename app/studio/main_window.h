@@ -99,8 +99,8 @@ public:
   /// Selects markers by label; unknown labels are ignored. Returns how many were found.
   int selectLabels(const QStringList& labels);
   /// Offers the takes that crashed sessions left unsaved (the newest first); returns whether
-  /// one was recovered.
-  bool offerRecovery();
+  /// one was recovered. Without `ask`, the newest is recovered without a question (--recover).
+  bool offerRecovery(bool ask = true);
   [[nodiscard]] ui::Autosave* autosave() const { return m_autosave; }
   /// The Marker menu's edits of the take's head reference markers (the one editor, undoable).
   [[nodiscard]] ui::ReferenceMarkerActions* referenceMarkerActions() const { return m_referenceMarkers; }

@@ -1,6 +1,8 @@
 // Crash recovery end to end (issue 31): the studio's window, in a process of its own, is given
 // edits of every kind (head reference markers, a cleaning step applied, a rig bound and solved
-// and a weight curve edited, a reference video with an offset, a layout plan with a size picked);
+// and a weight curve edited, an actor made from a neutral frame (its file then gone), the
+// Retarget section's map with a gain edited, a reference video with an offset, a layout plan with
+// a size picked);
 // the autosave timer writes them; the process is killed with SIGKILL (nothing cleaned up); a new
 // window accepts the recovery offer and every part of the session is back as the killed process
 // reported it. The recovered window is left as a picture in build/tests to look at.
@@ -9,20 +11,24 @@
 #include "sample_files.h"
 #include "../core/test_support.h"
 
+#include "actions/actor_actions.h"
 #include "actions/reference_marker_actions.h"
 #include "actions/weight_edit_actions.h"
+#include "dialogs/retarget_map_chooser.h"
 #include "document/autosave.h"
 #include "document/blendshape_solve_model.h"
 #include "document/face_mesh_model.h"
 #include "document/layout_plan_model.h"
 #include "document/reference_video.h"
 #include "document/reference_videos.h"
+#include "document/retarget_map_model.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
 #include "main_window.h"
 #include "panels/blendshape_solve_panel.h"
 #include "panels/cleaning_panel.h"
 #include "panels/layout_planning_panel.h"
+#include "panels/retarget_section.h"
 #include "sample_window.h"
 #include "views/layout_error_plot.h"
 #include "views/vtk_viewport.h"
@@ -45,6 +51,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTest>
 
 #include <gtest/gtest.h>
@@ -120,6 +127,15 @@ QJsonObject sessionFacts(studio::MainWindow& window)
   facts[QStringLiteral("layoutLabels")] = jsonLabels(session.layoutPlan().selectedLabels());
   const ui::LayoutPlanResult* plan = session.layoutPlan().result();
   facts[QStringLiteral("layoutSizes")] = plan ? static_cast<int>(plan->plan.sizes.size()) : 0;
+  facts[QStringLiteral("actor")] = weights.actor() ? QString::fromStdString(weights.actor()->name) : QString();
+  const ui::RetargetMapModel& map = weights.retargetMap();
+  facts[QStringLiteral("mapName")] = map.name();
+  facts[QStringLiteral("mapEdited")] = map.edited();
+  facts[QStringLiteral("mapGain")] = map.map() ? map.map()->channels.front().sources.front().gain : -1.0;
+  const ui::RetargetSection& section = *window.blendshapeSolvePanel()->retargetSection();
+  facts[QStringLiteral("mapRows")] = section.table()->rowCount();
+  facts[QStringLiteral("mapChoice")] =
+      QString::fromStdString(section.findChild<ui::RetargetMapChooser*>()->map().value_or("(none)"));
   return facts;
 }
 
@@ -153,6 +169,14 @@ void runStudioUntilKilled(const QString& folder)
   session.blendshapes().setSelectedShapes({kEditedShape});
   document.setRange(kEditFirst, kEditLast);
   ASSERT_EQ(window->blendshapeSolvePanel()->edits().scale(0.5), QString());
+
+  // An actor from the current frame, loaded; its file then gone, so only the session state has it.
+  document.setCurrentFrame(40);
+  ASSERT_EQ(window->blendshapeSolvePanel()->actors().newFromNeutralFrame(folder + QStringLiteral("/anna.json")), QString());
+  ASSERT_TRUE(QFile::remove(folder + QStringLiteral("/anna.json")));
+  ui::RetargetSection& retarget = *window->blendshapeSolvePanel()->retargetSection();
+  ASSERT_EQ(retarget.loadMap(std::string("ict_to_arkit")), QString());
+  ASSERT_EQ(retarget.setGain(0, 0.5), QString());
 
   ASSERT_EQ(window->openReferenceVideo(video, 0.52), QString());
 
@@ -241,6 +265,11 @@ TEST(KillAndRecover, EveryPartOfTheSessionComesBackAfterTheStudioIsKilled)
   EXPECT_TRUE(before[QStringLiteral("videoOpen")].toBool());
   EXPECT_GE(before[QStringLiteral("layoutSizes")].toInt(), 2);
   EXPECT_GT(before[QStringLiteral("editedCurveSum")].toDouble(), 0.0) << "the edit halved a curve that moves there";
+  EXPECT_EQ(before[QStringLiteral("actor")].toString(), QStringLiteral("anna"));
+  EXPECT_TRUE(before[QStringLiteral("mapEdited")].toBool());
+  EXPECT_DOUBLE_EQ(before[QStringLiteral("mapGain")].toDouble(), 0.5);
+  EXPECT_GT(before[QStringLiteral("mapRows")].toInt(), 0);
+  EXPECT_EQ(before[QStringLiteral("mapChoice")].toString(), QStringLiteral("ict_to_arkit"));
   for (auto it = before.begin(); it != before.end(); ++it)
     EXPECT_EQ(after.value(it.key()), it.value()) << it.key().toStdString() << " did not come back";
   EXPECT_EQ(window->statusBar()->currentMessage().contains(QStringLiteral("not restored")), false)

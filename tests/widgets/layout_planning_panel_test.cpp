@@ -158,6 +158,42 @@ TEST_F(LayoutPlanning, PlansTheSampleAndHighlightsTheClickedSize)
   EXPECT_TRUE(window->markerView()->layoutHighlight().empty());
 }
 
+TEST_F(LayoutPlanning, HighlightsOnlyWhileItsTabIsInFront)
+{
+  // A plan of three of the take's markers, two of them picked.
+  const Take& take = window->document().take();
+  auto plan = std::make_shared<ui::LayoutPlanResult>();
+  plan->frames.labels = {take.label(7), take.label(8), take.label(9)};
+  plan->symmetry = MarkerSymmetry(3, {});
+  LayoutSize size;
+  size.markerCount = 2;
+  size.pfa = ScoredLayout{};
+  size.pfa->markers = {0, 2};
+  plan->plan.sizes.push_back(size);
+  const std::vector<std::string> picked = sorted({take.label(7), take.label(9)});
+
+  // As after a recovery: the window's layout restored with Cleaning in front, then the plan set.
+  auto* cleaningDock = window->findChild<QDockWidget*>(QStringLiteral("cleaningDock"));
+  auto* layoutDock = window->findChild<QDockWidget*>(QStringLiteral("layoutPlanningDock"));
+  cleaningDock->raise();
+  ASSERT_TRUE(window->restoreState(window->saveState()));
+  QTest::qWait(50);
+  ASSERT_TRUE(layoutDock->isVisible()) << "Qt calls a tab behind another visible";
+  layoutPlan().setResult(plan, 2);
+  EXPECT_TRUE(highlightedLabels().empty()) << "highlighted behind the Cleaning tab";
+
+  layoutDock->raise();
+  EXPECT_EQ(highlightedLabels(), picked);
+  cleaningDock->raise();
+  EXPECT_TRUE(highlightedLabels().empty());
+  layoutPlan().setSelectedSize(2);  // a change while behind shows nothing either
+  EXPECT_TRUE(highlightedLabels().empty());
+  layoutDock->raise();
+  EXPECT_EQ(highlightedLabels(), picked);
+  layoutDock->close();
+  EXPECT_TRUE(highlightedLabels().empty());
+}
+
 TEST_F(LayoutPlanning, CancelStopsTheRunAndLeavesThePanelIdle)
 {
   ui::LayoutPlanParameters slow = quick();

@@ -35,16 +35,18 @@ QString restoreKeptState(StudioSession& session, const RecoveryFile& file)
 } // namespace
 
 std::optional<RecoveredTake> offerRecovery(StudioSession& session, Autosave& autosave, QWidget& dialogParent,
-                                           const std::function<void(const QVariantMap&)>& restoreWindow)
+                                           const std::function<void(const QVariantMap&)>& restoreWindow, bool ask)
 {
   TakeDocument& document = session.document();
   for (const RecoveryFile& file : Autosave::leftovers()) {
     const QString name = file.originalPath.isEmpty() ? RecoveryOffer::tr("an untitled take") : QFileInfo(file.originalPath).fileName();
-    const auto answer = QMessageBox::question(
-        &dialogParent, RecoveryOffer::tr("Recover unsaved edits?"),
-        RecoveryOffer::tr("Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?")
-            .arg(name, QLocale().toString(file.written, QLocale::ShortFormat)),
-        QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
+    const auto answer =
+        !ask ? QMessageBox::Yes
+             : QMessageBox::question(
+                   &dialogParent, RecoveryOffer::tr("Recover unsaved edits?"),
+                   RecoveryOffer::tr("Mocap Studio did not close normally. Unsaved edits of %1 were kept at %2. Recover them?")
+                       .arg(name, QLocale().toString(file.written, QLocale::ShortFormat)),
+                   QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
     if (answer == QMessageBox::Ignore)
       continue;  // ask again next time
     if (answer == QMessageBox::Discard) {

@@ -25,8 +25,10 @@ struct RecoveredTake
 /// beside it (StudioSession::restoreState: face mesh, binding, rig and weights, videos, layout
 /// plan), hands the window's kept layout to `restoreWindow`, then writes our own recovery copy
 /// before the old one goes (the edits are never only in memory); Discard deletes a leftover;
-/// Ignore asks again next time. Returns the recovered take, or none.
+/// Ignore asks again next time. Without `ask` the newest is recovered as Yes would (scripts,
+/// tests: `mocap-studio --recover`). Returns the recovered take, or none.
 std::optional<RecoveredTake> offerRecovery(StudioSession& session, Autosave& autosave, QWidget& dialogParent,
-                                           const std::function<void(const QVariantMap&)>& restoreWindow);
+                                           const std::function<void(const QVariantMap&)>& restoreWindow,
+                                           bool ask = true);
 
 } // namespace mocap::ui

@@ -50,6 +50,19 @@ QString writeRecovery(const Take& take, const std::optional<SessionState>& state
   }
 }
 
+// The state a recovery file written before session states existed keeps in its description: the
+// face mesh's file and its binding (as "session/mesh" and "session/binding"); none without a mesh.
+std::optional<SessionState> stateInDescription(const QVariantMap& session)
+{
+  const QString mesh = session.value(QStringLiteral("mesh")).toString();
+  if (mesh.isEmpty())
+    return std::nullopt;
+  SessionState state;
+  state.meshPath = mesh;
+  state.binding = session.value(QStringLiteral("binding")).toString().toStdString();
+  return state;
+}
+
 // Whether the process that writes `fileName` (take-PID.c3d) still runs, so its file is not a
 // leftover. Only Linux's /proc tells; elsewhere every other file counts as left over.
 bool ownerIsRunning(const QString& fileName)
@@ -201,7 +214,7 @@ void Autosave::remove(const RecoveryFile& file)
 std::optional<SessionState> Autosave::readState(const RecoveryFile& file)
 {
   if (file.statePath.isEmpty())
-    return std::nullopt;
+    return stateInDescription(file.session);
   const std::string path = file.statePath.toStdString();
   return decodeSessionState(QByteArray::fromStdString(readFileBytes(path)), path);
 }

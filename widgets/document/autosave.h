@@ -74,8 +74,9 @@ public:
   [[nodiscard]] static std::vector<RecoveryFile> leftovers(QString folder = {});
   /// Deletes a leftover recovery file, its description and its session state.
   static void remove(const RecoveryFile& file);
-  /// The session state kept with a leftover, or none when it has none. Throws IoError or
-  /// FormatError for a state that cannot be read.
+  /// The session state kept with a leftover, or none when it has none. A leftover of a studio from
+  /// before session states has its face mesh and binding in its description: they come back as a
+  /// state of that much. Throws IoError or FormatError for a state that cannot be read.
   [[nodiscard]] static std::optional<SessionState> readState(const RecoveryFile& file);
   [[nodiscard]] static QString defaultFolder();
 

@@ -8,11 +8,11 @@ namespace mocap::ui {
 
 RetargetMapModel::RetargetMapModel(QObject* parent) : QObject(parent) {}
 
-void RetargetMapModel::setMap(std::optional<RetargetMap> map, QString name)
+void RetargetMapModel::setMap(std::optional<RetargetMap> map, QString name, bool edited)
 {
   m_map = std::move(map);
   m_name = std::move(name);
-  m_edited = false;
+  m_edited = m_map && edited;
   ++m_generation;
   emit mapChanged();
 }

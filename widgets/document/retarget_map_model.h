@@ -20,8 +20,9 @@ class RetargetMapModel final : public QObject
 public:
   explicit RetargetMapModel(QObject* parent = nullptr);
 
-  /// Replaces the map (nullopt: none); `name` is what the map was read from (a shipped name or a path).
-  void setMap(std::optional<RetargetMap> map, QString name);
+  /// Replaces the map (nullopt: none); `name` is what the map was read from (a shipped name or a path);
+  /// `edited`: its gains were changed since (a map restored with its edits after a crash).
+  void setMap(std::optional<RetargetMap> map, QString name, bool edited = false);
   [[nodiscard]] const std::optional<RetargetMap>& map() const { return m_map; }
   [[nodiscard]] const QString& name() const { return m_name; }
   /// True once a gain was changed since the map was loaded or saved.

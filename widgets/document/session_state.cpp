@@ -1,6 +1,7 @@
 #include "document/session_state.h"
 
 #include "mocap/base/error.h"
+#include "mocap/deform/actor_profile_io.h"
 
 #include <QBuffer>
 #include <QDataStream>
@@ -14,11 +15,14 @@
 namespace mocap::ui {
 
 // One description of each structure's fields (visitFields) serves both directions, so writing and
-// reading cannot drift apart; the format is versioned as a whole.
+// reading cannot drift apart; the format is versioned as a whole: a version adds fields after the
+// previous version's (visitFields asks the stream's version), so every earlier version still reads.
 namespace session_state_format {
 
 constexpr quint32 kMagic = 0x4d535354;  // "MSST"
-constexpr quint32 kVersion = 1;
+/// 1: files, binding, curves, videos, layout plan; 2: + the actor profile and the retarget map.
+constexpr quint32 kVersion = 2;
+constexpr quint32 kFirstVersion = 1;
 constexpr Eigen::Index kMaxMarkers = 1000000;  // far beyond any take; a larger count is damage
 
 template <class Stream>
@@ -119,10 +123,30 @@ void visitFields(Stream& s, LayoutPlanResult& v)
 }
 
 template <class Stream>
+void visitFields(Stream& s, RetargetSource& v)
+{
+  s(v.shape, v.gain);
+}
+
+template <class Stream>
+void visitFields(Stream& s, RetargetChannel& v)
+{
+  s(v.name, v.sources, v.offset, v.min, v.max, v.line);
+}
+
+template <class Stream>
+void visitFields(Stream& s, RetargetMap& v)
+{
+  s(v.channels);
+}
+
+template <class Stream>
 void visitFields(Stream& s, SessionState& v)
 {
   s(v.meshPath, v.binding, v.rigPath, v.rigShapeFolder, v.curves, v.solvedWith, v.readCurves, v.selectedShapes,
     v.videos, v.currentVideo, v.layoutPlan, v.layoutSize);
+  if (s.version() >= 2)
+    s(v.actorPath, v.actor, v.solvedWith.actor, v.retargetMapName, v.retargetMap, v.retargetMapEdited);
 }
 
 /// Writes values to a QDataStream. It takes them by non-const reference only to share
@@ -131,6 +155,9 @@ class Writer
 {
 public:
   explicit Writer(QDataStream& out) : m_out(out) {}
+
+  /// Writes the newest version only.
+  [[nodiscard]] static quint32 version() { return kVersion; }
 
   template <class... T>
   void operator()(T&... values)
@@ -204,6 +231,15 @@ private:
     if (v)
       write(const_cast<LayoutPlanResult&>(*v));  // only read: see the class comment
   }
+  /// A profile as its own JSON file format (actor_profile_io), which checks it when read back.
+  void write(std::shared_ptr<const ActorProfile>& v)
+  {
+    write(v != nullptr);
+    if (v) {
+      std::string json = actorProfileJson(*v);
+      write(json);
+    }
+  }
   template <class T>
   void write(T& v)
   {
@@ -218,7 +254,10 @@ private:
 class Reader
 {
 public:
-  explicit Reader(QDataStream& in) : m_in(in) {}
+  Reader(QDataStream& in, quint32 version) : m_in(in), m_version(version) {}
+
+  /// The version the bytes were written in.
+  [[nodiscard]] quint32 version() const { return m_version; }
 
   template <class... T>
   void operator()(T&... values)
@@ -373,6 +412,21 @@ private:
       v = std::move(result);
     }
   }
+  void read(std::shared_ptr<const ActorProfile>& v)
+  {
+    bool has = false;
+    read(has);
+    v.reset();
+    if (!has || !ok())
+      return;
+    std::string json;
+    read(json);
+    try {
+      v = std::make_shared<const ActorProfile>(parseActorProfile(json, "the session state's actor profile"));
+    } catch (const std::exception&) {  // damaged bytes inside the text
+      corrupt();
+    }
+  }
   template <class T>
   void read(T& v)
   {
@@ -380,6 +434,7 @@ private:
   }
 
   QDataStream& m_in;
+  quint32 m_version;
 };
 
 } // namespace session_state_format
@@ -411,11 +466,12 @@ SessionState decodeSessionState(const QByteArray& bytes, const std::string& sour
   in >> magic >> version;
   if (in.status() != QDataStream::Ok || magic != kMagic)
     throw FormatError(source, "not a session state of Mocap Studio");
-  if (version != kVersion)
-    throw FormatError(source, "a session state of version " + std::to_string(version) + " (this program reads version " +
+  if (version < kFirstVersion || version > kVersion)
+    throw FormatError(source, "a session state of version " + std::to_string(version) +
+                                  " (this program reads versions " + std::to_string(kFirstVersion) + " to " +
                                   std::to_string(kVersion) + ")");
   SessionState state;
-  Reader reader(in);
+  Reader reader(in, version);
   reader(state);
   if (!reader.ok())
     throw FormatError(source, static_cast<std::uint64_t>(buffer.pos()), "cut short or damaged session state");

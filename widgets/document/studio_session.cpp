@@ -6,14 +6,17 @@
 #include "document/live_stream.h"
 #include "document/reference_video.h"
 #include "document/reference_videos.h"
+#include "document/retarget_map_model.h"
 #include "document/session_state.h"
 #include "document/studio_options.h"
 #include "document/take_document.h"
 #include "document/view_state.h"
 
+#include "mocap/deform/actor_profile.h"
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/io/mesh_io.h"
 #include "mocap/io/rig_io.h"
+#include "mocap/model/retarget_map.h"
 
 #include <QFileInfo>
 #include <QStringList>
@@ -98,7 +101,6 @@ SessionState StudioSession::saveState() const
   if (m_blendshapes->hasResult()) {
     state.curves = m_blendshapes->result();
     state.solvedWith = m_blendshapes->solvedWith();
-    state.solvedWith.actor.reset();  // a file of its own, remembered with the take
     state.readCurves = m_blendshapes->readCurves();
   }
   state.selectedShapes = m_blendshapes->selectedShapes();
@@ -107,6 +109,12 @@ SessionState StudioSession::saveState() const
   state.currentVideo = m_videos->currentIndex();
   state.layoutPlan = m_layoutPlan->sharedResult();
   state.layoutSize = m_layoutPlan->selectedSize();
+  state.actor = m_blendshapes->actor();
+  state.actorPath = m_blendshapes->actorPath();
+  const RetargetMapModel& map = m_blendshapes->retargetMap();
+  state.retargetMap = map.map();
+  state.retargetMapName = map.name();
+  state.retargetMapEdited = map.edited();
   return state;
 }
 
@@ -156,7 +164,24 @@ QString StudioSession::restoreState(const SessionState& state)
   restoreVideos(state, problems);
   if (state.layoutPlan)
     m_layoutPlan->setResult(state.layoutPlan, state.layoutSize);
+  restoreActorAndMap(state, problems);
   return problems.join(QLatin1Char('\n'));
+}
+
+void StudioSession::restoreActorAndMap(const SessionState& state, QStringList& problems)
+{
+  // None kept (a state of version 1, or no actor then) leaves the actor the take remembers.
+  if (state.actor)
+    restoreStep(problems, tr("the actor"), [&] {
+      if (m_blendshapes->hasRig())
+        (void)actorExtents(*state.actor, m_blendshapes->rig()->shapeNames());  // as Load Actor checks it
+      m_blendshapes->setActor(state.actor, state.actorPath);
+    });
+  if (state.retargetMap)
+    restoreStep(problems, tr("the retarget map"), [&] {
+      checkRetargetMap(*state.retargetMap);
+      m_blendshapes->retargetMap().setMap(state.retargetMap, state.retargetMapName, state.retargetMapEdited);
+    });
 }
 
 void StudioSession::restoreCurves(const SessionState& state, QStringList& problems)

@@ -77,7 +77,8 @@ public:
   [[nodiscard]] SessionState saveState() const;
   /// Brings saveState()'s state back onto the take set now: the face mesh and rig read from their
   /// files again, the binding, the weight curves with their edits and solve settings, the selected
-  /// shapes, the reference videos with their offsets and the layout plan with its picked size.
+  /// shapes, the reference videos with their offsets, the layout plan with its picked size, the
+  /// actor profile and the Retarget section's map with its edited gains.
   /// What cannot be restored (a file gone, curves for another take's length) is left out and said:
   /// returns "" or the problems, one a line. Not undoable (the take's history is not either).
   QString restoreState(const SessionState& state);
@@ -98,6 +99,7 @@ private:
   /// restoreState's weight curves and reference videos.
   void restoreCurves(const SessionState& state, QStringList& problems);
   void restoreVideos(const SessionState& state, QStringList& problems);
+  void restoreActorAndMap(const SessionState& state, QStringList& problems);
   /// Last on a new take, once the models have it: the kept rig bound to its labels.
   void restoreKeptRig();
 

@@ -89,11 +89,13 @@ RetargetSection::RetargetSection(TakeDocument& document, BlendshapeSolveModel& s
   connect(m_table, &QTableWidget::cellChanged, this, &RetargetSection::onItemChanged);
   connect(m_table, &QTableWidget::itemSelectionChanged, this, &RetargetSection::showSelectedCurve);
   connect(&m_map, &RetargetMapModel::mapChanged, this, &RetargetSection::fillTable);
+  connect(&m_map, &RetargetMapModel::mapChanged, this, &RetargetSection::showMapChoice);
   connect(&m_map, &RetargetMapModel::gainChanged, this, &RetargetSection::onGainChanged);
   for (const auto signal : {&BlendshapeSolveModel::resultChanged, &BlendshapeSolveModel::rigChanged})
     connect(&m_solve, signal, this, &RetargetSection::updateMapped);
   connect(&m_solve, &BlendshapeSolveModel::weightsEdited, this, &RetargetSection::updateMapped);
   fillTable();
+  showMapChoice();  // a map the session already holds
 }
 
 QString RetargetSection::loadMap(const std::optional<std::string>& nameOrPath)
@@ -154,6 +156,15 @@ void RetargetSection::selectRow(int row)
 QString RetargetSection::statusText() const
 {
   return m_status->text();
+}
+
+void RetargetSection::showMapChoice()
+{
+  // A map set on the model elsewhere (a recovered session's) is named in the chooser, not read again.
+  if (QString::fromStdString(m_chooser->map().value_or(std::string())) == m_map.name())
+    return;
+  const QSignalBlocker blocker(m_chooser);
+  m_chooser->setMap(m_map.name());
 }
 
 void RetargetSection::fillTable()

@@ -53,6 +53,7 @@ public:
 
 private:
   void fillTable();
+  void showMapChoice();
   void updateMapped();
   void onItemChanged(int row, int column);
   void onGainChanged(int channel, int source);
