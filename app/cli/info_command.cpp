@@ -1,6 +1,7 @@
 #include "cli_error.h"
 #include "commands.h"
 
+#include "mocap/model/data_loss_record.h"
 #include "mocap/model/gaps.h"
 #include "mocap/model/marker_points.h"
 #include "mocap/base/json_writer.h"
@@ -46,6 +47,26 @@ void writePointTypesJson(JsonWriter& json, const Take& take)
   for (std::size_t type = 0; type < counts.size(); ++type)
     json.key(pointTypeName(static_cast<PointType>(type))).value(static_cast<std::int64_t>(counts[type]));
   json.endObject();
+}
+
+/// Every finding of lost or wrong data ("data_loss"): what this read reports, then what the take's
+/// history holds as acknowledged (no longer raised as a warning, still listed), each with its kind.
+void writeDataLossJson(JsonWriter& json, const Take& take, const std::vector<std::string>& dataLoss)
+{
+  const auto finding = [&json](const std::string& text, bool acknowledged) {
+    json.beginObject();
+    json.key("finding").value(text);
+    json.key("kind").value(dataLossKindName(dataLossKind(text)));
+    json.key("acknowledged").value(acknowledged);
+    json.endObject();
+  };
+  json.key("data_loss").beginArray();
+  for (const std::string& text : dataLoss)
+    finding(text, false);
+  for (const DataLossRecord& record : dataLossRecords(take))
+    if (record.acknowledged)
+      finding(recordedFindingText(record), true);
+  json.endArray();
 }
 
 void writeInfoJson(const std::string& file, TakeFormat format, const Take& take, const std::vector<Gap>& gaps,
@@ -105,10 +126,7 @@ void writeInfoJson(const std::string& file, TakeFormat format, const Take& take,
   for (const auto& w : warnings)
     json.value(w);
   json.endArray();
-  json.key("data_loss").beginArray();
-  for (const auto& w : dataLoss)
-    json.value(w);
-  json.endArray();
+  writeDataLossJson(json, take, dataLoss);
   writeLayoutJson(json, layout);
   writePointTypesJson(json, take);
   json.endObject();

@@ -24,6 +24,7 @@
 #include "dialogs/manual_window.h"
 #include "dialogs/preferences_dialog.h"
 #include "dialogs/read_warnings_button.h"
+#include "dialogs/read_warnings_dialog.h"
 #include "document/autosave.h"
 #include "document/studio_options.h"
 #include "document/studio_session.h"
@@ -58,6 +59,8 @@
 #include "views/review_scene.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
+
+#include "mocap/model/data_loss_record.h"
 
 #include <QAction>
 #include <QApplication>
@@ -406,8 +409,9 @@ void MainWindow::updateTitle()
 {
   const QString name =
       m_document->filePath().isEmpty() ? tr("Untitled") : QFileInfo(m_document->filePath()).fileName();
-  setWindowTitle(m_document->isIncomplete() ? tr("%1 (incomplete)[*] — Mocap Studio").arg(name)
-                                            : tr("%1[*] — Mocap Studio").arg(name));
+  const QString dataLoss = ui::dataLossInWords(dataLossKinds(m_document->dataLossWarnings()));
+  setWindowTitle(dataLoss.isEmpty() ? tr("%1[*] — Mocap Studio").arg(name)
+                                    : tr("%1 (%2)[*] — Mocap Studio").arg(name, dataLoss));
   setWindowModified(m_document->isModified());
 }
 

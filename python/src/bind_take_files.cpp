@@ -35,8 +35,8 @@ void bindTakeFiles(py::module_& m)
       },
       py::arg("path"),
       "Reads a take (.c3d, .trc; the format from the extension). The take's `warnings` lists the "
-      "file's tolerated quirks and `data_loss` those that mean declared data is missing (a "
-      "truncated file). Raises IoError, FormatError, or InvalidArgument for a format it cannot read.");
+      "file's tolerated quirks and `data_loss` those that mean data is missing (a truncated file) or "
+      "wrong (wrapped coordinates), with those a saved copy's history carried and nobody acknowledged. Raises IoError, FormatError, or InvalidArgument for a format it cannot read.");
   py::class_<Take> take = py::reinterpret_borrow<py::class_<Take>>(m.attr("Take"));
   take.def(
       "write",

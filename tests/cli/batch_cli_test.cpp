@@ -7,6 +7,7 @@
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
 #include "mocap/io/take_io.h"
+#include "mocap/model/data_loss_record.h"
 #include "checkout_paths.h"
 
 #include <gtest/gtest.h>
@@ -582,6 +583,43 @@ TEST(SummarizeCli, ATakeThatLostDataOnReadingIsListedFirstWithWhy)
   const std::string html = readFileBytes(dir.file("report.html"));
   EXPECT_NE(html.find("<th>reader warnings</th>"), std::string::npos);
   EXPECT_NE(html.find("<tr class=\"bad\"><td>session2/cut.c3d</td>"), std::string::npos);
+}
+
+TEST(SummarizeCli, AnAcknowledgedDataLossIsNoLongerATakeThatNeedsAPerson)
+{
+  // The truncated take read and saved twice: once as it was read (the finding carried in its
+  // history), once after a person acknowledged the finding. Only the first needs a person for it.
+  test::TempDir dir;
+  const Archive archive(dir);
+  const std::string bytes = readFileBytes(archive.root / "session2/pc_real.c3d");
+  writeFileAtomically(dir.file("cut.c3d"), bytes.substr(0, bytes.size() - 5000));
+  Take take = readTake(dir.file("cut.c3d"));
+  writeTake(take, archive.root / "session2/carried.c3d");
+  const std::vector<DataLossRecord> records = dataLossRecords(take);
+  ASSERT_EQ(records.size(), 1u);
+  take.history().push_back(acknowledgementOf(records.front(), "test", "2026-12-06T17:00:00Z"));
+  writeTake(take, archive.root / "session2/acknowledged.c3d");
+  writeFileAtomically(archive.manifest(),
+                      readFileBytes(archive.manifest()) + "session2/carried.c3d\nsession2/acknowledged.c3d\n");
+  const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir);
+  ASSERT_LE(batch.exitCode, 3) << batch.err;
+  const auto run =
+      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const JsonValue summary = parseJson(run.out, "stdout");
+  std::map<std::string, const JsonValue*> review;
+  for (const JsonValue& entry : member(summary, "review").array(""))
+    review[member(entry, "take").string("")] = &entry;
+  ASSERT_EQ(review.count("session2/carried.c3d"), 1u) << run.out.substr(0, 2000);
+  EXPECT_TRUE(member(*review["session2/carried.c3d"], "data_loss").boolean(""));
+  EXPECT_NE(member(*review["session2/carried.c3d"], "reason").string("").find("recorded when cut.c3d was read"),
+            std::string::npos);
+  if (review.count("session2/acknowledged.c3d")) {  // listed only for other reasons (its open gaps)
+    const JsonValue& acknowledged = *review["session2/acknowledged.c3d"];
+    EXPECT_FALSE(member(acknowledged, "data_loss").boolean(""));
+    EXPECT_EQ(member(acknowledged, "reason").string("").find("data lost"), std::string::npos)
+        << member(acknowledged, "reason").string("");
+  }
 }
 
 TEST(SummarizeCli, GroupsFailuresByReasonWhileTheOtherTakesStillRun)

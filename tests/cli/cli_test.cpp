@@ -5,6 +5,7 @@
 
 #include "mocap/base/file_io.h"
 #include "mocap/base/json_reader.h"
+#include "mocap/model/data_loss_record.h"
 #include "mocap/model/marker_points.h"
 #include "mocap/io/marker_set_io.h"
 #include "mocap/io/take_io.h"
@@ -176,6 +177,38 @@ TEST(Cli, InfoJsonReportsProvenanceAndDataLoss)
   const auto lossAt = cut.out.find("\"data_loss\": [");
   ASSERT_NE(lossAt, std::string::npos);
   EXPECT_NE(cut.out.find("truncated", lossAt), std::string::npos) << cut.out.substr(lossAt);
+}
+
+// Data-loss findings (issue 30): info lists each with its kind; one a person acknowledged is still
+// listed, as acknowledged, and is no longer a warning.
+TEST(Cli, InfoListsDataLossWithItsKindAndWhetherItWasAcknowledged)
+{
+  test::TempDir dir;
+  std::vector<std::string> found;
+  Take take = readTake(test::dataFile("c3d/sample37/ART-Human_tools_integer_6dofLimbs.c3d"), nullptr, &found);
+  ASSERT_EQ(found.size(), 1u);
+  writeTake(take, dir.file("carried.c3d"));
+  const std::vector<DataLossRecord> records = dataLossRecords(take);
+  ASSERT_EQ(records.size(), 1u);
+  take.history().push_back(acknowledgementOf(records.front(), "test", "2026-12-06T17:00:00Z"));
+  writeTake(take, dir.file("acknowledged.c3d"));
+  for (const bool acknowledged : {false, true}) {
+    const std::string name = acknowledged ? "acknowledged.c3d" : "carried.c3d";
+    const CommandResult info = runMocap("info " + q(dir.file(name)) + " --json", dir);
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    const JsonValue json = parseJson(info.out, "info");
+    const auto& lost = json.find("data_loss", "info")->array("data_loss");
+    ASSERT_EQ(lost.size(), 1u) << name;
+    const JsonValue& entry = lost.front();
+    EXPECT_EQ(entry.find("finding", "entry")->string("finding"),
+              "recorded when ART-Human_tools_integer_6dofLimbs.c3d was read: " + found.front());
+    EXPECT_EQ(entry.find("kind", "entry")->string("kind"), "wrong") << name;
+    EXPECT_EQ(entry.find("acknowledged", "entry")->boolean("acknowledged"), acknowledged) << name;
+    bool warned = false;
+    for (const JsonValue& warning : json.find("warnings", "info")->array("warnings"))
+      warned = warned || warning.string("warning").rfind("recorded when ", 0) == 0;
+    EXPECT_EQ(warned, !acknowledged) << name;
+  }
 }
 
 // A Nexus-style file (issue 30): info counts its point types and says how the file was laid out;

@@ -382,6 +382,45 @@ TEST(ForeignTakeWalkthrough, CleaningTabsShowWholeAtTheFirstRunSize)
   }
 }
 
+TEST(ForeignTakeWalkthrough, CleaningApplyAndPreviewOptionsInViewWithoutScrolling)
+{
+  // On a 1600×1000 screen Apply sat below the fold of the Cleaning dock: the dock scrolled, and a
+  // technician had to scroll to apply what the preview showed. On every tab, at the first-run
+  // sizes of a 1600×1000 and a 1280×800 screen, Apply and the preview options are in the dock's
+  // view with the dock scrolled to its top, and the dock does not scroll up and down at all.
+  for (const QSize size : {QSize(1360, 850), QSize(kWalkWidth, kWalkHeight)}) {
+    const auto window = test::openSampleWindow(size.width(), size.height());
+    ASSERT_NE(window, nullptr);
+    ASSERT_TRUE(window->showDock(QStringLiteral("cleaningDock")));
+    auto* dock = window->findChild<QDockWidget*>(QStringLiteral("cleaningDock"));
+    ASSERT_NE(dock, nullptr);
+    auto* panel = window->findChild<ui::CleaningPanel*>();
+    ASSERT_NE(panel, nullptr);
+    auto* tabs = panel->findChild<QTabWidget*>();
+    ASSERT_NE(tabs, nullptr);
+    for (int tab = 0; tab < tabs->count(); ++tab) {
+      tabs->setCurrentIndex(tab);
+      test::waitForPreview(*panel);  // the bad points' list filled, the status said
+      QTest::qWait(50);
+      const std::string where = std::to_string(size.width()) + "x" + std::to_string(size.height()) + ", tab " +
+                                tabs->tabText(tab).toStdString();
+      if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget())) {
+        EXPECT_LE(scroll->widget()->height(), scroll->viewport()->height())
+            << where << ": the dock scrolls up and down";
+      }
+      for (const char* name : {"applyCleaning", "cleaningLivePreview", "rangeOnly"}) {
+        const auto* widget = panel->findChild<QWidget*>(QString::fromLatin1(name));
+        ASSERT_NE(widget, nullptr) << name;
+        EXPECT_TRUE(widget->isVisible()) << name << ", " << where;
+        const QRect shown(widget->mapTo(dock, QPoint(0, 0)), widget->size());
+        EXPECT_TRUE(dock->rect().contains(shown))
+            << name << " at y " << shown.top() << ".." << shown.bottom() << " in a dock " << dock->height()
+            << " px high, " << where;
+      }
+    }
+  }
+}
+
 TEST(ForeignTakeWalkthrough, MarkersDockShowsEveryColumnWholeOnA1600Screen)
 {
   // On a 1600×1000 screen (the first window 1360×850) the Markers dock cut its third column.

@@ -23,6 +23,7 @@
 #include "mocap/io/c3d_writer.h"
 #include "mocap/base/file_io.h"
 #include "mocap/cleaning/fill/gap_fill.h"
+#include "mocap/model/data_loss_record.h"
 #include "mocap/model/provenance.h"
 #include "mocap/io/take_io.h"
 #include "checkout_paths.h"
@@ -51,6 +52,8 @@
 #include <QWheelEvent>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace mocap {
 namespace {
@@ -224,6 +227,55 @@ TEST_F(Trust, ATruncatedTakeMustBeAcknowledgedAndSaysIncomplete)
   // A whole take afterwards is not called incomplete.
   ASSERT_EQ(window->openFile(qpath(test::sampleTake()), true), QString());
   EXPECT_FALSE(window->windowTitle().contains(QStringLiteral("(incomplete)")));
+}
+
+TEST_F(Trust, WrappedCoordinatesAreCalledWrongNotMissingAndCanBeAcknowledged)
+{
+  // The ART file's head marker wrapped round past the 16-bit range: every sample is in the take,
+  // some are wrong. The dialog said "Data is missing from …" and the title "(incomplete)".
+  auto window = showWindow();
+  QString title, heading;
+  bool offered = false;
+  test::whenModal<ui::ReadWarningsDialog>([&](ui::ReadWarningsDialog* dialog) {
+    title = dialog->windowTitle();
+    heading = dialog->heading();
+    offered = dialog->acknowledgeButton() != nullptr;
+    if (offered)
+      dialog->acknowledgeButton()->click();
+    else
+      dialog->accept();
+  });
+  const QString path = qpath(test::dataFile("c3d/sample37/ART-Human_tools_integer_6dofLimbs.c3d"));
+  ASSERT_EQ(window->openFile(path), QString());
+  EXPECT_TRUE(title.contains(QStringLiteral("wrong data"))) << title.toStdString();
+  EXPECT_FALSE(title.contains(QStringLiteral("incomplete"))) << title.toStdString();
+  EXPECT_TRUE(heading.contains(QStringLiteral("is wrong"))) << heading.toStdString();
+  EXPECT_FALSE(heading.contains(QStringLiteral("missing"))) << heading.toStdString();
+  EXPECT_TRUE(window->windowTitle().contains(QStringLiteral("(wrong data)"))) << window->windowTitle().toStdString();
+  auto* button = window->findChild<QToolButton*>(QStringLiteral("readWarningsButton"));
+  ASSERT_NE(button, nullptr);
+  EXPECT_TRUE(button->text().contains(QStringLiteral("Wrong data"))) << button->text().toStdString();
+
+  // Acknowledged in the dialog: one undoable step; a saved copy then lists it without raising it.
+  ASSERT_TRUE(offered);
+  TakeDocument& document = window->document();
+  const auto acknowledged = [&] {
+    const std::vector<DataLossRecord> records = dataLossRecords(document.take());
+    return !records.empty() && std::all_of(records.begin(), records.end(),
+                                           [](const DataLossRecord& r) { return r.acknowledged; });
+  };
+  EXPECT_TRUE(acknowledged());
+  document.undoStack()->undo();
+  EXPECT_FALSE(acknowledged()) << "undone";
+  document.undoStack()->redo();
+  EXPECT_TRUE(acknowledged()) << "redone";
+  test::TempDir dir;
+  ASSERT_EQ(document.save(qpath(dir.file("acknowledged.trc")), true), QString());
+  std::vector<std::string> warnings, dataLoss;
+  const Take saved = readTake(dir.file("acknowledged.trc"), &warnings, &dataLoss);
+  EXPECT_TRUE(dataLoss.empty()) << dataLoss.front();
+  ASSERT_EQ(dataLossRecords(saved).size(), 1u);
+  EXPECT_TRUE(dataLossRecords(saved).front().acknowledged);
 }
 
 TEST_F(Trust, FirstRunFillsMostOfTheScreenWithTheViewAtLeastHalf)

@@ -48,7 +48,7 @@ QString TakeFileActions::open(const QString& path, bool quiet)
   m_confirmedOverwrite = false;
   addRecent(path);
   m_options.lastFolder = QFileInfo(path).absolutePath();
-  emit opened(path, !quiet && m_document.isIncomplete());
+  emit opened(path, !quiet && m_document.hasDataLoss());
   return {};
 }
 

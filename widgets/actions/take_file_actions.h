@@ -46,7 +46,7 @@ public:
   void followRecentFiles(QMenu& menu);
 
 signals:
-  /// A file was opened; `askToAcknowledge`: it is incomplete and the open was not quiet.
+  /// A file was opened; `askToAcknowledge`: data is missing or wrong and the open was not quiet.
   void opened(const QString& path, bool askToAcknowledge);
   /// What was saved or exported (and what the file leaves out), for the status bar.
   void message(const QString& text, int timeoutMs);

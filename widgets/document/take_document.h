@@ -39,10 +39,12 @@ public:
   [[nodiscard]] const QString& readFilePath() const { return m_readFilePath; }
   /// Warnings from the last successful open (tolerated file quirks), all of them.
   [[nodiscard]] const std::vector<std::string>& loadWarnings() const { return m_loadWarnings; }
-  /// The warnings of the last open that mean data the file declares is missing (truncation).
+  /// The warnings of the last open that mean data is missing (truncation) or wrong (wrapped
+  /// coordinates, a misread layout), with those a saved copy's history carried and nobody
+  /// acknowledged ("recorded when FILE was read: …").
   [[nodiscard]] const std::vector<std::string>& dataLossWarnings() const { return m_dataLoss; }
-  /// True when the open take lost data at open: the title says "(incomplete)".
-  [[nodiscard]] bool isIncomplete() const { return !m_dataLoss.empty(); }
+  /// True when the open take lost data at open: the title says what kind (dataLossKinds).
+  [[nodiscard]] bool hasDataLoss() const { return !m_dataLoss.empty(); }
 
   /// A take as read from a file, with the reader's warnings, before it becomes the document's.
   struct ReadResult

@@ -14,6 +14,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTabWidget>
 #include <QTimer>
 #include <QUndoStack>
@@ -58,6 +60,45 @@ std::vector<std::pair<std::string, std::string>> shownParameters(const QWidget& 
   return parameters;
 }
 
+/// A step's page in the tabs: it scrolls up and down inside its tab, so the preview options, the
+/// progress, the status and Apply below the tabs stay in view whatever the dock's height (on a
+/// 1600×1000 screen Apply sat below the fold of the whole panel's scroll area). It asks for the
+/// step's width, so the dock's own scroll area still wraps or scrolls sideways as for any panel.
+class CleaningStepPage final : public QScrollArea
+{
+public:
+  CleaningStepPage(CleaningStep* step, QWidget* parent) : QScrollArea(parent)
+  {
+    setWidgetResizable(true);
+    setFrameShape(QFrame::NoFrame);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setWidget(step);
+  }
+
+  [[nodiscard]] QSize minimumSizeHint() const override
+  {
+    return {stepWidth(), QScrollArea::minimumSizeHint().height()};
+  }
+
+  /// A low preferred height too: the dock's scroll area sizes a panel holding wrapped text by its
+  /// preferred height for the width, which the whole step's height would push past the dock. The
+  /// tabs take the panel's spare height anyway (stretch).
+  [[nodiscard]] QSize sizeHint() const override { return {stepWidth(), 4 * fontMetrics().height()}; }
+
+private:
+  [[nodiscard]] int stepWidth() const
+  {
+    return widget()->minimumSizeHint().width() + verticalScrollBar()->sizeHint().width();
+  }
+};
+
+/// The step on tab page `page`.
+CleaningStep* stepOnPage(QWidget* page)
+{
+  const auto* scroll = qobject_cast<QScrollArea*>(page);
+  return scroll ? qobject_cast<CleaningStep*>(scroll->widget()) : nullptr;
+}
+
 } // namespace
 
 CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(parent), m_document(document)
@@ -67,6 +108,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   m_tabs->setUsesScrollButtons(true);  // in a dock narrower than the four tabs (a larger font, a translation)
   layout->addWidget(m_tabs, 1);
   m_live = new QCheckBox(tr("Live preview"), this);
+  m_live->setObjectName(QStringLiteral("cleaningLivePreview"));
   m_live->setChecked(true);
   m_selectedOnly = new QCheckBox(tr("Selected markers only"), this);
   m_rangeOnly = new QCheckBox(tr("Selected frame range only"), this);
@@ -82,6 +124,7 @@ CleaningPanel::CleaningPanel(TakeDocument& document, QWidget* parent) : QWidget(
   layout->addWidget(m_status);
   auto* buttons = new QHBoxLayout;
   m_apply = new QPushButton(tr("Apply"), this);
+  m_apply->setObjectName(QStringLiteral("applyCleaning"));
   m_apply->setDefault(true);
   buttons->addStretch();
   buttons->addWidget(m_apply);
@@ -120,25 +163,27 @@ CleaningPanel::~CleaningPanel() = default;  // the runner stops and awaits its j
 void CleaningPanel::addStep(CleaningStep* step)
 {
   wrapLongFormRows(*step);  // a step may come after the panel is docked
-  m_tabs->setTabToolTip(m_tabs->addTab(step, step->tabTitle()), step->title());
+  m_tabs->setTabToolTip(m_tabs->addTab(new CleaningStepPage(step, m_tabs), step->tabTitle()), step->title());
   connect(step, &CleaningStep::changed, this, &CleaningPanel::schedule);
 }
 
 void CleaningPanel::setCurrentStep(CleaningStep* step)
 {
-  m_tabs->setCurrentWidget(step);
+  for (int i = 0; i < m_tabs->count(); ++i)
+    if (stepOnPage(m_tabs->widget(i)) == step)
+      m_tabs->setCurrentIndex(i);
 }
 
 CleaningStep* CleaningPanel::currentStep() const
 {
-  return qobject_cast<CleaningStep*>(m_tabs->currentWidget());
+  return stepOnPage(m_tabs->currentWidget());
 }
 
 std::vector<CleaningStep*> CleaningPanel::steps() const
 {
   std::vector<CleaningStep*> steps;
   for (int i = 0; i < m_tabs->count(); ++i)
-    steps.push_back(static_cast<CleaningStep*>(m_tabs->widget(i)));
+    steps.push_back(stepOnPage(m_tabs->widget(i)));
   return steps;
 }
 

@@ -18,7 +18,8 @@ namespace mocap::ui {
 class JobRunner;
 class TakeDocument;
 
-/// The cleaning dock: one tab per step (bad points, gaps, smoothing). Changing a parameter
+/// The cleaning dock: one tab per step (bad points, gaps, smoothing), each scrolling inside its
+/// tab while the preview options, progress, status and Apply stay in view below. Changing a parameter
 /// recomputes the step on a worker thread, on a copy of the take, and shows the result as a
 /// preview over the views without touching the take; Apply pushes it as one undoable command.
 /// A newer request supersedes a running one, and Cancel stops it: the computation itself stops at

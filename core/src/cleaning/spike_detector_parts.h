@@ -63,6 +63,8 @@ inline constexpr Eigen::Index kScaleHalfWidth = 5;      // robust scale: median 
 inline constexpr double kSuspectThreshold = 3.0;        // stage 1 cut-off, in robust standard deviations
 inline constexpr std::size_t kMaxLeftOut = 4;           // suspects left out of one stage-2 fit
 inline constexpr double kRunEndScaleWeight = 0.5;       // see runEndSigma
+inline constexpr double kMotionFloorShare = 0.03;       // see motionFloor
+inline constexpr double kRunEndMotionFloorShare = 0.04; // see motionFloor
 inline constexpr Eigen::Index kMinRobustRun = 5;        // shorter runs have too few samples to judge one
 // Stage 2's window: 9 samples.
 inline constexpr int kWindow = 2 * kQuadraticHalfWidth + 1;
@@ -110,6 +112,11 @@ void quadraticResiduals(const Trajectory& xyz, const Run& run, RobustWork& work)
 // The robust scale: the local median of `r` over 11 samples per 3-D unit normal, at least `floor`.
 // O(r.size()).
 void localSigma(const Eigen::VectorXd& r, double floor, Eigen::VectorXd& sigma);
+
+// The scale floor of a moving marker: a share of its speed per frame over stage 2's window,
+// kMotionFloorShare, or kRunEndMotionFloorShare within 4 samples of a run end (raises work.sigma).
+// O(run length).
+void motionFloor(const Trajectory& xyz, const Run& run, RobustWork& work);
 
 // The scale floor of the samples within 4 of a run end, from their inward neighbours'
 // lopsided predictions (raises work.sigma there). O(1) per run end.

@@ -34,11 +34,13 @@ void detectRobust(const Trajectory& xyz, const Run& run, double threshold, doubl
   work.suspect.assign(static_cast<std::size_t>(n), 0);
   medianLineResiduals(xyz, run, work.lineResidual);
   localSigma(work.lineResidual, floor, work.sigma);
+  motionFloor(xyz, run, work);
   for (Eigen::Index i = 0; i < n; ++i)
     work.suspect[static_cast<std::size_t>(i)] =
         work.lineResidual(i) > kSuspectThreshold * work.sigma(i) ? 1 : 0;
   quadraticResiduals(xyz, run, work);
   localSigma(work.fitResidual, floor, work.sigma);
+  motionFloor(xyz, run, work);
   runEndSigma(xyz, run, work);
   for (Eigen::Index i = 0; i < n; ++i) {
     // Step 4: within the noise of one side's trajectory, the sample is no spike.

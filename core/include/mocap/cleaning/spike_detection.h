@@ -30,8 +30,11 @@ namespace mocap {
 ///      divided by its standard deviation relative to the noise, sqrt(1 + var(prediction));
 ///   3. a sample is flagged when that residual exceeds `threshold` robust standard deviations: the
 ///      median residual over the 11 surrounding samples / 1.5382 (the median length of a 3-D
-///      standard normal vector), at least `noiseFloor`; within 4 samples of a run end, also at
-///      least half the scale of the same lopsided prediction made for the inward neighbours;
+///      standard normal vector), at least `noiseFloor` and at least 3 % of the distance the marker
+///      moves per frame over the 9 samples (4 % within 4 samples of a run end, where the quadratic
+///      extrapolates: it follows a fast marker only to within a share of that, and smooth motion is
+///      no spike); within 4 samples of a run end, also at least half the scale of the same lopsided
+///      prediction made for the inward neighbours;
 ///   4. a flagged sample is kept only when the trajectory on each side misses it too: stage 2's
 ///      quadratic over the 8 samples before it, and over the 8 after it (suspects left out),
 ///      extrapolated to the sample, each miss by more than half the threshold (in the same robust
@@ -49,14 +52,17 @@ namespace mocap {
 /// |--------------------------|---------------|---------------------|--------------|--------------------|
 /// | NoseMoCap.trc (60 Hz)    | 99.87 %       | 0.0008 %            | 27.3 %       | 0.006 %            |
 /// | CheeksMoCap.trc (60 Hz)  | 99.97 %       | 0.0002 %            | 30.0 %       | 0.002 %            |
-/// | Facial-Sing.c3d (100 Hz) | 99.40 %       | 0.0006 %            | 33.1 %       | 0.006 %            |
+/// | Facial-Sing.c3d (100 Hz) | 99.34 %       | 0.0005 %            | 33.1 %       | 0.006 %            |
 ///
 /// Step 4 costs some recall (without it: 99.93 %, 99.97 %, 99.63 %; with 2 mm spikes 98.7 %,
 /// 99.8 %, 92.5 % instead of 99.5 %, 99.9 %, 95.1 %) and halves the flags on uncorrupted takes:
 /// Robust flags 16, 2 and 198 samples of these three (35, 2 and 415 without it: fast mouth and
 /// brow moves of a few mm in one or two frames, glitches and the edges of swaps in Facial-Sing),
 /// and on other labs' smooth takes ART's filtered 6DOF body 258 of 42 994 (631 without) and an
-/// OptiTrack solver's skeleton 169 of 41 436 (808). Without step 4, 12 of the 15 misses in 9 000
+/// OptiTrack solver's skeleton 169 of 41 436 (808). The scale's share of the speed (step 3) then
+/// took Facial-Sing to 163 flags (5 mm recall 99.40 % → 99.34 %, 2 mm 92.5 % → 92.0 %; the other
+/// two takes unchanged), ART's body to 118 and the skeleton to 160, and a synthetic smooth take
+/// (sines with 0.01 mm noise, 30-240 Hz) from up to 12 flags to none. Without step 4, 12 of the 15 misses in 9 000
 /// spiked samples were next to a gap (half in valid runs shorter than 5 samples, which Robust does
 /// not judge); the misses step 4 adds have not been sorted.
 enum class SpikeMethod
@@ -81,9 +87,10 @@ struct SpikeOptions
   /// other suspects) exceeds this many robust standard deviations of that distance (step 3 above).
   /// Finite and > 0. Lower finds smaller spikes and flags more fast, clean motion.
   double threshold = 6.0;
-  /// Robust: the smallest robust standard deviation, in millimetres, so a noiseless or quantised
-  /// trajectory does not turn rounding into spikes (with the default threshold, nothing under
-  /// 0.3 mm off the fit is flagged). Finite and ≥ 0.
+  /// Robust: the smallest robust standard deviation, in millimetres, of a marker at rest, so a
+  /// noiseless or quantised trajectory does not turn rounding into spikes (with the default
+  /// threshold, nothing under 0.3 mm off the fit is flagged); a moving marker's is also at least
+  /// 3 % of its speed per frame (4 % at run ends; step 3). Finite and ≥ 0.
   double noiseFloor = 0.05;
   /// Robust: a glitch longer than the robust windows can take is found a part at a time (its
   /// worst samples first), and a spike can hide a smaller one beside it; both stand out once the

@@ -49,7 +49,9 @@ struct C3dLayoutReport
 /// O(file size): one read, one bulk conversion pass, no per-sample objects.
 ///
 /// Warnings that mean data the file declares is missing from the take (a truncated data
-/// section) also go to `dataLoss`, so callers can make the user acknowledge them. The project's
+/// section) or that samples are wrong (wrapped integer coordinates) also go to `dataLoss`, so
+/// callers can make the user acknowledge them, and are recorded in the take's history with the
+/// unacknowledged ones a saved copy's history carried (carryDataLoss, data_loss_record.h). The project's
 /// PROCESSING group becomes the take's sample states and history (provenance.h). `layout`, when
 /// given, receives how the data section was read.
 [[nodiscard]] Take readC3d(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,

@@ -25,7 +25,8 @@ enum class TakeFormat
 [[nodiscard]] std::string_view formatName(TakeFormat format);
 
 /// Reads a take in the format its extension names; tolerated file quirks go to `warnings`, and
-/// those that mean declared data is missing (truncation) to `dataLoss` as well. A TRC file's
+/// those that mean data is missing (truncation) or wrong to `dataLoss` as well (with the
+/// unacknowledged findings the take's history carried: carryDataLoss). A TRC file's
 /// sample states and history come from its provenance sidecar when there is one.
 /// Throws IoError, FormatError, or InvalidArgument for a format that cannot be read.
 [[nodiscard]] Take readTake(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
