@@ -49,10 +49,15 @@ void writePointTypesJson(JsonWriter& json, const Take& take)
   json.endObject();
 }
 
-/// Every finding of lost or wrong data ("data_loss"): what this read reports, then what the take's
-/// history holds as acknowledged (no longer raised as a warning, still listed), each with its kind.
+/// "data_loss": the findings of lost or wrong data this read raises, as text (as before: scripts
+/// read strings). "data_loss_findings": those and the ones the take's history holds as
+/// acknowledged (no longer raised, still listed), each with its kind.
 void writeDataLossJson(JsonWriter& json, const Take& take, const std::vector<std::string>& dataLoss)
 {
+  json.key("data_loss").beginArray();
+  for (const std::string& text : dataLoss)
+    json.value(text);
+  json.endArray();
   const auto finding = [&json](const std::string& text, bool acknowledged) {
     json.beginObject();
     json.key("finding").value(text);
@@ -60,7 +65,7 @@ void writeDataLossJson(JsonWriter& json, const Take& take, const std::vector<std
     json.key("acknowledged").value(acknowledged);
     json.endObject();
   };
-  json.key("data_loss").beginArray();
+  json.key("data_loss_findings").beginArray();
   for (const std::string& text : dataLoss)
     finding(text, false);
   for (const DataLossRecord& record : dataLossRecords(take))

@@ -197,7 +197,13 @@ TEST(Cli, InfoListsDataLossWithItsKindAndWhetherItWasAcknowledged)
     const CommandResult info = runMocap("info " + q(dir.file(name)) + " --json", dir);
     ASSERT_EQ(info.exitCode, 0) << info.err;
     const JsonValue json = parseJson(info.out, "info");
-    const auto& lost = json.find("data_loss", "info")->array("data_loss");
+    const auto& raised = json.find("data_loss", "info")->array("data_loss");
+    ASSERT_EQ(raised.size(), acknowledged ? 0u : 1u) << "text, as scripts read it: " << name;
+    if (!acknowledged) {
+      EXPECT_EQ(raised.front().string("data_loss"),
+                "recorded when ART-Human_tools_integer_6dofLimbs.c3d was read: " + found.front());
+    }
+    const auto& lost = json.find("data_loss_findings", "info")->array("data_loss_findings");
     ASSERT_EQ(lost.size(), 1u) << name;
     const JsonValue& entry = lost.front();
     EXPECT_EQ(entry.find("finding", "entry")->string("finding"),
