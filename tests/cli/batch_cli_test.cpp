@@ -599,8 +599,10 @@ TEST(SummarizeCli, AnAcknowledgedDataLossIsNoLongerATakeThatNeedsAPerson)
   ASSERT_EQ(records.size(), 1u);
   take.history().push_back(acknowledgementOf(records.front(), "test", "2026-12-06T17:00:00Z"));
   writeTake(take, archive.root / "session2/acknowledged.c3d");
-  writeFileAtomically(archive.manifest(),
-                      readFileBytes(archive.manifest()) + "session2/carried.c3d\nsession2/acknowledged.c3d\n");
+  // Wrapped integer coordinates: data that is there but wrong, said so.
+  fs::copy_file(test::dataFile("c3d/sample37/ART-Human_tools_integer_6dofLimbs.c3d"), archive.root / "session2/art.c3d");
+  writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) +
+                                              "session2/carried.c3d\nsession2/acknowledged.c3d\nsession2/art.c3d\n");
   const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir);
   ASSERT_LE(batch.exitCode, 3) << batch.err;
   const auto run =
@@ -614,6 +616,10 @@ TEST(SummarizeCli, AnAcknowledgedDataLossIsNoLongerATakeThatNeedsAPerson)
   EXPECT_TRUE(member(*review["session2/carried.c3d"], "data_loss").boolean(""));
   EXPECT_NE(member(*review["session2/carried.c3d"], "reason").string("").find("recorded when cut.c3d was read"),
             std::string::npos);
+  EXPECT_EQ(member(*review["session2/carried.c3d"], "reason").string("").rfind("data lost on reading: ", 0), 0u);
+  ASSERT_EQ(review.count("session2/art.c3d"), 1u);
+  EXPECT_EQ(member(*review["session2/art.c3d"], "reason").string("").rfind("wrong data on reading: ", 0), 0u)
+      << member(*review["session2/art.c3d"], "reason").string("");
   if (review.count("session2/acknowledged.c3d")) {  // listed only for other reasons (its open gaps)
     const JsonValue& acknowledged = *review["session2/acknowledged.c3d"];
     EXPECT_FALSE(member(acknowledged, "data_loss").boolean(""));

@@ -6,6 +6,7 @@
 #include "mocap/base/json_writer.h"
 #include "mocap/batch/clean_preset.h"
 #include "mocap/batch/take_manifest.h"
+#include "mocap/model/data_loss_record.h"
 
 #include <algorithm>
 #include <array>
@@ -271,7 +272,11 @@ std::string reviewReason(const TakeReport& report, double minValid, double& seve
   std::vector<std::string> reasons;
   severity = 0.0;
   if (!report.dataLoss.empty()) {
-    reasons.push_back("data lost on reading: " + firstOf(report.dataLoss, "more"));
+    const DataLossKinds kinds = dataLossKinds(report.dataLoss);
+    const char* what = !kinds.wrong ? "data lost on reading: "
+                       : kinds.missing ? "data lost and wrong on reading: "
+                                       : "wrong data on reading: ";
+    reasons.push_back(what + firstOf(report.dataLoss, "more"));
     severity += 6.0;
   }
   if (report.warnings.size() > report.dataLoss.size()) {
