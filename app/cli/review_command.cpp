@@ -53,12 +53,12 @@ std::filesystem::path reviewProgram()
   return (error ? std::filesystem::path() : self.parent_path()) / "mocap-review";
 }
 
-bool hasDisplay()
+/// Whether there is an X display: the review renders in VTK's off-screen X11 window (a Wayland
+/// session without Xwayland does not do).
+bool hasXDisplay()
 {
-  for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY"})
-    if (const char* value = std::getenv(name); value && *value)
-      return true;
-  return false;
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
 }
 
 /// Whether `program` is an executable on the PATH.
@@ -98,7 +98,7 @@ int runReview(const ReviewArguments& arguments)
   }
   std::vector<std::string> argv = reviewArgv(arguments);
   argv.insert(argv.begin(), program.string());
-  if (hasDisplay() || std::getenv("QT_QPA_PLATFORM"))
+  if (hasXDisplay())
     execute(std::move(argv));
   // Debian's VTK renders through X11 only (no EGL or OSMesa): without a display, a virtual one.
   if (!onPath("xvfb-run")) {

@@ -1,8 +1,9 @@
 // `mocap-review`: the program behind `mocap review`. It loads a studio session from the files the
 // arguments name (the take, face mesh, binding and blendshape rig, solved to the take) with no
-// studio window or docks, then writes the review video from it as File ▸ Export Review Video…
-// does: the same scene, framed on the reviewed frames. Needs a display for the view's GL context
-// (mocap review starts it under xvfb-run when there is none). Exit codes as mocap's.
+// widget at all, then writes the review video from it as File ▸ Export Review Video… does: the
+// same scene, framed on the reviewed frames, rendered in VTK's off-screen window. Needs an X
+// display for that window's GL context (mocap review starts it under xvfb-run when there is none).
+// Exit codes as mocap's.
 #include "arguments.h"
 #include "cli_error.h"
 #include "frame_range.h"
@@ -16,13 +17,11 @@
 #include "document/take_document.h"
 #include "mocap/base/json_writer.h"
 #include "views/redraw_memory.h"
-#include "views/vtk_viewport.h"
 
-#include <QApplication>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QStringList>
-#include <QSurfaceFormat>
 
 #include <algorithm>
 #include <atomic>
@@ -174,9 +173,12 @@ int main(int argc, char** argv)
     std::cerr << "mocap review: " << e.what() << '\n' << usageHint(command) << '\n';
     return kExitBadUsage;
   }
-  ui::keepRedrawMemoryMapped();
-  QSurfaceFormat::setDefaultFormat(ui::VtkViewport::defaultFormat());  // before QApplication
-  QApplication application(argc, argv);
+  ui::keepRedrawMemoryMapped();  // each frame's pixels are a few MB read back and freed
+  // Qt shows nothing here, so it needs no display (VTK's off-screen window opens its own, and says
+  // so when there is none); the session's models want a GUI application all the same.
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+  QGuiApplication application(argc, argv);
   try {
     return review(arguments, clock, stop);
   } catch (const UsageError& e) {

@@ -57,6 +57,7 @@
 #include "views/model_outputs_note.h"
 #include "views/status_timeout.h"
 #include "views/review_scene.h"
+#include "views/session_scene.h"
 #include "views/timeline_widget.h"
 #include "views/wheel_guard.h"
 
@@ -93,6 +94,10 @@ MainWindow::MainWindow(QWidget* parent)
   m_session->followOptions();
   m_view3d = new ui::MarkerView3d(*m_document, this);
   m_view3d->observe(m_session->view());
+  // The session's face mesh and posed rig, drawn with the markers; the docks only observe them.
+  m_sessionScene = new ui::SessionScene(*m_session, m_view3d->scene(), this);
+  m_sessionScene->observe(m_session->view());
+  m_view3d->addLayers(*m_sessionScene);
   m_referenceMarkers = new ui::ReferenceMarkerActions(*m_document, *this, this);
   setCentralWidget(centralArea());
   m_timeline = new ui::TimelineWidget(*m_document, this);
@@ -204,14 +209,14 @@ void MainWindow::createDocks()
           &ui::ReferenceMarkerActions::edit);
   connect(m_cleaning->step<ui::HeadStabilizationStep>(), &ui::HeadStabilizationStep::editReferenceMarkersRequested,
           m_referenceMarkers, &ui::ReferenceMarkerActions::edit);
-  m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, this);
+  m_faceMesh = new ui::FaceMeshPanel(*m_session, *m_view3d, m_sessionScene->faceMesh(), this);
   connect(m_faceMesh, &ui::FaceMeshPanel::editReferenceMarkersRequested, m_referenceMarkers,
           &ui::ReferenceMarkerActions::edit);
   m_faceMeshDock = addDock(*this, tr("Face Mesh"), QStringLiteral("faceMeshDock"), m_faceMesh, Qt::RightDockWidgetArea);
   tabifyDockWidget(cleaningDock, m_faceMeshDock);
   m_faceMeshDock->hide();  // View ▸ Face Mesh shows it
 
-  m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_session, *m_view3d, this);
+  m_blendshapeSolve = new ui::BlendshapeSolvePanel(*m_session, this);
   connect(m_blendshapeSolve, &ui::BlendshapeSolvePanel::message, statusBar(), &QStatusBar::showMessage);
   m_blendshapeDock =
       addDock(*this, tr("Blendshape Solve"), QStringLiteral("blendshapeSolveDock"), m_blendshapeSolve, Qt::RightDockWidgetArea);

@@ -39,6 +39,7 @@ class LayoutPlanningPanel;
 class ManualWindow;
 class MarkerView3d;
 struct ReviewSource;
+class SessionScene;
 class StudioSession;
 class TakeDocument;
 class TimelineWidget;
@@ -65,6 +66,8 @@ public:
   /// The open take's session: the document and the models the docks observe.
   [[nodiscard]] ui::StudioSession& session() { return *m_session; }
   [[nodiscard]] ui::MarkerView3d* markerView() const { return m_view3d; }
+  /// The session's face mesh and posed rig as the 3D view draws them.
+  [[nodiscard]] ui::SessionScene& sessionScene() const { return *m_sessionScene; }
   [[nodiscard]] QTableView* markerTable() const;
   [[nodiscard]] ui::CurveView* curveView() const { return m_curves; }
   [[nodiscard]] ui::TimelineWidget* timeline() const { return m_timeline; }
@@ -131,6 +134,7 @@ private:
   ui::TakeDocument* m_document = nullptr;  // the session's
   ui::Autosave* m_autosave = nullptr;
   ui::MarkerView3d* m_view3d = nullptr;
+  ui::SessionScene* m_sessionScene = nullptr;  // draws into m_view3d's renderer
   ui::HeadMarkersProposalBar* m_headMarkersBar = nullptr;
   ui::MarkerEditActions* m_markerEdits = nullptr;
   ui::LabellingActions* m_labelling = nullptr;

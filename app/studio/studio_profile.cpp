@@ -8,11 +8,11 @@
 #include "document/take_document.h"
 #include "panels/cleaning_panel.h"
 #include "panels/cleaning_step.h"
-#include "panels/face_mesh_panel.h"
 #include "panels/reference_video_panel.h"
 #include "document/reference_video.h"
 #include "mocap/base/random.h"
 #include "views/face_mesh_scene.h"
+#include "views/session_scene.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -41,7 +41,7 @@ void profilePlayback(MainWindow& window, Eigen::Index maxFrames)
   const Eigen::Index frames = std::min(document.take().frameCount(), maxFrames);
   std::vector<double> times;
   times.reserve(static_cast<std::size_t>(frames));
-  const ui::FaceMeshScene& mesh = window.faceMeshPanel()->scene();
+  const ui::FaceMeshScene& mesh = window.sessionScene().faceMesh();
   double deformSum = 0.0;
   Eigen::Index deformCount = 0;
   QElapsedTimer total;

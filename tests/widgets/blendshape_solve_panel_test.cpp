@@ -22,6 +22,7 @@
 #include "views/blendshape_scene.h"
 #include "views/face_mesh_scene.h"
 #include "views/mesh_layer.h"
+#include "views/session_scene.h"
 #include "views/weight_curve_view.h"
 
 #include "mocap/base/file_io.h"
@@ -99,7 +100,7 @@ TEST_F(BlendshapeSolvePanelTest, SolvesTheTakeOffTheUiThreadAndPosesTheRigInTheV
   const Eigen::Index frame = peakFrame(shape);
   document().setCurrentFrame(frame);
   QApplication::processEvents();
-  const ui::MeshLayer& layer = panel->scene().layer();
+  const ui::MeshLayer& layer = window->sessionScene().blendshapes().layer();
   EXPECT_TRUE(layer.isVisible());
   MeshVertices expected;
   model().rig()->evaluate(model().weights().row(frame).transpose(), expected);

@@ -14,6 +14,7 @@
 #include "panels/face_mesh_panel.h"
 #include "document/face_mesh_model.h"
 #include "views/face_mesh_scene.h"
+#include "views/session_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
 #include "views/vtk_viewport.h"
@@ -56,7 +57,8 @@ protected:
     panel = window->faceMeshPanel();
   }
 
-  [[nodiscard]] FaceMeshScene& scene() const { return panel->scene(); }
+  /// The face mesh as the 3D view draws it (the window's session scene; the panel observes it).
+  [[nodiscard]] FaceMeshScene& scene() const { return window->sessionScene().faceMesh(); }
   [[nodiscard]] FaceMeshModel& model() const { return panel->model(); }
   [[nodiscard]] ui::TakeDocument& document() const { return window->document(); }
 
@@ -178,9 +180,9 @@ TEST_F(FaceMeshPanelTest, PickingAVertexRebindsTheSelectedMarkerUndoably)
   Eigen::Index target = -1;
   QPoint where;
   for (Eigen::Index v = 0; v < 468 && target < 0; v += 7) {
-    const QPoint p = scene().vertexPosition(v).toPoint();
-    if (!viewport->rect().contains(p) || window->markerView()->markerAt(p, 15) >= 0 || scene().vertexAt(p) != v ||
-        was.vertices[0] == v)
+    const QPoint p = viewport->widgetPosition(scene().layer().scenePosition(v)).toPoint();
+    if (!viewport->rect().contains(p) || window->markerView()->markerAt(p, 15) >= 0 ||
+        scene().layer().vertexAt(viewport->displayPixel(p)) != v || was.vertices[0] == v)
       continue;
     target = v;
     where = p;

@@ -1,8 +1,9 @@
-// Scenes built from a session, without the studio's window (issue 31), under Xvfb: a session loaded
-// from the sample's files alone renders the posed blendshape rig and the face mesh beside the
-// markers; `mocap review --solve --binding` draws them; the review of a frame is the studio's view
-// of it, pixel for pixel, with the rig and mesh layers; and Reset Camera keeps a walking body's
-// every marker in the view, whatever the view's shape.
+// Scenes built from a session, with no widget (issue 31), under Xvfb: a session loaded from the
+// sample's files alone renders the posed blendshape rig and the face mesh beside the markers off
+// screen; `mocap review --solve --binding` draws them, and without a display says so instead of
+// aborting; the review of a frame is the studio's view of it, pixel for pixel, with the rig and
+// mesh layers; and Reset Camera keeps a walking body's every marker in the view, whatever the
+// view's shape.
 #include "../core/test_support.h"
 
 #include "image_difference.h"
@@ -21,9 +22,13 @@
 #include "views/vtk_viewport.h"
 #include "checkout_paths.h"
 
+#include <QApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QTest>
 #include <QVBoxLayout>
 
@@ -79,6 +84,8 @@ TEST(ReviewScene, DrawsTheSolvedRigOfASessionLoadedFromFiles)
   scene.frameCamera(1000, 1000);
   const QImage withRig = scene.render(1000);
   ASSERT_FALSE(withRig.isNull());
+  EXPECT_EQ(withRig.size(), kReviewSize);
+  EXPECT_TRUE(QApplication::topLevelWidgets().isEmpty()) << "rendered off screen, with no widget";
   EXPECT_EQ(session.document().currentFrame(), 0) << "the session's own frame stays";
 
   source.settings.rigShown = false;
@@ -121,6 +128,25 @@ TEST(ReviewScene, MocapReviewWithSolveAndBindingDrawsTheRig)
   const VideoImage frame = video.frame(0);
   const QImage image(frame.rgb.data(), frame.width, frame.height, frame.width * 3, QImage::Format_RGB888);
   EXPECT_GT(rigColoured(image), qsizetype(frame.width) * frame.height / 50) << "the solved rig is drawn";
+}
+
+TEST(ReviewScene, MocapReviewWithoutADisplaySaysSoInsteadOfAborting)
+{
+  test::TempDir dir;
+  const QString review = QFileInfo(QString::fromUtf8(checkout::cliProgram())).dir().filePath(QStringLiteral("mocap-review"));
+  QProcess process;
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.remove(QStringLiteral("DISPLAY"));
+  environment.remove(QStringLiteral("QT_QPA_PLATFORM"));
+  process.setProcessEnvironment(environment);
+  process.start(review, {QString::fromStdString(test::sampleTake().string()), QStringLiteral("-o"),
+                         QString::fromStdString(dir.file("none.avi").string()), QStringLiteral("--frames"),
+                         QStringLiteral("1001:1002")});
+  ASSERT_TRUE(process.waitForFinished(60000));
+  EXPECT_EQ(process.exitStatus(), QProcess::NormalExit) << "no crash, no abort";
+  EXPECT_EQ(process.exitCode(), 1);
+  EXPECT_TRUE(process.readAllStandardError().contains("DISPLAY"));
+  EXPECT_EQ(test::entryCount(dir.path()), 0u);
 }
 
 TEST(ReviewScene, IsTheStudiosViewWithTheMeshAndRigLayers)

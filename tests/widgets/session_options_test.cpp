@@ -23,6 +23,7 @@
 #include "views/mesh_layer.h"
 #include "views/scene_settings.h"
 #include "views/sample_colors.h"
+#include "views/session_scene.h"
 
 #include "mocap/base/file_io.h"
 #include "mocap/io/take_io.h"
@@ -380,10 +381,10 @@ TEST(SessionViewState, TheLayersLookIsTheSessionsAndWhatIsShownIsReadFromIt)
   ui::StudioSession session;
   openOptionsTestTake(session, dir.file("take.c3d"));
   ui::MarkerView3d view(session.document());
-  ui::FaceMeshScene mesh(session.faceMesh(), view);
-  ui::BlendshapeScene rig(session.blendshapes(), session.faceMesh(), view);
-  mesh.observe(session.view());
-  rig.observe(session.view());
+  ui::SessionScene layers(session, view.scene());  // no panel makes them
+  layers.observe(session.view());
+  const ui::FaceMeshScene& mesh = layers.faceMesh();
+  const ui::BlendshapeScene& rig = layers.blendshapes();
   EXPECT_DOUBLE_EQ(mesh.layer().opacity(), 0.6) << "the studio's first-run look";
   EXPECT_TRUE(rig.shown());
   EXPECT_TRUE(rig.beside());

@@ -17,7 +17,6 @@
 #include "panels/job_progress_row.h"
 #include "panels/retarget_section.h"
 #include "panels/status_line.h"
-#include "views/blendshape_scene.h"
 #include "views/status_timeout.h"
 
 #include "mocap/io/rig_io.h"
@@ -112,15 +111,12 @@ Eigen::VectorXd peaks(const Eigen::MatrixXd& weights)
 
 } // namespace
 
-BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
+BlendshapeSolvePanel::BlendshapeSolvePanel(StudioSession& session, QWidget* parent)
     : QWidget(parent), m_session(session), m_document(session.document()), m_faceMesh(session.faceMesh()),
-      m_model(session.blendshapes()),
-      m_scene(new BlendshapeScene(m_model, m_faceMesh, view, this)),
-      m_edits(new WeightEditActions(m_document, m_model, this)), m_actors(new ActorActions(session, *this, this)),
+      m_model(session.blendshapes()), m_edits(new WeightEditActions(m_document, m_model, this)), m_actors(new ActorActions(session, *this, this)),
       m_jobs(new JobRunner(this))
 {
   TakeDocument& document = m_document;
-  m_scene->observe(session.view());
   buildUi();
   readSettings();
   connect(&m_model, &BlendshapeSolveModel::rigChanged, this, &BlendshapeSolvePanel::showRig);

@@ -23,11 +23,9 @@ class QPushButton;
 namespace mocap::ui {
 
 class ActorActions;
-class BlendshapeScene;
 class BlendshapeSolveModel;
 class FaceMeshModel;
 class JobRunner;
-class MarkerView3d;
 class RetargetSection;
 class StudioSession;
 class TakeDocument;
@@ -58,7 +56,8 @@ struct SolveRun
 /// Face Mesh dock; choose the method (bvls, ridge, temporal) and its λ,
 /// smoothness and sparsity; Solve runs BlendshapeSolver on a worker with progress and Cancel, on
 /// the take the face mesh sees (head motion removed). Then: the rig posed by the weights in the
-/// 3D view (BlendshapeScene), the shapes with their peak weights (selecting them shows their
+/// 3D view (BlendshapeScene, made by whoever composes the view; its shown/beside switches here set
+/// the session's ViewState, which it follows), the shapes with their peak weights (selecting them shows their
 /// curves in the Weights view), the marker residual and held frames in the status, undoable
 /// edits of the selected shapes over the selected frame range (scale, zero, smooth), a Live Link
 /// Face recording opened as the rig's curves (undoable), and Export Rig (RigExportDialog: the
@@ -71,11 +70,10 @@ class BlendshapeSolvePanel final : public QWidget
   Q_OBJECT
 
 public:
-  BlendshapeSolvePanel(StudioSession& session, MarkerView3d& view, QWidget* parent = nullptr);
+  explicit BlendshapeSolvePanel(StudioSession& session, QWidget* parent = nullptr);
   ~BlendshapeSolvePanel() override;
 
   [[nodiscard]] BlendshapeSolveModel& model() const { return m_model; }
-  [[nodiscard]] BlendshapeScene& scene() const { return *m_scene; }
   [[nodiscard]] WeightEditActions& edits() const { return *m_edits; }
   [[nodiscard]] RetargetSection* retargetSection() const { return m_retarget; }
   /// The Actor menu's actions; the solve uses the actor they load.
@@ -150,7 +148,6 @@ private:
   TakeDocument& m_document;
   FaceMeshModel& m_faceMesh;
   BlendshapeSolveModel& m_model;
-  BlendshapeScene* m_scene = nullptr;
   WeightEditActions* m_edits = nullptr;
   ActorActions* m_actors = nullptr;
   JobRunner* m_jobs = nullptr;  // one job at a time: a rig load or a solve

@@ -76,19 +76,17 @@ QString nameText(std::string_view name)
 
 } // namespace
 
-FaceMeshPanel::FaceMeshPanel(StudioSession& session, MarkerView3d& view, QWidget* parent)
-    : QWidget(parent), m_document(session.document()), m_view(view), m_model(session.faceMesh()),
-      m_scene(new FaceMeshScene(m_model, view, this)), m_viewState(session.view()),
-      m_undo(session.undoStack())
+FaceMeshPanel::FaceMeshPanel(StudioSession& session, MarkerView3d& view, const FaceMeshScene& scene, QWidget* parent)
+    : QWidget(parent), m_document(session.document()), m_view(view), m_model(session.faceMesh()), m_scene(scene),
+      m_viewState(session.view()), m_undo(session.undoStack())
 {
   TakeDocument& document = m_document;
-  m_scene->observe(m_viewState);
   buildUi();
   readSettings();
   connect(&m_model, &FaceMeshModel::meshChanged, this, &FaceMeshPanel::updateMeshLabel);
   connect(&m_model, &FaceMeshModel::bindingChanged, this, &FaceMeshPanel::updateBindingSummary);
   connect(&m_model, &FaceMeshModel::rigChanged, this, &FaceMeshPanel::updateRigStatus);
-  connect(m_scene, &FaceMeshScene::deformed, this, [this] { m_timing->setText(timingText()); });
+  connect(&m_scene, &FaceMeshScene::deformed, this, [this] { m_timing->setText(timingText()); });
   connect(&document, &TakeDocument::takeReset, this, &FaceMeshPanel::onTakeReset);
   connect(&document, &TakeDocument::selectionChanged, this, &FaceMeshPanel::onSelectionChanged);
   view.viewport()->installEventFilter(this);  // vertex clicks, before the view selects markers
@@ -438,7 +436,7 @@ bool FaceMeshPanel::pickVertex(QPoint position)
   const Eigen::Index other = m_view.markerAt(position, kMarkerRadius);
   if (other >= 0 && other != *marker)
     return false;
-  const Eigen::Index vertex = m_scene->vertexAt(position);
+  const Eigen::Index vertex = m_scene.layer().vertexAt(m_view.viewport()->displayPixel(position));
   if (vertex < 0)
     return false;
   const double before = pickResidual(*marker);
@@ -481,16 +479,16 @@ double FaceMeshPanel::pickResidual(Eigen::Index marker) const
 
 QString FaceMeshPanel::timingText() const
 {
-  if (m_scene->lastDeformMs() < 0.0)
+  if (m_scene.lastDeformMs() < 0.0)
     return {};
   const auto name = [](const FaceRig* rig) {
     return rig && rig->options().method == DeformMethod::Laplacian ? tr("Laplacian") : tr("RBF");
   };
   QString text = tr("Deform per frame: %1 %2 ms")
                      .arg(name(m_model.rig()))
-                     .arg(m_scene->lastDeformMs(), 0, 'f', 3);
-  if (m_scene->lastCompareMs() >= 0.0)
-    text += tr(", %1 %2 ms").arg(name(m_model.compareRig())).arg(m_scene->lastCompareMs(), 0, 'f', 3);
+                     .arg(m_scene.lastDeformMs(), 0, 'f', 3);
+  if (m_scene.lastCompareMs() >= 0.0)
+    text += tr(", %1 %2 ms").arg(name(m_model.compareRig())).arg(m_scene.lastCompareMs(), 0, 'f', 3);
   return text;
 }
 

@@ -33,7 +33,8 @@ class ViewState;
 /// edit undoable on the document's stack, and the status says the marker's new residual), choose
 /// RBF (kernel, radius, regions) or Laplacian (weights, constraint weight, rotations) deformation
 /// or both side by side, and read the per-frame deform time. The mesh, binding and rigs live in
-/// the session's FaceMeshModel (document/), drawn by FaceMeshScene (views/, owned here). The
+/// the session's FaceMeshModel (document/), drawn by a FaceMeshScene (views/) that whoever composes
+/// the 3D view makes; the panel only observes it (its deform time, the vertex under a click). The
 /// binding line says what is bound in this take, and how many of a kept rig's markers it has.
 /// Settings are remembered (typed session options, "faceMesh/…").
 class FaceMeshPanel final : public QWidget
@@ -41,7 +42,8 @@ class FaceMeshPanel final : public QWidget
   Q_OBJECT
 
 public:
-  FaceMeshPanel(StudioSession& session, MarkerView3d& view, QWidget* parent = nullptr);
+  /// `scene` draws the session's face mesh in `view`.
+  FaceMeshPanel(StudioSession& session, MarkerView3d& view, const FaceMeshScene& scene, QWidget* parent = nullptr);
   ~FaceMeshPanel() override;
   /// How far `marker` (bound) sits from its mesh point once the rig places the neutral frame on
   /// the mesh, in take units; NaN without a rig or with the marker missing there. O(1).
@@ -51,8 +53,8 @@ public:
 
   /// The mesh, binding and rigs the take drives (the session's).
   [[nodiscard]] FaceMeshModel& model() const { return m_model; }
-  /// Their drawing in the 3D view.
-  [[nodiscard]] FaceMeshScene& scene() const { return *m_scene; }
+  /// Their drawing in the 3D view (observed, not owned).
+  [[nodiscard]] const FaceMeshScene& scene() const { return m_scene; }
   [[nodiscard]] QUndoStack* undoStack() const { return m_undo; }
 
   /// Each returns an error message (also shown in the panel) or "".
@@ -102,7 +104,7 @@ private:
   TakeDocument& m_document;
   MarkerView3d& m_view;
   FaceMeshModel& m_model;
-  FaceMeshScene* m_scene = nullptr;
+  const FaceMeshScene& m_scene;
   ViewState& m_viewState;  // the session's: the mesh look is set there, the scene follows it
   QUndoStack* m_undo = nullptr;  // the document's: binding edits undo in order with every other edit
   std::string m_pendingLabel;

@@ -5,16 +5,14 @@
 #include "document/take_document.h"
 #include "document/view_state.h"
 #include "views/face_mesh_scene.h"
-#include "views/marker_view_3d.h"
 #include "views/mesh_layer.h"
-#include "views/vtk_viewport.h"
 
 namespace mocap::ui {
 
-BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshModel& faceMesh, MarkerView3d& view,
-                                 QObject* parent)
-    : QObject(parent), m_model(model), m_faceMesh(faceMesh), m_view(view),
-      m_layer(std::make_unique<MeshLayer>(view.viewport()->renderer()))
+BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshModel& faceMesh, vtkRenderer* renderer,
+                                 const DrawnPositions& markers, QObject* parent)
+    : QObject(parent), m_model(model), m_faceMesh(faceMesh), m_markers(markers),
+      m_layer(std::make_unique<MeshLayer>(renderer))
 {
   m_layer->setColor(QColor(236, 196, 160));  // warm, apart from the deformed mesh's colours
   m_layer->setVisible(false);
@@ -23,7 +21,6 @@ BlendshapeScene::BlendshapeScene(BlendshapeSolveModel& model, FaceMeshModel& fac
   connect(&model, &BlendshapeSolveModel::weightsEdited, this, &BlendshapeScene::updateFrame);
   connect(&faceMesh, &FaceMeshModel::rigChanged, this, &BlendshapeScene::updateFrame);
   connect(&faceMesh.document(), &TakeDocument::currentFrameChanged, this, &BlendshapeScene::updateFrame);
-  connect(view.viewport(), &VtkViewport::aboutToRender, this, &BlendshapeScene::updatePlacement);
 }
 
 BlendshapeScene::~BlendshapeScene() = default;
@@ -46,7 +43,7 @@ void BlendshapeScene::setBeside(bool beside)
 {
   m_beside = beside;
   updatePlacement();
-  m_view.viewport()->requestRender();
+  emit changed();
 }
 
 void BlendshapeScene::updateMesh()
@@ -67,12 +64,12 @@ void BlendshapeScene::updateFrame()
     m_layer->setVertices(m_posed);
   m_posedShown = posed;
   updatePlacement();
-  m_view.viewport()->requestRender();
+  emit changed();
 }
 
 void BlendshapeScene::updatePlacement()
 {
-  const std::optional<Eigen::Affine3d> placement = meshPlacement(m_faceMesh, m_view);
+  const std::optional<Eigen::Affine3d> placement = meshPlacement(m_faceMesh, m_markers);
   m_layer->setVisible(m_posedShown && placement.has_value());
   if (!m_posedShown || !placement)
     return;

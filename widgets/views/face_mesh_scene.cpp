@@ -3,9 +3,8 @@
 #include "document/face_mesh_model.h"
 #include "document/take_document.h"
 #include "document/view_state.h"
-#include "views/marker_view_3d.h"
+#include "views/drawn_positions.h"
 #include "views/mesh_layer.h"
-#include "views/vtk_viewport.h"
 
 #include <QElapsedTimer>
 
@@ -28,15 +27,15 @@ double sideOffset(const Mesh& mesh)
   return kGap * (mesh.vertices.col(0).maxCoeff() - mesh.vertices.col(0).minCoeff());
 }
 
-std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const MarkerView3d& view)
+std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const DrawnPositions& markers)
 {
   if (!model.hasMesh())
     return std::nullopt;
-  // The view draws markers in the head frame of its reference markers: so is the mesh placed.
+  // The markers are drawn in the head frame of their reference markers: so is the mesh placed.
   std::shared_ptr<const HeadMotion> viewMotion;
-  if (!view.headReference().empty()) {
+  if (!markers.headReference().empty()) {
     try {
-      viewMotion = model.document().headMotion(view.headReference());
+      viewMotion = model.document().headMotion(markers.headReference());
     } catch (const std::exception&) {
       viewMotion.reset();  // the view refuses such a reference too and stays in the lab frame
     }
@@ -56,16 +55,16 @@ void FaceMeshScene::observe(const ViewState& state)
       layer->setOpacity(state.meshOpacity());
       layer->setEdgesVisible(state.meshEdges());
     }
-    m_view.viewport()->requestRender();
+    emit changed();
   };
   applyLook();
   connect(&state, &ViewState::meshLookChanged, this, applyLook);
 }
 
-FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* parent)
-    : QObject(parent), m_model(model), m_view(view),
-      m_layer(std::make_unique<MeshLayer>(view.viewport()->renderer())),
-      m_compareLayer(std::make_unique<MeshLayer>(view.viewport()->renderer()))
+FaceMeshScene::FaceMeshScene(FaceMeshModel& model, vtkRenderer* renderer, const DrawnPositions& markers,
+                             QObject* parent)
+    : QObject(parent), m_model(model), m_markers(markers), m_layer(std::make_unique<MeshLayer>(renderer)),
+      m_compareLayer(std::make_unique<MeshLayer>(renderer))
 {
   m_compareLayer->setColor(QColor(172, 200, 236));
   connect(&model, &FaceMeshModel::meshChanged, this, [this] {
@@ -75,7 +74,7 @@ FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* 
       else
         layer->clear();  // nothing left drawn (or framed by Reset Camera)
     }
-    m_view.viewport()->requestRender();
+    emit changed();
   });
   connect(&model, &FaceMeshModel::rigChanged, this, [this] {
     showRestPose();
@@ -83,8 +82,6 @@ FaceMeshScene::FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* 
   });
   TakeDocument& document = model.document();
   connect(&document, &TakeDocument::currentFrameChanged, this, &FaceMeshScene::updateFrame);
-  // The view's head-stabilized frame can change without a document signal (Ctrl+B).
-  connect(view.viewport(), &VtkViewport::aboutToRender, this, &FaceMeshScene::updatePlacement);
 }
 
 FaceMeshScene::~FaceMeshScene() = default;
@@ -113,7 +110,7 @@ void FaceMeshScene::updateFrame()
     }
   }
   updatePlacement();
-  m_view.viewport()->requestRender();
+  emit changed();
   if (m_deformMs >= 0.0)
     emit deformed(m_deformMs, m_compareMs);
 }
@@ -129,16 +126,6 @@ void FaceMeshScene::updatePlacement()
     return;
   m_layer->setPlacement(*placement);
   m_compareLayer->setPlacement(*placement * Eigen::Translation3d(sideOffset(m_model.mesh()), 0.0, 0.0));
-}
-
-Eigen::Index FaceMeshScene::vertexAt(QPoint position) const
-{
-  return m_layer->vertexAt(m_view.viewport()->displayPixel(position));
-}
-
-QPointF FaceMeshScene::vertexPosition(Eigen::Index vertex) const
-{
-  return m_view.viewport()->widgetPosition(m_layer->scenePosition(vertex));
 }
 
 } // namespace mocap::ui

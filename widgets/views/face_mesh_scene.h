@@ -3,18 +3,18 @@
 #include "mocap/model/mesh.h"
 
 #include <QObject>
-#include <QPoint>
-#include <QPointF>
 
 #include <Eigen/Geometry>
 
 #include <memory>
 #include <optional>
 
+class vtkRenderer;
+
 namespace mocap::ui {
 
+class DrawnPositions;
 class FaceMeshModel;
-class MarkerView3d;
 class MeshLayer;
 class ViewState;
 
@@ -22,22 +22,24 @@ class ViewState;
 /// than its width. O(#vertices).
 [[nodiscard]] double sideOffset(const Mesh& mesh);
 
-/// Mesh units → the coordinates `view` draws markers in for the document's current frame: the
-/// model's meshToLab, in the view's head-stabilized frame when it has one; nullopt when the mesh
-/// cannot be placed. What the face mesh and the posed blendshape rig are both placed by. O(1) (the
-/// head motion is cached by the document).
-[[nodiscard]] std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const MarkerView3d& view);
+/// Mesh units → the coordinates the markers are drawn in (`markers`) for the document's current
+/// frame: the model's meshToLab, in the markers' head-stabilized frame when they are drawn in one;
+/// nullopt when the mesh cannot be placed. What the face mesh and the posed blendshape rig are both
+/// placed by. O(1) (the head motion is cached by the document).
+[[nodiscard]] std::optional<Eigen::Affine3d> meshPlacement(const FaceMeshModel& model, const DrawnPositions& markers);
 
-/// The face mesh model (FaceMeshModel) drawn in the 3D view: deforms the mesh whenever the current
-/// frame or the rigs change, and places it where the markers are drawn, in the lab frame or in the
-/// view's head-stabilized frame alike. When comparing, the other method's mesh is drawn offset
-/// beside the first along the mesh's x axis. A frame costs the rigs' deform.
+/// The face mesh model (FaceMeshModel) drawn in a VTK renderer, with no widget: deforms the mesh
+/// whenever the current frame or the rigs change, and places it where the markers are drawn
+/// (`markers`: the lab frame or a head-stabilized frame alike). When comparing, the other method's
+/// mesh is drawn offset beside the first along the mesh's x axis. Nothing here renders: changed()
+/// asks the owner of the render window for a render, and updatePlacement() is to be called before
+/// each (the markers' frame can change without a document signal). A frame costs the rigs' deform.
 class FaceMeshScene final : public QObject
 {
   Q_OBJECT
 
 public:
-  FaceMeshScene(FaceMeshModel& model, MarkerView3d& view, QObject* parent = nullptr);
+  FaceMeshScene(FaceMeshModel& model, vtkRenderer* renderer, const DrawnPositions& markers, QObject* parent = nullptr);
   ~FaceMeshScene() override;
 
   [[nodiscard]] FaceMeshModel& model() const { return m_model; }
@@ -45,12 +47,10 @@ public:
   [[nodiscard]] MeshLayer& compareLayer() const { return *m_compareLayer; }
   /// Draws both meshes with `state`'s mesh look (opacity, edges) from now on, while both live.
   void observe(const ViewState& state);
-  /// The vertex of the (first) mesh under `position` (3D view widget coordinates), or −1.
-  [[nodiscard]] Eigen::Index vertexAt(QPoint position) const;
-  /// Where vertex `vertex` of the (first) mesh is drawn, in 3D view widget coordinates.
-  [[nodiscard]] QPointF vertexPosition(Eigen::Index vertex) const;
   /// Where the mesh is drawn now (meshPlacement).
-  [[nodiscard]] std::optional<Eigen::Affine3d> placement() const { return meshPlacement(m_model, m_view); }
+  [[nodiscard]] std::optional<Eigen::Affine3d> placement() const { return meshPlacement(m_model, m_markers); }
+  /// Places the meshes where the markers are drawn now: call before each render.
+  void updatePlacement();
   /// Milliseconds the last frame's deform took (−1 when it did not run).
   [[nodiscard]] double lastDeformMs() const { return m_deformMs; }
   [[nodiscard]] double lastCompareMs() const { return m_compareMs; }
@@ -58,14 +58,15 @@ public:
 signals:
   /// A frame was deformed; compareMilliseconds is −1 when not comparing.
   void deformed(double milliseconds, double compareMilliseconds);
+  /// What is drawn changed: the renderer is due a render.
+  void changed();
 
 private:
   void showRestPose();
   void updateFrame();
-  void updatePlacement();
 
   FaceMeshModel& m_model;
-  MarkerView3d& m_view;
+  const DrawnPositions& m_markers;
   std::unique_ptr<MeshLayer> m_layer;
   std::unique_ptr<MeshLayer> m_compareLayer;
   double m_deformMs = -1.0;

@@ -38,6 +38,8 @@ public:
   MarkerScene(const MarkerScene&) = delete;
   MarkerScene& operator=(const MarkerScene&) = delete;
 
+  /// The renderer the layers draw in (other layers, the face mesh and posed rig, draw there too).
+  [[nodiscard]] vtkRenderer* renderer() const { return m_renderer; }
   [[nodiscard]] DrawnPositions& positions() { return m_positions; }
   [[nodiscard]] const DrawnPositions& positions() const { return m_positions; }
   [[nodiscard]] HeadFollow& follow() { return m_follow; }

@@ -6,6 +6,7 @@
 #include "views/display_units.h"
 #include "views/marker_layer.h"
 #include "views/sample_colors.h"
+#include "views/session_scene.h"
 #include "views/vtk_viewport.h"
 
 #include <QEvent>
@@ -125,6 +126,12 @@ void MarkerView3d::observe(const ViewState& state)
   connect(&state, &ViewState::layoutHighlightChanged, this,
           [this, &state] { setLayoutHighlight(state.layoutKept(), state.layoutReference()); });
   connect(&state, &ViewState::cameraResetRequested, this, &MarkerView3d::resetCamera);
+}
+
+void MarkerView3d::addLayers(SessionScene& layers)
+{
+  connect(&layers, &SessionScene::changed, m_viewport, &VtkViewport::requestRender);
+  connect(m_viewport, &VtkViewport::aboutToRender, &layers, &SessionScene::beforeRender);
 }
 
 void MarkerView3d::setMarkerScale(double fraction)

@@ -20,6 +20,7 @@ class QStackedLayout;
 namespace mocap::ui {
 
 class AxesCorner;
+class SessionScene;
 class TakeDocument;
 class ViewState;
 class VtkViewport;
@@ -31,7 +32,8 @@ class VtkViewport;
 /// ViewState. The widget's own part: picking (click picks the nearest marker, Ctrl+drag a rubber
 /// band picks all inside it, Ctrl/Shift adds to the selection), the hovered marker's tooltip, R for
 /// Reset Camera, and a line of text in the top-left corner while the view is head-stabilized or
-/// follows the head. Other layers (face mesh, posed rig) draw into viewport()->renderer().
+/// follows the head. The session's other layers (SessionScene: face mesh, posed rig) draw into the
+/// same renderer (addLayers).
 class MarkerView3d final : public QWidget
 {
   Q_OBJECT
@@ -47,6 +49,9 @@ public:
   /// unit, colours and layout highlight, each applied now and on each change, and frames the
   /// camera when it asks (ViewState::resetCamera). The setters below stay for a view without one.
   void observe(const ViewState& state);
+  /// Draws `layers` (made on scene()) with the markers: renders when they change and places them
+  /// before each render, while both live.
+  void addLayers(SessionScene& layers);
   /// Frames drawn before and after the current one for each selected marker (0 = no trails).
   void setTrailFrames(int frames)
   {

@@ -4,14 +4,15 @@
 #include "document/face_mesh_model.h"
 #include "document/studio_session.h"
 #include "document/take_document.h"
-#include "views/blendshape_scene.h"
-#include "views/face_mesh_scene.h"
-#include "views/marker_view_3d.h"
-#include "views/mesh_layer.h"
-#include "views/vtk_viewport.h"
+#include "document/view_state.h"
+#include "views/axes_corner.h"
+#include "views/marker_scene.h"
+#include "views/offscreen_render_window.h"
+#include "views/render_look.h"
+#include "views/sample_colors.h"
+#include "views/session_scene.h"
 
-#include <QVBoxLayout>
-#include <QWidget>
+#include <vtkRenderer.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -30,46 +31,24 @@ std::vector<Eigen::Index> hiddenMarkers(const TakeDocument& document)
   return hidden;
 }
 
-void applyMeshLook(const SceneSettings& settings, MeshLayer& layer)
-{
-  layer.setOpacity(settings.meshOpacity);
-  layer.setEdgesVisible(settings.meshEdges);
-}
-
 } // namespace
 
 ReviewScene::ReviewScene(const ReviewSource& source, QSize size)
-    : m_session(std::make_unique<StudioSession>()), m_window(std::make_unique<QWidget>()), m_size(size)
+    : m_session(std::make_unique<StudioSession>()), m_window(std::make_unique<OffscreenRenderWindow>(size))
 {
   if (!source.session)
     throw std::invalid_argument("ReviewScene: a session is needed");
-  // Rendered into a window that is laid out and "shown" but never mapped on the screen.
-  m_window->setAttribute(Qt::WA_DontShowOnScreen);
-  auto* layout = new QVBoxLayout(m_window.get());
-  layout->setContentsMargins(0, 0, 0, 0);
-  m_view = new MarkerView3d(m_session->document(), m_window.get());
-  layout->addWidget(m_view);
-  const qreal ratio = m_window->devicePixelRatioF();
-  m_window->setFixedSize(QSize(static_cast<int>(size.width() / ratio), static_cast<int>(size.height() / ratio)));
-  m_window->show();
-  // The layers first, so they draw what the copied models hold, as the studio's do.
-  m_faceMesh = std::make_unique<FaceMeshScene>(m_session->faceMesh(), *m_view);
-  m_blendshapes = std::make_unique<BlendshapeScene>(m_session->blendshapes(), m_session->faceMesh(), *m_view);
+  vtkRenderer* renderer = m_window->renderer();
+  setGradientBackground(*renderer, colorScheme().background);
+  // In the 3D view's order: the marker layers, the session's layers over them, the axes corner.
+  m_markers = std::make_unique<MarkerScene>(renderer, m_session->document());
+  m_layers = std::make_unique<SessionScene>(*m_session, *m_markers);
+  m_axes = std::make_unique<AxesCorner>(m_window->window());
   copySession(*source.session);
-  applyMeshLook(source.settings, m_faceMesh->layer());
-  applyMeshLook(source.settings, m_faceMesh->compareLayer());
-  m_blendshapes->setBeside(source.settings.rigBeside);
-  m_blendshapes->setShown(source.settings.rigShown);
-  applyViewSettings(source.settings, *m_view);
+  applySettings(source.settings);
 }
 
-ReviewScene::~ReviewScene()
-{
-  // The scenes draw into the view's renderer: they go before the window that holds it.
-  m_blendshapes.reset();
-  m_faceMesh.reset();
-  m_window.reset();
-}
+ReviewScene::~ReviewScene() = default;
 
 void ReviewScene::copySession(const StudioSession& source)
 {
@@ -79,6 +58,7 @@ void ReviewScene::copySession(const StudioSession& source)
   (void)document.setReferenceMarkers(from.referenceMarkers());
   document.setSelection(from.selection());
   document.setHidden(hiddenMarkers(from), true);
+  m_markers->forgetMarkerIndices();  // the markers (and reference markers) of the copied take
 
   const FaceMeshModel& face = source.faceMesh();
   if (face.hasMesh()) {
@@ -97,6 +77,21 @@ void ReviewScene::copySession(const StudioSession& source)
   }
 }
 
+void ReviewScene::applySettings(const SceneSettings& settings)
+{
+  ViewState& look = m_session->view();
+  look.setMeshOpacity(settings.meshOpacity);
+  look.setMeshEdges(settings.meshEdges);
+  look.setRigShown(settings.rigShown);
+  look.setRigBeside(settings.rigBeside);
+  m_layers->observe(look);
+  applyViewSettings(settings, *m_markers, m_window->size());
+  if (!settings.camera) {
+    const Eigen::Index frame = m_session->document().currentFrame();
+    frameCamera(frame, frame);
+  }
+}
+
 const TakeDocument& ReviewScene::document() const
 {
   return m_session->document();
@@ -109,32 +104,37 @@ void ReviewScene::frameCamera(Eigen::Index first, Eigen::Index last)
     return;
   // The mesh layers are framed where they are drawn: at the first frame reviewed.
   document.setCurrentFrame(std::clamp<Eigen::Index>(first, 0, document.take().frameCount() - 1));
-  m_view->frameCamera(first, last);
+  m_markers->update();
+  m_layers->beforeRender();
+  (void)m_markers->frameCamera(first, last, m_window->size());
 }
 
 bool ReviewScene::usable() const
 {
-  return m_view->viewport()->usable();
+  return m_window->usable();
 }
 
 QString ReviewScene::failureReason() const
 {
-  return m_view->viewport()->failureReason();
+  return m_window->failureReason();
+}
+
+void ReviewScene::prepareRender()
+{
+  vtkRenderer* renderer = m_window->renderer();
+  m_axes->follow(*renderer->GetActiveCamera());
+  m_markers->beforeRender();
+  m_layers->beforeRender();
 }
 
 QImage ReviewScene::render(Eigen::Index frame)
 {
-  VtkViewport* viewport = m_view->viewport();
-  if (!viewport->usable())
+  if (!m_window->usable())
     return {};
   m_session->document().setCurrentFrame(frame);
-  viewport->requestRender();
-  QImage image = viewport->grabFramebuffer();
-  if (image.isNull())
-    return {};
-  if (image.size() != m_size)
-    image = image.scaled(m_size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
-  return image.convertToFormat(QImage::Format_RGB888);
+  m_markers->update();
+  prepareRender();
+  return m_window->render();
 }
 
 } // namespace mocap::ui

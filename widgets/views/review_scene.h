@@ -4,18 +4,18 @@
 
 #include <QImage>
 #include <QSize>
+#include <QString>
 
 #include <Eigen/Core>
 
 #include <memory>
 
-class QWidget;
-
 namespace mocap::ui {
 
-class BlendshapeScene;
-class FaceMeshScene;
-class MarkerView3d;
+class AxesCorner;
+class MarkerScene;
+class OffscreenRenderWindow;
+class SessionScene;
 class StudioSession;
 class TakeDocument;
 
@@ -31,14 +31,13 @@ struct ReviewSource
   bool resetCamera = false;
 };
 
-/// A session's scene rendered off screen frame by frame for a review video, with no studio window:
-/// a private copy of the session (the take with the same selection, hidden and reference markers,
-/// the face mesh, binding and rig options, the blendshape rig and weights) drawn by its own 3D view
-/// with the face mesh and posed rig layers the studio draws (FaceMeshScene, BlendshapeScene), as
-/// the source's settings say. Stepping it never moves the studio's frame, and edits made in the
-/// studio meanwhile do not reach it. The view lives in a top-level widget that is never shown on
-/// screen (Qt::WA_DontShowOnScreen): it needs a GL context but no visible window, under X11 a
-/// display (xvfb-run where there is none). UI thread only.
+/// A session's scene rendered off screen frame by frame for a review video, with no widget and no
+/// window: a private copy of the session (the take with the same selection, hidden and reference
+/// markers, the face mesh, binding and rig options, the blendshape rig and weights) drawn as the
+/// studio's 3D view draws it — its MarkerScene, the SessionScene's face mesh and posed rig layers
+/// and the axes corner, in that order — into an OffscreenRenderWindow, as the source's settings
+/// say. Stepping it never moves the studio's frame, and edits made in the studio meanwhile do not
+/// reach it. Under X11 it needs a display (xvfb-run where there is none). UI thread only.
 class ReviewScene
 {
 public:
@@ -48,29 +47,33 @@ public:
   ReviewScene(const ReviewScene&) = delete;
   ReviewScene& operator=(const ReviewScene&) = delete;
 
-  /// Whether the view has a GL context; else why not.
+  /// Whether the off-screen window has an OpenGL context; else why not.
   [[nodiscard]] bool usable() const;
   [[nodiscard]] QString failureReason() const;
   [[nodiscard]] const TakeDocument& document() const;
-  [[nodiscard]] MarkerView3d& view() const { return *m_view; }
 
-  /// Frames everything drawn over take frames first…last (MarkerView3d::frameCamera), so a moving
-  /// head stays in the picture. O(#frames · #markers), at most 500 frames sampled.
+  /// Frames everything drawn over take frames first…last (MarkerScene::frameCamera, as Reset
+  /// Camera does), so a moving head stays in the picture. O(#frames · #markers), at most 500
+  /// frames sampled.
   void frameCamera(Eigen::Index first, Eigen::Index last);
 
-  /// The view at take frame `frame` (0-based), `size` pixels, RGB. Null when the view is not usable.
+  /// The picture at take frame `frame` (0-based), `size` pixels, RGB888. Null when not usable.
   /// O(one render).
   [[nodiscard]] QImage render(Eigen::Index frame);
 
 private:
   void copySession(const StudioSession& source);
+  /// The view's part of `settings` on the marker scene, the layers' look through the session's
+  /// view state (which the layers observe, as the studio's do).
+  void applySettings(const SceneSettings& settings);
+  /// What goes before each render: the layers placed, the labels kept inside, the axes turned.
+  void prepareRender();
 
   std::unique_ptr<StudioSession> m_session;
-  std::unique_ptr<QWidget> m_window;
-  MarkerView3d* m_view = nullptr;  // owned by m_window
-  std::unique_ptr<FaceMeshScene> m_faceMesh;
-  std::unique_ptr<BlendshapeScene> m_blendshapes;
-  QSize m_size;
+  std::unique_ptr<OffscreenRenderWindow> m_window;
+  std::unique_ptr<MarkerScene> m_markers;
+  std::unique_ptr<SessionScene> m_layers;
+  std::unique_ptr<AxesCorner> m_axes;
 };
 
 } // namespace mocap::ui

@@ -1,6 +1,7 @@
 #include "views/scene_settings.h"
 
 #include "document/view_state.h"
+#include "views/marker_scene.h"
 #include "views/marker_view_3d.h"
 #include "views/vtk_viewport.h"
 
@@ -64,22 +65,24 @@ SceneSettings shownSettings(const MarkerView3d& view, const ViewState& state)
   return settings;
 }
 
-void applyViewSettings(const SceneSettings& settings, MarkerView3d& view)
+void applyViewSettings(const SceneSettings& settings, MarkerScene& markers, QSize viewSize)
 {
-  view.setUpAxis(settings.upAxis);
-  view.setTrailFrames(settings.trailFrames);
-  view.setMarkerScale(settings.markerScale);
-  view.setLinksVisible(settings.linksVisible);
+  markers.setUpAxis(settings.upAxis);
+  markers.setTrailFrames(settings.trailFrames);
+  markers.setMarkerScale(settings.markerScale);
+  markers.setLinksVisible(settings.linksVisible);
   if (!settings.headReference.empty())
-    (void)view.setHeadReference(settings.headReference);
-  view.setFollowHead(settings.followHead);
+    (void)markers.positions().setHeadReference(settings.headReference);
+  markers.follow().setOn(settings.followHead);
   if (!settings.layoutKept.empty())
-    view.setLayoutHighlight(settings.layoutKept, settings.layoutReference);
-  if (settings.camera) {
-    vtkRenderer* renderer = view.viewport()->renderer();
-    applyCameraState(*settings.camera, *renderer->GetActiveCamera(), view.viewport()->size());
-    renderer->ResetCameraClippingRange();
-  }
+    markers.setLayoutHighlight(settings.layoutKept, settings.layoutReference);
+  markers.sizeToTake();
+  markers.update();
+  if (!settings.camera)
+    return;
+  vtkRenderer* renderer = markers.renderer();
+  applyCameraState(*settings.camera, *renderer->GetActiveCamera(), viewSize);
+  renderer->ResetCameraClippingRange();
 }
 
 } // namespace mocap::ui

@@ -11,6 +11,7 @@ class vtkCamera;
 
 namespace mocap::ui {
 
+class MarkerScene;
 class MarkerView3d;
 class ViewState;
 
@@ -55,7 +56,8 @@ struct SceneSettings
 /// What the studio shows now: the 3D view's part (viewSettings) with the layers' look (face mesh
 /// opacity and edges, the posed rig shown and beside) from the session's view state.
 [[nodiscard]] SceneSettings shownSettings(const MarkerView3d& view, const ViewState& state);
-/// Applies the 3D view's part of `settings` to `view` (the camera when it has one).
-void applyViewSettings(const SceneSettings& settings, MarkerView3d& view);
+/// Draws `markers` with the 3D view's part of `settings`, sized to the take and drawn at its
+/// current frame, with the settings' camera (for a view of `viewSize`) when they have one.
+void applyViewSettings(const SceneSettings& settings, MarkerScene& markers, QSize viewSize);
 
 } // namespace mocap::ui

@@ -1,5 +1,6 @@
 #include "views/vtk_viewport.h"
 
+#include "views/render_look.h"
 #include "views/sample_colors.h"
 
 #include <QCoreApplication>
@@ -88,14 +89,6 @@ private:
   VtkViewport* m_owner;
 };
 
-bool VtkViewport::isSoftwareRenderer(const QString& renderer)
-{
-  for (const char* name : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
-    if (renderer.contains(QLatin1String(name), Qt::CaseInsensitive))
-      return true;
-  return false;
-}
-
 QSurfaceFormat VtkViewport::defaultFormat()
 {
   QSurfaceFormat format;
@@ -127,7 +120,6 @@ VtkViewport::VtkViewport(QWidget* parent) : QWidget(parent)
                            vtkCommand::WindowFrameEvent})
     m_observers.push_back(m_window->AddObserver(id, this, &VtkViewport::onWindowEvent));
   setBackground(colorScheme().background);
-  m_renderer->GradientBackgroundOn();
   m_settle.setSingleShot(true);
   m_settle.setInterval(kSettleMs);
   connect(&m_settle, &QTimer::timeout, this, [this] {
@@ -138,11 +130,7 @@ VtkViewport::VtkViewport(QWidget* parent) : QWidget(parent)
 
 void VtkViewport::setBackground(const QColor& color)
 {
-  const double r = static_cast<double>(color.redF()), g = static_cast<double>(color.greenF()),
-               b = static_cast<double>(color.blueF());
-  const auto lighter = [](double channel) { return std::min(1.0, channel + 0.14); };
-  m_renderer->SetBackground(r, g, b);
-  m_renderer->SetBackground2(lighter(r), lighter(g), lighter(b));
+  setGradientBackground(*m_renderer, color);
   requestRender();
 }
 
@@ -286,12 +274,7 @@ bool VtkViewport::initializeContext()
   m_window->SetFrameBlitModeToNoBlit();
   const auto* renderer = reinterpret_cast<const char*>(m_context->functions()->glGetString(GL_RENDERER));
   m_softwareRendered = isSoftwareRenderer(QString::fromLatin1(renderer ? renderer : ""));
-  if (m_softwareRendered) {
-    // A CPU rasterizer (Xvfb, a VM, a remote desktop) shades every pixel once per sample: VTK's
-    // default 8× multisampling made each frame 3–4× slower there. One FXAA pass instead.
-    m_window->SetMultiSamples(0);
-    m_renderer->UseFXAAOn();
-  }
+  setAntialiasing(*m_window, *m_renderer, m_softwareRendered);
   m_window->SetReadyForRendering(true);
   m_window->SetOwnContext(0);
   m_window->OpenGLInitContext();

@@ -61,8 +61,6 @@ public:
   /// Whether OpenGL runs on the CPU (Mesa's llvmpipe under Xvfb or in a VM): then the view
   /// antialiases by FXAA instead of multisampling. Known once the context is up.
   [[nodiscard]] bool softwareRendered() const { return m_softwareRendered; }
-  /// Whether a GL_RENDERER string names a CPU rasterizer.
-  [[nodiscard]] static bool isSoftwareRenderer(const QString& renderer);
   [[nodiscard]] const QString& failureReason() const { return m_failure; }
 
   /// Asks for a VTK render at the next paint.
