@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>AcknowledgeDataLoss</name>
+    <message>
+        <location filename="../widgets/commands/acknowledge_data_loss_command.cpp" line="+20"/>
+        <source>Acknowledge data loss</source>
+        <translation>Datenverlust bestätigen</translation>
+    </message>
+</context>
+<context>
     <name>CleaningStep</name>
     <message>
         <location filename="../widgets/panels/cleaning_step.cpp" line="+33"/>
@@ -291,6 +299,19 @@
     </message>
 </context>
 <context>
+    <name>OffscreenRenderWindow</name>
+    <message>
+        <location filename="../widgets/views/offscreen_render_window.cpp" line="+64"/>
+        <source>there is no X display (DISPLAY is not set); run under xvfb-run</source>
+        <translation>es gibt keine X-Anzeige (DISPLAY ist nicht gesetzt); unter xvfb-run ausführen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>OpenGL 3.2 is not available on this display</source>
+        <translation>OpenGL 3.2 ist auf dieser Anzeige nicht verfügbar</translation>
+    </message>
+</context>
+<context>
     <name>QProgressDialog</name>
     <message>
         <location filename="../widgets/dialogs/job_dialog.cpp" line="+35"/>
@@ -324,7 +345,7 @@
         <translation>einer unbenannten Aufnahme</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Recover unsaved edits?</source>
         <translation>Ungesicherte Änderungen wiederherstellen?</translation>
     </message>
@@ -449,6 +470,24 @@
     </message>
 </context>
 <context>
+    <name>TakeUnitsMenu</name>
+    <message>
+        <location filename="../widgets/actions/take_units_menu.cpp" line="+30"/>
+        <source>Positions Are In %1 (were read as %2)</source>
+        <translation>Positionen sind in %1 (gelesen als %2)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Positions Are &amp;In</source>
+        <translation>Positionen sind &amp;in</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The file&apos;s numbers are in this unit (nothing is rescaled; undoable)</source>
+        <translation>Die Zahlen der Datei sind in dieser Einheit (nichts wird umgerechnet; rückgängig machbar)</translation>
+    </message>
+</context>
+<context>
     <name>ViewOptionActions</name>
     <message>
         <location filename="../widgets/actions/view_option_actions.cpp" line="+28"/>
@@ -503,7 +542,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+95"/>
+        <location filename="../app/studio/main_window.cpp" line="+104"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
@@ -547,7 +586,7 @@
         <translation>Lücken</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Face Mesh</source>
         <translation>Gesichtsnetz</translation>
     </message>
@@ -718,7 +757,7 @@
         <translation>Marker &amp;umbenennen…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Einstellungen…</translation>
     </message>
@@ -728,7 +767,12 @@
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+61"/>
+        <source>%1 (%2)[*] — Mocap Studio</source>
+        <translation>%1 (%2)[*] — Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Recovered unsaved edits of %1; not restored: %2</source>
         <translation>Nicht gespeicherte Änderungen von %1 wiederhergestellt; nicht wiederhergestellt: %2</translation>
     </message>
@@ -769,7 +813,7 @@
         <translation type="vanished">Die Kamera folgt dem Kopf, wenn er sich bewegt (dem Schwerpunkt der Kopfmarker)</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-82"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -1034,7 +1078,7 @@
         <translation type="vanished">Das Gesichtsnetz der wiederhergestellten Sitzung konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>Cancel the running job before closing</source>
         <translation>Vor dem Schließen den laufenden Auftrag abbrechen</translation>
     </message>
@@ -1087,17 +1131,16 @@
         <translation type="vanished">Der Take enthält ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-44"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>%1 (incomplete)[*] — Mocap Studio</source>
-        <translation>%1 (unvollständig)[*] — Mocap Studio</translation>
+        <translation type="vanished">%1 (unvollständig)[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1[*] — Mocap Studio</source>
         <translation>%1[*] — Mocap Studio</translation>
     </message>
@@ -1118,7 +1161,7 @@
         <translation type="vanished">Wiederherstellen nicht möglich</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>Ungesicherte Änderungen von %1 wiederhergestellt; speichern Sie sie, um sie zu behalten</translation>
     </message>
@@ -1249,7 +1292,7 @@
 <context>
     <name>mocap::ui::Autosave</name>
     <message>
-        <location filename="../widgets/document/autosave.cpp" line="+104"/>
+        <location filename="../widgets/document/autosave.cpp" line="+117"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>Der Wiederherstellungsordner %1 kann nicht angelegt werden</translation>
     </message>
@@ -1257,7 +1300,7 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+138"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+134"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>Die Aufnahme hat sich seit diesem Lösen geändert; lösen Sie erneut, um die Gewichte anzupassen.</translation>
     </message>
@@ -1669,12 +1712,12 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+69"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+110"/>
         <source>Live preview</source>
         <translation>Live-Vorschau</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Selected markers only</source>
         <translation>Nur ausgewählte Marker</translation>
     </message>
@@ -1694,7 +1737,7 @@
         <translation>Anwenden</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+122"/>
         <source>Computing…</source>
         <translation>Wird berechnet…</translation>
     </message>
@@ -2167,7 +2210,7 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+104"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+102"/>
         <source>Mesh and binding</source>
         <translation>Netz und Bindung</translation>
     </message>
@@ -4084,7 +4127,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+266"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+273"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -4272,7 +4315,15 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::ReadWarningsButton</name>
     <message numerus="yes">
-        <location filename="../widgets/dialogs/read_warnings_button.cpp" line="+26"/>
+        <location filename="../widgets/dialogs/read_warnings_button.cpp" line="+55"/>
+        <source>⚠ Incomplete, wrong data: %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ Unvollständig, falsche Daten: %n Warnung</numerusform>
+            <numerusform>⚠ Unvollständig, falsche Daten: %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
         <source>⚠ Incomplete: %n warning(s)</source>
         <translation>
             <numerusform>⚠ Unvollständig: %n Warnung</numerusform>
@@ -4280,7 +4331,15 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>⚠ Wrong data: %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ Falsche Daten: %n Warnung</numerusform>
+            <numerusform>⚠ Falsche Daten: %n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
         <source>⚠ %n warning(s)</source>
         <translation>
             <numerusform>⚠ %n Warnung</numerusform>
@@ -4296,19 +4355,39 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::ReadWarningsDialog</name>
     <message>
-        <location filename="../widgets/dialogs/read_warnings_dialog.cpp" line="+19"/>
+        <location filename="../widgets/dialogs/read_warnings_dialog.cpp" line="+31"/>
+        <source>%1 is incomplete and has wrong data</source>
+        <translation>%1 ist unvollständig und enthält falsche Daten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 is incomplete</source>
         <translation>%1 ist unvollständig</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
+        <source>%1 has wrong data</source>
+        <translation>%1 enthält falsche Daten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Warnings reading %1</source>
         <translation>Warnungen beim Lesen von %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&lt;b&gt;Data is missing from %1, and some that was read is wrong.&lt;/b&gt; The take opened with what could be read; the rest is not in it, and the samples named below are not what was captured. Saving writes only what was read, with these findings.</source>
+        <translation>&lt;b&gt;In %1 fehlen Daten, und einige gelesene sind falsch.&lt;/b&gt; Die Aufnahme wurde mit dem geöffnet, was gelesen werden konnte; der Rest fehlt, und die unten genannten Abtastwerte sind nicht das, was aufgenommen wurde. Beim Speichern wird nur das Gelesene geschrieben, mit diesen Befunden.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&lt;b&gt;Data is missing from %1.&lt;/b&gt; The take opened with what could be read; the rest is not in it. Saving writes only what was read.</source>
         <translation>&lt;b&gt;In %1 fehlen Daten.&lt;/b&gt; Die Aufnahme wurde mit dem geöffnet, was gelesen werden konnte; der Rest ist nicht enthalten. Beim Speichern wird nur das Gelesene geschrieben.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&lt;b&gt;Some data in %1 is wrong.&lt;/b&gt; The take opened with every sample as it was read, but the samples named below are not what was captured. Saving keeps them as they are, with this finding.</source>
+        <translation>&lt;b&gt;Einige Daten in %1 sind falsch.&lt;/b&gt; Die Aufnahme wurde mit jedem Abtastwert so geöffnet, wie er gelesen wurde, aber die unten genannten Abtastwerte sind nicht das, was aufgenommen wurde. Beim Speichern bleiben sie, wie sie sind, mit diesem Befund.</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
@@ -4319,7 +4398,27 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         </translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+11"/>
+        <source>incomplete, wrong data</source>
+        <translation>unvollständig, falsche Daten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>incomplete</source>
+        <translation>unvollständig</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>wrong data</source>
+        <translation>falsche Daten</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 (acknowledged)</source>
+        <translation>%1 (bestätigt)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>I understand</source>
         <translation>Verstanden</translation>
     </message>
@@ -4327,6 +4426,16 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <location line="+0"/>
         <source>Close</source>
         <translation>Schließen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Acknowledge</source>
+        <translation>Bestätigen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Record in the take&apos;s history that a person has seen these findings (undoable): they stay in the history and in mocap info, but reading a saved copy no longer raises them as warnings</source>
+        <translation>Im Verlauf der Aufnahme festhalten, dass ein Mensch diese Befunde gesehen hat (rückgängig machbar): Sie bleiben im Verlauf und in mocap info, aber beim Lesen einer gespeicherten Kopie werden sie nicht mehr als Warnungen gemeldet</translation>
     </message>
 </context>
 <context>
@@ -4779,7 +4888,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
         <translation>Maximum</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>Cannot read the map: %1</source>
         <translation>Die Zuordnung kann nicht gelesen werden: %1</translation>
     </message>
@@ -4805,17 +4914,17 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
     </message>
     <message>
         <location line="+2"/>
-        <location line="+82"/>
+        <location line="+91"/>
         <source>A gain must be a number.</source>
         <translation>Eine Verstärkung muss eine Zahl sein.</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-86"/>
         <source>Gain of %1 in %2</source>
         <translation>Verstärkung von %1 in %2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+41"/>
         <source>(none)</source>
         <translation>(keine)</translation>
     </message>
@@ -5343,6 +5452,39 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
     </message>
 </context>
 <context>
+    <name>mocap::ui::StudioSession</name>
+    <message>
+        <location filename="../widgets/document/studio_session.cpp" line="+150"/>
+        <source>the binding</source>
+        <translation>die Bindung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the binding: %1</source>
+        <translation>die Bindung: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the actor</source>
+        <translation>der Darsteller</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the retarget map</source>
+        <translation>die Retarget-Zuordnung</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the weight curves: they were made for a rig that is not loaded</source>
+        <translation>die Gewichtskurven: Sie wurden für ein Rig erstellt, das nicht geladen ist</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the weight curves: %1 frames solved, the take has %2</source>
+        <translation>die Gewichtskurven: %1 Frames gelöst, die Aufnahme hat %2</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::SwapReviewDialog</name>
     <message>
         <location filename="../widgets/dialogs/swap_review_dialog.cpp" line="+16"/>
@@ -5571,7 +5713,7 @@ VMC: OSC-Bündel der Gewichte unter ARKit-Namen und die Marker als Tracker.</tra
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+267"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+255"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>Es ist kein OpenGL-Kontext verfügbar, daher kann die 3D-Ansicht nicht angezeigt werden.</translation>
     </message>

@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>AcknowledgeDataLoss</name>
+    <message>
+        <location filename="../widgets/commands/acknowledge_data_loss_command.cpp" line="+20"/>
+        <source>Acknowledge data loss</source>
+        <translation>确认数据丢失</translation>
+    </message>
+</context>
+<context>
     <name>CleaningStep</name>
     <message>
         <location filename="../widgets/panels/cleaning_step.cpp" line="+33"/>
@@ -284,6 +292,19 @@
     </message>
 </context>
 <context>
+    <name>OffscreenRenderWindow</name>
+    <message>
+        <location filename="../widgets/views/offscreen_render_window.cpp" line="+64"/>
+        <source>there is no X display (DISPLAY is not set); run under xvfb-run</source>
+        <translation>没有 X 显示（未设置 DISPLAY）；请在 xvfb-run 下运行</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>OpenGL 3.2 is not available on this display</source>
+        <translation>此显示器上没有 OpenGL 3.2</translation>
+    </message>
+</context>
+<context>
     <name>QProgressDialog</name>
     <message>
         <location filename="../widgets/dialogs/job_dialog.cpp" line="+35"/>
@@ -317,7 +338,7 @@
         <translation>未命名拍摄</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Recover unsaved edits?</source>
         <translation>恢复未保存的编辑？</translation>
     </message>
@@ -440,6 +461,24 @@
     </message>
 </context>
 <context>
+    <name>TakeUnitsMenu</name>
+    <message>
+        <location filename="../widgets/actions/take_units_menu.cpp" line="+30"/>
+        <source>Positions Are In %1 (were read as %2)</source>
+        <translation>位置单位为 %1（读取时为 %2）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Positions Are &amp;In</source>
+        <translation>位置单位(&amp;I)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The file&apos;s numbers are in this unit (nothing is rescaled; undoable)</source>
+        <translation>文件中的数值使用此单位（不做换算；可撤销）</translation>
+    </message>
+</context>
+<context>
     <name>ViewOptionActions</name>
     <message>
         <location filename="../widgets/actions/view_option_actions.cpp" line="+28"/>
@@ -494,7 +533,7 @@
 <context>
     <name>mocap::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="+95"/>
+        <location filename="../app/studio/main_window.cpp" line="+104"/>
         <source>Timeline</source>
         <translation>时间轴</translation>
     </message>
@@ -538,7 +577,7 @@
         <translation>缺口</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Face Mesh</source>
         <translation>面部网格</translation>
     </message>
@@ -709,7 +748,7 @@
         <translation>重命名标记点(&amp;M)…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&amp;Preferences…</source>
         <translation>首选项(&amp;P)…</translation>
     </message>
@@ -719,7 +758,12 @@
         <translation>视图(&amp;V)</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+61"/>
+        <source>%1 (%2)[*] — Mocap Studio</source>
+        <translation>%1（%2）[*] — Mocap Studio</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Recovered unsaved edits of %1; not restored: %2</source>
         <translation>已恢复 %1 未保存的编辑；未恢复：%2</translation>
     </message>
@@ -760,7 +804,7 @@
         <translation type="vanished">头部移动时相机始终对准头部（头部标记点的质心）</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-82"/>
         <source>&amp;Language</source>
         <translation>语言(&amp;L)</translation>
     </message>
@@ -1023,7 +1067,7 @@
         <translation type="vanished">无法还原所恢复会话的面部网格：%1</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>Cancel the running job before closing</source>
         <translation>请先取消正在运行的任务再关闭</translation>
     </message>
@@ -1076,17 +1120,16 @@
         <translation type="vanished">动捕片段有未保存的修改。是否保存？</translation>
     </message>
     <message>
-        <location line="-41"/>
+        <location line="-44"/>
         <source>Untitled</source>
         <translation>未命名</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>%1 (incomplete)[*] — Mocap Studio</source>
-        <translation>%1（不完整）[*] — Mocap Studio</translation>
+        <translation type="vanished">%1（不完整）[*] — Mocap Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1[*] — Mocap Studio</source>
         <translation>%1[*] — Mocap Studio</translation>
     </message>
@@ -1107,7 +1150,7 @@
         <translation type="vanished">无法恢复</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Recovered unsaved edits of %1; save them to keep them</source>
         <translation>已恢复 %1 的未保存编辑；请保存以保留它们</translation>
     </message>
@@ -1238,7 +1281,7 @@
 <context>
     <name>mocap::ui::Autosave</name>
     <message>
-        <location filename="../widgets/document/autosave.cpp" line="+104"/>
+        <location filename="../widgets/document/autosave.cpp" line="+117"/>
         <source>Cannot create the recovery folder %1</source>
         <translation>无法创建恢复文件夹 %1</translation>
     </message>
@@ -1246,7 +1289,7 @@
 <context>
     <name>mocap::ui::BlendshapeSolvePanel</name>
     <message>
-        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+138"/>
+        <location filename="../widgets/panels/blendshape_solve_panel.cpp" line="+134"/>
         <source>The take has changed since this solve; Solve again to update the weights.</source>
         <translation>自此次求解后拍摄已更改；请重新求解以更新权重。</translation>
     </message>
@@ -1655,12 +1698,12 @@
 <context>
     <name>mocap::ui::CleaningPanel</name>
     <message>
-        <location filename="../widgets/panels/cleaning_panel.cpp" line="+69"/>
+        <location filename="../widgets/panels/cleaning_panel.cpp" line="+110"/>
         <source>Live preview</source>
         <translation>实时预览</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Selected markers only</source>
         <translation>仅限所选标记点</translation>
     </message>
@@ -1680,7 +1723,7 @@
         <translation>应用</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+122"/>
         <source>Computing…</source>
         <translation>正在计算…</translation>
     </message>
@@ -2146,7 +2189,7 @@
 <context>
     <name>mocap::ui::FaceMeshPanel</name>
     <message>
-        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+104"/>
+        <location filename="../widgets/panels/face_mesh_panel.cpp" line="+102"/>
         <source>Mesh and binding</source>
         <translation>网格与绑定</translation>
     </message>
@@ -4057,7 +4100,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::MarkerView3d</name>
     <message>
-        <location filename="../widgets/views/marker_view_3d.cpp" line="+266"/>
+        <location filename="../widgets/views/marker_view_3d.cpp" line="+273"/>
         <source>%1
 %2, %3, %4 %5</source>
         <translation>%1
@@ -4244,14 +4287,28 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::ReadWarningsButton</name>
     <message numerus="yes">
-        <location filename="../widgets/dialogs/read_warnings_button.cpp" line="+26"/>
+        <location filename="../widgets/dialogs/read_warnings_button.cpp" line="+55"/>
+        <source>⚠ Incomplete, wrong data: %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ 不完整、数据错误：%n 条警告</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
         <source>⚠ Incomplete: %n warning(s)</source>
         <translation>
             <numerusform>⚠ 不完整：%n 条警告</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>⚠ Wrong data: %n warning(s)</source>
+        <translation>
+            <numerusform>⚠ 数据错误：%n 条警告</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
         <source>⚠ %n warning(s)</source>
         <translation>
             <numerusform>⚠ %n 条警告</numerusform>
@@ -4266,19 +4323,39 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::ReadWarningsDialog</name>
     <message>
-        <location filename="../widgets/dialogs/read_warnings_dialog.cpp" line="+19"/>
+        <location filename="../widgets/dialogs/read_warnings_dialog.cpp" line="+31"/>
+        <source>%1 is incomplete and has wrong data</source>
+        <translation>%1 不完整且含有错误数据</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 is incomplete</source>
         <translation>%1 不完整</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
+        <source>%1 has wrong data</source>
+        <translation>%1 含有错误数据</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Warnings reading %1</source>
         <translation>读取 %1 时的警告</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&lt;b&gt;Data is missing from %1, and some that was read is wrong.&lt;/b&gt; The take opened with what could be read; the rest is not in it, and the samples named below are not what was captured. Saving writes only what was read, with these findings.</source>
+        <translation>&lt;b&gt;%1 中缺少数据，且部分已读取的数据有误。&lt;/b&gt;拍摄已按可读取的内容打开；其余部分不在其中，下列采样并非实际采集的数据。保存时只写入已读取的内容，并附上这些发现。</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&lt;b&gt;Data is missing from %1.&lt;/b&gt; The take opened with what could be read; the rest is not in it. Saving writes only what was read.</source>
         <translation>&lt;b&gt;%1 中缺少数据。&lt;/b&gt;拍摄数据已按可读取的部分打开，其余部分不在其中。保存时只会写入已读取的内容。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&lt;b&gt;Some data in %1 is wrong.&lt;/b&gt; The take opened with every sample as it was read, but the samples named below are not what was captured. Saving keeps them as they are, with this finding.</source>
+        <translation>&lt;b&gt;%1 中有部分数据错误。&lt;/b&gt;拍摄已按读取时的每个采样打开，但下列采样并非实际采集的数据。保存时保持原样，并附上此发现。</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
@@ -4288,7 +4365,27 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         </translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+11"/>
+        <source>incomplete, wrong data</source>
+        <translation>不完整、数据错误</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>incomplete</source>
+        <translation>不完整</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>wrong data</source>
+        <translation>数据错误</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 (acknowledged)</source>
+        <translation>%1（已确认）</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>I understand</source>
         <translation>我知道了</translation>
     </message>
@@ -4296,6 +4393,16 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <location line="+0"/>
         <source>Close</source>
         <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Acknowledge</source>
+        <translation>确认</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Record in the take&apos;s history that a person has seen these findings (undoable): they stay in the history and in mocap info, but reading a saved copy no longer raises them as warnings</source>
+        <translation>在拍摄的历史中记录已有人查看这些发现（可撤销）：它们仍保留在历史和 mocap info 中，但读取已保存的副本时不再作为警告提出</translation>
     </message>
 </context>
 <context>
@@ -4746,7 +4853,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
         <translation>峰值</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
         <source>Cannot read the map: %1</source>
         <translation>无法读取映射：%1</translation>
     </message>
@@ -4772,17 +4879,17 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
     </message>
     <message>
         <location line="+2"/>
-        <location line="+82"/>
+        <location line="+91"/>
         <source>A gain must be a number.</source>
         <translation>增益必须是数字。</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-86"/>
         <source>Gain of %1 in %2</source>
         <translation>%2 中 %1 的增益</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+41"/>
         <source>(none)</source>
         <translation>（无）</translation>
     </message>
@@ -5308,6 +5415,39 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
     </message>
 </context>
 <context>
+    <name>mocap::ui::StudioSession</name>
+    <message>
+        <location filename="../widgets/document/studio_session.cpp" line="+150"/>
+        <source>the binding</source>
+        <translation>绑定</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the binding: %1</source>
+        <translation>绑定：%1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the actor</source>
+        <translation>演员</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the retarget map</source>
+        <translation>重定向映射</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the weight curves: they were made for a rig that is not loaded</source>
+        <translation>权重曲线：它们是为未加载的绑定制作的</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the weight curves: %1 frames solved, the take has %2</source>
+        <translation>权重曲线：已求解 %1 帧，拍摄有 %2 帧</translation>
+    </message>
+</context>
+<context>
     <name>mocap::ui::SwapReviewDialog</name>
     <message>
         <location filename="../widgets/dialogs/swap_review_dialog.cpp" line="+16"/>
@@ -5535,7 +5675,7 @@ VMC：以 ARKit 名称发送权重的 OSC 包，以及作为跟踪器的标记�
 <context>
     <name>mocap::ui::VtkViewport</name>
     <message>
-        <location filename="../widgets/views/vtk_viewport.cpp" line="+267"/>
+        <location filename="../widgets/views/vtk_viewport.cpp" line="+255"/>
         <source>No OpenGL context is available, so the 3D view cannot be shown.</source>
         <translation>没有可用的 OpenGL 上下文，无法显示 3D 视图。</translation>
     </message>
