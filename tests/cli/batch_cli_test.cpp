@@ -558,6 +558,19 @@ TEST(SummarizeCli, WritesOneWellFormedPageWithThePlotsAndTheTakesToReview)
   EXPECT_GT(gaps, 0.0);
 }
 
+/// `mocap batch` of the archive's manifest into dir/out (some takes may fail), then `mocap
+/// summarize` of it into dir/report.html: the summary's JSON (its text in `out`).
+JsonValue cleanAndSummarize(const Archive& archive, const test::TempDir& dir, std::string& out)
+{
+  const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir);
+  EXPECT_LE(batch.exitCode, 3) << batch.err;
+  const auto run =
+      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  out = run.out;
+  return parseJson(run.out, "stdout");
+}
+
 TEST(SummarizeCli, ATakeThatLostDataOnReadingIsListedFirstWithWhy)
 {
   test::TempDir dir;
@@ -566,16 +579,12 @@ TEST(SummarizeCli, ATakeThatLostDataOnReadingIsListedFirstWithWhy)
   const std::string bytes = readFileBytes(archive.root / "session2/pc_real.c3d");
   writeFileAtomically(archive.root / "session2/cut.c3d", bytes.substr(0, bytes.size() - 5000));
   writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) + "session2/cut.c3d\n");
-  const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir);
-  ASSERT_LE(batch.exitCode, 3) << batch.err;
-  const auto run =
-      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
-  ASSERT_EQ(run.exitCode, 0) << run.err;
-  const JsonValue summary = parseJson(run.out, "stdout");
+  std::string out;
+  const JsonValue summary = cleanAndSummarize(archive, dir, out);
   const auto& review = member(summary, "review").array("");
   ASSERT_FALSE(review.empty());
   EXPECT_EQ(member(review.front(), "take").string(""), "session2/cut.c3d")
-      << "data loss before takes that only have open gaps; " << run.out.substr(0, 2000);
+      << "data loss before takes that only have open gaps; " << out.substr(0, 2000);
   EXPECT_NE(member(review.front(), "reason").string("").find("data lost on reading: "), std::string::npos);
   EXPECT_NE(member(review.front(), "reason").string("").find("shorter than declared"), std::string::npos);
   EXPECT_TRUE(member(review.front(), "data_loss").boolean(""));
@@ -603,16 +612,12 @@ TEST(SummarizeCli, AnAcknowledgedDataLossIsNoLongerATakeThatNeedsAPerson)
   fs::copy_file(test::dataFile("c3d/sample37/ART-Human_tools_integer_6dofLimbs.c3d"), archive.root / "session2/art.c3d");
   writeFileAtomically(archive.manifest(), readFileBytes(archive.manifest()) +
                                               "session2/carried.c3d\nsession2/acknowledged.c3d\nsession2/art.c3d\n");
-  const auto batch = mocap("batch " + shellQuote(archive.manifest()) + " -o " + shellQuote(dir.file("out")), dir);
-  ASSERT_LE(batch.exitCode, 3) << batch.err;
-  const auto run =
-      mocap("summarize " + shellQuote(dir.file("out")) + " -o " + shellQuote(dir.file("report.html")) + " --json", dir);
-  ASSERT_EQ(run.exitCode, 0) << run.err;
-  const JsonValue summary = parseJson(run.out, "stdout");
+  std::string out;
+  const JsonValue summary = cleanAndSummarize(archive, dir, out);
   std::map<std::string, const JsonValue*> review;
   for (const JsonValue& entry : member(summary, "review").array(""))
     review[member(entry, "take").string("")] = &entry;
-  ASSERT_EQ(review.count("session2/carried.c3d"), 1u) << run.out.substr(0, 2000);
+  ASSERT_EQ(review.count("session2/carried.c3d"), 1u) << out.substr(0, 2000);
   EXPECT_TRUE(member(*review["session2/carried.c3d"], "data_loss").boolean(""));
   EXPECT_NE(member(*review["session2/carried.c3d"], "reason").string("").find("recorded when cut.c3d was read"),
             std::string::npos);
