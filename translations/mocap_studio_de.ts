@@ -301,12 +301,17 @@
 <context>
     <name>OffscreenRenderWindow</name>
     <message>
-        <location filename="../widgets/views/offscreen_render_window.cpp" line="+64"/>
+        <location filename="../widgets/views/offscreen_render_window.cpp" line="+66"/>
         <source>there is no X display (DISPLAY is not set); run under xvfb-run</source>
         <translation>es gibt keine X-Anzeige (DISPLAY ist nicht gesetzt); unter xvfb-run ausführen</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
+        <source>cannot connect to the X display %1</source>
+        <translation>keine Verbindung zur X-Anzeige %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>OpenGL 3.2 is not available on this display</source>
         <translation>OpenGL 3.2 ist auf dieser Anzeige nicht verfügbar</translation>
     </message>

@@ -294,12 +294,17 @@
 <context>
     <name>OffscreenRenderWindow</name>
     <message>
-        <location filename="../widgets/views/offscreen_render_window.cpp" line="+64"/>
+        <location filename="../widgets/views/offscreen_render_window.cpp" line="+66"/>
         <source>there is no X display (DISPLAY is not set); run under xvfb-run</source>
         <translation>没有 X 显示（未设置 DISPLAY）；请在 xvfb-run 下运行</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
+        <source>cannot connect to the X display %1</source>
+        <translation>无法连接到 X 显示 %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>OpenGL 3.2 is not available on this display</source>
         <translation>此显示器上没有 OpenGL 3.2</translation>
     </message>

@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "cli_error.h"
 #include "review_arguments.h"
+#include "virtual_display.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -101,13 +102,12 @@ int runReview(const ReviewArguments& arguments)
   if (hasXDisplay())
     execute(std::move(argv));
   // Debian's VTK renders through X11 only (no EGL or OSMesa): without a display, a virtual one.
-  if (!onPath("xvfb-run")) {
-    std::cerr << "mocap review: rendering needs a display; there is none and xvfb-run (Debian package xvfb) is "
+  if (!onPath("Xvfb")) {
+    std::cerr << "mocap review: rendering needs a display; there is none and Xvfb (Debian package xvfb) is "
                  "not installed\n";
     return kExitBadInput;
   }
-  argv.insert(argv.begin(), {"xvfb-run", "-a", "-s", "-screen 0 1920x1080x24"});
-  execute(std::move(argv));
+  return runOnVirtualDisplay(argv, "1920x1080x24");
 }
 
 } // namespace

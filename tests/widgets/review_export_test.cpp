@@ -29,6 +29,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <signal.h>
 
 namespace mocap {
 namespace {
@@ -190,6 +196,74 @@ TEST(ReviewExport, MocapReviewWritesTheVideoItReports)
   EXPECT_EQ(bad.exitCode(), 2);
   EXPECT_TRUE(bad.readAllStandardError().contains("even"));
   EXPECT_FALSE(std::filesystem::exists(dir.file("bad.mp4")));
+}
+
+/// The processes whose parent is `parent` and whose name is `name` (/proc/PID/stat). O(#processes).
+std::vector<pid_t> childrenNamed(pid_t parent, const std::string& name)
+{
+  std::vector<pid_t> found;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    const std::string id = entry.path().filename().string();
+    if (id.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    std::ifstream file(entry.path() / "stat");
+    std::string stat;
+    std::getline(file, stat);
+    const std::size_t open = stat.find('('), close = stat.rfind(')');
+    if (open == std::string::npos || close == std::string::npos || close + 2 > stat.size())
+      continue;
+    std::istringstream rest(stat.substr(close + 2));
+    char state = 0;
+    long ppid = 0;
+    if (rest >> state >> ppid && ppid == parent && stat.substr(open + 1, close - open - 1) == name)
+      found.push_back(static_cast<pid_t>(std::stol(id)));
+  }
+  return found;
+}
+
+// Without a display `mocap review` starts its own X server (Xvfb -displayfd): two at once never race
+// for one display, and Ctrl+C at a terminal (SIGINT to the whole process group) stops the review
+// cleanly (exit 130, no file) and ends the server with it.
+TEST(ReviewExport, MocapReviewWithoutADisplayOwnsItsServerAndStopsOnCtrlC)
+{
+  if (std::system("command -v Xvfb setsid >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "Xvfb or setsid is not installed (Debian packages xvfb, util-linux)";
+  test::TempDir dir;
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.remove(QStringLiteral("DISPLAY"));
+  environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+  const auto review = [&](QProcess& process, const std::string& name, const QString& frames) {
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral("setsid"),
+                  {QString::fromUtf8(checkout::cliProgram()), QStringLiteral("review"),
+                   QString::fromStdString(test::sampleTake().string()), QStringLiteral("-o"),
+                   QString::fromStdString(dir.file(name).string()), QStringLiteral("--size"), QStringLiteral("320x180"),
+                   QStringLiteral("--frames"), frames});
+  };
+  QProcess first, second;
+  review(first, "a.mp4", QStringLiteral("1:20"));
+  review(second, "b.mp4", QStringLiteral("1:20"));
+  ASSERT_TRUE(first.waitForFinished(120000));
+  ASSERT_TRUE(second.waitForFinished(120000));
+  EXPECT_EQ(first.exitCode(), 0) << first.readAllStandardError().toStdString();
+  EXPECT_EQ(second.exitCode(), 0) << second.readAllStandardError().toStdString();
+  EXPECT_TRUE(std::filesystem::exists(dir.file("a.mp4")) && std::filesystem::exists(dir.file("b.mp4")));
+
+  QProcess stopped;
+  review(stopped, "stopped.mp4", QStringLiteral("1:3000"));
+  ASSERT_TRUE(stopped.waitForStarted(10000));
+  const auto group = static_cast<pid_t>(stopped.processId());  // setsid: the review leads its own group
+  std::vector<pid_t> server;
+  for (int i = 0; i < 200 && server.empty(); ++i, QTest::qWait(50))
+    server = childrenNamed(group, "Xvfb");
+  ASSERT_EQ(server.size(), 1u) << "its own X server";
+  QTest::qWait(2000);  // rendering by now
+  ASSERT_EQ(::kill(-group, SIGINT), 0);
+  ASSERT_TRUE(stopped.waitForFinished(60000));
+  EXPECT_EQ(stopped.exitCode(), 130) << stopped.readAllStandardError().toStdString();
+  EXPECT_FALSE(std::filesystem::exists(dir.file("stopped.mp4")));
+  EXPECT_EQ(test::entryCount(dir.path()), 2u) << "no partial file beside the two videos";
+  EXPECT_NE(::kill(server.front(), 0), 0) << "the X server ended with the review";
 }
 
 } // namespace

@@ -45,6 +45,8 @@ OffscreenRenderWindow::~OffscreenRenderWindow()
 {
   if (m_usable)
     m_window->Finalize();
+  if (m_display)
+    XCloseDisplay(static_cast<Display*>(m_display));
 }
 
 vtkRenderWindow& OffscreenRenderWindow::window() const
@@ -65,6 +67,17 @@ bool OffscreenRenderWindow::open()
                                             "there is no X display (DISPLAY is not set); run under xvfb-run");
     return false;
   }
+  // One connection for the OpenGL probe and the window: VTK's probe would otherwise open and close
+  // its own, and an X server left without clients resets (Xvfb and xvfb-run do, unless -noreset),
+  // refusing the window's connection made meanwhile, and VTK aborts the program on that.
+  Display* display = XOpenDisplay(nullptr);
+  if (!display) {
+    m_failure = QCoreApplication::translate("OffscreenRenderWindow", "cannot connect to the X display %1")
+                    .arg(qEnvironmentVariable("DISPLAY"));
+    return false;
+  }
+  m_display = display;
+  static_cast<vtkXOpenGLRenderWindow&>(*m_window).SetDisplayId(display);
   if (m_window->SupportsOpenGL() == 0) {
     m_failure = QCoreApplication::translate("OffscreenRenderWindow", "OpenGL 3.2 is not available on this display");
     return false;

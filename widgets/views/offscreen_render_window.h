@@ -44,6 +44,7 @@ private:
   bool open();
 
   vtkSmartPointer<vtkOpenGLRenderWindow> m_window;
+  void* m_display = nullptr;  ///< the X connection the window uses, ours to close (an Xlib Display*)
   vtkNew<vtkRenderer> m_renderer;
   QSize m_size;
   bool m_usable = false;
