@@ -7,6 +7,7 @@
 
 #include "mocap/base/error.h"
 #include "mocap/base/file_io.h"
+#include "mocap/base/process_list.h"
 #include "mocap/base/job_control.h"
 #include "mocap/deform/mesh_binding.h"
 #include "mocap/io/take_io.h"
@@ -17,7 +18,6 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -158,28 +158,13 @@ ReviewMessages reviewMessages(const std::string& text)
   return said;
 }
 
-/// The processes called `name` in process group `group`, from /proc/PID/stat ("PID (NAME) STATE
-/// PPID PGRP ..."). O(#processes).
+/// The processes called `name` in process group `group`. O(#processes).
 std::vector<pid_t> processesNamed(pid_t group, const std::string& name)
 {
   std::vector<pid_t> found;
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc", error)) {
-    const std::string id = entry.path().filename().string();
-    if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
-      continue;
-    std::ifstream file(entry.path() / "stat");
-    std::string stat;
-    std::getline(file, stat);
-    const std::size_t open = stat.find('('), close = stat.rfind(')');
-    if (open == std::string::npos || close == std::string::npos || close + 2 > stat.size())
-      continue;
-    std::istringstream rest(stat.substr(close + 2));
-    char state = 0;
-    long parent = 0, processGroup = 0;
-    if (rest >> state >> parent >> processGroup && processGroup == group && stat.substr(open + 1, close - open - 1) == name)
-      found.push_back(static_cast<pid_t>(std::stol(id)));
-  }
+  for (const ProcessEntry& process : runningProcesses())
+    if (process.group == group && process.name == name)
+      found.push_back(process.pid);
   return found;
 }
 

@@ -12,6 +12,7 @@
 
 #include "dialogs/review_export.h"
 #include "document/take_document.h"
+#include "mocap/base/process_list.h"
 #include "mocap/video/review_frame.h"
 #include "mocap/video/video_source.h"
 #include "views/marker_view_3d.h"
@@ -31,8 +32,6 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include <signal.h>
 
@@ -198,26 +197,13 @@ TEST(ReviewExport, MocapReviewWritesTheVideoItReports)
   EXPECT_FALSE(std::filesystem::exists(dir.file("bad.mp4")));
 }
 
-/// The processes whose parent is `parent` and whose name is `name` (/proc/PID/stat). O(#processes).
+/// The processes whose parent is `parent` and whose name is `name`. O(#processes).
 std::vector<pid_t> childrenNamed(pid_t parent, const std::string& name)
 {
   std::vector<pid_t> found;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
-    const std::string id = entry.path().filename().string();
-    if (id.find_first_not_of("0123456789") != std::string::npos)
-      continue;
-    std::ifstream file(entry.path() / "stat");
-    std::string stat;
-    std::getline(file, stat);
-    const std::size_t open = stat.find('('), close = stat.rfind(')');
-    if (open == std::string::npos || close == std::string::npos || close + 2 > stat.size())
-      continue;
-    std::istringstream rest(stat.substr(close + 2));
-    char state = 0;
-    long ppid = 0;
-    if (rest >> state >> ppid && ppid == parent && stat.substr(open + 1, close - open - 1) == name)
-      found.push_back(static_cast<pid_t>(std::stol(id)));
-  }
+  for (const ProcessEntry& process : runningProcesses())
+    if (process.parent == parent && process.name == name)
+      found.push_back(process.pid);
   return found;
 }
 
